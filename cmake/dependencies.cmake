@@ -1,0 +1,33 @@
+# Every dependency is a Debian bookworm package installed by scripts/setup.sh.
+# All are REQUIRED: a missing install step fails the configure, not a test later.
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(OpenMesh REQUIRED)
+find_package(spdlog REQUIRED)
+find_package(fmt REQUIRED)
+find_package(GTest REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(nlohmann_json 3 REQUIRED)
+find_package(tomlplusplus REQUIRED)
+find_package(benchmark REQUIRED)
+find_package(Threads REQUIRED)
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(MODBUS REQUIRED IMPORTED_TARGET libmodbus)
+pkg_check_modules(SERIALPORT REQUIRED IMPORTED_TARGET libserialport)
+pkg_check_modules(POLYCLIPPING REQUIRED IMPORTED_TARGET polyclipping)
+pkg_check_modules(SYSTEMD REQUIRED IMPORTED_TARGET libsystemd)
+
+# CHOLMOD (SuiteSparse) ships no CMake config in bookworm: find it by hand.
+find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
+find_library(CHOLMOD_LIBRARY cholmod REQUIRED)
+find_library(SUITESPARSECONFIG_LIBRARY suitesparseconfig REQUIRED)
+add_library(lastcut_cholmod INTERFACE)
+target_include_directories(lastcut_cholmod SYSTEM INTERFACE ${CHOLMOD_INCLUDE_DIR})
+target_link_libraries(lastcut_cholmod INTERFACE ${CHOLMOD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY})
+
+# OpenMesh's imported targets do not carry their include directory on every version.
+if(TARGET OpenMeshCore)
+  get_target_property(_om_inc OpenMeshCore INTERFACE_INCLUDE_DIRECTORIES)
+  if(NOT _om_inc)
+    set_target_properties(OpenMeshCore PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "/usr/include")
+  endif()
+endif()

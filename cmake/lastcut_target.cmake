@@ -1,0 +1,52 @@
+# lastcut_warnings(TARGET): the project's warning set. Our code builds with no warnings.
+function(lastcut_warnings target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow=local -Wno-missing-field-initializers)
+endfunction()
+
+# lastcut_library(NAME SOURCES... [DEPS ...]): one engine/driver/daemon module as a static library.
+# The include root is the repository, so headers are included as "engine/flatten/arap.hpp".
+function(lastcut_library name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
+  add_library(${name} STATIC ${ARG_SOURCES})
+  target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR})
+  target_link_libraries(${name} PUBLIC ${ARG_DEPS})
+  lastcut_warnings(${name})
+  if(LASTCUT_SANITIZE)
+    target_compile_options(${name} PUBLIC -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+    target_link_options(${name} PUBLIC -fsanitize=address,undefined)
+  endif()
+endfunction()
+
+# lastcut_test(NAME SOURCES... DEPS ... [LABELS ...]): a GoogleTest executable registered with CTest.
+function(lastcut_test name)
+  cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;DEPS;LABELS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gtest_main)
+  target_compile_definitions(${name} PRIVATE
+    LASTCUT_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    LASTCUT_SHARED_DATA_DIR="${PROJECT_SOURCE_DIR}/../shared/data"
+    LASTCUT_BINARY_DIR="${PROJECT_BINARY_DIR}")
+  lastcut_warnings(${name})
+  if(LASTCUT_SANITIZE)
+    target_compile_options(${name} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer)
+    target_link_options(${name} PRIVATE -fsanitize=address,undefined)
+  endif()
+  if(NOT ARG_TIMEOUT)
+    set(ARG_TIMEOUT 300)
+  endif()
+  include(GoogleTest)
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT ${ARG_TIMEOUT} LABELS "${ARG_LABELS}")
+endfunction()
+
+# lastcut_program(NAME SOURCES... DEPS ...): an executable placed in <build>/bin.
+function(lastcut_program name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE ${ARG_DEPS})
+  set_target_properties(${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${PROJECT_BINARY_DIR}/bin)
+  lastcut_warnings(${name})
+  if(LASTCUT_SANITIZE)
+    target_compile_options(${name} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer)
+    target_link_options(${name} PRIVATE -fsanitize=address,undefined)
+  endif()
+endfunction()

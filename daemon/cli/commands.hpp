@@ -1,0 +1,16 @@
+#pragma once
+// The subcommands of `lastcut`. Each add_*_command registers one CLI11 subcommand whose
+// callback does the work and stores the process exit code in `exit_code`
+// (0 success; non-zero after printing one clear line on stderr).
+#include <CLI/CLI.hpp>
+
+namespace lastcut::cli {
+
+void add_flatten_command(CLI::App& app, int& exit_code);   // flatten_command.cpp: scan -> molds
+void add_nest_command(CLI::App& app, int& exit_code);      // nest_command.cpp: molds -> layout
+void add_toolpath_command(CLI::App& app, int& exit_code);  // toolpath_command.cpp: layout -> cut file
+void add_send_command(CLI::App& app, int& exit_code);      // send_command.cpp: cut file -> cutter; also `ports`
+void add_spool_commands(CLI::App& app, int& exit_code);    // spool_command.cpp: `status`, `requeue`
+void add_generate_command(CLI::App& app, int& exit_code);  // generate_command.cpp: parametric sample lasts
+
+}  // namespace lastcut::cli

@@ -1,0 +1,17 @@
+// PLACEHOLDER: replaced by the module that owns this command.
+#include <cstdio>
+
+#include "daemon/cli/commands.hpp"
+
+namespace lastcut::cli {
+
+void add_send_command(CLI::App& app, int& exit_code) {
+  auto* command = app.add_subcommand("send", "(not built yet)");
+  command->allow_extras();
+  command->callback([&exit_code] {
+    std::fprintf(stderr, "lastcut: error: 'send' is not built yet\n");
+    exit_code = 2;
+  });
+}
+
+}  // namespace lastcut::cli
