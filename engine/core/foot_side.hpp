@@ -1,0 +1,14 @@
+#pragma once
+// Which foot a last is for. The medial (big-toe) side of a left last is -Y in the canonical
+// frame (sole on z = 0, +X from heel to toe, +Z up); of a right last, +Y.
+#include <string_view>
+
+namespace lastcut {
+
+enum class FootSide { Left, Right };
+
+constexpr std::string_view to_string(FootSide side) { return side == FootSide::Left ? "left" : "right"; }
+// +1 when the medial side is +Y, -1 when it is -Y.
+constexpr double medial_y_sign(FootSide side) { return side == FootSide::Left ? -1.0 : 1.0; }
+
+}  // namespace lastcut
