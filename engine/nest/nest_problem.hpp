@@ -1,0 +1,61 @@
+#pragma once
+// The nesting problem: pieces (items) to cut from a strip of fixed height (rolls, sheets) or from
+// leather hides (irregular outline, defects as holes, zones of lower quality).
+// Units: millimetres and degrees. Polygons are simple; item shapes are counter-clockwise in the
+// item's own frame, which is where its marks and grain direction are given too.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/core/polygon.hpp"
+
+namespace lastcut {
+
+// A pen or notch line drawn on the piece, in the item's own frame (mm).
+struct ItemMark {
+  std::string name;
+  Point2 from_mm = Point2::Zero();
+  Point2 to_mm = Point2::Zero();
+};
+
+struct NestItem {
+  int id = 0;
+  Polygon2 shape;                             // counter-clockwise, own frame, mm
+  int demand = 1;                             // how many copies to cut
+  std::vector<double> allowed_rotations_deg;  // counter-clockwise about the own origin; empty = free rotation
+  bool allow_mirror = false;                  // a left/right pair: one item with mirror allowed, or two items
+  std::optional<double> grain_deg;            // grain direction in the own frame; must end up along the bin's x axis
+  double grain_tolerance_deg = 0;             // allowed deviation from the x axis (either direction)
+  int min_quality = 0;                        // may not overlap a zone whose quality is below this
+  std::string label;                          // short text drawn by the pen (order, size, L/R)
+  std::vector<ItemMark> marks;
+};
+
+// A region of a hide with leather of the given quality (lower = worse).
+struct QualityZone {
+  Polygon2 shape;
+  int quality = 0;
+};
+
+// A hide or sheet: outer outline, defects (holes: nothing may be cut there), quality zones.
+struct Bin {
+  int id = 0;
+  Polygon2 outer;
+  std::vector<Polygon2> holes;
+  std::vector<QualityZone> zones;
+  int stock = 1;    // how many identical copies are available
+  double cost = 1;  // relative price of one copy
+};
+
+// Strip packing when strip_height is set (the strip runs along +x from x = 0, height along y),
+// otherwise bin packing on `bins`.
+struct NestInstance {
+  std::string name;
+  std::optional<double> strip_height;  // mm
+  std::vector<Bin> bins;
+  std::vector<NestItem> items;
+  double gap_mm = 0;     // minimum distance between two pieces (kerf + clearance)
+  double margin_mm = 0;  // minimum distance between a piece and the strip or hide edge and defects
+};
+
+}  // namespace lastcut
