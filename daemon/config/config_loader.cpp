@@ -1,0 +1,317 @@
+// Validation of the daemon configuration: each table is read through a TableReader that
+// remembers which keys it consumed, so every key nobody asked for is reported as unknown
+// with its path and line (a typo must not silently fall back to a default).
+#include "daemon/config/config_loader.hpp"
+
+#include <set>
+#include <sstream>
+#include <vector>
+
+#include <toml++/toml.h>
+
+namespace lastcut::daemon {
+namespace {
+
+std::string where(const std::string& key_path, const toml::node& node) {
+  std::ostringstream out;
+  out << key_path;
+  if (node.source().begin.line > 0) out << " (line " << node.source().begin.line << ")";
+  return out.str();
+}
+
+class TableReader {
+ public:
+  TableReader(const toml::table& table, std::string path, std::vector<std::string>& errors)
+      : table_(table), path_(std::move(path)), errors_(errors) {}
+
+  ~TableReader() = default;
+  TableReader(const TableReader&) = delete;
+  TableReader& operator=(const TableReader&) = delete;
+
+  std::string key_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+
+  const toml::node* node(const std::string& key) {
+    used_.insert(key);
+    return table_.get(key);
+  }
+
+  void text(const std::string& key, std::string& value, bool required = false) {
+    const toml::node* found = node(key);
+    if (!found) {
+      if (required) errors_.push_back(key_path(key) + ": missing (required)");
+      return;
+    }
+    if (auto s = found->value<std::string>(); s && found->is_string()) {
+      value = *s;
+    } else {
+      errors_.push_back(where(key_path(key), *found) + ": must be a text in quotes");
+    }
+  }
+
+  void number(const std::string& key, double& value, double min_value, double max_value, bool required = false) {
+    const toml::node* found = node(key);
+    if (!found) {
+      if (required) errors_.push_back(key_path(key) + ": missing (required)");
+      return;
+    }
+    if (!found->is_number()) {
+      errors_.push_back(where(key_path(key), *found) + ": must be a number");
+      return;
+    }
+    const double v = *found->value<double>();
+    if (v < min_value || v > max_value) {
+      std::ostringstream out;
+      out << where(key_path(key), *found) << ": " << v << " is outside " << min_value << " .. " << max_value;
+      errors_.push_back(out.str());
+      return;
+    }
+    value = v;
+  }
+
+  void integer(const std::string& key, int& value, int min_value, int max_value, bool required = false) {
+    const toml::node* found = node(key);
+    if (!found) {
+      if (required) errors_.push_back(key_path(key) + ": missing (required)");
+      return;
+    }
+    if (!found->is_integer()) {
+      errors_.push_back(where(key_path(key), *found) + ": must be a whole number");
+      return;
+    }
+    const auto v = *found->value<int64_t>();
+    if (v < min_value || v > max_value) {
+      std::ostringstream out;
+      out << where(key_path(key), *found) << ": " << v << " is outside " << min_value << " .. " << max_value;
+      errors_.push_back(out.str());
+      return;
+    }
+    value = static_cast<int>(v);
+  }
+
+  const toml::table* subtable(const std::string& key, bool required) {
+    const toml::node* found = node(key);
+    if (!found) {
+      if (required) errors_.push_back(key_path(key) + ": missing table [" + key_path(key) + "]");
+      return nullptr;
+    }
+    if (!found->is_table()) {
+      errors_.push_back(where(key_path(key), *found) + ": must be a table [" + key_path(key) + "]");
+      return nullptr;
+    }
+    return found->as_table();
+  }
+
+  // Reports every key of the table that no read asked for.
+  void reject_unknown() {
+    for (auto&& [key, value] : table_) {
+      const std::string name(key.str());
+      if (!used_.count(name)) errors_.push_back(where(key_path(name), value) + ": unknown key");
+    }
+  }
+
+ private:
+  const toml::table& table_;
+  std::string path_;
+  std::vector<std::string>& errors_;
+  std::set<std::string> used_;
+};
+
+std::filesystem::path resolve(const std::filesystem::path& base, const std::string& value) {
+  std::filesystem::path path(value);
+  return path.is_absolute() ? path.lexically_normal() : (base / path).lexically_normal();
+}
+
+void read_paths(TableReader& root, const std::filesystem::path& base, DaemonConfig& config,
+                std::vector<std::string>& errors) {
+  const toml::table* table = root.subtable("paths", true);
+  if (!table) return;
+  TableReader paths(*table, "paths", errors);
+  std::string watch, spool, machines;
+  paths.text("watch", watch, true);
+  paths.text("spool", spool, true);
+  paths.text("machines", machines, true);
+  paths.reject_unknown();
+  if (!watch.empty()) config.paths.watch_dir = resolve(base, watch);
+  if (!spool.empty()) config.paths.spool_dir = resolve(base, spool);
+  if (!machines.empty()) config.paths.machines_dir = resolve(base, machines);
+}
+
+void read_watch(TableReader& root, DaemonConfig& config, std::vector<std::string>& errors) {
+  const toml::table* table = root.subtable("watch", false);
+  if (!table) return;
+  TableReader watch(*table, "watch", errors);
+  std::string mode = "auto";
+  watch.text("mode", mode);
+  if (mode == "auto") config.watch.mode = WatchMode::Auto;
+  else if (mode == "inotify") config.watch.mode = WatchMode::Inotify;
+  else if (mode == "poll") config.watch.mode = WatchMode::Poll;
+  else errors.push_back("watch.mode: \"" + mode + "\" is not one of auto, inotify, poll");
+  watch.number("poll_interval_s", config.watch.poll_interval_s, 0.05, 3600);
+  watch.number("rescan_interval_s", config.watch.rescan_interval_s, 0.1, 86400);
+  watch.integer("stable_checks", config.watch.stable_checks, 1, 100);
+  watch.number("stable_interval_s", config.watch.stable_interval_s, 0.01, 600);
+  watch.reject_unknown();
+}
+
+void read_jobs(TableReader& root, DaemonConfig& config, std::vector<std::string>& errors) {
+  const toml::table* table = root.subtable("jobs", true);
+  if (!table) return;
+  TableReader jobs(*table, "jobs", errors);
+  std::string policy = "skip";
+  jobs.text("duplicate_policy", policy);
+  if (policy == "skip") config.jobs.duplicate_policy = DuplicatePolicy::Skip;
+  else if (policy == "process") config.jobs.duplicate_policy = DuplicatePolicy::Process;
+  else if (policy == "hold") config.jobs.duplicate_policy = DuplicatePolicy::Hold;
+  else errors.push_back("jobs.duplicate_policy: \"" + policy + "\" is not one of skip, process, hold");
+  jobs.integer("max_attempts", config.jobs.max_attempts, 1, 100);
+  jobs.number("compute_timeout_s", config.jobs.compute_timeout_s, 1, 86400);
+  jobs.text("default_material", config.jobs.default_material, true);
+  jobs.text("default_cutter", config.jobs.default_cutter, true);
+  jobs.number("default_allowance_mm", config.jobs.default_allowance_mm, 0, 50);
+  jobs.reject_unknown();
+}
+
+void read_batch(TableReader& root, DaemonConfig& config, std::vector<std::string>& errors) {
+  const toml::table* table = root.subtable("batch", false);
+  if (!table) return;
+  TableReader batch(*table, "batch", errors);
+  batch.number("window_s", config.batch.window_s, 0, 86400);
+  batch.integer("max_pieces", config.batch.max_pieces, 0, 10000);
+  batch.reject_unknown();
+}
+
+void read_materials(TableReader& root, DaemonConfig& config, std::vector<std::string>& errors) {
+  const toml::table* table = root.subtable("materials", true);
+  if (!table) return;
+  for (auto&& [key, value] : *table) {
+    const std::string name(key.str());
+    const std::string path = "materials." + name;
+    if (!value.is_table()) {
+      errors.push_back(where(path, value) + ": must be a table [" + path + "]");
+      continue;
+    }
+    TableReader reader(*value.as_table(), path, errors);
+    MaterialConfig material;
+    reader.number("width_mm", material.width_mm, 10, 100000, true);
+    reader.number("length_mm", material.length_mm, 10, 100000, true);
+    reader.number("spacing_mm", material.spacing_mm, 0, 100);
+    reader.integer("rotation_step_deg", material.rotation_step_deg, 1, 360);
+    reader.reject_unknown();
+    if (360 % material.rotation_step_deg != 0) errors.push_back(path + ".rotation_step_deg: must divide 360");
+    config.materials[name] = material;
+  }
+  if (config.materials.empty()) errors.push_back("materials: at least one material is needed");
+}
+
+void read_cutters(TableReader& root, DaemonConfig& config, std::vector<std::string>& errors) {
+  const toml::table* table = root.subtable("cutters", true);
+  if (!table) return;
+  for (auto&& [key, value] : *table) {
+    const std::string name(key.str());
+    const std::string path = "cutters." + name;
+    if (!value.is_table()) {
+      errors.push_back(where(path, value) + ": must be a table [" + path + "]");
+      continue;
+    }
+    TableReader reader(*value.as_table(), path, errors);
+    CutterSection cutter;
+    reader.text("protocol", cutter.protocol, true);
+    reader.text("port", cutter.port, true);
+    reader.integer("baud", cutter.baud, 300, 4000000);
+    reader.text("machine", cutter.machine, true);
+    reader.number("retry_interval_s", cutter.retry_interval_s, 0.1, 86400);
+    reader.reject_unknown();
+    if (!cutter.protocol.empty() && cutter.protocol != "grbl" && cutter.protocol != "hpgl" &&
+        cutter.protocol != "modbus-tcp") {
+      errors.push_back(path + ".protocol: \"" + cutter.protocol + "\" is not one of grbl, hpgl, modbus-tcp");
+    }
+    if (cutter.protocol == "modbus-tcp" && cutter.port.rfind("127.0.0.1:", 0) != 0 &&
+        cutter.port.rfind("localhost:", 0) != 0) {
+      errors.push_back(path + ".port: a modbus-tcp cutter is reached through a gateway on 127.0.0.1:PORT");
+    }
+    config.cutters[name] = cutter;
+  }
+  if (config.cutters.empty()) errors.push_back("cutters: at least one cutter is needed");
+}
+
+void read_log(TableReader& root, DaemonConfig& config, std::vector<std::string>& errors) {
+  const toml::table* table = root.subtable("log", false);
+  if (!table) return;
+  TableReader log(*table, "log", errors);
+  log.text("level", config.log.level);
+  log.reject_unknown();
+  const std::set<std::string> levels{"trace", "debug", "info", "warn", "error"};
+  if (!levels.count(config.log.level)) {
+    errors.push_back("log.level: \"" + config.log.level + "\" is not one of trace, debug, info, warn, error");
+  }
+}
+
+void cross_check(DaemonConfig& config, std::vector<std::string>& errors) {
+  if (!config.jobs.default_material.empty() && !config.materials.count(config.jobs.default_material)) {
+    errors.push_back("jobs.default_material: \"" + config.jobs.default_material + "\" is not a [materials.*] table");
+  }
+  if (!config.jobs.default_cutter.empty() && !config.cutters.count(config.jobs.default_cutter)) {
+    errors.push_back("jobs.default_cutter: \"" + config.jobs.default_cutter + "\" is not a [cutters.*] table");
+  }
+  if (!config.paths.watch_dir.empty() && config.paths.watch_dir == config.paths.spool_dir) {
+    errors.push_back("paths.watch: must not be the spool folder itself (use a folder such as spool/incoming)");
+  }
+}
+
+}  // namespace
+
+std::string to_string(DuplicatePolicy policy) {
+  switch (policy) {
+    case DuplicatePolicy::Skip: return "skip";
+    case DuplicatePolicy::Process: return "process";
+    case DuplicatePolicy::Hold: return "hold";
+  }
+  return "?";
+}
+
+std::string to_string(WatchMode mode) {
+  switch (mode) {
+    case WatchMode::Auto: return "auto";
+    case WatchMode::Inotify: return "inotify";
+    case WatchMode::Poll: return "poll";
+  }
+  return "?";
+}
+
+ConfigLoadResult load_daemon_config(const std::filesystem::path& file) {
+  ConfigLoadResult result;
+  toml::table root;
+  try {
+    root = toml::parse_file(file.string());
+  } catch (const toml::parse_error& error) {
+    std::ostringstream out;
+    out << file.string() << " line " << error.source().begin.line << ": " << error.description();
+    result.error = out.str();
+    return result;
+  }
+  std::vector<std::string> errors;
+  DaemonConfig config;
+  const std::filesystem::path base = std::filesystem::absolute(file).parent_path();
+  {
+    TableReader reader(root, "", errors);
+    read_paths(reader, base, config, errors);
+    read_watch(reader, config, errors);
+    read_jobs(reader, config, errors);
+    read_batch(reader, config, errors);
+    read_materials(reader, config, errors);
+    read_cutters(reader, config, errors);
+    read_log(reader, config, errors);
+    reader.reject_unknown();
+  }
+  cross_check(config, errors);
+  if (!errors.empty()) {
+    std::ostringstream out;
+    for (std::size_t i = 0; i < errors.size(); ++i) out << (i ? "\n" : "") << file.string() << ": " << errors[i];
+    result.error = out.str();
+    return result;
+  }
+  result.config = std::move(config);
+  return result;
+}
+
+}  // namespace lastcut::daemon

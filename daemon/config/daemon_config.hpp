@@ -1,0 +1,75 @@
+#pragma once
+// DaemonConfig: everything lastcutd reads from its one TOML file (config/lastcut.toml documents
+// every key). Plain values, already validated by load_daemon_config(); units are in the names.
+#include <filesystem>
+#include <map>
+#include <string>
+
+namespace lastcut::daemon {
+
+enum class WatchMode { Auto, Inotify, Poll };
+// What to do with a scan whose bytes (SHA-256) equal an earlier job's scan.
+enum class DuplicatePolicy { Skip, Process, Hold };
+
+struct PathsConfig {
+  std::filesystem::path watch_dir;     // where scans are dropped (the hot folder)
+  std::filesystem::path spool_dir;     // work/, done/, failed/, held/ live here
+  std::filesystem::path machines_dir;  // machine profiles (*.toml) for the toolpath module
+};
+
+struct WatchConfig {
+  WatchMode mode = WatchMode::Auto;
+  double poll_interval_s = 2.0;     // poll mode: how often the folder is listed
+  double rescan_interval_s = 60.0;  // inotify mode: full listing as a safety net
+  int stable_checks = 2;            // size and mtime unchanged this many checks in a row
+  double stable_interval_s = 1.0;   // time between two stability checks
+};
+
+struct JobsConfig {
+  DuplicatePolicy duplicate_policy = DuplicatePolicy::Skip;
+  int max_attempts = 3;           // computing restarted this often (crash, hang) before failed/
+  double compute_timeout_s = 600; // a computation longer than this is a stuck stage (watchdog)
+  std::string default_material;   // key into materials
+  std::string default_cutter;     // key into cutters
+  double default_allowance_mm = 0;  // lasting allowance when the sidecar gives none
+};
+
+struct BatchConfig {
+  double window_s = 0;  // collect molds per material and cutter this long before nesting (0: nest each job alone)
+  int max_pieces = 0;   // ... or until this many pieces wait (0: no piece limit)
+};
+
+// A rectangular sheet or hide blank the molds are nested on.
+struct MaterialConfig {
+  double width_mm = 0;
+  double length_mm = 0;
+  double spacing_mm = 2;
+  int rotation_step_deg = 90;  // allowed rotations: multiples of this (360: none)
+};
+
+struct CutterSection {
+  std::string protocol;        // grbl | hpgl | modbus-tcp
+  std::string port;            // serial device (grbl, hpgl) or host:port on 127.0.0.1 (modbus-tcp)
+  int baud = 115200;
+  std::string machine;         // machine profile name (machines_dir/<machine>.toml)
+  double retry_interval_s = 30;  // cutter unreachable: wait this long before trying again
+};
+
+struct LogConfig {
+  std::string level = "info";  // trace | debug | info | warn | error
+};
+
+struct DaemonConfig {
+  PathsConfig paths;
+  WatchConfig watch;
+  JobsConfig jobs;
+  BatchConfig batch;
+  std::map<std::string, MaterialConfig> materials;
+  std::map<std::string, CutterSection> cutters;
+  LogConfig log;
+};
+
+std::string to_string(DuplicatePolicy policy);
+std::string to_string(WatchMode mode);
+
+}  // namespace lastcut::daemon

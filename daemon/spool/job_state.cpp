@@ -1,0 +1,101 @@
+#include "daemon/spool/job_state.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+
+namespace lastcut::daemon {
+
+std::string utc_now_iso() {
+  const auto now = std::chrono::system_clock::now();
+  const auto seconds = std::chrono::system_clock::to_time_t(now);
+  const auto millis =
+      std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() % 1000;
+  std::tm utc{};
+  gmtime_r(&seconds, &utc);
+  char text[96];
+  std::snprintf(text, sizeof text, "%04d-%02d-%02dT%02d:%02d:%02d.%03dZ", utc.tm_year + 1900, utc.tm_mon + 1,
+                utc.tm_mday, utc.tm_hour, utc.tm_min, utc.tm_sec, static_cast<int>(millis));
+  return text;
+}
+
+void JobState::advance(const std::string& new_stage, const std::string& note) {
+  stage = new_stage;
+  updated_at = utc_now_iso();
+  nlohmann::json entry{{"at", updated_at}, {"stage", new_stage}};
+  if (!note.empty()) entry["note"] = note;
+  history.push_back(entry);
+}
+
+std::string JobState::label() const {
+  std::string text = ticket.order.empty() ? "scan " + scan_name : "order " + ticket.order + " (" + scan_name + ")";
+  return text + " [job " + id + "]";
+}
+
+nlohmann::json to_json(const JobState& state) {
+  return nlohmann::json{{"id", state.id},
+                        {"scan", state.scan_name},
+                        {"sidecar", state.sidecar_name},
+                        {"sha256", state.sha256},
+                        {"stage", state.stage},
+                        {"reason", state.reason},
+                        {"attempts", state.attempts},
+                        {"ticket", ticket_to_json(state.ticket)},
+                        {"batch", state.batch_id},
+                        {"duplicate_of", state.duplicate_of},
+                        {"claimed_at", state.claimed_at},
+                        {"updated_at", state.updated_at},
+                        {"history", state.history}};
+}
+
+JobState job_state_from_json(const nlohmann::json& json) {
+  JobState state;
+  state.id = json.value("id", "");
+  state.scan_name = json.value("scan", "");
+  state.sidecar_name = json.value("sidecar", "");
+  state.sha256 = json.value("sha256", "");
+  state.stage = json.value("stage", "claimed");
+  state.reason = json.value("reason", "");
+  state.attempts = json.value("attempts", 0);
+  if (json.contains("ticket")) state.ticket = ticket_from_json(json.at("ticket"));
+  state.batch_id = json.value("batch", "");
+  state.duplicate_of = json.value("duplicate_of", "");
+  state.claimed_at = json.value("claimed_at", "");
+  state.updated_at = json.value("updated_at", "");
+  if (json.contains("history") && json.at("history").is_array()) state.history = json.at("history");
+  return state;
+}
+
+nlohmann::json to_json(const BatchState& state) {
+  return nlohmann::json{{"id", state.id},
+                        {"material", state.material},
+                        {"cutter", state.cutter},
+                        {"jobs", state.job_ids},
+                        {"stage", state.stage},
+                        {"reason", state.reason},
+                        {"cut_file", state.cut_file},
+                        {"utilisation", state.utilisation},
+                        {"pieces", state.piece_count},
+                        {"created_at", state.created_at},
+                        {"updated_at", state.updated_at},
+                        {"cutter_answer", state.cutter_answer}};
+}
+
+BatchState batch_state_from_json(const nlohmann::json& json) {
+  BatchState state;
+  state.id = json.value("id", "");
+  state.material = json.value("material", "");
+  state.cutter = json.value("cutter", "");
+  if (json.contains("jobs")) state.job_ids = json.at("jobs").get<std::vector<std::string>>();
+  state.stage = json.value("stage", "queued");
+  state.reason = json.value("reason", "");
+  state.cut_file = json.value("cut_file", "");
+  state.utilisation = json.value("utilisation", 0.0);
+  state.piece_count = json.value("pieces", 0);
+  state.created_at = json.value("created_at", "");
+  state.updated_at = json.value("updated_at", "");
+  if (json.contains("cutter_answer")) state.cutter_answer = json.at("cutter_answer");
+  return state;
+}
+
+}  // namespace lastcut::daemon

@@ -1,0 +1,64 @@
+#pragma once
+// The per-job state file (state.json in the job's folder) and the per-batch state file
+// (batch.json). Both are replaced atomically (durable_file.hpp), so after any crash they hold
+// a complete earlier or later version.
+//
+// Job stages, in order: claimed (scan in the spool, molds not yet made) -> computed (molds
+// written) -> batched (part of batch B, cut file made) -> sending (bytes may have reached the
+// cutter) -> cut. Side exits: failed (bad input, reason), held (needs an operator), skipped
+// (duplicate under the skip policy). The folder (work/done/failed/held) follows the stage.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "daemon/spool/job_ticket.hpp"
+
+namespace lastcut::daemon {
+
+struct JobState {
+  std::string id;
+  std::string scan_name;     // original file name, kept in the job folder
+  std::string sidecar_name;  // "" when the scan came without a sidecar
+  std::string sha256;        // of the scan bytes
+  std::string stage = "claimed";
+  std::string reason;        // why failed, held or skipped (operator's words)
+  int attempts = 0;          // computations started (a crash or hang counts)
+  JobTicket ticket;          // material and cutter already resolved to configured names
+  std::string batch_id;
+  std::string duplicate_of;  // job id whose scan had the same bytes
+  std::string claimed_at;    // ISO 8601 UTC
+  std::string updated_at;
+  nlohmann::json history = nlohmann::json::array();  // [{at, stage, note}]
+
+  // Moves to `new_stage`, stamping the time and appending to the history.
+  void advance(const std::string& new_stage, const std::string& note = "");
+  // "order 4711 (scan last.stl, job 20261121-235000-001)": how log lines name a job.
+  std::string label() const;
+};
+
+nlohmann::json to_json(const JobState& state);
+JobState job_state_from_json(const nlohmann::json& json);
+
+struct BatchState {
+  std::string id;
+  std::string material;
+  std::string cutter;
+  std::vector<std::string> job_ids;
+  std::string stage = "queued";  // queued -> sending -> cut | held
+  std::string reason;
+  std::string cut_file;          // file name inside the batch folder
+  double utilisation = 0;        // piece area / used material area (0..1)
+  int piece_count = 0;
+  std::string created_at;
+  std::string updated_at;
+  nlohmann::json cutter_answer = nlohmann::json::array();  // device log lines
+};
+
+nlohmann::json to_json(const BatchState& state);
+BatchState batch_state_from_json(const nlohmann::json& json);
+
+// Current UTC time as 2026-11-21T23:50:00.123Z.
+std::string utc_now_iso();
+
+}  // namespace lastcut::daemon

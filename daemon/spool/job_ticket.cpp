@@ -1,0 +1,144 @@
+// The sidecar reader: TOML and JSON sidecars are turned into the same JSON object and checked
+// once, so both formats accept exactly the same keys.
+#include "daemon/spool/job_ticket.hpp"
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <toml++/toml.h>
+
+namespace lastcut::daemon {
+namespace {
+
+bool ends_with(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::optional<nlohmann::json> toml_to_json(const std::filesystem::path& file, std::string& error) {
+  try {
+    const toml::table table = toml::parse_file(file.string());
+    std::ostringstream text;
+    text << toml::json_formatter{table};
+    return nlohmann::json::parse(text.str());
+  } catch (const toml::parse_error& parse_error) {
+    std::ostringstream out;
+    out << "line " << parse_error.source().begin.line << ": " << parse_error.description();
+    error = out.str();
+  } catch (const nlohmann::json::exception& json_error) {
+    error = json_error.what();
+  }
+  return std::nullopt;
+}
+
+std::string check_ticket(const nlohmann::json& json, JobTicket& ticket) {
+  if (!json.is_object()) return "the sidecar must be a table of keys";
+  const std::set<std::string> known{"order", "customer", "size", "side", "quantity", "material",
+                                    "cutter", "allowance_mm", "priority"};
+  for (auto it = json.begin(); it != json.end(); ++it) {
+    if (!known.count(it.key())) return "unknown key \"" + it.key() + "\"";
+  }
+  auto text = [&](const char* key, std::string& value) -> std::string {
+    if (!json.contains(key)) return {};
+    const auto& node = json.at(key);
+    if (node.is_string()) value = node.get<std::string>();
+    else if (node.is_number_integer()) value = std::to_string(node.get<long long>());
+    else return std::string(key) + " must be a text";
+    return {};
+  };
+  for (auto [key, target] : {std::pair{"order", &ticket.order}, std::pair{"customer", &ticket.customer},
+                             std::pair{"size", &ticket.size}, std::pair{"side", &ticket.side},
+                             std::pair{"material", &ticket.material}, std::pair{"cutter", &ticket.cutter}}) {
+    if (std::string error = text(key, *target); !error.empty()) return error;
+  }
+  if (!ticket.side.empty() && ticket.side != "left" && ticket.side != "right" && ticket.side != "pair") {
+    return "side \"" + ticket.side + "\" is not one of left, right, pair";
+  }
+  if (json.contains("quantity")) {
+    const auto& node = json.at("quantity");
+    if (!node.is_number_integer() || node.get<long long>() < 1 || node.get<long long>() > 100) {
+      return "quantity must be a whole number from 1 to 100";
+    }
+    ticket.quantity = node.get<int>();
+  }
+  if (json.contains("priority")) {
+    const auto& node = json.at("priority");
+    if (!node.is_number_integer()) return "priority must be a whole number";
+    ticket.priority = node.get<int>();
+  }
+  if (json.contains("allowance_mm")) {
+    const auto& node = json.at("allowance_mm");
+    if (!node.is_number() || node.get<double>() < 0 || node.get<double>() > 50) {
+      return "allowance_mm must be a number from 0 to 50";
+    }
+    ticket.allowance_mm = node.get<double>();
+  }
+  return {};
+}
+
+}  // namespace
+
+bool is_sidecar_name(const std::string& file_name) {
+  return ends_with(file_name, ".job.toml") || ends_with(file_name, ".job.json");
+}
+
+std::filesystem::path find_sidecar(const std::filesystem::path& scan) {
+  for (const char* suffix : {".job.toml", ".job.json"}) {
+    std::filesystem::path candidate = scan.parent_path() / (scan.stem().string() + suffix);
+    std::error_code error;
+    if (std::filesystem::is_regular_file(std::filesystem::symlink_status(candidate, error))) return candidate;
+  }
+  return {};
+}
+
+TicketReadResult read_job_ticket(const std::filesystem::path& sidecar) {
+  TicketReadResult result;
+  std::optional<nlohmann::json> json;
+  std::string error;
+  if (ends_with(sidecar.filename().string(), ".toml")) {
+    json = toml_to_json(sidecar, error);
+  } else {
+    std::ifstream in(sidecar);
+    if (!in) {
+      error = "cannot be read";
+    } else {
+      json = nlohmann::json::parse(in, nullptr, false);
+      if (json->is_discarded()) {
+        json.reset();
+        error = "is not valid JSON";
+      }
+    }
+  }
+  JobTicket ticket;
+  if (json) error = check_ticket(*json, ticket);
+  if (!error.empty()) {
+    result.error = "sidecar " + sidecar.filename().string() + ": " + error;
+    return result;
+  }
+  result.ticket = ticket;
+  return result;
+}
+
+nlohmann::json ticket_to_json(const JobTicket& ticket) {
+  nlohmann::json json{{"order", ticket.order},       {"customer", ticket.customer}, {"size", ticket.size},
+                      {"side", ticket.side},         {"quantity", ticket.quantity}, {"material", ticket.material},
+                      {"cutter", ticket.cutter},     {"priority", ticket.priority}};
+  if (ticket.allowance_mm) json["allowance_mm"] = *ticket.allowance_mm;
+  return json;
+}
+
+JobTicket ticket_from_json(const nlohmann::json& json) {
+  JobTicket ticket;
+  ticket.order = json.value("order", "");
+  ticket.customer = json.value("customer", "");
+  ticket.size = json.value("size", "");
+  ticket.side = json.value("side", "");
+  ticket.quantity = json.value("quantity", 1);
+  ticket.material = json.value("material", "");
+  ticket.cutter = json.value("cutter", "");
+  ticket.priority = json.value("priority", 0);
+  if (json.contains("allowance_mm")) ticket.allowance_mm = json.at("allowance_mm").get<double>();
+  return ticket;
+}
+
+}  // namespace lastcut::daemon

@@ -1,0 +1,39 @@
+#pragma once
+// JobTicket: the optional sidecar next to a scan (NAME.job.toml or NAME.job.json) saying what
+// the workshop wants cut from it. Keys (all optional): order, customer, size, side
+// (left | right | pair), quantity, material, cutter, allowance_mm, priority. Unknown keys are errors.
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace lastcut::daemon {
+
+struct JobTicket {
+  std::string order;     // the workshop's order number, shown in every log line
+  std::string customer;
+  std::string size;      // e.g. "EU 42"
+  std::string side;      // "" (from the scan), left, right or pair
+  int quantity = 1;      // how many of each mold
+  std::string material;  // "" means the configured default
+  std::string cutter;    // "" means the configured default
+  std::optional<double> allowance_mm;
+  int priority = 0;      // higher is cut first within a batch
+};
+
+struct TicketReadResult {
+  std::optional<JobTicket> ticket;
+  std::string error;  // one line when the sidecar is unusable
+};
+
+TicketReadResult read_job_ticket(const std::filesystem::path& sidecar);
+// Sidecar of a scan: NAME.job.toml or NAME.job.json beside NAME.stl; empty path when none exists.
+std::filesystem::path find_sidecar(const std::filesystem::path& scan);
+// True for names that are sidecars (*.job.toml, *.job.json).
+bool is_sidecar_name(const std::string& file_name);
+
+nlohmann::json ticket_to_json(const JobTicket& ticket);
+JobTicket ticket_from_json(const nlohmann::json& json);
+
+}  // namespace lastcut::daemon
