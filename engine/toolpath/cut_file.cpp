@@ -1,0 +1,41 @@
+#include "engine/toolpath/cut_file.hpp"
+
+#include <fstream>
+#include <system_error>
+
+#include "engine/core/engine_error.hpp"
+#include "engine/toolpath/dxf_writer.hpp"
+#include "engine/toolpath/gcode_writer.hpp"
+#include "engine/toolpath/hpgl_writer.hpp"
+#include "engine/toolpath/svg_writer.hpp"
+
+namespace lastcut {
+
+std::string write_cut_file(const CutProgram& program, const MachineProfile& profile, CutFileFormat format) {
+  switch (format) {
+    case CutFileFormat::Hpgl: return write_hpgl(program, profile);
+    case CutFileFormat::Gcode: return write_gcode(program, profile);
+    case CutFileFormat::Dxf: return write_dxf(program);
+    case CutFileFormat::Svg: return write_svg(program);
+  }
+  throw EngineError("unknown cut file format");
+}
+
+void save_cut_file(const std::filesystem::path& path, const std::string& text) {
+  const std::filesystem::path temporary = path.string() + ".partial";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out) throw EngineError("cannot write " + temporary.string());
+    out << text;
+    out.flush();
+    if (!out) throw EngineError("cannot write " + temporary.string() + " (disk full?)");
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  if (error) {
+    std::filesystem::remove(temporary, error);
+    throw EngineError("cannot write " + path.string() + ": " + error.message());
+  }
+}
+
+}  // namespace lastcut

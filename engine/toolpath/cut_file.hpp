@@ -1,0 +1,18 @@
+#pragma once
+// One entry point for every cut-file format, and writing the file.
+#include <filesystem>
+#include <string>
+
+#include "engine/toolpath/cut_program.hpp"
+#include "engine/toolpath/machine_profile.hpp"
+
+namespace lastcut {
+
+// The text of the cut file in `format` (HPGL, G-code, DXF or SVG).
+std::string write_cut_file(const CutProgram& program, const MachineProfile& profile, CutFileFormat format);
+
+// Writes `text` to `path` through a temporary file and a rename, so a cutter's spool never sees
+// half a file. Throws EngineError when the file cannot be written.
+void save_cut_file(const std::filesystem::path& path, const std::string& text);
+
+}  // namespace lastcut

@@ -1,0 +1,106 @@
+#include "engine/toolpath/gcode_writer.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "engine/core/engine_error.hpp"
+#include "engine/toolpath/arc_fit.hpp"
+
+namespace lastcut {
+namespace {
+
+class GcodeOut {
+ public:
+  explicit GcodeOut(int decimals) : decimals_(decimals) {}
+
+  std::string number(double value) const {
+    if (!std::isfinite(value)) throw EngineError("a G-code coordinate is not a number");
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals_, value);
+    std::string text(buffer);
+    if (text.find('.') != std::string::npos) {
+      while (text.back() == '0') text.pop_back();
+      if (text.back() == '.') text.pop_back();
+    }
+    return text == "-0" ? "0" : text;
+  }
+  std::string xy(const Point2& point_mm) const { return "X" + number(point_mm.x()) + " Y" + number(point_mm.y()); }
+  void line(const std::string& text) { out_ << text << "\n"; }
+  std::string text() const { return out_.str(); }
+
+ private:
+  int decimals_;
+  std::ostringstream out_;
+};
+
+std::string feed(double speed_mm_s, const GcodeOut& out) { return " F" + out.number(speed_mm_s * 60.0); }
+
+}  // namespace
+
+std::string write_gcode(const CutProgram& program, const MachineProfile& profile) {
+  const GcodeOptions& options = profile.gcode;
+  GcodeOut out(options.decimals);
+  const std::string& axis = options.rotary_axis;
+  out.line("; lastcut cut file for machine '" + profile.name + "': " + std::to_string(program.pieces.size()) +
+           " pieces");
+  out.line("G21 G90 G94");
+  out.line("G17");
+  if (!options.program_start.empty()) out.line(options.program_start);
+  out.line("G0 Z" + out.number(options.z_up_mm));
+
+  for (const Stroke& stroke : program.strokes) {
+    if (stroke.points_mm.size() < 2) continue;
+    const ToolSettings& tool = profile.tool(stroke.tool);
+    const bool with_angle = !axis.empty() && stroke.knife_angle_deg.size() == stroke.points_mm.size();
+    std::string travel = "G0 " + out.xy(stroke.points_mm.front());
+    if (with_angle) travel += " " + axis + out.number(stroke.knife_angle_deg.front());
+    out.line(travel);
+    if (tool.uses_z()) {
+      out.line("G1 Z" + out.number(tool.z_down_mm) + feed(tool.plunge_speed_mm_s, out));
+    } else {
+      out.line(tool.gcode_down);
+    }
+    const std::string cut_feed = feed(tool.speed_mm_s, out);
+    bool feed_written = false;
+    auto with_feed = [&](std::string move) {
+      if (!feed_written) move += cut_feed;
+      feed_written = true;
+      return move;
+    };
+    if (with_angle || !options.arc_fitting) {
+      for (size_t k = 1; k < stroke.points_mm.size(); ++k) {
+        const bool moves = (stroke.points_mm[k] - stroke.points_mm[k - 1]).norm() > 0.0;
+        std::string move = "G1";
+        if (moves) move += " " + out.xy(stroke.points_mm[k]);
+        if (with_angle && stroke.knife_angle_deg[k] != stroke.knife_angle_deg[k - 1]) {
+          move += " " + axis + out.number(stroke.knife_angle_deg[k]);
+        }
+        if (move != "G1") out.line(with_feed(move));
+      }
+    } else {
+      Point2 at = stroke.points_mm.front();
+      for (const PathSegment& segment : fit_arcs(stroke.points_mm, ArcFitOptions{options.arc_tolerance_mm})) {
+        if (segment.is_arc) {
+          const Point2 offset = segment.center_mm - at;
+          out.line(with_feed(std::string(segment.counter_clockwise ? "G3 " : "G2 ") + out.xy(segment.end_mm) +
+                             " I" + out.number(offset.x()) + " J" + out.number(offset.y())));
+        } else {
+          out.line(with_feed("G1 " + out.xy(segment.end_mm)));
+        }
+        at = segment.end_mm;
+      }
+    }
+    if (tool.uses_z()) {
+      out.line("G0 Z" + out.number(options.z_up_mm));
+    } else {
+      out.line(tool.gcode_up);
+    }
+  }
+  out.line("G0 X0 Y0");
+  if (!options.program_end.empty()) out.line(options.program_end);
+  out.line("M2");
+  return out.text();
+}
+
+}  // namespace lastcut
