@@ -150,6 +150,7 @@ void read_watch(TableReader& root, DaemonConfig& config, std::vector<std::string
   watch.number("rescan_interval_s", config.watch.rescan_interval_s, 0.1, 86400);
   watch.integer("stable_checks", config.watch.stable_checks, 1, 100);
   watch.number("stable_interval_s", config.watch.stable_interval_s, 0.01, 600);
+  watch.number("incomplete_grace_s", config.watch.incomplete_grace_s, 0, 86400);
   watch.reject_unknown();
 }
 
@@ -168,6 +169,8 @@ void read_jobs(TableReader& root, DaemonConfig& config, std::vector<std::string>
   jobs.text("default_material", config.jobs.default_material, true);
   jobs.text("default_cutter", config.jobs.default_cutter, true);
   jobs.number("default_allowance_mm", config.jobs.default_allowance_mm, 0, 50);
+  jobs.integer("compute_workers", config.jobs.compute_workers, 1, 64);
+  jobs.number("stop_grace_s", config.jobs.stop_grace_s, 0, 3600);
   jobs.reject_unknown();
 }
 
@@ -177,6 +180,7 @@ void read_batch(TableReader& root, DaemonConfig& config, std::vector<std::string
   TableReader batch(*table, "batch", errors);
   batch.number("window_s", config.batch.window_s, 0, 86400);
   batch.integer("max_pieces", config.batch.max_pieces, 0, 10000);
+  batch.number("nest_time_s", config.batch.nest_time_s, 0.05, 3600);
   batch.reject_unknown();
 }
 
@@ -216,18 +220,34 @@ void read_cutters(TableReader& root, DaemonConfig& config, std::vector<std::stri
     TableReader reader(*value.as_table(), path, errors);
     CutterSection cutter;
     reader.text("protocol", cutter.protocol, true);
-    reader.text("port", cutter.port, true);
+    reader.text("port", cutter.port, cutter.protocol != "modbus");
+    reader.text("modbus", cutter.modbus, cutter.protocol == "modbus");
     reader.integer("baud", cutter.baud, 300, 4000000);
+    reader.text("parity", cutter.parity);
+    reader.text("flow", cutter.flow);
+    reader.number("timeout_s", cutter.timeout_s, 0.1, 3600);
+    reader.text("grbl_unlock", cutter.grbl_unlock);
     reader.text("machine", cutter.machine, true);
     reader.number("retry_interval_s", cutter.retry_interval_s, 0.1, 86400);
     reader.reject_unknown();
     if (!cutter.protocol.empty() && cutter.protocol != "grbl" && cutter.protocol != "hpgl" &&
-        cutter.protocol != "modbus-tcp") {
-      errors.push_back(path + ".protocol: \"" + cutter.protocol + "\" is not one of grbl, hpgl, modbus-tcp");
+        cutter.protocol != "modbus") {
+      errors.push_back(path + ".protocol: \"" + cutter.protocol + "\" is not one of grbl, hpgl, modbus");
     }
-    if (cutter.protocol == "modbus-tcp" && cutter.port.rfind("127.0.0.1:", 0) != 0 &&
-        cutter.port.rfind("localhost:", 0) != 0) {
-      errors.push_back(path + ".port: a modbus-tcp cutter is reached through a gateway on 127.0.0.1:PORT");
+    if (cutter.parity != "N" && cutter.parity != "E" && cutter.parity != "O") {
+      errors.push_back(path + ".parity: \"" + cutter.parity + "\" is not one of N, E, O");
+    }
+    if (cutter.flow != "none" && cutter.flow != "xonxoff" && cutter.flow != "rtscts") {
+      errors.push_back(path + ".flow: \"" + cutter.flow + "\" is not one of none, xonxoff, rtscts");
+    }
+    if (cutter.grbl_unlock != "never" && cutter.grbl_unlock != "unlock") {
+      errors.push_back(path + ".grbl_unlock: \"" + cutter.grbl_unlock + "\" is not one of never, unlock");
+    }
+    for (const std::string* address : {&cutter.port, &cutter.modbus}) {
+      const bool tcp = address->rfind("tcp://", 0) == 0;
+      if (tcp && address->rfind("tcp://127.0.0.1:", 0) != 0 && address->rfind("tcp://localhost:", 0) != 0) {
+        errors.push_back(path + ": \"" + *address + "\": network cutters are reached through a gateway on 127.0.0.1");
+      }
     }
     config.cutters[name] = cutter;
   }

@@ -23,6 +23,7 @@ struct WatchConfig {
   double rescan_interval_s = 60.0;  // inotify mode: full listing as a safety net
   int stable_checks = 2;            // size and mtime unchanged this many checks in a row
   double stable_interval_s = 1.0;   // time between two stability checks
+  double incomplete_grace_s = 60;   // a stable file that still looks cut off is taken (and failed) after this
 };
 
 struct JobsConfig {
@@ -32,11 +33,14 @@ struct JobsConfig {
   std::string default_material;   // key into materials
   std::string default_cutter;     // key into cutters
   double default_allowance_mm = 0;  // lasting allowance when the sidecar gives none
+  int compute_workers = 1;          // scans computed at the same time
+  double stop_grace_s = 60;         // on SIGTERM, a cut in progress may finish this long, then it is held
 };
 
 struct BatchConfig {
   double window_s = 0;  // collect molds per material and cutter this long before nesting (0: nest each job alone)
   int max_pieces = 0;   // ... or until this many pieces wait (0: no piece limit)
+  double nest_time_s = 10;  // time the nester may spend improving one batch's layout
 };
 
 // A rectangular sheet or hide blank the molds are nested on.
@@ -47,11 +51,17 @@ struct MaterialConfig {
   int rotation_step_deg = 90;  // allowed rotations: multiples of this (360: none)
 };
 
+// One cutter: how to reach it (the keys of drivers/cutter.hpp CutterConfig) and its profile.
 struct CutterSection {
-  std::string protocol;        // grbl | hpgl | modbus-tcp
-  std::string port;            // serial device (grbl, hpgl) or host:port on 127.0.0.1 (modbus-tcp)
+  std::string protocol;          // grbl | hpgl | modbus
+  std::string port;              // /dev/ttyUSB0, /dev/serial/by-id/..., a pty path, tcp://127.0.0.1:PORT
+  std::string modbus;            // modbus only: tcp://127.0.0.1:1502 or rtu:/dev/ttyUSB1
   int baud = 115200;
-  std::string machine;         // machine profile name (machines_dir/<machine>.toml)
+  std::string parity = "N";      // N | E | O
+  std::string flow = "none";     // none | xonxoff | rtscts
+  double timeout_s = 10;         // longest silence from the device before the job is declared lost
+  std::string grbl_unlock = "never";  // never | unlock
+  std::string machine;           // machine profile name (paths.machines/<machine>.toml) or path
   double retry_interval_s = 30;  // cutter unreachable: wait this long before trying again
 };
 

@@ -40,6 +40,7 @@ nlohmann::json to_json(const JobState& state) {
                         {"stage", state.stage},
                         {"reason", state.reason},
                         {"attempts", state.attempts},
+                        {"pieces", state.piece_count},
                         {"ticket", ticket_to_json(state.ticket)},
                         {"batch", state.batch_id},
                         {"duplicate_of", state.duplicate_of},
@@ -57,6 +58,7 @@ JobState job_state_from_json(const nlohmann::json& json) {
   state.stage = json.value("stage", "claimed");
   state.reason = json.value("reason", "");
   state.attempts = json.value("attempts", 0);
+  state.piece_count = json.value("pieces", 0);
   if (json.contains("ticket")) state.ticket = ticket_from_json(json.at("ticket"));
   state.batch_id = json.value("batch", "");
   state.duplicate_of = json.value("duplicate_of", "");

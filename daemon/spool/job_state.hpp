@@ -24,6 +24,7 @@ struct JobState {
   std::string stage = "claimed";
   std::string reason;        // why failed, held or skipped (operator's words)
   int attempts = 0;          // computations started (a crash or hang counts)
+  int piece_count = 0;       // molds made x quantity (set once computed)
   JobTicket ticket;          // material and cutter already resolved to configured names
   std::string batch_id;
   std::string duplicate_of;  // job id whose scan had the same bytes

@@ -1,0 +1,119 @@
+// lastcutd: the unattended watch-folder daemon. Scans dropped into the watch folder become
+// molds, nested layouts and cut files, sent to the configured cutters; every job stays in the
+// spool (done/, failed/, held/). See docs/daemon.md.
+//
+//   lastcutd --config /etc/lastcut/lastcut.toml      run (under systemd: Type=notify)
+//   lastcutd --check-config FILE                      validate a configuration and exit
+//
+// Exit codes: 0 clean stop, 1 start failed, 78 (EX_CONFIG) bad configuration.
+#include <poll.h>
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
+
+#include "daemon/config/config_loader.hpp"
+#include "daemon/pipeline/pipeline.hpp"
+#include "daemon/service/operator_log.hpp"
+#include "daemon/service/signal_events.hpp"
+#include "daemon/service/systemd_notify.hpp"
+
+namespace {
+
+constexpr int kExitConfig = 78;
+
+int check_config(const std::string& file) {
+  const auto result = lastcut::daemon::load_daemon_config(file);
+  if (!result.config) {
+    std::fprintf(stderr, "%s\n", result.error.c_str());
+    return kExitConfig;
+  }
+  const auto& config = *result.config;
+  std::printf("%s: valid; watch %s, spool %s, %zu material(s), %zu cutter(s)\n", file.c_str(),
+              config.paths.watch_dir.c_str(), config.paths.spool_dir.c_str(), config.materials.size(),
+              config.cutters.size());
+  return 0;
+}
+
+void reload(const std::string& file, lastcut::daemon::Pipeline& pipeline, lastcut::daemon::SystemdNotifier& notifier) {
+  notifier.reloading();
+  const auto result = lastcut::daemon::load_daemon_config(file);
+  if (!result.config) {
+    spdlog::error("reload refused, the running configuration stays: {}", result.error);
+  } else {
+    lastcut::daemon::set_operator_log_level(result.config->log.level);
+    const std::string kept = pipeline.reload(std::make_shared<lastcut::daemon::DaemonConfig>(*result.config));
+    spdlog::info("configuration reloaded from {}{}", file, kept.empty() ? "" : "; " + kept);
+  }
+  notifier.ready();
+}
+
+int run(const std::string& file) {
+  // Before any thread starts, so that every thread inherits the blocked signals.
+  lastcut::daemon::SignalEvents signals;
+  const auto loaded = lastcut::daemon::load_daemon_config(file);
+  if (!loaded.config) {
+    std::fprintf(stderr, "lastcutd: configuration refused:\n%s\n", loaded.error.c_str());
+    return kExitConfig;
+  }
+  lastcut::daemon::setup_operator_log(loaded.config->log.level);
+  spdlog::info("lastcutd starting with {}", file);
+  lastcut::daemon::SystemdNotifier notifier;
+  lastcut::daemon::Pipeline pipeline(std::make_shared<lastcut::daemon::DaemonConfig>(*loaded.config));
+  if (std::string error = pipeline.start(); !error.empty()) {
+    spdlog::critical("lastcutd cannot start: {}", error);
+    return 1;
+  }
+  notifier.ready();
+  spdlog::info("lastcutd ready{}", notifier.watchdog_enabled() ? " (systemd watchdog on)" : "");
+
+  std::string reported_stuck;
+  auto next_status = std::chrono::steady_clock::now();
+  for (;;) {
+    pollfd fds[2] = {{signals.fd(), POLLIN, 0}, {pipeline.event_fd(), POLLIN, 0}};
+    ::poll(fds, pipeline.event_fd() >= 0 ? 2 : 1, 100);
+    bool stop = false;
+    for (auto event = signals.read(); event != lastcut::daemon::SignalEvent::None; event = signals.read()) {
+      if (event == lastcut::daemon::SignalEvent::Stop) stop = true;
+      else reload(file, pipeline, notifier);
+    }
+    if (stop) break;
+    pipeline.read_events();
+    const auto now = std::chrono::steady_clock::now();
+    pipeline.tick(now);
+    const std::string stuck = pipeline.stuck(now);
+    if (stuck.empty()) {
+      notifier.feed_watchdog(now);
+      if (!reported_stuck.empty()) spdlog::info("pipeline moving again");
+    } else if (stuck != reported_stuck) {
+      spdlog::critical("{}: no longer feeding the systemd watchdog, lastcutd will be restarted", stuck);
+    }
+    reported_stuck = stuck;
+    if (now >= next_status) {
+      notifier.status(pipeline.status_line());
+      next_status = now + std::chrono::seconds(2);
+    }
+  }
+  notifier.stopping();
+  spdlog::info("lastcutd stopping: finishing or holding the jobs in hand");
+  pipeline.stop();
+  spdlog::info("lastcutd stopped");
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"lastcutd: watch-folder daemon turning shoe-last scans into cut jobs"};
+  std::string config_file = "/etc/lastcut/lastcut.toml";
+  std::string check_file;
+  app.add_option("-c,--config", config_file, "configuration file (TOML)");
+  app.add_option("--check-config", check_file, "validate this configuration file and exit");
+  CLI11_PARSE(app, argc, argv);
+  if (!check_file.empty()) return check_config(check_file);
+  return run(config_file);
+}

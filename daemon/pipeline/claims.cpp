@@ -1,0 +1,89 @@
+// Taking a ready scan from the watch folder into the spool, with its sidecar, its hash and the
+// duplicate policy. Every file that is taken ends somewhere in the spool: a bad sidecar or a
+// cut-off file is claimed and then failed, so the operator finds it in failed/ with the reason.
+#include <spdlog/spdlog.h>
+
+#include "daemon/pipeline/job_outcomes.hpp"
+#include "daemon/pipeline/pipeline.hpp"
+#include "daemon/spool/sha256.hpp"
+
+namespace lastcut::daemon {
+
+void Pipeline::index_hashes() {
+  for (JobFolder folder : {JobFolder::Done, JobFolder::Failed, JobFolder::Held, JobFolder::Work}) {
+    for (const std::string& id : spool_->list(folder)) {
+      auto state = spool_->read_state(folder, id);
+      if (!state || state->sha256.empty() || !state->duplicate_of.empty()) continue;
+      hash_to_job_.emplace(state->sha256, id);  // ids sort by time: the first one stays
+    }
+  }
+}
+
+void Pipeline::take(const ReadyScan& ready) {
+  const auto settings = config();
+  const std::string name = ready.scan.filename().string();
+  const auto hash = sha256_file_hex(ready.scan);
+  if (!hash) return;  // vanished between listing and hashing; a new event will bring it back
+  JobState state;
+  state.sha256 = *hash;
+  std::string problem = ready.incompleteness;
+  if (!ready.sidecar.empty() && problem.empty()) {
+    const TicketReadResult ticket = read_job_ticket(ready.sidecar);
+    if (ticket.ticket) state.ticket = *ticket.ticket;
+    else problem = ticket.error;
+  }
+  if (state.ticket.material.empty()) state.ticket.material = settings->jobs.default_material;
+  if (state.ticket.cutter.empty()) state.ticket.cutter = settings->jobs.default_cutter;
+  if (problem.empty() && !settings->materials.count(state.ticket.material)) {
+    problem = "the sidecar asks for material \"" + state.ticket.material + "\", which is not configured";
+  }
+  if (problem.empty() && !settings->cutters.count(state.ticket.cutter)) {
+    problem = "the sidecar asks for cutter \"" + state.ticket.cutter + "\", which is not configured";
+  }
+  const auto earlier = hash_to_job_.find(state.sha256);
+  const bool duplicate = earlier != hash_to_job_.end();
+  if (duplicate) state.duplicate_of = earlier->second;
+
+  const ClaimResult claim = spool_->claim(ready.scan, ready.sidecar, state);
+  hot_folder_->forget(name);
+  if (!ready.sidecar.empty()) hot_folder_->forget(ready.sidecar.filename().string());
+  if (!claim.error.empty()) {
+    spdlog::error("watch folder: {} could not be taken into the spool: {}", name, claim.error);
+    return;
+  }
+  auto claimed = spool_->read_state(JobFolder::Work, claim.job_id);
+  if (!claimed) {
+    spdlog::error("job {}: state unreadable right after the claim", claim.job_id);
+    return;
+  }
+  known_jobs_.insert(claim.job_id);
+  spdlog::info("{}: taken from the watch folder{} (material {}, cutter {})", claimed->label(),
+               ready.sidecar.empty() ? "" : " with " + ready.sidecar.filename().string(), claimed->ticket.material,
+               claimed->ticket.cutter);
+  if (!problem.empty()) {
+    fail_job(*spool_, *claimed, problem);
+    return;
+  }
+  if (duplicate) {
+    const std::string reason = "same scan bytes as job " + state.duplicate_of;
+    switch (settings->jobs.duplicate_policy) {
+      case DuplicatePolicy::Skip:
+        claimed->reason = reason + " (duplicate, skipped)";
+        claimed->advance("skipped", claimed->reason);
+        spool_->move_job(JobFolder::Work, JobFolder::Done, *claimed);
+        spdlog::info("{}: {} - not cut again, moved to done/ as skipped", claimed->label(), claimed->reason);
+        return;
+      case DuplicatePolicy::Hold:
+        hold_job(*spool_, *claimed, reason + " (duplicate held by policy)");
+        return;
+      case DuplicatePolicy::Process:
+        spdlog::info("{}: {} - processed again (policy)", claimed->label(), reason);
+        break;
+    }
+  } else {
+    hash_to_job_[state.sha256] = claim.job_id;
+  }
+  tasks_.push({false, claim.job_id});
+}
+
+}  // namespace lastcut::daemon

@@ -1,0 +1,183 @@
+#include "daemon/pipeline/cutter_dispatcher.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include <spdlog/spdlog.h>
+
+#include "daemon/pipeline/job_outcomes.hpp"
+#include "drivers/cutter.hpp"
+
+namespace lastcut::daemon {
+namespace {
+
+drivers::CutterConfig driver_config(const std::string& name, const CutterSection& section, const std::string& job) {
+  drivers::CutterConfig config;
+  config.name = name;
+  config.protocol = section.protocol;
+  config.port = section.port;
+  config.modbus = section.modbus;
+  config.baud = section.baud;
+  config.parity = section.parity.empty() ? 'N' : section.parity[0];
+  config.flow = section.flow;
+  config.timeout_s = section.timeout_s;
+  config.grbl_unlock = section.grbl_unlock;
+  config.job_id = job.substr(0, 16);
+  return config;
+}
+
+// Marks the batch and its jobs with `stage` on disk; false when the batch file cannot be written.
+bool mark_batch(const Spool& spool, BatchState& batch, const std::string& stage, const std::string& note) {
+  batch.stage = stage;
+  batch.updated_at = utc_now_iso();
+  if (std::string error = spool.write_batch(batch); !error.empty()) {
+    spdlog::error("batch {}: state not written: {}", batch.id, error);
+    return false;
+  }
+  // Job states follow only the sending / back-to-queued steps; the ends (cut, held) are written
+  // by complete_batch_jobs / hold_batch_jobs together with the move out of work/.
+  if (stage != "sending" && stage != "queued") return true;
+  for (const std::string& id : batch.job_ids) {
+    auto state = spool.read_state(JobFolder::Work, id);
+    if (!state || state->batch_id != batch.id) continue;
+    state->advance(stage == "queued" ? "batched" : stage, note);
+    if (std::string error = spool.write_state(JobFolder::Work, *state); !error.empty()) {
+      spdlog::error("{}: state not written: {}", state->label(), error);
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+CutterDispatcher::CutterDispatcher(std::string name, Spool& spool, ProgressMonitor& monitor,
+                                   std::function<CutterSection()> settings)
+    : name_(std::move(name)), spool_(spool), monitor_(monitor), settings_(std::move(settings)) {}
+
+CutterDispatcher::~CutterDispatcher() {
+  if (thread_.joinable()) stop(0);
+}
+
+void CutterDispatcher::start() { thread_ = std::thread([this] { run(); }); }
+
+void CutterDispatcher::enqueue(const std::string& batch_id) { queue_.push(batch_id); }
+
+std::string CutterDispatcher::condition() const {
+  std::lock_guard lock(mutex_);
+  return condition_;
+}
+
+void CutterDispatcher::set_condition(const std::string& condition) {
+  std::lock_guard lock(mutex_);
+  condition_ = condition;
+}
+
+void CutterDispatcher::stop(double grace_s) {
+  stopping_ = true;
+  queue_.clear_and_close();
+  {
+    std::unique_lock lock(mutex_);
+    wake_.notify_all();
+    if (!wake_.wait_for(lock, std::chrono::duration<double>(grace_s), [this] { return !sending_; })) {
+      spdlog::warn("cutter {}: stopping; the cut in progress is interrupted and its jobs held", name_);
+      cancel_ = true;
+    }
+  }
+  if (thread_.joinable()) thread_.join();
+}
+
+void CutterDispatcher::wait_before_retry(double seconds) {
+  std::unique_lock lock(mutex_);
+  wake_.wait_for(lock, std::chrono::duration<double>(seconds), [this] { return stopping_.load(); });
+}
+
+void CutterDispatcher::run() {
+  while (auto batch_id = queue_.pop()) {
+    while (!stopping_ && !cut_batch(*batch_id)) wait_before_retry(settings_().retry_interval_s);
+    if (!stopping_) set_condition("idle");
+  }
+}
+
+bool CutterDispatcher::cut_batch(const std::string& batch_id) {
+  auto batch = spool_.read_batch(batch_id);
+  if (!batch || batch->stage != "queued") return true;  // finished or taken back meanwhile
+  const CutterSection section = settings_();
+  const drivers::CutterConfig config = driver_config(name_, section, batch_id);
+
+  const drivers::ProbeResult probe = drivers::probe_cutter(config);
+  if (!probe.ready) {
+    const std::string problem = probe.reason.empty() ? probe.state : probe.reason;
+    set_condition("waiting: " + problem);
+    if (problem != last_problem_) {
+      spdlog::warn("cutter {}: not ready ({}); batch {} waits, retrying every {} s", name_, problem, batch_id,
+                   section.retry_interval_s);
+      last_problem_ = problem;
+    }
+    return false;
+  }
+  if (!last_problem_.empty()) spdlog::info("cutter {}: ready again ({})", name_, probe.state);
+  last_problem_.clear();
+
+  std::ifstream in(spool_.batch_dir(batch_id) / batch->cut_file, std::ios::binary);
+  std::ostringstream program;
+  program << in.rdbuf();
+  if (!in || program.str().empty()) {
+    batch->reason = "the cut file " + batch->cut_file + " is missing or empty";
+    mark_batch(spool_, *batch, "held", batch->reason);
+    hold_batch_jobs(spool_, *batch, batch->reason);
+    return true;
+  }
+
+  // The point of no return: from here on a crash or fault means "maybe partly cut".
+  if (!mark_batch(spool_, *batch, "sending", "sending to cutter " + name_)) return false;
+  {
+    std::lock_guard lock(mutex_);
+    sending_ = true;
+  }
+  set_condition("cutting " + batch_id);
+  spdlog::info("cutter {}: cutting batch {} ({} jobs, {} pieces)", name_, batch_id, batch->job_ids.size(),
+               batch->piece_count);
+  const std::string worker = "cutter " + name_;
+  monitor_.begin(worker, "batch " + batch_id, section.timeout_s + 30);
+  const auto progress = [&](const drivers::SendProgress& step) {
+    monitor_.beat(worker);
+    if (step.bytes_total > 0) {
+      set_condition("cutting " + batch_id + " (" + std::to_string(100 * step.bytes_sent / step.bytes_total) + " %)");
+    }
+  };
+  const drivers::SendResult result = drivers::send_job(config, program.str(), progress, cancel_);
+  monitor_.end(worker);
+  {
+    std::lock_guard lock(mutex_);
+    sending_ = false;
+    wake_.notify_all();
+  }
+  batch->cutter_answer = result.device_log;
+  switch (result.outcome) {
+    case drivers::SendOutcome::Done:
+      batch->reason.clear();
+      mark_batch(spool_, *batch, "cut", "the cutter reported the job finished");
+      complete_batch_jobs(spool_, *batch);
+      return true;
+    case drivers::SendOutcome::Failed:
+      // The driver guarantees nothing reached the machine: the batch may wait and go again.
+      batch->reason = result.reason;
+      mark_batch(spool_, *batch, "queued", "cutter refused before cutting: " + result.reason);
+      set_condition("waiting: " + result.reason);
+      if (result.reason != last_problem_) {
+        spdlog::warn("cutter {}: batch {} not started ({}); retrying every {} s", name_, batch_id, result.reason,
+                     section.retry_interval_s);
+        last_problem_ = result.reason;
+      }
+      return stopping_.load();
+    case drivers::SendOutcome::Interrupted:
+      break;
+  }
+  batch->reason = "cutter " + name_ + " stopped while cutting batch " + batch_id + ": " + result.reason +
+                  "; pieces may be partly cut";
+  mark_batch(spool_, *batch, "held", batch->reason);
+  hold_batch_jobs(spool_, *batch, batch->reason);
+  return true;
+}
+
+}  // namespace lastcut::daemon

@@ -1,0 +1,25 @@
+#pragma once
+// The ends of a job's road, each one durable state write plus one folder rename, and one
+// operator log line: failed/ (bad input), held/ (an operator must decide), done/ (cut).
+// report.json in the job folder collects the measures, timings, batch and cutter answer.
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "daemon/spool/spool.hpp"
+
+namespace lastcut::daemon {
+
+// work/ID -> failed/ID; the original scan stays there with the reason.
+void fail_job(const Spool& spool, JobState state, const std::string& reason);
+// work/ID -> held/ID with the reason and what the operator can do.
+void hold_job(const Spool& spool, JobState state, const std::string& reason);
+// Merges `fields` into the job's report.json (created when missing), durably.
+void update_job_report(const Spool& spool, JobFolder folder, const std::string& job_id, const nlohmann::json& fields);
+// The batch was cut: its layout, preview and cut file are copied into each job's folder, the
+// report completed, and every job still in work/ moves to done/.
+void complete_batch_jobs(const Spool& spool, const BatchState& batch);
+// The batch may have been partly cut: every job of it still in work/ moves to held/.
+void hold_batch_jobs(const Spool& spool, const BatchState& batch, const std::string& reason);
+
+}  // namespace lastcut::daemon

@@ -1,0 +1,152 @@
+#include "daemon/pipeline/pipeline.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+
+#include <spdlog/spdlog.h>
+
+#include "daemon/spool/durable_file.hpp"
+
+namespace lastcut::daemon {
+
+Pipeline::Pipeline(std::shared_ptr<const DaemonConfig> config) : config_(std::move(config)) {}
+
+Pipeline::~Pipeline() { stop(); }
+
+std::shared_ptr<const DaemonConfig> Pipeline::config() const {
+  std::lock_guard lock(config_mutex_);
+  return config_;
+}
+
+std::string Pipeline::start() {
+  const auto settings = config();
+  spool_ = std::make_unique<Spool>(settings->paths.spool_dir);
+  if (std::string error = spool_->prepare(); !error.empty()) return error;
+  for (const auto& [name, section] : settings->cutters) {
+    dispatchers_[name] = std::make_unique<CutterDispatcher>(name, *spool_, monitor_, [this, cutter = name] {
+      const auto current = config();
+      const auto it = current->cutters.find(cutter);
+      return it != current->cutters.end() ? it->second : CutterSection{};
+    });
+  }
+  index_hashes();
+  recover();
+  hot_folder_ = std::make_unique<HotFolder>(settings->paths.watch_dir, settings->watch);
+  if (std::string error = hot_folder_->start(); !error.empty()) return error;
+  for (auto& [name, dispatcher] : dispatchers_) dispatcher->start();
+  for (int i = 0; i < settings->jobs.compute_workers; ++i) workers_.emplace_back([this, i] { compute_worker(i + 1); });
+  spdlog::info("watching {} ({}); spool {}; {} cutter(s); duplicates: {}", settings->paths.watch_dir.string(),
+               hot_folder_->mode_description(), settings->paths.spool_dir.string(), dispatchers_.size(),
+               to_string(settings->jobs.duplicate_policy));
+  return {};
+}
+
+void Pipeline::tick(Clock::time_point now) {
+  for (const ReadyScan& ready : hot_folder_->collect_ready(now)) take(ready);
+  std::vector<std::string> computed;
+  {
+    std::lock_guard lock(computed_mutex_);
+    computed.swap(computed_);
+  }
+  for (const std::string& id : computed) {
+    if (auto state = spool_->read_state(JobFolder::Work, id); state && state->stage == "computed") add_to_batcher(*state);
+  }
+  close_due_batches(now, false);
+  if (now >= next_work_scan_) {
+    scan_work_folder();
+    next_work_scan_ = now + std::chrono::seconds(1);
+  }
+  if (now >= next_status_file_) {
+    write_status_file();
+    next_status_file_ = now + std::chrono::seconds(2);
+  }
+}
+
+void Pipeline::write_status_file() const {
+  nlohmann::json cutters = nlohmann::json::object();
+  for (const auto& [name, dispatcher] : dispatchers_) {
+    cutters[name] = {{"condition", dispatcher->condition()}, {"queued_batches", dispatcher->queued()}};
+  }
+  std::size_t waiting = 0;
+  for (const auto& [key, open] : open_batches_) waiting += open.job_ids.size();
+  const nlohmann::json status{{"pid", static_cast<long>(::getpid())},
+                              {"updated_at", utc_now_iso()},
+                              {"watch_folder", config()->paths.watch_dir.string()},
+                              {"files_being_checked", hot_folder_ ? hot_folder_->pending_count() : 0},
+                              {"to_compute", tasks_.size()},
+                              {"waiting_for_batch", waiting},
+                              {"cutters", cutters}};
+  // Not fsync'ed on purpose: it is rewritten every 2 s and worthless after a crash.
+  const auto file = spool_->root() / "status.json";
+  const auto temporary = spool_->root() / ".status.json.tmp";
+  if (FILE* out = std::fopen(temporary.c_str(), "w")) {
+    const std::string text = status.dump(2) + "\n";
+    std::fwrite(text.data(), 1, text.size(), out);
+    std::fclose(out);
+    std::rename(temporary.c_str(), file.c_str());
+  }
+}
+
+std::string Pipeline::status_line() const {
+  std::size_t waiting = 0;
+  for (const auto& [key, open] : open_batches_) waiting += open.job_ids.size();
+  std::string line = std::to_string(known_jobs_.size()) + " job(s) in work, " + std::to_string(tasks_.size()) +
+                     " to compute, " + std::to_string(waiting) + " waiting for a batch";
+  for (const auto& [name, dispatcher] : dispatchers_) {
+    line += "; " + name + ": " + dispatcher->condition();
+    if (dispatcher->queued() > 0) line += ", " + std::to_string(dispatcher->queued()) + " batch(es) queued";
+  }
+  return line;
+}
+
+std::string Pipeline::reload(std::shared_ptr<const DaemonConfig> next) {
+  const auto current = config();
+  std::string kept;
+  auto keep = [&](bool changed, const char* what) {
+    if (changed) kept += std::string(kept.empty() ? "" : ", ") + what;
+  };
+  keep(next->paths.watch_dir != current->paths.watch_dir, "paths.watch");
+  keep(next->paths.spool_dir != current->paths.spool_dir, "paths.spool");
+  keep(next->watch.mode != current->watch.mode, "watch.mode");
+  keep(next->jobs.compute_workers != current->jobs.compute_workers, "jobs.compute_workers");
+  bool same_cutters = next->cutters.size() == current->cutters.size();
+  for (const auto& [name, section] : next->cutters) same_cutters = same_cutters && current->cutters.count(name);
+  keep(!same_cutters, "the list of cutters");
+  auto merged = std::make_shared<DaemonConfig>(*next);
+  merged->paths = current->paths;
+  merged->watch = current->watch;
+  merged->jobs.compute_workers = current->jobs.compute_workers;
+  if (!same_cutters) merged->cutters = current->cutters;
+  {
+    std::lock_guard lock(config_mutex_);
+    config_ = merged;
+  }
+  return kept.empty() ? "" : kept + " changed: kept the running value until restart";
+}
+
+void Pipeline::stop() {
+  if (!spool_) return;
+  tasks_.clear_and_close();
+  for (auto& worker : workers_) {
+    if (worker.joinable()) worker.join();
+  }
+  workers_.clear();
+  const double grace_s = config()->jobs.stop_grace_s;
+  // In parallel: each cutter gets the whole grace time for the cut in its hands.
+  std::vector<std::thread> stopping;
+  for (auto& [name, dispatcher] : dispatchers_) {
+    stopping.emplace_back([&dispatcher = dispatcher, grace_s] { dispatcher->stop(grace_s); });
+  }
+  for (auto& thread : stopping) thread.join();
+  dispatchers_.clear();
+  {
+    // A stopped daemon says so: status must not show a stale "running".
+    std::error_code error;
+    std::filesystem::remove(spool_->root() / "status.json", error);
+  }
+  hot_folder_.reset();
+  spool_.reset();
+}
+
+}  // namespace lastcut::daemon

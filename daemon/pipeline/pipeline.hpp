@@ -1,0 +1,113 @@
+#pragma once
+// Pipeline: the daemon's job flow, driven by the main loop's tick().
+//
+//   watch folder --claim--> work/ID --compute worker--> molds (computed)
+//     --batcher (per material and cutter: window_s or max_pieces)--> batches/BID (nest, cut file)
+//     --one dispatcher per cutter--> done/ID | held/ID       (bad input anywhere: failed/ID)
+//
+// The main thread claims files, routes jobs and closes batches; compute workers make molds and
+// batches; each cutter has its own dispatcher thread. Only ids travel between threads; the
+// spool on disk is the truth, so start() first recovers whatever a crash left behind:
+// computing is at-least-once (redone), cutting is at-most-once (an interrupted cut is held).
+#include <chrono>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "daemon/config/daemon_config.hpp"
+#include "daemon/pipeline/cutter_dispatcher.hpp"
+#include "daemon/pipeline/progress_monitor.hpp"
+#include "daemon/pipeline/work_queue.hpp"
+#include "daemon/spool/spool.hpp"
+#include "daemon/watch/hot_folder.hpp"
+
+namespace lastcut::daemon {
+
+class Pipeline {
+ public:
+  using Clock = std::chrono::steady_clock;
+
+  explicit Pipeline(std::shared_ptr<const DaemonConfig> config);
+  ~Pipeline();
+  Pipeline(const Pipeline&) = delete;
+  Pipeline& operator=(const Pipeline&) = delete;
+
+  // Prepares the spool, recovers it, starts watching and the worker threads. Error line or "".
+  std::string start();
+  // One turn of the main loop: new files, requeued jobs, finished computations, due batches.
+  void tick(Clock::time_point now);
+  // inotify descriptor to wait on (-1 when polling).
+  int event_fd() const { return hot_folder_ ? hot_folder_->event_fd() : -1; }
+  void read_events() {
+    if (hot_folder_) hot_folder_->read_events();
+  }
+  // Empty while every stage makes progress; otherwise what is stuck (then the watchdog starves).
+  std::string stuck(Clock::time_point now) const { return monitor_.stuck(now); }
+  // One line for systemd's STATUS= and the log.
+  std::string status_line() const;
+  // Applies a new configuration (already validated). Paths, watch mode and the set of cutters
+  // need a restart: the returned line says which of those changed and were kept.
+  std::string reload(std::shared_ptr<const DaemonConfig> config);
+  // SIGTERM: stops taking files, lets computations and cuts in hand finish (cuts for at most
+  // jobs.stop_grace_s, then held). Queued work stays in the spool for the next start.
+  void stop();
+
+ private:
+  struct Task {
+    bool is_batch = false;
+    std::string id;
+  };
+  struct OpenBatch {
+    std::vector<std::string> job_ids;
+    int pieces = 0;
+    Clock::time_point opened;
+  };
+
+  std::shared_ptr<const DaemonConfig> config() const;
+  // recovery.cpp
+  void recover();
+  void recover_batch(const std::string& batch_id);
+  void route(const std::string& job_id);
+  void undo_unfinished_claim(const std::string& job_id);
+  // claims.cpp
+  void take(const ReadyScan& ready);
+  void index_hashes();
+  // workers.cpp
+  void compute_worker(int index);
+  void compute_job(const std::string& job_id, const std::string& worker);
+  void build_batch_task(const std::string& batch_id, const std::string& worker);
+  // batching.cpp
+  void add_to_batcher(const JobState& state);
+  void close_due_batches(Clock::time_point now, bool force);
+  void close_batch(const std::string& key, OpenBatch& open);
+  void enqueue_batch(const BatchState& batch);
+  void scan_work_folder();
+  // spool/status.json for `lastcut status`: cutters' conditions, queue sizes, pid, time.
+  void write_status_file() const;
+
+  mutable std::mutex config_mutex_;
+  std::shared_ptr<const DaemonConfig> config_;
+  std::unique_ptr<Spool> spool_;
+  std::unique_ptr<HotFolder> hot_folder_;
+  ProgressMonitor monitor_;
+  WorkQueue<Task> tasks_;
+  std::vector<std::thread> workers_;
+  std::map<std::string, std::unique_ptr<CutterDispatcher>> dispatchers_;
+
+  // Main thread only.
+  std::set<std::string> known_jobs_;                  // ids in work/ that have been routed
+  std::map<std::string, std::string> hash_to_job_;    // sha256 -> first job id with those bytes
+  std::map<std::string, OpenBatch> open_batches_;     // "material|cutter" -> collecting
+  Clock::time_point next_work_scan_{};
+  Clock::time_point next_status_file_{};
+
+  // Filled by workers, drained by the main thread.
+  std::mutex computed_mutex_;
+  std::vector<std::string> computed_;
+};
+
+}  // namespace lastcut::daemon

@@ -1,0 +1,132 @@
+// The compute workers: molds for a claimed job, nesting and cut file for a closed batch.
+// Each task is bracketed by the progress monitor, so a computation that hangs longer than
+// jobs.compute_timeout_s starves the systemd watchdog.
+#include <chrono>
+
+#include <spdlog/spdlog.h>
+
+#include "daemon/pipeline/engine_steps.hpp"
+#include "daemon/pipeline/job_outcomes.hpp"
+#include "daemon/pipeline/pipeline.hpp"
+
+namespace lastcut::daemon {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+void Pipeline::compute_worker(int index) {
+  const std::string worker = "compute-" + std::to_string(index);
+  while (auto task = tasks_.pop()) {
+    if (task->is_batch) build_batch_task(task->id, worker);
+    else compute_job(task->id, worker);
+  }
+}
+
+void Pipeline::compute_job(const std::string& job_id, const std::string& worker) {
+  const auto settings = config();
+  auto state = spool_->read_state(JobFolder::Work, job_id);
+  if (!state || state->stage != "claimed") return;
+  if (state->attempts >= settings->jobs.max_attempts) {
+    fail_job(*spool_, *state,
+             "computing the molds stopped lastcutd " + std::to_string(state->attempts) +
+                 " times (crash or hang); the scan is kept for a developer to look at");
+    return;
+  }
+  // Counted before the work: if this scan crashes the daemon, the next start knows.
+  ++state->attempts;
+  state->advance("claimed", "computing molds, attempt " + std::to_string(state->attempts));
+  spool_->write_state(JobFolder::Work, *state);
+  const auto job_dir = spool_->job_dir(JobFolder::Work, job_id);
+  const auto start = std::chrono::steady_clock::now();
+  monitor_.begin(worker, "molds of job " + job_id, settings->jobs.compute_timeout_s);
+  const MoldsOutcome outcome =
+      compute_molds(job_dir / state->scan_name, job_dir, state->ticket, settings->jobs.default_allowance_mm);
+  monitor_.end(worker);
+  const double took_s = seconds_since(start);
+  if (!outcome.error.empty()) {
+    fail_job(*spool_, *state, outcome.error);
+    return;
+  }
+  state->piece_count = outcome.piece_count * state->ticket.quantity;
+  update_job_report(*spool_, JobFolder::Work, job_id,
+                    {{"job", job_id},
+                     {"scan", state->scan_name},
+                     {"sha256", state->sha256},
+                     {"ticket", ticket_to_json(state->ticket)},
+                     {"molds", outcome.piece_count},
+                     {"pieces", state->piece_count},
+                     {"measures", outcome.measures},
+                     {"timings_s", {{"molds", took_s}}}});
+  state->advance("computed", std::to_string(outcome.piece_count) + " molds");
+  if (std::string error = spool_->write_state(JobFolder::Work, *state); !error.empty()) {
+    spdlog::error("{}: state not written: {}", state->label(), error);
+    return;
+  }
+  spdlog::info("{}: {} molds ready in {:.1f} s", state->label(), outcome.piece_count, took_s);
+  std::lock_guard lock(computed_mutex_);
+  computed_.push_back(job_id);
+}
+
+void Pipeline::build_batch_task(const std::string& batch_id, const std::string& worker) {
+  const auto settings = config();
+  auto batch = spool_->read_batch(batch_id);
+  if (!batch || batch->stage != "nesting") return;
+  std::vector<BatchJobInput> inputs;
+  std::map<std::string, JobState> states;
+  for (const std::string& id : batch->job_ids) {
+    auto state = spool_->read_state(JobFolder::Work, id);
+    if (!state || state->batch_id != batch_id) continue;
+    inputs.push_back({id, spool_->job_dir(JobFolder::Work, id), state->ticket});
+    states.emplace(id, *state);
+  }
+  const auto material = settings->materials.find(batch->material);
+  const auto cutter = settings->cutters.find(batch->cutter);
+  const auto start = std::chrono::steady_clock::now();
+  BatchOutcome outcome;
+  if (material == settings->materials.end()) outcome.error = "material " + batch->material + " is no longer configured";
+  else if (cutter == settings->cutters.end()) outcome.error = "cutter " + batch->cutter + " is no longer configured";
+  else {
+    monitor_.begin(worker, "nesting batch " + batch_id, settings->jobs.compute_timeout_s);
+    outcome = build_batch(inputs, material->second, cutter->second, settings->paths.machines_dir,
+                          settings->batch.nest_time_s, spool_->batch_dir(batch_id));
+    monitor_.end(worker);
+  }
+  const double took_s = seconds_since(start);
+  std::vector<std::string> kept;
+  for (auto& [id, state] : states) {
+    if (!outcome.error.empty()) {
+      hold_job(*spool_, state, "batch " + batch_id + " could not be made: " + outcome.error);
+    } else if (auto rejected = outcome.rejected.find(id); rejected != outcome.rejected.end()) {
+      fail_job(*spool_, state, rejected->second);
+    } else {
+      kept.push_back(id);
+      update_job_report(*spool_, JobFolder::Work, id, {{"timings_s", {{"nesting_and_cut_file", took_s}}}});
+    }
+  }
+  batch->job_ids = kept;
+  batch->updated_at = utc_now_iso();
+  if (!outcome.error.empty() || kept.empty()) {
+    batch->stage = "empty";
+    batch->reason = outcome.error.empty() ? "no job left in the batch" : outcome.error;
+    spool_->write_batch(*batch);
+    return;
+  }
+  batch->stage = "queued";
+  batch->cut_file = outcome.cut_file;
+  batch->utilisation = outcome.utilisation;
+  batch->piece_count = outcome.piece_count;
+  if (std::string error = spool_->write_batch(*batch); !error.empty()) {
+    spdlog::error("batch {}: state not written: {}", batch_id, error);
+    return;
+  }
+  spdlog::info("batch {}: {} job(s), {} pieces nested on {} (utilisation {:.1f} %) in {:.1f} s; queued for {}",
+               batch_id, kept.size(), batch->piece_count, batch->material, 100.0 * batch->utilisation, took_s,
+               batch->cutter);
+  enqueue_batch(*batch);
+}
+
+}  // namespace lastcut::daemon
