@@ -1,0 +1,42 @@
+#pragma once
+// The parameters of a parametric shoe last and of the simulated scan made of it.
+// Canonical frame: sole down, ground plane z = 0 (the ball tread touches it), +X from heel to
+// toe (heel back at x = 0, toe tip at x = length), +Z up; the medial (big-toe) side is -Y for a
+// left last and +Y for a right last (see engine/core/foot_side.hpp).
+#include <Eigen/Geometry>
+#include <cstdint>
+
+#include "engine/core/foot_side.hpp"
+#include "engine/core/tri_mesh.hpp"
+
+namespace lastcut {
+
+struct LastParams {
+  double length_mm = 270;       // heel back to toe tip
+  double ball_width_mm = 95;    // widest, at the ball (~ 64-72% of length from heel)
+  double heel_width_mm = 62;    // widest at the heel seat (~ 17% of length from heel)
+  double heel_height_mm = 25;   // heel pitch: how far the heel seat is raised above the ground plane
+  double toe_spring_mm = 12;    // how far the toe tip rises above the ground
+  double top_height_mm = 110;   // height of the flat top cut (cone) above the heel seat
+  FootSide side = FootSide::Left;
+  int target_triangles = 50000; // the result has this many (to within 2)
+  double noise_mm = 0.0;        // scanner noise, Gaussian sigma along the vertex normal
+  int holes = 0;                // small scan holes (a few mm across), never on the top cut
+  bool random_pose = false;     // arbitrary rotation + translation of the whole scan
+  uint64_t seed = 1;
+
+  // Plausible proportions for a medium-width everyday last of EU (Paris point) size 35..47:
+  // length = size x 6.667 mm, widths and heights proportional. Throws EngineError outside 35..47.
+  static LastParams for_eu_size(int eu_size, FootSide side);
+};
+
+// Throws EngineError with one readable line when the parameters cannot make a last
+// (non-positive or out-of-proportion sizes, too few or too many triangles, negative noise...).
+void validate(const LastParams& params);
+
+struct GeneratedLast {
+  TriMesh mesh;                       // mm, closed (unless holes), outward-oriented
+  Eigen::Affine3d canonical_to_scan;  // identity unless random_pose
+};
+
+}  // namespace lastcut
