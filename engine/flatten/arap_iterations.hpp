@@ -1,0 +1,36 @@
+#pragma once
+// Local/global iterations of As-Rigid-As-Possible parameterization with a free boundary.
+//
+// L. Liu, L. Zhang, Y. Xu, C. Gotsman, S. J. Gortler, "A Local/Global Approach to Mesh Parameterization",
+// Eurographics Symposium on Geometry Processing (SGP) 2008. Energy, per triangle t and edge (i, j) of t:
+//   E(u, R) = sum_t sum_(i,j) w_ij^t || (u_j - u_i) - R_t (x_j - x_i) ||^2
+// with w the cotangent weights and x the triangle's own isometric 2D frame. Local step: R_t is the
+// closest rotation to the cross-covariance S_t (closest_rotation2x2). Global step: the Laplacian system
+// L u = b, factored once per mesh; each iteration is one back-substitution for u and v together.
+// The energy is translation invariant, so pinning one vertex at its current position gives exactly the
+// unconstrained minimiser: the result does not depend on where the mesh sits or how it is turned in 3D.
+#include <Eigen/Core>
+
+#include "engine/flatten/cotangent_laplacian.hpp"
+#include "engine/flatten/sparse_cholesky.hpp"
+
+namespace lastcut {
+
+struct ArapIterationReport {
+  int iterations = 0;          // global steps taken
+  double energy_start = 0;     // ARAP energy of the start map (mm^2)
+  double energy_final = 0;     // ARAP energy of the result (mm^2)
+  bool converged = false;      // relative energy change fell below the tolerance
+  int shortened_steps = 0;     // global steps shortened so no triangle would flip or collapse
+  bool stalled_on_flips = false;  // stopped because even a 1/1024 step would flip or collapse a triangle
+};
+
+// UV (#V x 2, mm) is the start map on entry and the result on exit. `laplacian` holds the cotangent
+// Laplacian pinned at laplacian.pinned and `factor` its factorization. With flip_guard, a global step that
+// would flip or collapse (UV area < 5% of 3D area) more triangles than before is halved until it does not
+// (the energy still decreases: it is convex in u for fixed rotations), so a flip-free start stays flip-free.
+ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const ReducedLaplacian& laplacian,
+                                        const SparseCholesky& factor, Eigen::MatrixXd& UV, int max_iterations,
+                                        double relative_energy_tolerance, bool flip_guard);
+
+}  // namespace lastcut

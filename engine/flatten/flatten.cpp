@@ -1,0 +1,143 @@
+// The flattening pipeline: checks, start map, ARAP or LSCM, flip check and fallback; see flatten.hpp.
+#include "engine/flatten/flatten.hpp"
+
+#include <chrono>
+
+#include "engine/core/engine_error.hpp"
+#include "engine/flatten/arap_iterations.hpp"
+#include "engine/flatten/cotangent_laplacian.hpp"
+#include "engine/flatten/disk_topology.hpp"
+#include "engine/flatten/lscm.hpp"
+#include "engine/flatten/tutte_embedding.hpp"
+#include "engine/flatten/untangle.hpp"
+
+namespace lastcut {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+void run_arap(const TriMesh& disk, const TriangleFrames& frames, const DiskTopology& topology,
+              const FlattenOptions& options, FlattenResult& result) {
+  auto clock = Clock::now();
+  ReducedLaplacian laplacian = build_reduced_pattern(frames, topology, topology.boundary_loop.front());
+  SparseCholesky factor(options.solver);
+  result.seconds_init += seconds_since(clock);
+
+  clock = Clock::now();
+  factor.analyze_pattern(laplacian.matrix);
+  result.seconds_factorize += seconds_since(clock);
+
+  // Start map: its own factorization (positive weights, boundary fixed) on the shared symbolic analysis.
+  clock = Clock::now();
+  Eigen::MatrixXd UV = tutte_embedding(disk, frames, topology, laplacian, factor);
+  ++result.factorizations;
+  result.seconds_init += seconds_since(clock);
+
+  clock = Clock::now();
+  std::vector<char> fixed(disk.vertex_count(), 0);
+  fixed[laplacian.pinned] = 1;
+  assemble_laplacian(frames, frames.half_weight, fixed, laplacian);
+  factor.factorize(laplacian.matrix);
+  ++result.factorizations;
+  result.seconds_factorize += seconds_since(clock);
+
+  clock = Clock::now();
+  const Eigen::MatrixXd start_map = UV;
+  const ArapIterationReport report = run_arap_iterations(frames, laplacian, factor, UV, options.max_iterations,
+                                                         options.relative_energy_tolerance, options.flip_guard);
+  result.iterations = report.iterations;
+  result.converged = report.converged;
+  result.energy_start = report.energy_start;
+  result.energy_final = report.energy_final;
+  if (report.shortened_steps > 0) {
+    result.notes.push_back(std::to_string(report.shortened_steps) + " ARAP steps shortened so that no triangle flips");
+  }
+  if (!report.converged && !report.stalled_on_flips) {
+    result.notes.push_back("ARAP reached the iteration limit (" + std::to_string(options.max_iterations) +
+                           ") before the energy tolerance");
+  }
+
+  // Repair: ARAP may fold a few triangles where the surface is far from developable. Untangle them
+  // locally, then let flip-guarded ARAP steps relax the neighbourhood without folding anything again.
+  const int flips = count_flipped_triangles(disk.F, UV);
+  if (flips > 0) {
+    const UntangleReport untangled = untangle_flips(frames, topology, UV);
+    if (untangled.flipped_after == 0) {
+      const ArapIterationReport polish = run_arap_iterations(frames, laplacian, factor, UV, 50,
+                                                             0.0, true);
+      result.iterations += polish.iterations;
+      result.energy_final = polish.energy_final;
+      result.notes.push_back(std::to_string(flips) + " flipped triangles repaired: " +
+                             std::to_string(untangled.moved_vertices) + " vertices relaxed within " +
+                             std::to_string(untangled.rings) + " rings, then " + std::to_string(polish.iterations) +
+                             " flip-guarded ARAP iterations");
+    } else {
+      // Fall back to the flip-free start map and flip-guarded ARAP from there.
+      UV = start_map;
+      const ArapIterationReport guarded = run_arap_iterations(frames, laplacian, factor, UV, options.max_iterations,
+                                                              options.relative_energy_tolerance, true);
+      result.iterations += guarded.iterations;
+      result.energy_final = guarded.energy_final;
+      result.converged = guarded.converged;
+      result.notes.push_back(std::to_string(flips) + " flipped triangles could not be repaired locally; fell back to "
+                             "the flip-free start map with flip-guarded ARAP (" +
+                             std::to_string(guarded.iterations) + " iterations, more distortion)");
+    }
+  }
+  result.seconds_iterations += seconds_since(clock);
+  result.UV = std::move(UV);
+}
+
+}  // namespace
+
+FlattenResult flatten(const TriMesh& disk, const FlattenOptions& options) {
+  if (options.max_iterations < 0) throw EngineError("flatten: max_iterations must not be negative");
+  if (!(options.relative_energy_tolerance >= 0.0)) throw EngineError("flatten: energy tolerance must be >= 0");
+  const auto start = Clock::now();
+  FlattenResult result;
+  const DiskTopology topology = check_disk(disk);
+  const TriangleFrames frames = compute_triangle_frames(disk);
+  result.seconds_init = seconds_since(start);
+
+  if (options.method == FlattenMethod::Lscm) {
+    const auto clock = Clock::now();
+    LscmResult conformal = lscm(disk, frames, topology, options.solver);
+    result.factorizations = 1;
+    result.seconds_factorize = conformal.seconds_factorize;
+    result.seconds_init += seconds_since(clock) - conformal.seconds_factorize;
+    result.converged = true;
+    const int flips = count_flipped_triangles(disk.F, conformal.UV);
+    if (flips == 0) {
+      result.UV = std::move(conformal.UV);
+    } else {
+      result.notes.push_back("LSCM flipped " + std::to_string(flips) +
+                             " triangles; fell back to ARAP from a flip-free start");
+      FlattenResult arap;
+      run_arap(disk, frames, topology, options, arap);
+      result.UV = std::move(arap.UV);
+      result.iterations = arap.iterations;
+      result.factorizations += arap.factorizations;
+      result.seconds_init += arap.seconds_init;
+      result.seconds_factorize += arap.seconds_factorize;
+      result.seconds_iterations = arap.seconds_iterations;
+      result.converged = arap.converged;
+      result.notes.insert(result.notes.end(), arap.notes.begin(), arap.notes.end());
+    }
+  } else {
+    run_arap(disk, frames, topology, options, result);
+  }
+
+  result.UV = (result.UV.rowwise() - result.UV.colwise().mean()).eval();
+  result.flipped_triangles = count_flipped_triangles(disk.F, result.UV);
+  if (result.flipped_triangles > 0) {
+    result.notes.push_back(std::to_string(result.flipped_triangles) + " triangles remain flipped in the mold");
+  }
+  result.seconds_total = seconds_since(start);
+  return result;
+}
+
+}  // namespace lastcut

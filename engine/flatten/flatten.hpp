@@ -1,0 +1,53 @@
+#pragma once
+// Flattening a disk-shaped half of a last into a 2D mold with minimal stretch.
+//
+// ARAP (default): L. Liu, L. Zhang, Y. Xu, C. Gotsman, S. J. Gortler, "A Local/Global Approach to Mesh
+// Parameterization", SGP 2008, as used in M. Sabaliauskas' thesis (Vilnius University 2017, sections 2.2-2.4):
+// analytic 2x2 SVD in the local step, the Laplacian factored once by sparse Cholesky for the global step.
+// Start map: a flip-free convex-combination embedding (tutte_embedding.hpp); steps that would flip a
+// triangle are shortened, so the result has no flipped triangle.
+// LSCM: B. Lévy, S. Petitjean, N. Ray, J. Maillot, SIGGRAPH 2002 (lscm.hpp), for comparison.
+//
+// Usage:
+//   lastcut::FlattenResult r = lastcut::flatten(half);          // half: TriMesh in mm, a disk
+//   lastcut::DistortionMeasures d = lastcut::measure_distortion(half, r.UV);
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "engine/core/tri_mesh.hpp"
+#include "engine/flatten/distortion.hpp"
+#include "engine/flatten/sparse_cholesky.hpp"
+#include "engine/flatten/svd2x2.hpp"
+
+namespace lastcut {
+
+enum class FlattenMethod { Arap, Lscm };
+
+struct FlattenOptions {
+  FlattenMethod method = FlattenMethod::Arap;
+  int max_iterations = 200;                  // ARAP local/global iterations at most
+  double relative_energy_tolerance = 1e-6;   // stop when (E_prev - E) <= tol * E_prev
+  SparseSolver solver = SparseSolver::Auto;
+  bool flip_guard = false;
+};
+
+struct FlattenResult {
+  Eigen::MatrixXd UV;              // #V x 2, mm, same vertex order as the input, centred on the vertex mean
+  int iterations = 0;              // ARAP global steps
+  int factorizations = 0;          // numeric sparse Cholesky factorizations (symbolic analysis is shared)
+  double seconds_init = 0;         // checks, frames, pattern, start map (without its factorization)
+  double seconds_factorize = 0;    // symbolic analysis + every numeric factorization
+  double seconds_iterations = 0;   // ARAP local/global iterations
+  double seconds_total = 0;
+  int flipped_triangles = 0;       // after the repair/fallback below
+  bool converged = false;          // ARAP reached the energy tolerance (LSCM: always true)
+  double energy_start = 0, energy_final = 0;  // ARAP energy (mm^2) of the start map and the result
+  std::vector<std::string> notes;  // e.g. "3 steps shortened to avoid flipped triangles", "fell back to ..."
+};
+
+// disk: a connected, manifold, oriented triangle mesh with one boundary loop, in mm.
+// Throws EngineError (one line) if it is not a disk or has zero-area triangles.
+FlattenResult flatten(const TriMesh& disk, const FlattenOptions& options = {});
+
+}  // namespace lastcut

@@ -1,0 +1,39 @@
+#pragma once
+// Test and benchmark meshes for flattening: developable patches with a known development, an OFF reader
+// for the shared reference half, and 1-to-4 midpoint subdivision to make bigger halves.
+#include <Eigen/Core>
+#include <filesystem>
+
+#include "engine/core/tri_mesh.hpp"
+
+namespace lastcut::testing {
+
+// A mesh and its exact development (the isometric flattening of that very polyhedral surface).
+struct DevelopablePatch {
+  TriMesh mesh;                 // mm
+  Eigen::MatrixXd development;  // #V x 2, mm
+};
+
+// Cylinder of radius_mm, `around` x `along` quads over sweep_deg of arc and length_mm, vertices on the
+// cylinder at non-uniform angular and axial spacing (so the triangulation is not a regular grid), quads
+// split along alternating diagonals. Each quad is a planar rectangle, so the mesh is exactly developable:
+// its development lays the chords side by side.
+DevelopablePatch cylinder_patch(double radius_mm, double sweep_deg, double length_mm, int around, int along);
+
+// Truncated cone patch with apex at the origin: rulings at non-uniform angles over sweep_deg, distances
+// from the apex from slant_min_mm to slant_max_mm, alternating diagonals. Each quad lies in the plane of
+// two rulings, so the mesh is exactly developable: rulings become rays at the 3D angles between them.
+DevelopablePatch cone_patch(double half_angle_deg, double sweep_deg, double slant_min_mm, double slant_max_mm,
+                            int around, int along);
+
+// OFF file (vertices scaled by `scale`, e.g. 1000 for metres to mm). Throws EngineError when unreadable.
+TriMesh read_off(const std::filesystem::path& path, double scale);
+
+// 1-to-4 midpoint subdivision (4x triangles, geometry unchanged).
+TriMesh subdivide_midpoint(const TriMesh& mesh);
+
+// Least-squares rigid alignment (rotation + translation, no scaling; Procrustes/Kabsch) of `moving` onto
+// `target` (both #V x 2); returns the largest point distance after alignment (mm).
+double max_distance_after_rigid_alignment(const Eigen::MatrixXd& moving, const Eigen::MatrixXd& target);
+
+}  // namespace lastcut::testing
