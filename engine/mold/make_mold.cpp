@@ -1,0 +1,145 @@
+#include <polyclipping/clipper.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <unordered_map>
+
+#include "engine/core/engine_error.hpp"
+#include "engine/mold/boundary_loops.hpp"
+#include "engine/mold/mold.hpp"
+#include "engine/mold/outline_geometry.hpp"
+#include "engine/mold/outline_simplify.hpp"
+
+namespace lastcut {
+
+namespace {
+
+// Clipper works on integers: 1 unit = 10 nm, far below any cutter's resolution.
+constexpr double kClipperUnitsPerMm = 1e5;
+
+std::string format_point(const Point2& p) {
+  char text[64];
+  std::snprintf(text, sizeof text, "(%.1f, %.1f) mm", p.x(), p.y());
+  return text;
+}
+
+void check_inputs(const std::string& name, const Eigen::MatrixXd& UV, const Eigen::MatrixXi& F,
+                  const MoldOptions& options) {
+  if (!(options.allowance_mm >= 0.0) || !std::isfinite(options.allowance_mm))
+    throw EngineError("allowance must be a finite number of millimetres >= 0");
+  if (!(options.simplify_tolerance_mm >= 0.0) || !std::isfinite(options.simplify_tolerance_mm))
+    throw EngineError("simplification tolerance must be a finite number of millimetres >= 0");
+  if (UV.cols() != 2) throw EngineError("mold " + name + ": flattened positions must have 2 columns");
+  if (F.rows() == 0 || F.cols() != 3) throw EngineError("mold " + name + ": no triangles to make a mold from");
+  if (F.minCoeff() < 0 || F.maxCoeff() >= UV.rows())
+    throw EngineError("mold " + name + ": a triangle refers to a vertex that does not exist");
+  if (!UV.allFinite()) throw EngineError("mold " + name + ": flattened positions contain NaN or infinity");
+}
+
+double loop_length(const Eigen::MatrixXd& UV, const std::vector<int>& loop) {
+  double length = 0.0;
+  for (size_t i = 0; i < loop.size(); ++i)
+    length += (UV.row(loop[(i + 1) % loop.size()]) - UV.row(loop[i])).norm();
+  return length;
+}
+
+Polygon2 offset_outward(const Polygon2& outline, double allowance_mm, double tolerance_mm) {
+  ClipperLib::Path path;
+  path.reserve(outline.points.size());
+  for (const auto& p : outline.points)
+    path.emplace_back(static_cast<ClipperLib::cInt>(std::llround(p.x() * kClipperUnitsPerMm)),
+                      static_cast<ClipperLib::cInt>(std::llround(p.y() * kClipperUnitsPerMm)));
+  // Half the tolerance: Clipper's chords of the round joins then stay well within it.
+  ClipperLib::ClipperOffset offset(2.0, std::max(0.5 * tolerance_mm, 0.001) * kClipperUnitsPerMm);
+  offset.AddPath(path, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+  ClipperLib::Paths solution;
+  offset.Execute(solution, allowance_mm * kClipperUnitsPerMm);
+  // Growing a simple polygon gives one outer ring (and possibly holes where narrow bays close).
+  const ClipperLib::Path* outer = nullptr;
+  double outer_area = 0.0;
+  for (const auto& candidate : solution) {
+    const double area = std::abs(ClipperLib::Area(candidate));
+    if (area > outer_area) outer_area = area, outer = &candidate;
+  }
+  if (outer == nullptr) throw EngineError("allowance offset produced no outline");
+  Polygon2 grown;
+  grown.points.reserve(outer->size());
+  for (const auto& q : *outer)
+    grown.points.emplace_back(static_cast<double>(q.X) / kClipperUnitsPerMm, static_cast<double>(q.Y) / kClipperUnitsPerMm);
+  make_counter_clockwise(grown);
+  return grown;
+}
+
+MoldMark notch_at(const std::string& name, const Polygon2& outline, const Point2& landmark) {
+  const OutlinePoint nearest = closest_outline_point(outline, landmark);
+  const auto& q = outline.points;
+  const int n = static_cast<int>(q.size());
+  Point2 inward = inward_normal(outline, nearest.edge);
+  // At a corner the notch bisects the two edges it joins.
+  constexpr double kAtVertex_mm = 1e-9;
+  if ((nearest.point - q[nearest.edge]).norm() < kAtVertex_mm)
+    inward += inward_normal(outline, (nearest.edge + n - 1) % n);
+  else if ((nearest.point - q[(nearest.edge + 1) % n]).norm() < kAtVertex_mm)
+    inward += inward_normal(outline, (nearest.edge + 1) % n);
+  if (inward.norm() > 0.0) inward.normalize();
+  return {name, nearest.point, inward};
+}
+
+}  // namespace
+
+Mold make_mold(std::string name, const Eigen::MatrixXd& UV, const Eigen::MatrixXi& F,
+               const std::map<std::string, int>& landmark_vertices, const MoldOptions& options) {
+  check_inputs(name, UV, F, options);
+  const auto loops = boundary_loops(F);
+  if (loops.empty()) throw EngineError("mold " + name + ": the patch is closed; it has no outline to cut");
+  const auto longest = std::max_element(loops.begin(), loops.end(), [&](const auto& a, const auto& b) {
+    return loop_length(UV, a) < loop_length(UV, b);
+  });
+
+  // Outline through the loop's vertices; drop exact repeats (zero-length edges).
+  Polygon2 boundary;
+  std::vector<int> boundary_vertex;
+  for (int v : *longest) {
+    const Point2 p = UV.row(v).transpose();
+    if (!boundary.points.empty() && p == boundary.points.back()) continue;
+    boundary.points.push_back(p);
+    boundary_vertex.push_back(v);
+  }
+  while (boundary.points.size() > 1 && boundary.points.front() == boundary.points.back()) {
+    boundary.points.pop_back();
+    boundary_vertex.pop_back();
+  }
+  if (boundary.points.size() < 3 || std::abs(signed_area(boundary)) == 0.0)
+    throw EngineError("mold " + name + ": the flattened outline has no area");
+  if (signed_area(boundary) < 0.0) {
+    std::reverse(boundary.points.begin(), boundary.points.end());
+    std::reverse(boundary_vertex.begin(), boundary_vertex.end());
+  }
+  if (const auto crossing = find_self_intersection(boundary))
+    throw EngineError("mold " + name + ": the flattened outline overlaps itself near " +
+                      format_point(boundary.points[crossing->first]) + "; it cannot be cut as one piece");
+
+  std::unordered_map<int, int> position_in_boundary;
+  for (int i = 0; i < static_cast<int>(boundary_vertex.size()); ++i) position_in_boundary[boundary_vertex[i]] = i;
+  std::vector<int> keep;
+  for (const auto& [landmark, vertex] : landmark_vertices) {
+    if (vertex < 0 || vertex >= UV.rows())
+      throw EngineError("mold " + name + ": landmark " + landmark + " refers to vertex " + std::to_string(vertex) +
+                        " of a patch with " + std::to_string(UV.rows()) + " vertices");
+    if (const auto found = position_in_boundary.find(vertex); found != position_in_boundary.end())
+      keep.push_back(found->second);
+  }
+
+  Mold mold;
+  mold.name = std::move(name);
+  mold.outline = select_points(boundary, simplify_outline(boundary, options.simplify_tolerance_mm, keep));
+  if (options.allowance_mm > 0.0)
+    mold.outline = offset_outward(mold.outline, options.allowance_mm, options.simplify_tolerance_mm);
+  for (const auto& [landmark, vertex] : landmark_vertices)
+    mold.marks.push_back(notch_at(landmark, mold.outline, UV.row(vertex).transpose()));
+  return mold;
+}
+
+}  // namespace lastcut
