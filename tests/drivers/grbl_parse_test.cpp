@@ -1,0 +1,66 @@
+// grbl reply parsing, code tables and program splitting: the pure parts of the grbl driver.
+#include <gtest/gtest.h>
+
+#include "drivers/grbl/grbl_codes.hpp"
+#include "drivers/grbl/grbl_job.hpp"
+#include "drivers/grbl/grbl_replies.hpp"
+
+namespace lastcut::drivers::grbl {
+namespace {
+
+TEST(GrblReplies, ClassifiesEveryKindOfLine) {
+  EXPECT_EQ(classify_reply("ok").kind, ReplyKind::Ok);
+  const Reply error = classify_reply("error:22");
+  EXPECT_EQ(error.kind, ReplyKind::Error);
+  EXPECT_EQ(error.code, 22);
+  const Reply alarm = classify_reply("ALARM:1");
+  EXPECT_EQ(alarm.kind, ReplyKind::Alarm);
+  EXPECT_EQ(alarm.code, 1);
+  const Reply hold = classify_reply("<Hold:0|MPos:1.000,2.000,0.000|Bf:15,128|FS:0,0>");
+  EXPECT_EQ(hold.kind, ReplyKind::Status);
+  EXPECT_EQ(hold.state, "Hold");
+  EXPECT_EQ(hold.substate, 0);
+  const Reply idle = classify_reply("<Idle|MPos:0.000,0.000,0.000|FS:0,0>");
+  EXPECT_EQ(idle.state, "Idle");
+  EXPECT_EQ(idle.substate, -1);
+  EXPECT_EQ(classify_reply("Grbl 1.1h ['$' for help]").kind, ReplyKind::Banner);
+  EXPECT_EQ(classify_reply("GrblHAL 1.1f ['$' or '$HELP' for help]").kind, ReplyKind::Banner);
+  EXPECT_EQ(classify_reply("[MSG:Caution: Unlocked]").kind, ReplyKind::Feedback);
+  EXPECT_EQ(classify_reply("$110=5000.000").kind, ReplyKind::Setting);
+  EXPECT_EQ(classify_reply("").kind, ReplyKind::Empty);
+}
+
+TEST(GrblReplies, ReadsTheReceiveBufferFromTheOptionsLine) {
+  EXPECT_EQ(classify_reply("[OPT:V,15,128]").rx_buffer_bytes, 128);
+  EXPECT_EQ(classify_reply("[OPT:VNMHSL,35,1024,3,0]").rx_buffer_bytes, 1024);  // grblHAL
+  EXPECT_EQ(classify_reply("[OPT:V,15]").rx_buffer_bytes, -1);
+  EXPECT_EQ(classify_reply("[OPT:V,15,abc]").rx_buffer_bytes, -1);
+}
+
+TEST(GrblReplies, RejectsMalformedAndBinaryLines) {
+  EXPECT_EQ(classify_reply("error:").kind, ReplyKind::Garbage);
+  EXPECT_EQ(classify_reply("error:2x").kind, ReplyKind::Garbage);
+  EXPECT_EQ(classify_reply("ALARM:").kind, ReplyKind::Garbage);
+  EXPECT_EQ(classify_reply("okay").kind, ReplyKind::Garbage);
+  EXPECT_EQ(classify_reply("<Dancing|MPos:0,0,0>").kind, ReplyKind::Garbage);
+  EXPECT_EQ(classify_reply(std::string("\xff\xfe\x01ok", 5)).kind, ReplyKind::Garbage);
+}
+
+TEST(GrblCodes, ExplainsErrorsAndAlarms) {
+  EXPECT_NE(error_meaning(22).find("feed rate"), std::string::npos);
+  EXPECT_NE(error_meaning(9).find("alarm"), std::string::npos);
+  EXPECT_NE(alarm_meaning(1).find("Hard limit"), std::string::npos);
+  EXPECT_NE(alarm_meaning(3).find("Reset while in motion"), std::string::npos);
+  EXPECT_EQ(error_meaning(99), "unknown error code 99");
+}
+
+TEST(GrblProgram, KeepsLinesByteExactAndDropsBlankOnes) {
+  const auto lines = program_lines("G21\r\nG90\n\n   \nG1 X1 F100 ; cut\nM2");
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(lines[0], "G21");
+  EXPECT_EQ(lines[2], "G1 X1 F100 ; cut");
+  EXPECT_EQ(lines[3], "M2");
+}
+
+}  // namespace
+}  // namespace lastcut::drivers::grbl

@@ -1,0 +1,47 @@
+#pragma once
+// SimProcess: runs the real `lastcut-sim` binary for a test, waits for its "ready:" line,
+// and stops it with SIGTERM (checking it exits cleanly). TempDir: a fresh folder per test.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace lastcut::drivers::testing {
+
+class TempDir {
+ public:
+  TempDir();
+  ~TempDir();
+  const std::filesystem::path& path() const { return path_; }
+  std::string operator/(const std::string& name) const { return (path_ / name).string(); }
+
+ private:
+  std::filesystem::path path_;
+};
+
+class SimProcess {
+ public:
+  // args: everything after the program name, e.g. {"grbl", "--link", "/tmp/x/grbl"}.
+  explicit SimProcess(std::vector<std::string> args);
+  ~SimProcess();
+  SimProcess(const SimProcess&) = delete;
+  SimProcess& operator=(const SimProcess&) = delete;
+
+  bool ready() const { return ready_; }
+  const std::string& ready_line() const { return ready_line_; }
+  // SIGTERM, wait; returns the exit status (0 = clean), -1 if it had to be killed.
+  int stop();
+
+ private:
+  int pid_ = -1;
+  bool ready_ = false;
+  std::string ready_line_;
+};
+
+std::string sim_binary();
+std::string read_file(const std::filesystem::path& path);
+// A free TCP port on 127.0.0.1 (bound then released).
+int free_loopback_port();
+// Runs a shell command, returns its exit status and captures stdout+stderr in `output`.
+int run_command(const std::string& command, std::string& output);
+
+}  // namespace lastcut::drivers::testing
