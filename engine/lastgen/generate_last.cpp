@@ -1,5 +1,6 @@
 #include "engine/lastgen/generate_last.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -16,10 +17,13 @@ double edge_length_for(double area_mm2, int triangles) {
   return std::sqrt(4.0 * area_mm2 / (std::sqrt(3.0) * triangles));
 }
 
-TriMesh remeshed_surface(const LastShape& shape, int target_triangles) {
+TriMesh remeshed_surface(const LastShape& shape, double shape_length_mm, int target_triangles) {
   const auto [low, high] = shape.bounds_mm();
   SampleGrid grid;
-  grid.spacing_mm = 3.0;  // fine enough for the 4 mm feather fillet; the remesher does the rest
+  // About one target edge per cell (a last's area is ~ 1.06 length^2), so that the remesher starts
+  // near the final density; the remesher, not the grid, resolves the fillets.
+  const double estimated_area_mm2 = 1.06 * shape_length_mm * shape_length_mm;
+  grid.spacing_mm = std::clamp(edge_length_for(estimated_area_mm2, target_triangles), 2.0, 6.0);
   grid.origin_mm = low;
   grid.node_count = ((high - low) / grid.spacing_mm).array().ceil().cast<int>() + 1;
   const TriMesh rough = marching_tetrahedra(grid, [&shape](const Eigen::Vector3d& p) { return shape.value(p); });
@@ -47,7 +51,7 @@ GeneratedLast generate_last(const LastParams& params) {
   validate(params);
   const LastShape shape(params);  // medial side +Y
   GeneratedLast result;
-  result.mesh = remeshed_surface(shape, params.target_triangles);
+  result.mesh = remeshed_surface(shape, params.length_mm, params.target_triangles);
   result.canonical_to_scan = Eigen::Affine3d::Identity();
 
   // Separate streams, so that asking for holes does not move the noise and vice versa.

@@ -52,8 +52,8 @@ LastShape::LastShape(const LastParams& params)
   // The cut passes top_height above the heel seat over the heel (x = 0.2 L).
   cut_z_at_origin_mm_ = params.heel_height_mm + params.top_height_mm - cut_slope_ * 0.2 * L;
   top_line_z_mm_ = make_top_line(params, *this, top_cut_z_mm(0.3 * L));
-  // The sides lean in so that the cut face is ~ 0.6 heel widths across.
-  taper_at_cut_mm_ = 0.2 * params.heel_width_mm;
+  // The sides lean in so that the cut face is ~ 0.6 heel widths across (35-45 mm).
+  taper_at_cut_mm_ = 0.17 * params.heel_width_mm;
   dome_radius_mm_ = MonotoneSpline({0.40 * L, 0.55 * L, 0.75 * L, 0.92 * L, 1.0 * L},
                                    {0.090 * L, 0.075 * L, 0.060 * L, 0.040 * L, 0.032 * L});
 }
