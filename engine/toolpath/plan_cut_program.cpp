@@ -36,8 +36,8 @@ void check_point(const Point2& point, const PlacedPiece& piece, size_t index, co
       point.y() > profile.work_area_y_mm + kWorkAreaTolerance_mm) {
     std::ostringstream message;
     message << describe(piece, index) << " reaches (" << point.x() << ", " << point.y()
-            << ") mm, outside the work area of machine '" << profile.name << "' (0..." << profile.work_area_x_mm
-            << " x 0..." << profile.work_area_y_mm << " mm)";
+            << ") mm, outside the work area of machine '" << profile.name << "' (" << profile.work_area_x_mm << " x "
+            << profile.work_area_y_mm << " mm from the origin)";
     throw EngineError(message.str());
   }
 }
