@@ -1,0 +1,219 @@
+#include "engine/orient/orient_last.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "engine/core/engine_error.hpp"
+#include "engine/orient/principal_axes.hpp"
+
+namespace lastcut {
+namespace {
+
+constexpr int kAngleBins = 360;
+constexpr double kSoleToTopRatio = 1.3;       // how much more flat area the sole has than the top side
+constexpr double kTopCutBandMm = 8.0;         // the top cut lies within this of the highest point
+constexpr double kSmallestTopCutMm2 = 400.0;  // a flat top smaller than this does not set "up"
+
+std::string format_double(double value, int decimals) {
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(decimals);
+  out << value;
+  return out.str();
+}
+
+// Direction around the long axis (angle in the plane of the two short axes) in which the sole
+// faces. Normals are binned by that angle, weighted by area times the squared length of their
+// component across the long axis, so the sole's toe spring and heel pitch (which tilt normals
+// along the long axis only) keep it in one peak. The histogram then has four peaks: the two side
+// walls, about as large as each other and roughly opposite; the sole; and opposite it the much
+// smaller top (top cut and instep). So the sole is the peak that most outweighs the peak facing
+// away from it. Returns the angle (rad) and that ratio.
+std::pair<double, double> sole_direction(const TriMesh& mesh, const Eigen::MatrixXd& normals, const Eigen::VectorXd& areas,
+                                         const Eigen::Vector3d& axis_b, const Eigen::Vector3d& axis_c) {
+  std::array<double, kAngleBins> histogram{};
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    const Eigen::Vector3d n = normals.row(f);
+    const double pb = n.dot(axis_b), pc = n.dot(axis_c);
+    const double across_squared = pb * pb + pc * pc;
+    if (across_squared < 1e-12) continue;
+    double angle_deg = std::atan2(pc, pb) * 180.0 / std::numbers::pi;
+    if (angle_deg < 0.0) angle_deg += 360.0;
+    histogram[static_cast<std::size_t>(angle_deg) % kAngleBins] += areas(f) * across_squared;
+  }
+  auto at = [](const std::array<double, kAngleBins>& values, int bin) {
+    return values[static_cast<std::size_t>(((bin % kAngleBins) + kAngleBins) % kAngleBins)];
+  };
+  constexpr int kHalfWindowDeg = 10, kPeakSeparationDeg = 20, kOppositeToleranceDeg = 35;
+  std::array<double, kAngleBins> smoothed{};
+  for (int bin = 0; bin < kAngleBins; ++bin)
+    for (int k = -kHalfWindowDeg; k <= kHalfWindowDeg; ++k) smoothed[static_cast<std::size_t>(bin)] += at(histogram, bin + k);
+  const double highest = *std::max_element(smoothed.begin(), smoothed.end());
+  std::vector<int> peaks;
+  for (int bin = 0; bin < kAngleBins; ++bin) {
+    bool is_peak = at(smoothed, bin) >= 0.05 * highest;
+    for (int k = 1; k <= kPeakSeparationDeg && is_peak; ++k)
+      is_peak = at(smoothed, bin) > at(smoothed, bin - k) && at(smoothed, bin) >= at(smoothed, bin + k);
+    if (is_peak) peaks.push_back(bin);
+  }
+  int best = 0;
+  double best_ratio = 0.0;
+  for (int peak : peaks) {
+    if (at(smoothed, peak) < 0.3 * highest) continue;  // the sole is one of the big flat sets
+    double opposite = at(smoothed, peak + kAngleBins / 2);
+    for (int other : peaks) {
+      const int separation = std::abs(other - peak);
+      if (std::abs(std::min(separation, kAngleBins - separation) - kAngleBins / 2) <= kOppositeToleranceDeg)
+        opposite = std::max(opposite, at(smoothed, other));
+    }
+    const double ratio = at(smoothed, peak) / std::max(opposite, 1e-12 * highest);
+    if (ratio > best_ratio) { best_ratio = ratio; best = peak; }
+  }
+  return {(best + 0.5) * std::numbers::pi / 180.0, best_ratio};
+}
+
+// Area-weighted sum of the normals within cone_deg of axis (restricted to faces with
+// only[f] != 0 when `only` is not empty). Its length is about the area of those faces (mm^2).
+Eigen::Vector3d mean_normal_in_cone(const Eigen::MatrixXd& normals, const Eigen::VectorXd& areas, const Eigen::Vector3d& axis,
+                                    double cone_deg, const std::vector<char>& only) {
+  const double cone_cos = std::cos(cone_deg * std::numbers::pi / 180.0);
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (Eigen::Index f = 0; f < normals.rows(); ++f) {
+    if (!only.empty() && !only[static_cast<std::size_t>(f)]) continue;
+    const Eigen::Vector3d n = normals.row(f);
+    if (n.dot(axis) > cone_cos) sum += areas(f) * n;
+  }
+  return sum;
+}
+
+struct EndHeights {
+  double at_min_end_mm;
+  double at_max_end_mm;
+};
+
+// Height above the lowest point of the tallest vertex in the first and last 15 % of the length.
+EndHeights end_heights(const Eigen::MatrixXd& along, const Eigen::VectorXd& up) {
+  const double min_s = along.minCoeff(), max_s = along.maxCoeff(), length = max_s - min_s;
+  const double floor = up.minCoeff();
+  EndHeights heights{0.0, 0.0};
+  for (Eigen::Index v = 0; v < along.rows(); ++v) {
+    if (along(v) < min_s + 0.15 * length) heights.at_min_end_mm = std::max(heights.at_min_end_mm, up(v) - floor);
+    if (along(v) > max_s - 0.15 * length) heights.at_max_end_mm = std::max(heights.at_max_end_mm, up(v) - floor);
+  }
+  return heights;
+}
+
+// Area-weighted mean Y of the faces whose centroid lies in [x_from, x_to] (canonical frame).
+double mean_y_between(const TriMesh& mesh, const Eigen::VectorXd& areas, double x_from, double x_to) {
+  double weight = 0.0, sum = 0.0;
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    const Eigen::Vector3d g = (mesh.V.row(mesh.F(f, 0)) + mesh.V.row(mesh.F(f, 1)) + mesh.V.row(mesh.F(f, 2))) / 3.0;
+    if (g.x() < x_from || g.x() > x_to) continue;
+    weight += areas(f);
+    sum += areas(f) * g.y();
+  }
+  return weight > 0.0 ? sum / weight : 0.0;
+}
+
+}  // namespace
+
+OrientedLast orient_last(const TriMesh& scan) {
+  if (scan.F.rows() < 100 || scan.V.rows() < 50)
+    throw EngineError("the scan has only " + std::to_string(scan.F.rows()) + " triangles: too coarse to be a last");
+  const PrincipalAxes principal = principal_axes(scan);
+  if (principal.spread(0) < 1.3 * principal.spread(1))
+    throw EngineError("the scan has no clear long axis (length spread " + format_double(principal.spread(0), 1) +
+                      " mm vs " + format_double(principal.spread(1), 1) + " mm): not a last");
+  OrientedLast result;
+  const Eigen::MatrixXd normals = triangle_normals(scan);
+  const Eigen::VectorXd areas = triangle_areas(scan);
+
+  // Which way is up: the sole is the largest near-flat face set, and it faces down.
+  const Eigen::Vector3d long_axis = principal.axes.col(0);
+  const auto [sole_angle, sole_ratio] =
+      sole_direction(scan, normals, areas, principal.axes.col(1), principal.axes.col(2));
+  const Eigen::Vector3d rough_down =
+      std::cos(sole_angle) * principal.axes.col(1) + std::sin(sole_angle) * principal.axes.col(2);
+  if (sole_ratio < kSoleToTopRatio)
+    throw EngineError("cannot tell the sole from the top: the largest flat side is only " + format_double(sole_ratio, 2) +
+                      "x the side opposite it");
+  result.notes.push_back("sole: the flat side " + format_double(sole_ratio, 1) + "x larger than the side opposite it");
+
+  // Refine up. The sole is curved (heel pitch, toe spring), so its mean normal leans towards the
+  // toe; the top cut is a plane nearly level in the wearing position, so when it is found its
+  // normal is the better "up".
+  const Eigen::Vector3d sole_up = -mean_normal_in_cone(normals, areas, rough_down, 30.0, {}).normalized();
+  Eigen::VectorXd face_height(scan.F.rows());
+  for (Eigen::Index f = 0; f < scan.F.rows(); ++f)
+    face_height(f) = (scan.V.row(scan.F(f, 0)) + scan.V.row(scan.F(f, 1)) + scan.V.row(scan.F(f, 2))).dot(sole_up) / 3.0;
+  std::vector<char> near_top(static_cast<std::size_t>(scan.F.rows()));
+  const double highest = face_height.maxCoeff();
+  for (Eigen::Index f = 0; f < scan.F.rows(); ++f)
+    near_top[static_cast<std::size_t>(f)] = face_height(f) > highest - kTopCutBandMm;
+  Eigen::Vector3d up = sole_up;
+  double top_area = 0.0;
+  for (int round = 0; round < 2; ++round) {
+    const Eigen::Vector3d top_sum = mean_normal_in_cone(normals, areas, up, 20.0, near_top);
+    top_area = top_sum.norm();
+    if (top_area < kSmallestTopCutMm2) break;
+    up = top_sum.normalized();
+  }
+  if (up == sole_up)
+    result.notes.push_back("up: mean sole normal (no flat top cut of " + format_double(kSmallestTopCutMm2, 0) + " mm^2 found)");
+  else
+    result.notes.push_back("up: normal of the top cut (" + format_double(top_area, 0) + " mm^2), " +
+                           format_double(std::acos(std::clamp(up.dot(sole_up), -1.0, 1.0)) * 180.0 / std::numbers::pi, 1) +
+                           " deg from the mean sole normal");
+  Eigen::Vector3d toe_axis = (long_axis - long_axis.dot(up) * up).normalized();
+
+  // Toe or heel: the heel end of a last is much taller than the toe end.
+  Eigen::VectorXd along(scan.V.rows()), height(scan.V.rows());
+  for (Eigen::Index v = 0; v < scan.V.rows(); ++v) {
+    const Eigen::Vector3d p = Eigen::Vector3d(scan.V.row(v)) - principal.centroid;
+    along(v) = p.dot(toe_axis);
+    height(v) = p.dot(up);
+  }
+  const EndHeights heights = end_heights(along, height);
+  const double taller = std::max(heights.at_min_end_mm, heights.at_max_end_mm);
+  const double shorter = std::min(heights.at_min_end_mm, heights.at_max_end_mm);
+  if (taller < 1.15 * shorter)
+    throw EngineError("cannot tell toe from heel: both ends are about as tall (" + format_double(heights.at_min_end_mm, 0) +
+                      " mm and " + format_double(heights.at_max_end_mm, 0) + " mm)");
+  if (heights.at_max_end_mm > heights.at_min_end_mm) toe_axis = -toe_axis;
+  result.notes.push_back("heel: the end " + format_double(taller, 0) + " mm tall; toe: the end " +
+                         format_double(shorter, 0) + " mm tall");
+
+  Eigen::Matrix3d rotation;
+  rotation.row(0) = toe_axis.transpose();
+  rotation.row(1) = up.cross(toe_axis).transpose();
+  rotation.row(2) = up.transpose();
+  Eigen::MatrixXd canonical = (scan.V.rowwise() - principal.centroid.transpose()) * rotation.transpose();
+  const Eigen::RowVector3d shift(-canonical.col(0).minCoeff(), 0.0, -canonical.col(2).minCoeff());
+  canonical.rowwise() += shift;
+  result.mesh.V = canonical;
+  result.mesh.F = scan.F;
+
+  // Centre the heel on y = 0, then the toe tip leans towards the medial side.
+  const double length = canonical.col(0).maxCoeff();
+  const double heel_y = mean_y_between(result.mesh, areas, 0.0, 0.2 * length);
+  result.mesh.V.col(1).array() -= heel_y;
+  const double toe_y = mean_y_between(result.mesh, areas, 0.85 * length, length);
+  const double toe_offset_mm = toe_y;
+  if (std::abs(toe_offset_mm) < 0.005 * length)
+    throw EngineError("cannot tell left from right: the toe is centred on the heel (offset " +
+                      format_double(toe_offset_mm, 1) + " mm)");
+  result.side = toe_offset_mm < 0.0 ? FootSide::Left : FootSide::Right;
+  result.notes.push_back(std::string("side: ") + std::string(to_string(result.side)) + ", toe leans " +
+                         format_double(std::abs(toe_offset_mm), 1) + " mm to " + (toe_offset_mm < 0.0 ? "-Y" : "+Y"));
+
+  result.scan_to_canonical = Eigen::Affine3d::Identity();
+  result.scan_to_canonical.linear() = rotation;
+  result.scan_to_canonical.translation() =
+      -rotation * principal.centroid + Eigen::Vector3d(shift(0), -heel_y, shift(2));
+  return result;
+}
+
+}  // namespace lastcut

@@ -1,0 +1,74 @@
+#include "engine/segment/region_contour.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <queue>
+
+#include "engine/core/engine_error.hpp"
+
+namespace lastcut {
+
+std::vector<int> region_boundary_loop(const TriMesh& mesh, const MeshGraph& graph, const std::vector<char>& region) {
+  // Contour graph: edges of region faces whose other face is outside the region (or missing).
+  std::map<int, std::vector<int>> contour;
+  int cut_from = -1, cut_to = -1;
+  double cut_x = std::numeric_limits<double>::infinity();
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    if (!region[static_cast<std::size_t>(f)]) continue;
+    for (int k = 0; k < 3; ++k) {
+      const int g = graph.face_neighbors(f, k);
+      if (g >= 0 && region[static_cast<std::size_t>(g)]) continue;
+      const int a = mesh.F(f, k), b = mesh.F(f, (k + 1) % 3);
+      contour[a].push_back(b);
+      contour[b].push_back(a);
+      const double x = 0.5 * (mesh.V(a, 0) + mesh.V(b, 0));
+      if (x < cut_x) { cut_x = x; cut_from = a; cut_to = b; }
+    }
+  }
+  if (cut_from < 0) throw EngineError("a surface region has no boundary: the mesh is not a closed last");
+
+  // Dijkstra from cut_from to cut_to without the edge between them.
+  std::map<int, double> distance;
+  std::map<int, int> previous;
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+  distance[cut_from] = 0.0;
+  queue.emplace(0.0, cut_from);
+  while (!queue.empty()) {
+    const auto [d, u] = queue.top();
+    queue.pop();
+    if (d > distance[u]) continue;
+    if (u == cut_to) break;
+    for (int w : contour[u]) {
+      if ((u == cut_from && w == cut_to) || (u == cut_to && w == cut_from)) continue;
+      const double candidate = d + (mesh.V.row(u) - mesh.V.row(w)).norm();
+      auto it = distance.find(w);
+      if (it == distance.end() || candidate < it->second) {
+        distance[w] = candidate;
+        previous[w] = u;
+        queue.emplace(candidate, w);
+      }
+    }
+  }
+  if (!previous.contains(cut_to)) throw EngineError("the contour around a surface region is not closed");
+  std::vector<int> loop;
+  for (int v = cut_to; v != cut_from; v = previous[v]) loop.push_back(v);
+  loop.push_back(cut_from);
+  std::reverse(loop.begin(), loop.end());
+  return loop;
+}
+
+std::vector<Eigen::Vector3d> smooth_closed_polyline(std::vector<Eigen::Vector3d> points, int passes) {
+  const std::size_t n = points.size();
+  if (n < 3) return points;
+  std::vector<Eigen::Vector3d> next(n);
+  for (int pass = 0; pass < passes; ++pass) {
+    for (std::size_t i = 0; i < n; ++i)
+      next[i] = 0.5 * points[i] + 0.25 * (points[(i + n - 1) % n] + points[(i + 1) % n]);
+    points.swap(next);
+  }
+  return points;
+}
+
+}  // namespace lastcut

@@ -1,0 +1,130 @@
+#include "engine/segment/segment_halves.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "engine/core/engine_error.hpp"
+#include "engine/segment/surface_regions.hpp"
+
+namespace lastcut {
+namespace {
+
+std::uint64_t directed_key(int from, int to) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(from)) << 32) | static_cast<std::uint32_t>(to);
+}
+
+struct BoundaryShape {
+  int loops = 0;
+  bool pinched = false;
+  std::vector<int> vertices;  // every boundary vertex
+};
+
+BoundaryShape boundary_shape(const Eigen::MatrixXi& F) {
+  std::unordered_set<std::uint64_t> half_edges;
+  half_edges.reserve(static_cast<std::size_t>(F.rows()) * 3);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) half_edges.insert(directed_key(F(f, k), F(f, (k + 1) % 3)));
+  std::unordered_map<int, int> next;
+  BoundaryShape shape;
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = F(f, k), b = F(f, (k + 1) % 3);
+      if (half_edges.contains(directed_key(b, a))) continue;
+      if (!next.emplace(a, b).second) shape.pinched = true;
+      shape.vertices.push_back(a);
+    }
+  std::sort(shape.vertices.begin(), shape.vertices.end());
+  std::unordered_set<int> visited;
+  for (int start : shape.vertices) {
+    if (visited.contains(start)) continue;
+    ++shape.loops;
+    for (int v = start; !visited.contains(v);) {
+      visited.insert(v);
+      auto it = next.find(v);
+      if (it == next.end()) { shape.pinched = true; break; }
+      v = it->second;
+    }
+  }
+  return shape;
+}
+
+long long euler_characteristic(const TriMesh& mesh) {
+  std::unordered_set<std::uint64_t> edges;
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.F(f, k), b = mesh.F(f, (k + 1) % 3);
+      edges.insert(directed_key(std::min(a, b), std::max(a, b)));
+    }
+  return static_cast<long long>(mesh.V.rows()) - static_cast<long long>(edges.size()) + static_cast<long long>(mesh.F.rows());
+}
+
+}  // namespace
+
+Segment extract_half(const TriMesh& cut, const MeshGraph& graph, const std::vector<int>& labels, int label,
+                     const Eigen::MatrixXd& fields, const std::string& name) {
+  const Eigen::VectorXd areas = triangle_areas(cut);
+  std::vector<char> in_half(labels.size());
+  for (std::size_t f = 0; f < labels.size(); ++f) in_half[f] = labels[f] == label;
+  int count = 0;
+  const std::vector<int> component = face_components(graph, in_half, count);
+  if (count == 0) throw EngineError("the " + name + " half is empty: the split plane misses the last");
+  const std::vector<double> sums = component_areas(component, count, areas);
+  const int keep = static_cast<int>(std::max_element(sums.begin(), sums.end()) - sums.begin());
+  for (std::size_t f = 0; f < labels.size(); ++f) in_half[f] = component[f] == keep;
+  fill_region_gaps(graph, areas, in_half);
+
+  Segment segment;
+  segment.name = name;
+  std::vector<int> new_index(static_cast<std::size_t>(cut.V.rows()), -1);
+  std::vector<int> old_index;
+  int face_total = 0;
+  for (std::size_t f = 0; f < in_half.size(); ++f) face_total += in_half[f] ? 1 : 0;
+  segment.mesh.F.resize(face_total, 3);
+  int row = 0;
+  for (std::size_t f = 0; f < in_half.size(); ++f) {
+    if (!in_half[f]) continue;
+    for (int k = 0; k < 3; ++k) {
+      int& index = new_index[static_cast<std::size_t>(cut.F(static_cast<Eigen::Index>(f), k))];
+      if (index < 0) {
+        index = static_cast<int>(old_index.size());
+        old_index.push_back(cut.F(static_cast<Eigen::Index>(f), k));
+      }
+      segment.mesh.F(row, k) = index;
+    }
+    ++row;
+  }
+  segment.mesh.V.resize(static_cast<Eigen::Index>(old_index.size()), 3);
+  for (std::size_t v = 0; v < old_index.size(); ++v) segment.mesh.V.row(static_cast<Eigen::Index>(v)) = cut.V.row(old_index[v]);
+
+  const BoundaryShape shape = boundary_shape(segment.mesh.F);
+  const long long euler = euler_characteristic(segment.mesh);
+  if (shape.loops != 1 || shape.pinched || euler != 1)
+    throw EngineError("the " + name + " half is not a single sheet (" + std::to_string(shape.loops) +
+                      " boundary loops, Euler characteristic " + std::to_string(euler) +
+                      "): the scan has a hole or a fold on that side");
+
+  // Corners: boundary vertices lying on the plane cut and on the feather line or the top rim.
+  constexpr double kOnPlaneMm = 1e-6, kOnContour = 1e-9;
+  auto corner_pair = [&](int contour_field, const char* front_name, const char* back_name) {
+    int front = -1, back = -1;
+    for (int v : shape.vertices) {
+      const int old = old_index[static_cast<std::size_t>(v)];
+      if (std::abs(fields(old, kPlaneField)) > kOnPlaneMm || std::abs(fields(old, contour_field)) > kOnContour) continue;
+      if (front < 0 || segment.mesh.V(v, 0) > segment.mesh.V(front, 0)) front = v;
+      if (back < 0 || segment.mesh.V(v, 0) < segment.mesh.V(back, 0)) back = v;
+    }
+    if (front < 0 || front == back)
+      throw EngineError("the centre cut of the " + name + " half does not reach the " +
+                        (contour_field == kSoleField ? "feather line" : "top rim") + " at both ends");
+    segment.landmarks[front_name] = front;
+    segment.landmarks[back_name] = back;
+  };
+  corner_pair(kSoleField, "toe", "heel");
+  corner_pair(kTopField, "top_front", "top_back");
+  return segment;
+}
+
+}  // namespace lastcut

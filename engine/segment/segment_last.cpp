@@ -1,0 +1,137 @@
+#include "engine/segment/segment_last.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "engine/core/engine_error.hpp"
+#include "engine/mesh/fill_holes.hpp"
+#include "engine/segment/level_set_cut.hpp"
+#include "engine/segment/mesh_graph.hpp"
+#include "engine/segment/region_contour.hpp"
+#include "engine/segment/segment_halves.hpp"
+#include "engine/segment/split_plane.hpp"
+#include "engine/segment/surface_regions.hpp"
+
+namespace lastcut {
+namespace {
+
+constexpr int kNormalSmoothingPasses = 3;  // rings over which normals are averaged before classifying
+constexpr double kSnapFraction = 0.1;      // crossings within 10 % of an edge end snap to the vertex
+
+std::string fixed(double value, int decimals) {
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(decimals);
+  out << value;
+  return out.str();
+}
+
+double region_area(const std::vector<char>& region, const Eigen::VectorXd& areas) {
+  double sum = 0.0;
+  for (std::size_t f = 0; f < region.size(); ++f)
+    if (region[f]) sum += areas(static_cast<Eigen::Index>(f));
+  return sum;
+}
+
+// The region's indicator (share of each vertex's surrounding area inside the region) after the
+// moving average of eq. 22 on the mesh graph, minus 1/2: its zero level set is the region
+// boundary smoothed at the scale of a few edges, lying exactly on the surface.
+Eigen::VectorXd smoothed_indicator(const TriMesh& mesh, const MeshGraph& graph, const std::vector<char>& region,
+                                   const Eigen::VectorXd& areas, int passes) {
+  const Eigen::Index vertex_count = mesh.V.rows();
+  Eigen::VectorXd inside = Eigen::VectorXd::Zero(vertex_count), total = Eigen::VectorXd::Zero(vertex_count);
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      total(mesh.F(f, k)) += areas(f);
+      if (region[static_cast<std::size_t>(f)]) inside(mesh.F(f, k)) += areas(f);
+    }
+  Eigen::VectorXd value = (total.array() > 0.0).select(inside.array() / total.array(), 0.0);
+  Eigen::VectorXd next(vertex_count);
+  for (int pass = 0; pass < passes; ++pass) {
+    for (Eigen::Index v = 0; v < vertex_count; ++v) {
+      const int begin = graph.neighbor_offsets[static_cast<std::size_t>(v)];
+      const int end = graph.neighbor_offsets[static_cast<std::size_t>(v) + 1];
+      double sum = 0.0;
+      for (int i = begin; i < end; ++i) sum += value(graph.neighbors[static_cast<std::size_t>(i)]);
+      next(v) = end > begin ? 0.5 * value(v) + 0.5 * sum / (end - begin) : value(v);
+    }
+    value.swap(next);
+  }
+  return value.array() - 0.5;
+}
+
+std::vector<Eigen::Vector3d> loop_points(const TriMesh& mesh, const std::vector<int>& loop) {
+  std::vector<Eigen::Vector3d> points;
+  points.reserve(loop.size());
+  for (int v : loop) points.emplace_back(mesh.V.row(v).transpose());
+  return points;
+}
+
+}  // namespace
+
+Segmentation segment_last(const OrientedLast& last, const SegmentOptions& options) {
+  if (!(options.sole_angle_rad < 0.0 && options.top_angle_rad > 0.0))
+    throw EngineError("segmentation angles must be negative for the sole and positive for the top");
+  if (options.smoothing_passes < 0) throw EngineError("segmentation smoothing passes must not be negative");
+  Segmentation result;
+  TriMesh mesh = last.mesh;
+  const int filled = fill_holes(mesh, options.max_hole_fill_diameter_mm);
+  if (filled > 0)
+    result.notes.push_back("closed " + std::to_string(filled) + " scan hole(s) up to " +
+                           fixed(options.max_hole_fill_diameter_mm, 0) + " mm across");
+
+  // Step 2: sole and top regions, and their contours (Dijkstra, then eq. 22).
+  const MeshGraph graph = build_mesh_graph(mesh);
+  const Eigen::VectorXd areas = triangle_areas(mesh);
+  const Eigen::VectorXd elevation = smoothed_elevation_rad(mesh, graph, kNormalSmoothingPasses);
+  const std::vector<char> sole = sole_region(graph, elevation, areas, options.sole_angle_rad);
+  const std::vector<char> top = top_region(mesh, graph, elevation, areas, options.top_angle_rad);
+  for (std::size_t f = 0; f < sole.size(); ++f)
+    if (sole[f] && top[f]) throw EngineError("the sole and the top cut touch: the last is not standing upright");
+  const double total_area = areas.sum();
+  result.notes.push_back("sole " + fixed(100.0 * region_area(sole, areas) / total_area, 1) + " % of the surface, top cut " +
+                         fixed(100.0 * region_area(top, areas) / total_area, 1) + " %");
+  const std::vector<Eigen::Vector3d> lower = smooth_closed_polyline(
+      loop_points(mesh, region_boundary_loop(mesh, graph, sole)), options.smoothing_passes);
+  const std::vector<Eigen::Vector3d> upper = smooth_closed_polyline(
+      loop_points(mesh, region_boundary_loop(mesh, graph, top)), options.smoothing_passes);
+
+  // Step 3: the split plane.
+  const SplitPlane plane = split_plane(lower, upper, options.plane_t, last.side);
+  result.notes.push_back("split plane normal (" + fixed(plane.normal.x(), 3) + ", " + fixed(plane.normal.y(), 3) + ", " +
+                         fixed(plane.normal.z(), 3) + ") through the top centre (" + fixed(plane.T1.x(), 1) + ", " +
+                         fixed(plane.T1.y(), 1) + ", " + fixed(plane.T1.z(), 1) + ") mm");
+
+  // Steps 4-5: cut along the smoothed feather line, the smoothed top rim and the plane.
+  Eigen::MatrixXd fields(mesh.V.rows(), 3);
+  fields.col(kSoleField) = smoothed_indicator(mesh, graph, sole, areas, options.smoothing_passes);
+  fields.col(kTopField) = smoothed_indicator(mesh, graph, top, areas, options.smoothing_passes);
+  fields.col(kPlaneField) = (mesh.V * plane.normal).array() + plane.offset;
+  for (int column : {kSoleField, kTopField, kPlaneField}) cut_along_zero_level(mesh, fields, column, kSnapFraction);
+
+  enum Label : int { kSole = 0, kTop = 1, kMedial = 2, kLateral = 3 };
+  std::vector<int> labels(static_cast<std::size_t>(mesh.F.rows()));
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    const Eigen::Vector3d mean = (fields.row(mesh.F(f, 0)) + fields.row(mesh.F(f, 1)) + fields.row(mesh.F(f, 2))).transpose() / 3.0;
+    labels[static_cast<std::size_t>(f)] = mean(kSoleField) > 0.0 ? kSole
+                                          : mean(kTopField) > 0.0 ? kTop
+                                          : mean(kPlaneField) > 0.0 ? kMedial
+                                                                     : kLateral;
+  }
+  const MeshGraph cut_graph = build_mesh_graph(mesh);
+  result.medial = extract_half(mesh, cut_graph, labels, kMedial, fields, "medial");
+  result.lateral = extract_half(mesh, cut_graph, labels, kLateral, fields, "lateral");
+
+  // The curves the halves were cut along, for previews.
+  for (auto [label, contour] : {std::pair{kSole, &result.lower_contour}, std::pair{kTop, &result.upper_contour}}) {
+    std::vector<char> region(labels.size());
+    for (std::size_t f = 0; f < labels.size(); ++f) region[f] = labels[f] == label;
+    *contour = loop_points(mesh, region_boundary_loop(mesh, cut_graph, region));
+  }
+  const double medial_area = surface_area(result.medial.mesh), lateral_area = surface_area(result.lateral.mesh);
+  result.notes.push_back("medial half " + fixed(medial_area / 100.0, 0) + " cm^2, lateral half " +
+                         fixed(lateral_area / 100.0, 0) + " cm^2");
+  return result;
+}
+
+}  // namespace lastcut

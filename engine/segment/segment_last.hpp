@@ -1,0 +1,50 @@
+#pragma once
+// Segmentation of an oriented last into its medial and lateral halves, the surfaces the molds are
+// flattened from (thesis steps 2-5, Sabaliauskas 2017, "Computerized modeling technology of unique
+// footwear surface manufacturing design", section 3.1).
+//  1. small scan holes are closed (engine/mesh/fill_holes.hpp);
+//  2. faces are classified by normal elevation into sole, sides and top, and the sole and the flat
+//     top cut become one connected region each (surface_regions.hpp);
+//  3. their boundaries, found with Dijkstra (region_contour.hpp) and smoothed by eq. 22, place the
+//     split plane through T1, T2, T3 (split_plane.hpp);
+//  4. the mesh is cut along three smooth curves: the feather line and the top rim (the 1/2 level
+//     sets of the sole and top indicator functions after the eq. 22 moving average on the mesh
+//     graph) and the plane (level_set_cut.hpp), so mold edges are smooth curves, not staircases;
+//  5. the faces between the curves on either side of the plane form the two halves, each checked
+//     to be a topological disk (segment_halves.hpp).
+#include <map>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "engine/core/tri_mesh.hpp"
+#include "engine/orient/orient_last.hpp"
+
+namespace lastcut {
+
+struct SegmentOptions {
+  double sole_angle_rad = -std::numbers::pi / 4;  // faces at or below this elevation are sole (eq. 7)
+  double top_angle_rad = std::numbers::pi / 4;    // faces at or above this elevation may be top (eq. 9)
+  double plane_t = 1.0 / 3.0;                     // where the toe and heel parts of the sole contour end (eqs. 14-15)
+  int smoothing_passes = 10;                      // eq. 22 moving-average passes on the contours
+  double max_hole_fill_diameter_mm = 15;          // larger scan holes are not closed
+};
+
+struct Segment {
+  std::string name;                     // "medial" or "lateral"
+  TriMesh mesh;                         // topological disk, canonical frame, mm
+  std::map<std::string, int> landmarks; // boundary vertex indices: "toe", "heel", "top_front", "top_back"
+};
+
+struct Segmentation {
+  Segment medial, lateral;
+  std::vector<std::string> notes;
+  std::vector<Eigen::Vector3d> lower_contour;  // the smoothed feather line the halves were cut along, closed loop, mm
+  std::vector<Eigen::Vector3d> upper_contour;  // the smoothed rim of the top cut, closed loop, mm
+};
+
+// last: an oriented last (engine/orient/orient_last.hpp). Deterministic.
+// Throws EngineError when a step fails (no sole, no top cut, a half that is not one sheet).
+Segmentation segment_last(const OrientedLast& last, const SegmentOptions& options = {});
+
+}  // namespace lastcut
