@@ -13,7 +13,8 @@ namespace lastcut::drivers::hpgl {
 namespace {
 
 constexpr char kXon = 0x11, kXoff = 0x13;
-constexpr size_t kChunkBytes = 64;
+constexpr size_t kChunkBytes = 16;
+constexpr double kNoProgressFactor = 10;  // x timeout_s: longest a full buffer (or XOFF) may last
 
 double now_s() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
@@ -146,34 +147,44 @@ SendResult HpglJob::run(const std::string& program) {
     if (!query_number('E', stale, error)) return finish(SendOutcome::Failed, error);
     if (stale != 0) log_.push_back("cleared a previous device error " + std::to_string(stale) + ": " + device_error_meaning(stale));
   }
-  const double start_s = now_s();
+  double wire_free_at_s = now_s();  // when the bytes written so far will have left on the wire
   const int baud = link_.wire_baud();
-  double next_error_check_s = now_s() + 1.0, last_report_s = 0;
+  double next_error_check_s = now_s() + 1.0, last_report_s = 0, last_accepted_s = now_s();
   while (sent_ < total_) {
     if (cancel_.load()) return stop("cancelled by the operator");
     if (IoStatus r = reader_.pump(0); !r.ok) return stop("link lost: " + r.error);
     if (xonxoff && reader_.paused()) {
-      if (reader_.paused_for_s() > config_.timeout_s) {
-        return stop("cutter held XOFF for more than " + std::to_string(static_cast<int>(config_.timeout_s)) + " s");
+      // XOFF while a long path is cut is normal; for many times the silence timeout it is a stall.
+      if (reader_.paused_for_s() > kNoProgressFactor * config_.timeout_s) {
+        return stop("cutter held XOFF for more than " + std::to_string(static_cast<int>(kNoProgressFactor * config_.timeout_s)) + " s");
       }
       if (IoStatus r = reader_.pump(0.01); !r.ok) return stop("link lost: " + r.error);
       continue;
+    }
+    if (queries && now_s() >= next_error_check_s) {
+      if (!check_device_error(error)) return stop(error);
+      next_error_check_s = now_s() + 1.0;
     }
     size_t chunk = std::min(kChunkBytes, total_ - sent_);
     if (escb) {
       int free_bytes = 0;
       if (!query_number('B', free_bytes, error)) return stop(error);
       if (free_bytes <= 0) {
+        // A full buffer is normal while a long path is cut, but not for ever.
+        if (now_s() - last_accepted_s > kNoProgressFactor * config_.timeout_s) {
+          return stop("cutter accepted no data for " + std::to_string(static_cast<int>(kNoProgressFactor * config_.timeout_s)) + " s");
+        }
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
         continue;
       }
+      last_accepted_s = now_s();
       chunk = std::min(static_cast<size_t>(free_bytes), total_ - sent_);
     }
-    // A pty or a USB adapter takes bytes faster than the wire carries them; stay at most one
-    // chunk ahead of the wire so an XOFF is honoured within a chunk, as a UART would.
+    // A pty or a USB adapter takes bytes faster than the wire carries them. Model the wire
+    // (10 bits per byte) and stay at most one chunk ahead of it, so that at most two chunks are
+    // in flight when the cutter sends XOFF, as with a UART.
     if (baud > 0 && !escb) {
-      const double wire_s = static_cast<double>(sent_) * 10.0 / baud - static_cast<double>(kChunkBytes) * 10.0 / baud;
-      const double wait_s = wire_s - (now_s() - start_s);
+      const double wait_s = (wire_free_at_s - now_s()) - static_cast<double>(kChunkBytes) * 10.0 / baud;
       if (wait_s > 0) {
         if (IoStatus r = reader_.pump(wait_s); !r.ok) return stop("link lost: " + r.error);
         continue;
@@ -183,10 +194,7 @@ SendResult HpglJob::run(const std::string& program) {
       return stop(w.error);
     }
     sent_ += chunk;
-    if (queries && now_s() >= next_error_check_s) {
-      if (!check_device_error(error)) return stop(error);
-      next_error_check_s = now_s() + 1.0;
-    }
+    if (baud > 0) wire_free_at_s = std::max(wire_free_at_s, now_s()) + static_cast<double>(chunk) * 10.0 / baud;
     if (now_s() - last_report_s > 0.1) {
       report("sending");
       last_report_s = now_s();
@@ -196,7 +204,8 @@ SendResult HpglJob::run(const std::string& program) {
     if (IoStatus d = link_.drain(config_.timeout_s); !d.ok) return stop(d.error);
     return finish(SendOutcome::Done, "all " + std::to_string(total_) + " bytes sent; this cutter profile cannot confirm completion");
   }
-  // Completion: OA is answered only after every instruction before it was executed.
+  // Completion: OA is answered only after every instruction before it was executed. Meanwhile
+  // ESC.E every second proves the cutter is alive and catches a device error (answers without commas).
   if (IoStatus w = link_.write("OA;", config_.timeout_s); !w.ok) return stop(w.error);
   double last_answer_s = now_s(), next_keepalive_s = now_s() + 1.0;
   while (true) {
@@ -207,15 +216,16 @@ SendResult HpglJob::run(const std::string& program) {
     if (got) {
       last_answer_s = now_s();
       if (std::count(text.begin(), text.end(), ',') == 2) break;  // "x,y,pen": the OA answer
-      int value = 0;
-      if (!parse_number(text, value)) return stop("unintelligible answer '" + text.substr(0, 30) + "' from the cutter");
-      continue;  // a keepalive answer
+      int code = 0;
+      if (!parse_number(text, code)) return stop("unintelligible answer '" + text.substr(0, 30) + "' from the cutter");
+      if (code != 0) return stop("cutter reports device error " + std::to_string(code) + ": " + device_error_meaning(code));
+      continue;  // the keepalive ESC.E answered "no error"
     }
     if (now_s() - last_answer_s > config_.timeout_s) {
       return stop("cutter stopped answering for " + std::to_string(static_cast<int>(config_.timeout_s)) + " s while finishing");
     }
     if (now_s() >= next_keepalive_s) {
-      if (IoStatus w = link_.write("\x1b.B", config_.timeout_s); !w.ok) return stop(w.error);
+      if (IoStatus w = link_.write("\x1b.E", config_.timeout_s); !w.ok) return stop(w.error);
       next_keepalive_s = now_s() + 1.0;
       report("cutting");
     }
