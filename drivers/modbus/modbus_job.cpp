@@ -156,7 +156,9 @@ SendResult ModbusJob::run(const std::string& program) {
     }
     const auto expected = static_cast<int>(block & 0xffff);
     if (!wait_for([&](const PlcState& s) { return s.block_ack == expected; }, state, error, cancelled)) {
-      if (!cancelled) return finish(SendOutcome::Failed, "block " + std::to_string(block) + " not acknowledged: " + error);
+      if (!cancelled) {
+        return finish(SendOutcome::Failed, "block " + std::to_string(block) + " not acknowledged: " + error + "; nothing was started");
+      }
       std::string ignored;
       client_.write(map_.command, {static_cast<uint16_t>(map_.command_codes.abort)}, ignored);
       return finish(SendOutcome::Failed, "cancelled during transfer; nothing was started");

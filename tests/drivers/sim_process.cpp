@@ -37,10 +37,11 @@ std::string read_file(const std::filesystem::path& path) {
   return buffer.str();
 }
 
-SimProcess::SimProcess(std::vector<std::string> args) {
+SimProcess::SimProcess(std::vector<std::string> args) : SimProcess(sim_binary(), std::move(args)) {}
+
+SimProcess::SimProcess(const std::string& binary, std::vector<std::string> args) {
   int out[2];
   if (::pipe(out) != 0) return;
-  const std::string binary = sim_binary();
   pid_ = ::fork();
   if (pid_ == 0) {
     ::dup2(out[1], STDOUT_FILENO);
@@ -50,8 +51,8 @@ SimProcess::SimProcess(std::vector<std::string> args) {
     argv.push_back(const_cast<char*>(binary.c_str()));
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
-    ::execv(binary.c_str(), argv.data());
-    std::perror("exec lastcut-sim");
+    ::execvp(binary.c_str(), argv.data());
+    std::perror(("exec " + binary).c_str());
     ::_exit(127);
   }
   ::close(out[1]);

@@ -1,5 +1,5 @@
 #pragma once
-// SimProcess: runs the real `lastcut-sim` binary for a test, waits for its "ready:" line,
+// SimProcess: runs the real `lastcut-sim` binary (or another real program) for a test, waits for its "ready:" line,
 // and stops it with SIGTERM (checking it exits cleanly). TempDir: a fresh folder per test.
 #include <filesystem>
 #include <string>
@@ -22,6 +22,8 @@ class SimProcess {
  public:
   // args: everything after the program name, e.g. {"grbl", "--link", "/tmp/x/grbl"}.
   explicit SimProcess(std::vector<std::string> args);
+  // Any other program that prints "ready: ..." when it is listening (the node Modbus server).
+  SimProcess(const std::string& program, std::vector<std::string> args);
   ~SimProcess();
   SimProcess(const SimProcess&) = delete;
   SimProcess& operator=(const SimProcess&) = delete;
