@@ -1,9 +1,99 @@
 #!/usr/bin/env bash
-# The main job: builds lastcut and runs it on the bundled sample last, output in ./demo/.
+# The main job, end to end, on this machine: installs and builds lastcut, starts two simulated
+# cutters (a grbl drag-knife table and an HPGL plotter on pseudo-terminals), runs the daemon
+# lastcutd with config/demo/lastcut.toml (watch folder and spool under ./demo/), drops the sample
+# lasts into the watch folder, waits until every job is cut, stops the daemon cleanly and shows
+# where the molds, layouts, cut files and reports are.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+root="$(pwd)"
+
 bash scripts/setup.sh
 bash scripts/build.sh build
-mkdir -p demo
-build/bin/lastcut flatten config/samples/sample-last-eu42-left.stl -o demo/molds
-echo "molds, meshes and report in $(pwd)/demo/molds"
+bin="$root/build/bin"
+
+demo="$root/demo"
+rm -rf "$demo/incoming" "$demo/spool" "$demo/staging" "$demo/cutter-records"
+mkdir -p "$demo/incoming" "$demo/staging" "$demo/cutter-records"
+
+pids=()
+cleanup() { for pid in "${pids[@]}"; do kill "$pid" 2>/dev/null || true; done; }
+trap cleanup EXIT
+
+echo "== simulated cutters"
+"$bin/lastcut-sim" grbl --link "$demo/cutter-1.tty" --record "$demo/cutter-records/cutter-1" --time-scale 0 \
+  > "$demo/cutter-1.log" 2>&1 &
+pids+=($!)
+"$bin/lastcut-sim" hpgl --link "$demo/plotter-1.tty" --record "$demo/cutter-records/plotter-1" --time-scale 0 \
+  > "$demo/plotter-1.log" 2>&1 &
+pids+=($!)
+for log in "$demo/cutter-1.log" "$demo/plotter-1.log"; do
+  for _ in $(seq 100); do grep -q "ready:" "$log" && break; sleep 0.1; done
+  grep -q "ready:" "$log" || { echo "demo: a simulated cutter did not start:"; cat "$log"; exit 1; }
+done
+echo "grbl table on $demo/cutter-1.tty, HPGL plotter on $demo/plotter-1.tty"
+
+echo "== lastcutd"
+"$bin/lastcutd" --check-config config/demo/lastcut.toml
+"$bin/lastcutd" --config config/demo/lastcut.toml > "$demo/lastcutd.log" 2>&1 &
+daemon=$!
+pids+=($daemon)
+for _ in $(seq 100); do grep -q "lastcutd ready" "$demo/lastcutd.log" && break; sleep 0.1; done
+
+echo "== dropping the sample lasts into $demo/incoming"
+shopt -s nullglob
+samples=(config/samples/*.stl config/samples/*.obj config/samples/*.ply config/samples/*.off)
+if [ ${#samples[@]} -eq 0 ]; then
+  # No bundled samples in this checkout: make a pair with the parametric last generator.
+  "$bin/lastcut" generate -o "$demo/staging/sample-eu42-left.stl" --size 42 --side left --triangles 20000 --seed 1
+  "$bin/lastcut" generate -o "$demo/staging/sample-eu38-right.stl" --size 38 --side right --triangles 20000 --seed 2
+  samples=("$demo/staging/sample-eu42-left.stl" "$demo/staging/sample-eu38-right.stl")
+fi
+count=0
+for sample in "${samples[@]}"; do
+  name="$(basename "$sample")"
+  if [ $count -eq 0 ]; then
+    # The first one comes with a sidecar: an order for the plotter, both feet (pair).
+    printf 'order = "4711"\ncustomer = "demo"\nsize = "EU 42"\nside = "pair"\ncutter = "plotter-1"\n' \
+      > "$demo/incoming/${name%.*}.job.toml"
+  fi
+  cp "$sample" "$demo/incoming/.$name.part"
+  mv "$demo/incoming/.$name.part" "$demo/incoming/$name"   # complete files appear at once
+  echo "  $name"
+  count=$((count + 1))
+done
+
+echo "== waiting for the jobs (lastcut status)"
+for _ in $(seq 600); do
+  if ! kill -0 "$daemon" 2>/dev/null; then echo "demo: lastcutd stopped:"; cat "$demo/lastcutd.log"; exit 1; fi
+  finished=$(( $(ls "$demo/spool/done" 2>/dev/null | wc -l) + $(ls "$demo/spool/failed" 2>/dev/null | wc -l) + $(ls "$demo/spool/held" 2>/dev/null | wc -l) ))
+  [ "$finished" -ge "$count" ] && [ -z "$(ls "$demo/spool/work" 2>/dev/null)" ] && break
+  sleep 0.5
+done
+"$bin/lastcut" status --config config/demo/lastcut.toml || true
+
+echo "== stopping lastcutd (SIGTERM)"
+kill -TERM "$daemon"
+wait "$daemon" || true
+cleanup
+wait 2>/dev/null || true
+
+echo "== the operator's log ($demo/lastcutd.log)"
+cat "$demo/lastcutd.log"
+echo
+echo "== results"
+for job in "$demo"/spool/done/* "$demo"/spool/failed/* "$demo"/spool/held/*; do
+  [ -d "$job" ] || continue
+  echo "job $(basename "$job") ($(basename "$(dirname "$job")")):"
+  ls "$job/molds"/*.dxf "$job/molds"/*.svg 2>/dev/null | sed 's/^/  mold:      /'
+  for file in layout.json cut.nc cut.plt preview.svg report.json; do
+    [ -f "$job/$file" ] && echo "  $(printf '%-10s' "${file%%.*}:") $job/$file"
+  done
+  grep -h '"reason"' "$job/state.json" | head -1 | sed 's/^ */  /'
+done
+echo "what the simulated cutters received: $demo/cutter-records/"
+failed=$(ls "$demo/spool/failed" 2>/dev/null | wc -l)
+held=$(ls "$demo/spool/held" 2>/dev/null | wc -l)
+done_count=$(ls "$demo/spool/done" 2>/dev/null | wc -l)
+echo "demo: $done_count job(s) done, $failed failed, $held held"
+[ "$done_count" -eq "$count" ]

@@ -1,17 +1,100 @@
-// PLACEHOLDER: replaced by the module that owns this command.
+// `lastcut flatten SCAN -o DIR`: one scan of a last (or an open patch) to molds, meshes and a
+// report (the file contract is in engine/scan/scan_outputs.hpp; the guide in docs/flatten.md).
 #include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <map>
+#include <string>
 
 #include "daemon/cli/commands.hpp"
+#include "engine/core/engine_error.hpp"
+#include "engine/scan/scan_outputs.hpp"
+#include "engine/scan/scan_to_molds.hpp"
 
 namespace lastcut::cli {
 
+namespace {
+
+struct FlattenArguments {
+  std::string scan;
+  std::string out_dir;
+  std::string method = "arap";
+  std::string unit = "auto";
+  bool no_segment = false;
+  double allowance_mm = 0.0;
+  int max_triangles = 0;
+};
+
+// One line, whatever the message holds.
+void print_error(std::string reason) {
+  for (char& c : reason)
+    if (c == '\n' || c == '\r') c = ' ';
+  std::fprintf(stderr, "lastcut: error: %s\n", reason.c_str());
+}
+
+LengthUnit length_unit_from_name(const std::string& name) {
+  static const std::map<std::string, LengthUnit> units{{"auto", LengthUnit::Auto},
+                                                       {"mm", LengthUnit::Millimetre},
+                                                       {"cm", LengthUnit::Centimetre},
+                                                       {"m", LengthUnit::Metre},
+                                                       {"in", LengthUnit::Inch}};
+  return units.at(name);  // CLI11 has already checked the name
+}
+
+ScanOptions options_from(const FlattenArguments& arguments) {
+  ScanOptions options;
+  options.segment = !arguments.no_segment;
+  options.flatten.method = arguments.method == "lscm" ? FlattenMethod::Lscm : FlattenMethod::Arap;
+  options.mold.allowance_mm = arguments.allowance_mm;
+  options.read.unit = length_unit_from_name(arguments.unit);
+  if (arguments.max_triangles > 0) options.read.max_triangles = arguments.max_triangles;
+  return options;
+}
+
+int run_flatten(const FlattenArguments& arguments) {
+  if (!(arguments.allowance_mm >= 0.0) || arguments.allowance_mm > 50.0) {
+    print_error("allowance must be between 0 and 50 mm, not " + std::to_string(arguments.allowance_mm));
+    return 2;
+  }
+  try {
+    const ScanResult result = scan_to_molds(arguments.scan, options_from(arguments));
+    write_scan_outputs(result, arguments.out_dir);
+    for (const auto& segment : result.segments) {
+      const DistortionMeasures& m = segment.measures;
+      std::printf("%-8s %6d triangles  D_angle %.4f  D_area %.4f  area %+.2f %%  boundary %+.2f %%  flipped %d  %.2f s\n",
+                  segment.name.c_str(), segment.mesh3d.triangle_count(), m.D_angle, m.D_area, m.area_error_pct,
+                  m.boundary_error_pct, m.flipped_triangles, segment.flatten.seconds_total);
+    }
+    std::printf("molds, meshes and report.json in %s (%.2f s)\n", arguments.out_dir.c_str(), result.seconds_total);
+    return 0;
+  } catch (const EngineError& error) {
+    print_error(error.what());
+  } catch (const std::bad_alloc&) {
+    print_error("out of memory; try --max-triangles to simplify the scan first");
+  } catch (const std::exception& error) {
+    print_error(error.what());
+  }
+  return 1;
+}
+
+}  // namespace
+
 void add_flatten_command(CLI::App& app, int& exit_code) {
-  auto* command = app.add_subcommand("flatten", "(not built yet)");
-  command->allow_extras();
-  command->callback([&exit_code] {
-    std::fprintf(stderr, "lastcut: error: 'flatten' is not built yet\n");
-    exit_code = 2;
-  });
+  auto arguments = std::make_shared<FlattenArguments>();
+  auto* command = app.add_subcommand("flatten", "flatten a scanned last into medial and lateral molds (DXF, SVG, OBJ, report.json)");
+  command->add_option("scan", arguments->scan, "scan of the last: STL, OBJ, PLY or OFF")->required();
+  command->add_option("-o,--out", arguments->out_dir, "output folder (created if missing)")->required();
+  command->add_option("--method", arguments->method, "flattening method: arap (least stretch) or lscm (conformal)")
+      ->check(CLI::IsMember({"arap", "lscm"}))
+      ->capture_default_str();
+  command->add_flag("--no-segment", arguments->no_segment, "the scan is one open patch: flatten it as it is");
+  command->add_option("--allowance", arguments->allowance_mm, "outward margin added around each mold, mm")
+      ->capture_default_str();
+  command->add_option("--unit", arguments->unit, "length unit of the scan: auto, mm, cm, m or in")
+      ->check(CLI::IsMember({"auto", "mm", "cm", "m", "in"}))
+      ->capture_default_str();
+  command->add_option("--max-triangles", arguments->max_triangles, "refuse (or simplify) scans with more triangles");
+  command->callback([arguments, &exit_code] { exit_code = run_flatten(*arguments); });
 }
 
 }  // namespace lastcut::cli

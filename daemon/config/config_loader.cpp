@@ -207,7 +207,8 @@ void read_materials(TableReader& root, DaemonConfig& config, std::vector<std::st
   if (config.materials.empty()) errors.push_back("materials: at least one material is needed");
 }
 
-void read_cutters(TableReader& root, DaemonConfig& config, std::vector<std::string>& errors) {
+void read_cutters(TableReader& root, const std::filesystem::path& base, DaemonConfig& config,
+                  std::vector<std::string>& errors) {
   const toml::table* table = root.subtable("cutters", true);
   if (!table) return;
   for (auto&& [key, value] : *table) {
@@ -249,6 +250,10 @@ void read_cutters(TableReader& root, DaemonConfig& config, std::vector<std::stri
         errors.push_back(path + ": \"" + *address + "\": network cutters are reached through a gateway on 127.0.0.1");
       }
     }
+    // A relative device path (a simulator's pty link) is relative to this file, like the folders.
+    const bool device_path = !cutter.port.empty() && cutter.port.find("://") == std::string::npos &&
+                             cutter.port.rfind("usb:", 0) != 0;
+    if (device_path) cutter.port = resolve(base, cutter.port).string();
     config.cutters[name] = cutter;
   }
   if (config.cutters.empty()) errors.push_back("cutters: at least one cutter is needed");
@@ -319,7 +324,7 @@ ConfigLoadResult load_daemon_config(const std::filesystem::path& file) {
     read_jobs(reader, config, errors);
     read_batch(reader, config, errors);
     read_materials(reader, config, errors);
-    read_cutters(reader, config, errors);
+    read_cutters(reader, base, config, errors);
     read_log(reader, config, errors);
     reader.reject_unknown();
   }

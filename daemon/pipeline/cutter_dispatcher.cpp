@@ -120,8 +120,15 @@ bool CutterDispatcher::cut_batch(const std::string& batch_id) {
 
   std::ifstream in(spool_.batch_dir(batch_id) / batch->cut_file, std::ios::binary);
   std::ostringstream program;
+  // G-code carries the batch and job ids as a comment, so the machine's own log (and the
+  // simulator's record) shows which jobs a program cut; grbl answers a comment line with ok.
+  if (section.protocol == "grbl") {
+    // One short line each: grbl's line buffer holds 80 characters.
+    program << "(lastcut batch " << batch_id << ")\n";
+    for (const std::string& id : batch->job_ids) program << "(lastcut job " << id << ")\n";
+  }
   program << in.rdbuf();
-  if (!in || program.str().empty()) {
+  if (!in || batch->cut_file.empty()) {
     batch->reason = "the cut file " + batch->cut_file + " is missing or empty";
     mark_batch(spool_, *batch, "held", batch->reason);
     hold_batch_jobs(spool_, *batch, batch->reason);

@@ -16,12 +16,28 @@
 
 namespace lastcut::daemon {
 
-void Pipeline::recover() {
-  int batches = 0;
-  for (const std::string& batch_id : spool_->list_batches()) {
-    recover_batch(batch_id);
-    ++batches;
+namespace {
+
+// Temporary files of writes a crash cut short: never read by anyone, removed at start.
+void remove_temporaries(const std::filesystem::path& parent) {
+  std::error_code error;
+  for (std::filesystem::directory_iterator it(parent, error), end; !error && it != end; it.increment(error)) {
+    if (!it->is_directory(error)) continue;
+    for (std::filesystem::directory_iterator file(it->path(), error), last; !error && file != last; file.increment(error)) {
+      if (file->path().filename().string().rfind(kTemporaryPrefix, 0) == 0) {
+        std::error_code remove_error;
+        std::filesystem::remove_all(file->path(), remove_error);
+      }
+    }
   }
+}
+
+}  // namespace
+
+void Pipeline::recover() {
+  remove_temporaries(spool_->root() / "work");
+  remove_temporaries(spool_->root() / "batches");
+  for (const std::string& batch_id : spool_->list_batches()) recover_batch(batch_id);
   const auto ids = spool_->list(JobFolder::Work);
   for (const std::string& id : ids) route(id);
   if (!ids.empty()) spdlog::info("recovery: {} job(s) found in work/, resumed", ids.size());

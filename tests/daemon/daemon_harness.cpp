@@ -1,0 +1,121 @@
+#include "daemon_harness.hpp"
+
+#include <csignal>
+#include <fcntl.h>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+namespace lastcut::daemon::testing {
+
+std::filesystem::path binary(const std::string& name) {
+  return std::filesystem::path(LASTCUT_BINARY_DIR) / "bin" / name;
+}
+
+Process::Process(const std::vector<std::string>& argv, const std::filesystem::path& log_file) {
+  pid_ = ::fork();
+  if (pid_ < 0) throw std::runtime_error("fork failed");
+  if (pid_ == 0) {
+    const int fd = ::open(log_file.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+    if (fd >= 0) {
+      ::dup2(fd, 1);
+      ::dup2(fd, 2);
+    }
+    // Test processes must not inherit a blocked signal mask or the journal of the test runner.
+    sigset_t none;
+    sigemptyset(&none);
+    sigprocmask(SIG_SETMASK, &none, nullptr);
+    ::unsetenv("JOURNAL_STREAM");
+    ::unsetenv("NOTIFY_SOCKET");
+    std::vector<char*> args;
+    for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
+    args.push_back(nullptr);
+    ::execv(args[0], args.data());
+    ::_exit(127);
+  }
+}
+
+Process::~Process() {
+  if (running()) {
+    ::kill(pid_, SIGKILL);
+    wait(5);
+  }
+}
+
+void Process::signal(int number) const {
+  if (pid_ > 0) ::kill(pid_, number);
+}
+
+bool Process::running() {
+  if (exited_ || pid_ <= 0) return false;
+  int status = 0;
+  if (::waitpid(pid_, &status, WNOHANG) == pid_) {
+    exited_ = true;
+    status_ = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    return false;
+  }
+  return true;
+}
+
+int Process::wait(double timeout_s) {
+  wait_until([this] { return !running(); }, timeout_s);
+  return exited_ ? status_ : -1;
+}
+
+bool wait_until(const std::function<bool()>& done, double timeout_s) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (done()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return done();
+}
+
+int run_command(const std::vector<std::string>& argv, const std::filesystem::path& log_file) {
+  Process process(argv, log_file);
+  return process.wait(300);
+}
+
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void write_text(const std::filesystem::path& file, const std::string& text) {
+  std::ofstream(file, std::ios::binary) << text;
+}
+
+int count_entries(const std::filesystem::path& folder) {
+  int count = 0;
+  std::error_code error;
+  for (std::filesystem::directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
+    if (it->path().filename().string()[0] != '.') ++count;
+  }
+  return count;
+}
+
+int count_occurrences(const std::string& haystack, const std::string& needle) {
+  int count = 0;
+  for (std::size_t at = haystack.find(needle); at != std::string::npos; at = haystack.find(needle, at + 1)) ++count;
+  return count;
+}
+
+std::filesystem::path scratch_folder(const std::string& name) {
+  const auto folder = std::filesystem::path(LASTCUT_BINARY_DIR) / "test-scratch" / "daemon" / name;
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  return folder;
+}
+
+void drop(const std::filesystem::path& file, const std::filesystem::path& watch_dir, const std::string& name) {
+  const auto staging = watch_dir / ("." + name + ".part");
+  std::filesystem::copy_file(file, staging, std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::rename(staging, watch_dir / name);
+}
+
+}  // namespace lastcut::daemon::testing

@@ -1,0 +1,50 @@
+#pragma once
+// Test harness for the daemon's end-to-end tests: real processes (lastcutd, lastcut-sim,
+// lastcut generate) started with fork/exec, a scratch folder per test, waiting with a deadline.
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace lastcut::daemon::testing {
+
+std::filesystem::path binary(const std::string& name);  // LASTCUT_BINARY_DIR/bin/<name>
+
+// A child process; killed (SIGKILL) in the destructor if still running.
+class Process {
+ public:
+  Process(const std::vector<std::string>& argv, const std::filesystem::path& log_file);
+  ~Process();
+  Process(const Process&) = delete;
+  Process& operator=(const Process&) = delete;
+
+  int pid() const { return pid_; }
+  void signal(int number) const;
+  // Waits for the exit; returns the exit status (or 128 + signal), -1 on timeout.
+  int wait(double timeout_s);
+  bool running();
+
+ private:
+  int pid_ = -1;
+  int status_ = -1;
+  bool exited_ = false;
+};
+
+// Polls `done` every 50 ms until it is true or timeout_s passes; returns its last value.
+bool wait_until(const std::function<bool()>& done, double timeout_s);
+// Runs a command to completion; returns its exit status.
+int run_command(const std::vector<std::string>& argv, const std::filesystem::path& log_file);
+
+std::string read_text(const std::filesystem::path& file);
+void write_text(const std::filesystem::path& file, const std::string& text);
+// Number of entries (not starting with '.') in a folder.
+int count_entries(const std::filesystem::path& folder);
+// How often `needle` occurs in `haystack`.
+int count_occurrences(const std::string& haystack, const std::string& needle);
+// A fresh empty folder under the build tree for one test.
+std::filesystem::path scratch_folder(const std::string& name);
+// Moves a finished file into the watch folder the way uploaders should: write elsewhere, rename.
+void drop(const std::filesystem::path& file, const std::filesystem::path& watch_dir, const std::string& name);
+
+}  // namespace lastcut::daemon::testing

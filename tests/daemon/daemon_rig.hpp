@@ -1,0 +1,64 @@
+#pragma once
+// DaemonRig: a whole installation in a scratch folder for end-to-end tests: simulated grbl
+// cutters (lastcut-sim) on pseudo-terminals, a generated configuration, lastcutd itself, and
+// small generated lasts (lastcut generate) to drop into the watch folder.
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "daemon_harness.hpp"
+
+namespace lastcut::daemon::testing {
+
+struct RigOptions {
+  std::vector<std::string> cutters = {"cutter-1"};
+  std::map<std::string, std::string> sim_faults;  // cutter -> --fault argument
+  std::string duplicate_policy = "skip";
+  double batch_window_s = 0;
+  std::string extra_config;                       // appended to the generated TOML
+};
+
+class DaemonRig {
+ public:
+  DaemonRig(const std::string& name, RigOptions options);
+  ~DaemonRig();
+
+  const std::filesystem::path& root() const { return root_; }
+  std::filesystem::path watch() const { return root_ / "incoming"; }
+  std::filesystem::path spool() const { return root_ / "spool"; }
+  std::filesystem::path config_file() const { return root_ / "lastcut.toml"; }
+  std::filesystem::path daemon_log() const { return root_ / "lastcutd.log"; }
+
+  void start_cutters();
+  void stop_cutters();  // SIGTERM: the simulators write their final records
+  void start_daemon();
+  // SIGTERM and wait; returns the exit status.
+  int stop_daemon(double timeout_s = 60);
+  void kill_daemon();  // SIGKILL
+  Process* daemon() { return daemon_.get(); }
+
+  // What cutter `name` received (the simulator's record), after stop_cutters().
+  std::string received(const std::string& cutter) const;
+  // Jobs per spool folder: id -> state.json.
+  std::map<std::string, nlohmann::json> jobs(const std::string& folder) const;
+  // True when the watch folder and work/ are empty and `expected` jobs have finished.
+  bool settled(int expected) const;
+
+ private:
+  std::filesystem::path root_;
+  RigOptions options_;
+  std::map<std::string, std::unique_ptr<Process>> cutters_;
+  std::unique_ptr<Process> daemon_;
+};
+
+// A small generated last (about 3000 triangles), made once per build tree and reused.
+std::filesystem::path small_last(int eu_size, const std::string& side, int seed);
+// A copy of a binary STL with different bytes (its 80-byte header changed): a new scan for the
+// hash, the same geometry.
+void write_variant(const std::filesystem::path& stl, const std::filesystem::path& out, const std::string& tag);
+
+}  // namespace lastcut::daemon::testing

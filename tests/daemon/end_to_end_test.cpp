@@ -1,0 +1,201 @@
+// lastcutd end to end with the real binaries: generated lasts dropped into the watch folder,
+// two simulated grbl cutters on pseudo-terminals, and the spool and the simulators' records
+// checked afterwards. Proves: every job reaches the right cutter exactly once, bad input ends
+// in failed/ with the reason, duplicates follow the policy, a cutter fault holds only that
+// cutter's job, a held job is cut after `lastcut requeue`, and a clean stop leaves nothing in work/.
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <thread>
+
+#include "daemon_rig.hpp"
+
+namespace lastcut::daemon::testing {
+namespace {
+
+// Job id of the job whose scan had this name, in any folder.
+std::string job_of(const DaemonRig& rig, const std::string& scan, std::string* folder_out = nullptr) {
+  for (const char* folder : {"done", "failed", "held", "work"}) {
+    for (const auto& [id, state] : rig.jobs(folder)) {
+      if (state.value("scan", "") == scan) {
+        if (folder_out) *folder_out = folder;
+        return id;
+      }
+    }
+  }
+  return {};
+}
+
+TEST(DaemonEndToEnd, TenScansReachTheRightCutterExactlyOnce) {
+  RigOptions options;
+  options.cutters = {"cutter-1", "cutter-2"};
+  options.batch_window_s = 1.0;
+  DaemonRig rig("e2e-ten", options);
+  rig.start_cutters();
+  rig.start_daemon();
+
+  const auto staging = rig.root() / "staging";
+  std::filesystem::create_directories(staging);
+  const std::vector<std::pair<int, std::string>> lasts = {{38, "left"}, {39, "right"}, {40, "left"},
+                                                          {41, "right"}, {42, "left"}, {43, "right"}};
+  for (std::size_t i = 0; i < lasts.size(); ++i) {
+    write_variant(small_last(lasts[i].first, lasts[i].second, 1), staging / ("good-" + std::to_string(i) + ".stl"),
+                  std::to_string(i));
+  }
+  // A cut-off binary STL (the upload broke), and bytes that are no mesh at all.
+  const std::string good = read_text(staging / "good-0.stl");
+  write_text(staging / "truncated.stl", good.substr(0, good.size() / 3));
+  write_text(staging / "garbage.stl", std::string(4000, 'z'));
+  // One for the second cutter, with an order number.
+  write_variant(small_last(44, "left", 2), staging / "order-4711.stl", "4711");
+  write_text(rig.watch() / "order-4711.job.toml", "order = \"4711\"\ncutter = \"cutter-2\"\nsize = \"EU 44\"\n");
+
+  for (std::size_t i = 0; i < lasts.size(); ++i) {
+    drop(staging / ("good-" + std::to_string(i) + ".stl"), rig.watch(), "good-" + std::to_string(i) + ".stl");
+  }
+  drop(staging / "truncated.stl", rig.watch(), "truncated.stl");
+  drop(staging / "garbage.stl", rig.watch(), "garbage.stl");
+  drop(staging / "order-4711.stl", rig.watch(), "order-4711.stl");
+  // The duplicate comes once the original has been taken (same bytes as good-0).
+  ASSERT_TRUE(wait_until([&] { return !job_of(rig, "good-0.stl").empty(); }, 30));
+  drop(staging / "good-0.stl", rig.watch(), "again-good-0.stl");
+
+  ASSERT_TRUE(wait_until([&] { return rig.settled(10); }, 120)) << read_text(rig.daemon_log());
+  EXPECT_EQ(rig.stop_daemon(), 0);
+  rig.stop_cutters();
+
+  const auto done = rig.jobs("done");
+  const auto failed = rig.jobs("failed");
+  EXPECT_EQ(done.size(), 8u) << read_text(rig.daemon_log());
+  EXPECT_EQ(failed.size(), 2u);
+  EXPECT_EQ(rig.jobs("held").size(), 0u);
+
+  std::string folder;
+  const std::string truncated = job_of(rig, "truncated.stl", &folder);
+  EXPECT_EQ(folder, "failed");
+  EXPECT_NE(failed.at(truncated).value("reason", "").find("cut off"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(rig.spool() / "failed" / truncated / "truncated.stl")) << "original kept";
+  const std::string garbage = job_of(rig, "garbage.stl", &folder);
+  EXPECT_EQ(folder, "failed");
+  EXPECT_FALSE(failed.at(garbage).value("reason", "").empty());
+
+  const std::string duplicate = job_of(rig, "again-good-0.stl", &folder);
+  EXPECT_EQ(folder, "done");
+  EXPECT_EQ(done.at(duplicate).value("stage", ""), "skipped");
+  EXPECT_EQ(done.at(duplicate).value("duplicate_of", ""), job_of(rig, "good-0.stl"));
+
+  const std::string on_cutter_1 = rig.received("cutter-1");
+  const std::string on_cutter_2 = rig.received("cutter-2");
+  for (std::size_t i = 0; i < lasts.size(); ++i) {
+    const std::string id = job_of(rig, "good-" + std::to_string(i) + ".stl");
+    EXPECT_EQ(done.at(id).value("stage", ""), "cut");
+    EXPECT_EQ(count_occurrences(on_cutter_1, "(lastcut job " + id + ")"), 1) << id;
+    EXPECT_EQ(count_occurrences(on_cutter_2, "(lastcut job " + id + ")"), 0) << id;
+    const auto report = nlohmann::json::parse(read_text(rig.spool() / "done" / id / "report.json"));
+    EXPECT_EQ(report.at("batch").value("cutter", ""), "cutter-1");
+    EXPECT_GT(report.at("batch").value("utilisation", 0.0), 0.0);
+    EXPECT_TRUE(std::filesystem::exists(rig.spool() / "done" / id / "cut.nc"));
+    EXPECT_TRUE(std::filesystem::exists(rig.spool() / "done" / id / "preview.svg"));
+    EXPECT_TRUE(std::filesystem::exists(rig.spool() / "done" / id / "molds" / "report.json"));
+  }
+  const std::string order = job_of(rig, "order-4711.stl");
+  EXPECT_EQ(done.at(order).at("ticket").value("order", ""), "4711");
+  EXPECT_EQ(count_occurrences(on_cutter_2, "(lastcut job " + order + ")"), 1);
+  EXPECT_EQ(count_occurrences(on_cutter_1, "(lastcut job " + order + ")"), 0);
+  EXPECT_EQ(count_occurrences(on_cutter_1 + on_cutter_2, "(lastcut job " + duplicate + ")"), 0);
+  EXPECT_TRUE(std::filesystem::exists(rig.spool() / "done" / order / "order-4711.job.toml"));
+
+  // The operator's log names the order and says where bad jobs went.
+  const std::string log = read_text(rig.daemon_log());
+  EXPECT_NE(log.find("order 4711 (order-4711.stl)"), std::string::npos);
+  EXPECT_NE(log.find("truncated.stl [job " + truncated + "]: the file is cut off"), std::string::npos) << log;
+  EXPECT_NE(log.find("moved to failed/"), std::string::npos);
+}
+
+TEST(DaemonEndToEnd, ACutterFaultHoldsItsJobWhileTheOtherCutterKeepsWorking) {
+  RigOptions options;
+  options.cutters = {"cutter-1", "cutter-2"};
+  options.sim_faults = {{"cutter-2", "alarm-at-line=40:1"}};
+  DaemonRig rig("e2e-fault", options);
+  rig.start_cutters();
+  rig.start_daemon();
+  const auto staging = rig.root() / "staging";
+  std::filesystem::create_directories(staging);
+  write_variant(small_last(40, "left", 3), staging / "a.stl", "a");
+  write_variant(small_last(41, "right", 3), staging / "b.stl", "b");
+  write_variant(small_last(42, "left", 3), staging / "faulty.stl", "faulty");
+  write_text(rig.watch() / "faulty.job.json", R"({"order": "777", "cutter": "cutter-2"})");
+  drop(staging / "faulty.stl", rig.watch(), "faulty.stl");
+  drop(staging / "a.stl", rig.watch(), "a.stl");
+  drop(staging / "b.stl", rig.watch(), "b.stl");
+  ASSERT_TRUE(wait_until([&] { return rig.settled(3); }, 120)) << read_text(rig.daemon_log());
+
+  std::string folder;
+  const std::string faulty = job_of(rig, "faulty.stl", &folder);
+  EXPECT_EQ(folder, "held");
+  const std::string reason = rig.jobs("held").at(faulty).value("reason", "");
+  EXPECT_NE(reason.find("cutter cutter-2 stopped while cutting"), std::string::npos) << reason;
+  EXPECT_NE(job_of(rig, "a.stl", &folder), "");
+  EXPECT_EQ(folder, "done");
+  job_of(rig, "b.stl", &folder);
+  EXPECT_EQ(folder, "done");
+  // Never resent on its own: wait a few retry intervals, it stays held.
+  std::this_thread::sleep_for(std::chrono::seconds(2));
+  EXPECT_EQ(rig.jobs("held").size(), 1u);
+
+  // `lastcut status` shows it; the operator clears the alarm (new simulator) and requeues.
+  const auto status_log = rig.root() / "status.txt";
+  EXPECT_EQ(run_command({binary("lastcut").string(), "status", "--config", rig.config_file().string()}, status_log), 0);
+  EXPECT_NE(read_text(status_log).find(faulty), std::string::npos) << read_text(status_log);
+  EXPECT_NE(read_text(status_log).find("lastcutd: running"), std::string::npos);
+  rig.stop_cutters();
+  const auto requeue_log = rig.root() / "requeue.txt";
+  EXPECT_EQ(run_command({binary("lastcut").string(), "requeue", faulty, "--config", rig.config_file().string()},
+                        requeue_log), 0) << read_text(requeue_log);
+  // Restart the simulators without the fault, under the same links.
+  Process cutter_1({binary("lastcut-sim").string(), "grbl", "--link", (rig.root() / "cutter-1.tty").string(),
+                    "--record", (rig.root() / "record2-cutter-1").string(), "--time-scale", "0"},
+                   rig.root() / "sim2-1.log");
+  Process cutter_2({binary("lastcut-sim").string(), "grbl", "--link", (rig.root() / "cutter-2.tty").string(),
+                    "--record", (rig.root() / "record2-cutter-2").string(), "--time-scale", "0"},
+                   rig.root() / "sim2-2.log");
+  ASSERT_TRUE(wait_until([&] { return rig.jobs("done").count(faulty) == 1; }, 60)) << read_text(rig.daemon_log());
+  EXPECT_EQ(rig.stop_daemon(), 0);
+  cutter_2.signal(SIGTERM);
+  cutter_2.wait(10);
+  EXPECT_EQ(count_occurrences(read_text(rig.root() / "record2-cutter-2" / "grbl-received.nc"),
+                              "(lastcut job " + faulty + ")"), 1);
+  cutter_1.signal(SIGTERM);
+  cutter_1.wait(10);
+}
+
+TEST(DaemonEndToEnd, RefusedConfigurationExitsWithConfigStatus) {
+  DaemonRig rig("e2e-config", RigOptions{});
+  write_text(rig.config_file(), read_text(rig.config_file()) + "[cutters.cutter-1.extra]\n");
+  const auto log = rig.root() / "check.txt";
+  EXPECT_EQ(run_command({binary("lastcutd").string(), "--check-config", rig.config_file().string()}, log), 78);
+  EXPECT_NE(read_text(log).find("cutters.cutter-1.extra"), std::string::npos) << read_text(log);
+  EXPECT_EQ(run_command({binary("lastcutd").string(), "--config", rig.config_file().string()}, log), 78);
+}
+
+TEST(DaemonEndToEnd, BadReloadKeepsTheRunningConfiguration) {
+  DaemonRig rig("e2e-reload", RigOptions{});
+  rig.start_cutters();
+  rig.start_daemon();
+  const std::string good = read_text(rig.config_file());
+  write_text(rig.config_file(), good + "[jobs.extra]\n");
+  rig.daemon()->signal(SIGHUP);
+  ASSERT_TRUE(wait_until([&] { return read_text(rig.daemon_log()).find("reload refused") != std::string::npos; }, 10));
+  write_text(rig.config_file(), good);
+  rig.daemon()->signal(SIGHUP);
+  ASSERT_TRUE(wait_until([&] { return read_text(rig.daemon_log()).find("configuration reloaded") != std::string::npos; }, 10));
+  // Still working after both reloads.
+  write_variant(small_last(40, "left", 3), rig.root() / "x.stl", "reload");
+  drop(rig.root() / "x.stl", rig.watch(), "x.stl");
+  ASSERT_TRUE(wait_until([&] { return rig.settled(1); }, 60)) << read_text(rig.daemon_log());
+  EXPECT_EQ(rig.jobs("done").size(), 1u);
+  EXPECT_EQ(rig.stop_daemon(), 0);
+}
+
+}  // namespace
+}  // namespace lastcut::daemon::testing

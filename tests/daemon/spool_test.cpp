@@ -1,0 +1,169 @@
+// The spool's building blocks on real files: SHA-256 against the FIPS 180-4 examples, durable
+// writes, claims that move scan and sidecar together, folder moves, sidecar validation.
+#include <gtest/gtest.h>
+
+#include "daemon/spool/durable_file.hpp"
+#include "daemon/spool/job_ticket.hpp"
+#include "daemon/spool/sha256.hpp"
+#include "daemon/spool/spool.hpp"
+#include "daemon_harness.hpp"
+
+namespace lastcut::daemon {
+namespace {
+
+using testing::read_text;
+using testing::write_text;
+
+TEST(Sha256, MatchesTheStandardsExamples) {
+  EXPECT_EQ(sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  EXPECT_EQ(sha256_hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  EXPECT_EQ(sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
+            "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+  const std::string million(1000000, 'a');
+  EXPECT_EQ(sha256_hex(million), "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+}
+
+TEST(Sha256, FileHashEqualsMemoryHash) {
+  const auto folder = testing::scratch_folder("sha");
+  std::string bytes;
+  for (int i = 0; i < 200000; ++i) bytes.push_back(static_cast<char>(i * 7));
+  write_text(folder / "f.bin", bytes);
+  EXPECT_EQ(sha256_file_hex(folder / "f.bin").value(), sha256_hex(bytes));
+  EXPECT_FALSE(sha256_file_hex(folder / "missing.bin"));
+}
+
+TEST(DurableFile, ReplacesContentAndLeavesNoTemporary) {
+  const auto folder = testing::scratch_folder("durable");
+  ASSERT_EQ(write_file_durably(folder / "state.json", "one"), "");
+  ASSERT_EQ(write_file_durably(folder / "state.json", "two"), "");
+  EXPECT_EQ(read_text(folder / "state.json"), "two");
+  EXPECT_EQ(testing::count_entries(folder), 1);
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    EXPECT_EQ(entry.path().filename(), "state.json");
+  }
+  EXPECT_NE(write_file_durably(folder / "no-such-folder" / "x", "y"), "");
+}
+
+TEST(DurableFile, MoveAndCopy) {
+  const auto folder = testing::scratch_folder("move");
+  write_text(folder / "a", "payload");
+  ASSERT_EQ(copy_file_durably(folder / "a", folder / "b"), "");
+  ASSERT_EQ(move_durably(folder / "a", folder / "c"), "");
+  EXPECT_FALSE(std::filesystem::exists(folder / "a"));
+  EXPECT_EQ(read_text(folder / "b"), "payload");
+  EXPECT_EQ(read_text(folder / "c"), "payload");
+  EXPECT_NE(move_durably(folder / "a", folder / "d"), "");
+}
+
+TEST(Spool, ClaimMovesScanAndSidecarIntoAWorkFolder) {
+  const auto folder = testing::scratch_folder("claim");
+  Spool spool(folder / "spool");
+  ASSERT_EQ(spool.prepare(), "");
+  std::filesystem::create_directories(folder / "in");
+  write_text(folder / "in" / "last.stl", "solid x\nendsolid x\n");
+  write_text(folder / "in" / "last.job.toml", "order = \"4711\"\n");
+  JobState state;
+  state.sha256 = "abc";
+  state.ticket.order = "4711";
+  const ClaimResult claim = spool.claim(folder / "in" / "last.stl", folder / "in" / "last.job.toml", state);
+  ASSERT_EQ(claim.error, "");
+  EXPECT_EQ(testing::count_entries(folder / "in"), 0);
+  const auto dir = spool.job_dir(JobFolder::Work, claim.job_id);
+  EXPECT_TRUE(std::filesystem::exists(dir / "last.stl"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "last.job.toml"));
+  const auto read = spool.read_state(JobFolder::Work, claim.job_id);
+  ASSERT_TRUE(read);
+  EXPECT_EQ(read->scan_name, "last.stl");
+  EXPECT_EQ(read->sidecar_name, "last.job.toml");
+  EXPECT_EQ(read->ticket.order, "4711");
+  EXPECT_EQ(read->stage, "claimed");
+  EXPECT_EQ(spool.locate(claim.job_id), JobFolder::Work);
+}
+
+TEST(Spool, IdsAreUniqueAndSortByTime) {
+  const auto folder = testing::scratch_folder("ids");
+  Spool spool(folder);
+  ASSERT_EQ(spool.prepare(), "");
+  std::set<std::string> ids;
+  std::string previous;
+  for (int i = 0; i < 30; ++i) {
+    write_text(folder / ("s" + std::to_string(i) + ".stl"), "x\n");
+    const auto claim = spool.claim(folder / ("s" + std::to_string(i) + ".stl"), {}, JobState{});
+    ASSERT_EQ(claim.error, "");
+    EXPECT_GT(claim.job_id, previous);
+    previous = claim.job_id;
+    ids.insert(claim.job_id);
+  }
+  EXPECT_EQ(ids.size(), 30u);
+  EXPECT_EQ(spool.list(JobFolder::Work).size(), 30u);
+}
+
+TEST(Spool, MoveJobWritesStateThenRenames) {
+  const auto folder = testing::scratch_folder("movejob");
+  Spool spool(folder);
+  ASSERT_EQ(spool.prepare(), "");
+  write_text(folder / "s.stl", "x\n");
+  const auto claim = spool.claim(folder / "s.stl", {}, JobState{});
+  auto state = spool.read_state(JobFolder::Work, claim.job_id).value();
+  state.reason = "the file is cut off";
+  state.advance("failed", state.reason);
+  ASSERT_EQ(spool.move_job(JobFolder::Work, JobFolder::Failed, state), "");
+  EXPECT_EQ(spool.locate(claim.job_id), JobFolder::Failed);
+  const auto failed = spool.read_state(JobFolder::Failed, claim.job_id).value();
+  EXPECT_EQ(failed.stage, "failed");
+  EXPECT_EQ(failed.reason, "the file is cut off");
+  EXPECT_TRUE(std::filesystem::exists(spool.job_dir(JobFolder::Failed, claim.job_id) / "s.stl"));
+  EXPECT_GE(failed.history.size(), 2u);
+}
+
+TEST(JobTicket, TomlAndJsonSidecarsAreReadAlike) {
+  const auto folder = testing::scratch_folder("ticket");
+  write_text(folder / "a.job.toml",
+             "order = \"4711\"\ncustomer = \"Meier\"\nsize = \"EU 42\"\nside = \"pair\"\nquantity = 2\n"
+             "material = \"calf\"\ncutter = \"b\"\nallowance_mm = 8.0\npriority = 3\n");
+  write_text(folder / "b.job.json",
+             R"({"order": 4711, "customer": "Meier", "size": "EU 42", "side": "pair", "quantity": 2,
+                 "material": "calf", "cutter": "b", "allowance_mm": 8, "priority": 3})");
+  for (const char* name : {"a.job.toml", "b.job.json"}) {
+    const auto result = read_job_ticket(folder / name);
+    ASSERT_TRUE(result.ticket) << result.error;
+    EXPECT_EQ(result.ticket->order, "4711");
+    EXPECT_EQ(result.ticket->side, "pair");
+    EXPECT_EQ(result.ticket->quantity, 2);
+    EXPECT_EQ(result.ticket->cutter, "b");
+    EXPECT_DOUBLE_EQ(result.ticket->allowance_mm.value(), 8.0);
+  }
+}
+
+TEST(JobTicket, BadSidecarsAreRefusedWithTheReason) {
+  const auto folder = testing::scratch_folder("badticket");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"order = \"1\"\ncolour = \"red\"\n", "unknown key \"colour\""},
+      {"quantity = 0\n", "quantity must be"},
+      {"side = \"both\"\n", "side \"both\""},
+      {"allowance_mm = \"wide\"\n", "allowance_mm must be"},
+      {"order = \n", "line 1"},
+  };
+  for (const auto& [text, expected] : cases) {
+    write_text(folder / "x.job.toml", text);
+    const auto result = read_job_ticket(folder / "x.job.toml");
+    EXPECT_FALSE(result.ticket) << text;
+    EXPECT_NE(result.error.find(expected), std::string::npos) << result.error;
+    EXPECT_EQ(result.error.find('\n'), std::string::npos) << "one line: " << result.error;
+  }
+  write_text(folder / "y.job.json", "{\"order\": ");
+  EXPECT_NE(read_job_ticket(folder / "y.job.json").error.find("not valid JSON"), std::string::npos);
+}
+
+TEST(JobTicket, SidecarIsFoundBesideTheScan) {
+  const auto folder = testing::scratch_folder("findticket");
+  write_text(folder / "last.stl", "x");
+  EXPECT_TRUE(find_sidecar(folder / "last.stl").empty());
+  write_text(folder / "last.job.json", "{}");
+  EXPECT_EQ(find_sidecar(folder / "last.stl").filename(), "last.job.json");
+  EXPECT_TRUE(is_sidecar_name("a.job.toml"));
+  EXPECT_FALSE(is_sidecar_name("a.toml"));
+}
+
+}  // namespace
+}  // namespace lastcut::daemon
