@@ -1,0 +1,27 @@
+#pragma once
+// The files `lastcut flatten` and the daemon leave for every scan (the contract other tools read):
+//   OUT/NAME-3d.obj    the 3D triangles that were flattened (mm)
+//   OUT/NAME-flat.obj  the same vertices in the same order as "v u v 0", the same faces
+//   OUT/NAME.dxf       the mold: outline on layer CUT, notches on layer MARK (engine/mold/mold_dxf.hpp)
+//   OUT/NAME.svg       the mold over a stretch heat map with a legend (engine/mold/mold_svg.hpp)
+//   OUT/report.json    see scan_report_json; written last (through a temporary file and a rename),
+//                      so its presence means every other file is complete
+// for every segment NAME (medial and lateral, or patch).
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "engine/scan/scan_to_molds.hpp"
+
+namespace lastcut {
+
+// Creates out_dir if needed. Throws EngineError when a file cannot be written.
+void write_scan_outputs(const ScanResult& result, const std::filesystem::path& out_dir);
+
+// {"input", "units": "mm", "side", "seconds_total", "intake": {...}, "notes": [...],
+//  "segments": [{"name", "triangles", "vertices", "flipped", "D_angle", "D_area", "area_3d_mm2",
+//  "area_2d_mm2", "area_error_pct", "boundary_3d_mm", "boundary_2d_mm", "boundary_error_pct",
+//  "max_stretch", "p95_stretch", "seconds_flatten", "iterations", "converged", "outline_points",
+//  "mold_width_mm", "mold_height_mm", "files": {...}}]}
+nlohmann::json scan_report_json(const ScanResult& result);
+
+}  // namespace lastcut

@@ -1,0 +1,134 @@
+#include "engine/scan/scan_to_molds.hpp"
+
+#include <Eigen/SVD>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+
+#include "engine/core/engine_error.hpp"
+#include "engine/mold/boundary_loops.hpp"
+#include "engine/orient/orient_last.hpp"
+
+namespace lastcut {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::vector<double> boundary_loop_lengths_mm(const TriMesh& mesh) {
+  std::vector<double> lengths;
+  for (const auto& loop : boundary_loops(mesh.F)) {
+    double length = 0.0;
+    for (size_t i = 0; i < loop.size(); ++i) length += (mesh.V.row(loop[(i + 1) % loop.size()]) - mesh.V.row(loop[i])).norm();
+    lengths.push_back(length);
+  }
+  return lengths;
+}
+
+// A last may carry small scan holes (segmentation closes them); a boundary longer than the largest
+// closable hole means the scan is an open patch, not a last.
+void refuse_open_patch(const TriMesh& mesh, const SegmentOptions& options) {
+  const double closable_mm = std::numbers::pi * options.max_hole_fill_diameter_mm;
+  int open_loops = 0;
+  double longest_mm = 0.0;
+  for (double length : boundary_loop_lengths_mm(mesh)) {
+    if (length <= closable_mm) continue;
+    ++open_loops;
+    longest_mm = std::max(longest_mm, length);
+  }
+  if (open_loops == 0) return;
+  char line[200];
+  std::snprintf(line, sizeof line,
+                "not a closed last: %d boundary loop%s of up to %.0f mm; use --no-segment to flatten an open patch",
+                open_loops, open_loops == 1 ? "" : "s", longest_mm);
+  throw EngineError(line);
+}
+
+void refuse_closed_patch(const TriMesh& mesh) {
+  if (boundary_loops(mesh.F).empty())
+    throw EngineError("the scan is a closed surface, not an open patch; drop --no-segment to cut a last into halves");
+}
+
+// Rotation (det +1) and translation that put the flattening heel left, toe right, bounding box at
+// the origin (see the header).
+Eigen::MatrixXd place_flattening(const Eigen::MatrixXd& UV, const std::map<std::string, int>& landmarks) {
+  Eigen::Vector2d along = Eigen::Vector2d::UnitX();
+  const auto heel = landmarks.find("heel");
+  const auto toe = landmarks.find("toe");
+  if (heel != landmarks.end() && toe != landmarks.end() && heel->second != toe->second) {
+    along = (UV.row(toe->second) - UV.row(heel->second)).transpose();
+  } else {
+    const Eigen::RowVector2d center = UV.colwise().mean();
+    const Eigen::MatrixXd centered = UV.rowwise() - center;
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(centered.transpose() * centered, Eigen::ComputeFullU);
+    along = svd.matrixU().col(0);
+  }
+  along.normalize();
+  Eigen::Matrix2d rotation;  // maps `along` to +X
+  rotation << along.x(), along.y(), -along.y(), along.x();
+  Eigen::MatrixXd placed = UV * rotation.transpose();
+  const Eigen::RowVector2d lowest = placed.colwise().minCoeff();
+  placed.rowwise() -= lowest;
+  return placed;
+}
+
+SegmentResult flatten_segment(std::string name, TriMesh mesh3d, const std::map<std::string, int>& landmarks,
+                              const ScanOptions& options, std::vector<std::string>& notes) {
+  SegmentResult result;
+  result.name = std::move(name);
+  result.mesh3d = std::move(mesh3d);
+  result.flatten = flatten(result.mesh3d, options.flatten);
+  result.UV = place_flattening(result.flatten.UV, landmarks);
+  result.measures = measure_distortion(result.mesh3d, result.UV);
+  for (const auto& note : result.flatten.notes) notes.push_back(result.name + ": " + note);
+  if (result.measures.flipped_triangles > 0)
+    notes.push_back(result.name + ": " + std::to_string(result.measures.flipped_triangles) +
+                    " triangles are flipped in the flattening");
+  result.mold = make_mold(result.name, result.UV, result.mesh3d.F, landmarks, options.mold);
+  return result;
+}
+
+}  // namespace
+
+Eigen::VectorXd triangle_strain(const DistortionMeasures& measures) {
+  Eigen::VectorXd strain(measures.sigma1.size());
+  for (Eigen::Index f = 0; f < strain.size(); ++f) {
+    const double s2 = measures.sigma2.size() == strain.size() ? measures.sigma2(f) : 1.0;
+    strain(f) = s2 > 0.0 ? std::max(measures.sigma1(f), 1.0 / s2) : std::numeric_limits<double>::infinity();
+  }
+  return strain;
+}
+
+ScanResult scan_to_molds(const std::filesystem::path& scan, const ScanOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  ScanResult result;
+  result.input = scan.string();
+  MeshIntake intake = read_mesh(scan, options.read);
+  result.intake = intake.report;
+
+  if (!options.segment) {
+    refuse_closed_patch(intake.mesh);
+    result.segments.push_back(flatten_segment("patch", std::move(intake.mesh), {}, options, result.notes));
+    result.seconds_total = seconds_since(start);
+    return result;
+  }
+
+  refuse_open_patch(intake.mesh, options.segment_options);
+  check_is_last(intake.mesh);
+  const OrientedLast oriented = orient_last(intake.mesh);
+  result.side = oriented.side;
+  result.notes.insert(result.notes.end(), oriented.notes.begin(), oriented.notes.end());
+  Segmentation halves = segment_last(oriented, options.segment_options);
+  result.notes.insert(result.notes.end(), halves.notes.begin(), halves.notes.end());
+  for (Segment* half : {&halves.medial, &halves.lateral})
+    result.segments.push_back(
+        flatten_segment(half->name, std::move(half->mesh), half->landmarks, options, result.notes));
+  result.seconds_total = seconds_since(start);
+  return result;
+}
+
+}  // namespace lastcut

@@ -1,0 +1,62 @@
+#pragma once
+// The scan-to-molds pipeline, as the command line (`lastcut flatten`) and the daemon run it:
+//   read the scan (units, repair, refusal of bad input)       engine/mesh/read_mesh.hpp
+//   stand it in the canonical frame, tell left from right     engine/orient/orient_last.hpp
+//   cut it into medial and lateral halves (thesis 3.1)        engine/segment/segment_last.hpp
+//   flatten each half with ARAP or LSCM (thesis 2.2-2.4)      engine/flatten/flatten.hpp
+//   measure the distortion, make the mold outline and notches engine/flatten/distortion.hpp, engine/mold
+// With segment = false the scan must already be one disk-shaped patch; it is flattened as it is
+// and named "patch". A closed last without segmentation, or an open patch with it, is refused.
+//
+// Each flattening is turned rigidly (never mirrored) so that its mold lies heel left, toe right
+// (heel -> toe landmark along +X) with its bounding box starting at (0, 0); a patch without
+// landmarks is turned so its longest extent is along X. Rigid motions do not change any measure.
+#include <Eigen/Core>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/core/foot_side.hpp"
+#include "engine/core/tri_mesh.hpp"
+#include "engine/flatten/flatten.hpp"
+#include "engine/mesh/read_mesh.hpp"
+#include "engine/mold/mold.hpp"
+#include "engine/segment/segment_last.hpp"
+
+namespace lastcut {
+
+struct ScanOptions {
+  MeshReadOptions read;
+  bool segment = true;  // false: the scan is one open patch, flattened as it is
+  FlattenOptions flatten;
+  MoldOptions mold;
+  SegmentOptions segment_options;
+};
+
+struct SegmentResult {
+  std::string name;             // "medial", "lateral" or "patch"
+  TriMesh mesh3d;               // the triangles that were flattened, mm (canonical frame when segmented)
+  Eigen::MatrixXd UV;           // #V x 2, mm, same vertex order as mesh3d, placed as described above
+  FlattenResult flatten;        // iterations, timings, notes (its UV is the unplaced one)
+  DistortionMeasures measures;  // of UV against mesh3d
+  Mold mold;                    // outline and notches in the UV coordinates
+};
+
+struct ScanResult {
+  std::string input;                 // the scan's path as given
+  IntakeReport intake;               // what reading the file found and repaired
+  std::optional<FootSide> side;      // known when segmented
+  std::vector<SegmentResult> segments;
+  std::vector<std::string> notes;    // from orientation, segmentation and flattening, one line each
+  double seconds_total = 0;
+};
+
+// Throws EngineError with one line an operator can act on.
+ScanResult scan_to_molds(const std::filesystem::path& scan, const ScanOptions& options);
+
+// The larger of sigma1 and 1/sigma2 per triangle (#F): how much the leather is stretched or
+// compressed there, as a factor >= 1 (infinite for a flipped triangle).
+Eigen::VectorXd triangle_strain(const DistortionMeasures& measures);
+
+}  // namespace lastcut

@@ -1,0 +1,250 @@
+// `lastcut flatten` as an operator runs it: the real binary on real files. Every class of bad
+// scan ends with a non-zero exit and exactly one clear line on stderr, never a crash; a good scan
+// leaves the files of the output contract.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <sstream>
+#include <string>
+
+#include "engine/lastgen/generate_last.hpp"
+#include "engine/mesh/write_mesh.hpp"
+#include "engine/mold/mold_dxf.hpp"
+
+namespace lastcut {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Run {
+  int exit_code = -1;
+  bool crashed = false;
+  std::string out, err;
+};
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class CliFlatten : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = fs::temp_directory_path() / ("lastcut-cli-flatten-" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
+
+  static Run flatten(const std::string& arguments) {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string command = std::string("'") + LASTCUT_BINARY_DIR + "/bin/lastcut' flatten " + arguments + " >'" +
+                                out.string() + "' 2>'" + err.string() + "'";
+    const int status = std::system(command.c_str());
+    Run run;
+    // The shell reports a child killed by a signal as 128 + signal.
+    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    run.crashed = !WIFEXITED(status) || run.exit_code > 128;
+    run.out = read_text(out);
+    run.err = read_text(err);
+    return run;
+  }
+
+  // Non-zero exit, no crash, exactly one line "lastcut: error: ..." that contains `reason`.
+  static void expect_refused(const fs::path& scan, const std::string& extra, const std::string& reason) {
+    const Run run = flatten("'" + scan.string() + "' -o '" + (dir_ / "refused").string() + "' " + extra);
+    EXPECT_FALSE(run.crashed) << scan << ": " << run.err;
+    EXPECT_NE(run.exit_code, 0) << scan;
+    EXPECT_TRUE(run.err.starts_with("lastcut: error: ")) << scan << ": " << run.err;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << scan << ": " << run.err;
+    EXPECT_NE(run.err.find(reason), std::string::npos) << scan << ": " << run.err;
+    EXPECT_FALSE(fs::exists(dir_ / "refused" / "report.json")) << scan;
+  }
+
+  static fs::path write_file(const std::string& name, const std::string& content) {
+    const fs::path path = dir_ / name;
+    std::ofstream(path, std::ios::binary) << content;
+    return path;
+  }
+
+  static inline fs::path dir_;
+};
+
+// A closed axis-aligned box as OBJ text (12 triangles, outward).
+std::string box_obj(double x0, double y0, double z0, double sx, double sy, double sz, int first_vertex = 1) {
+  std::ostringstream obj;
+  for (int i = 0; i < 8; ++i)
+    obj << "v " << x0 + sx * (i & 1) << ' ' << y0 + sy * ((i >> 1) & 1) << ' ' << z0 + sz * ((i >> 2) & 1) << '\n';
+  const int faces[12][3] = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                            {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  for (const auto& f : faces)
+    obj << "f " << f[0] + first_vertex << ' ' << f[1] + first_vertex << ' ' << f[2] + first_vertex << '\n';
+  return obj.str();
+}
+
+// An open, gently curved patch (a piece of a cylinder 200 x 90 mm), ~ 2 x nx x ny triangles.
+TriMesh curved_patch(int nx = 60, int ny = 30) {
+  TriMesh patch;
+  patch.V.resize((nx + 1) * (ny + 1), 3);
+  for (int i = 0; i <= nx; ++i)
+    for (int j = 0; j <= ny; ++j) {
+      const double angle = (static_cast<double>(j) / ny - 0.5) * 1.2;
+      patch.V.row(i * (ny + 1) + j) << 200.0 * i / nx, 75.0 * std::sin(angle), 75.0 * (1.0 - std::cos(angle));
+    }
+  patch.F.resize(2 * nx * ny, 3);
+  int f = 0;
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j) {
+      const int a = i * (ny + 1) + j, b = a + 1, c = a + ny + 1, d = c + 1;
+      patch.F.row(f++) << a, c, d;
+      patch.F.row(f++) << a, d, b;
+    }
+  return patch;
+}
+
+TEST_F(CliFlatten, RefusesAnEmptyFile) { expect_refused(write_file("empty.stl", ""), "", ""); }
+
+TEST_F(CliFlatten, RefusesATruncatedBinaryStl) {
+  std::string stl(80, ' ');
+  const std::uint32_t claimed = 5000;
+  stl.append(reinterpret_cast<const char*>(&claimed), 4);
+  stl.append(120 * 50, '\0');
+  expect_refused(write_file("truncated.stl", stl), "", "truncated");
+}
+
+TEST_F(CliFlatten, RefusesANanVertex) {
+  std::string obj = box_obj(0, 0, 0, 250, 90, 100);
+  obj.replace(obj.find("v 0 0 0"), 7, "v nan 0 0");
+  expect_refused(write_file("nan.obj", obj), "", "");
+}
+
+TEST_F(CliFlatten, RefusesANonManifoldMess) {
+  // Ten triangles hinged on one edge, plus a stray box: no surface a last could be.
+  std::ostringstream obj;
+  obj << "v 0 0 0\nv 0 0 100\n";
+  for (int k = 0; k < 10; ++k) {
+    const double angle = 2.0 * std::numbers::pi * k / 10;
+    obj << "v " << 80 * std::cos(angle) << ' ' << 80 * std::sin(angle) << " 50\n";
+  }
+  for (int k = 0; k < 10; ++k) obj << "f 1 2 " << k + 3 << '\n';
+  expect_refused(write_file("non-manifold.obj", obj.str()), "", "");
+}
+
+TEST_F(CliFlatten, RefusesSeveralDisconnectedPieces) {
+  expect_refused(write_file("pieces.obj", box_obj(0, 0, 0, 120, 90, 100) + box_obj(200, 0, 0, 120, 90, 100, 9) +
+                                              box_obj(400, 0, 0, 120, 90, 100, 17)),
+                 "", "");
+}
+
+TEST_F(CliFlatten, RefusesAFlatPlate) {
+  expect_refused(write_file("plate.obj", box_obj(0, 0, 0, 260, 100, 1)), "", "");
+}
+
+TEST_F(CliFlatten, RefusesAnOpenPatchWithoutNoSegment) {
+  const fs::path patch = dir_ / "patch.obj";
+  write_mesh(patch, curved_patch());
+  expect_refused(patch, "", "--no-segment");
+}
+
+TEST_F(CliFlatten, RefusesAMissingFileAndBadOptions) {
+  expect_refused(dir_ / "no-such-scan.stl", "", "");
+  const fs::path patch = dir_ / "patch-for-options.obj";
+  write_mesh(patch, curved_patch(10, 5));
+  expect_refused(patch, "--no-segment --allowance=-3", "allowance");
+}
+
+void expect_same_mesh_layout(const fs::path& mesh3d, const fs::path& flat) {
+  auto count = [](const fs::path& path, const std::string& prefix) {
+    std::ifstream in(path);
+    std::string line;
+    int n = 0;
+    while (std::getline(in, line)) n += line.starts_with(prefix);
+    return n;
+  };
+  auto faces = [](const fs::path& path) {
+    std::ifstream in(path);
+    std::string line, all;
+    while (std::getline(in, line))
+      if (line.starts_with("f ")) all += line + '\n';
+    return all;
+  };
+  EXPECT_GT(count(mesh3d, "v "), 0);
+  EXPECT_EQ(count(mesh3d, "v "), count(flat, "v "));
+  EXPECT_EQ(faces(mesh3d), faces(flat));
+  std::ifstream in(flat);
+  std::string line;
+  while (std::getline(in, line))
+    if (line.starts_with("v ")) ASSERT_TRUE(line.ends_with(" 0")) << line;
+}
+
+TEST_F(CliFlatten, FlattensALastIntoTheContractFiles) {
+  LastParams params = LastParams::for_eu_size(40, FootSide::Right);
+  params.target_triangles = 20000;
+  params.random_pose = true;
+  params.noise_mm = 0.1;
+  params.seed = 3;
+  const fs::path scan = dir_ / "last.stl";
+  write_stl_binary(scan, generate_last(params).mesh);
+  const fs::path out = dir_ / "molds";
+  const Run run = flatten("'" + scan.string() + "' -o '" + out.string() + "' --allowance 2");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(run.err.empty()) << run.err;
+
+  const auto report = nlohmann::json::parse(read_text(out / "report.json"));
+  EXPECT_EQ(report["units"], "mm");
+  EXPECT_EQ(report["input"], scan.string());
+  EXPECT_EQ(report["side"], "right");
+  EXPECT_GT(report["seconds_total"].get<double>(), 0.0);
+  ASSERT_EQ(report["segments"].size(), 2u);
+  for (const auto& segment : report["segments"]) {
+    const std::string name = segment["name"];
+    EXPECT_TRUE(name == "medial" || name == "lateral") << name;
+    for (const char* file : {"-3d.obj", "-flat.obj", ".dxf", ".svg"}) EXPECT_TRUE(fs::exists(out / (name + file)));
+    expect_same_mesh_layout(out / (name + "-3d.obj"), out / (name + "-flat.obj"));
+    EXPECT_GT(segment["triangles"].get<int>(), 3000);
+    EXPECT_EQ(segment["flipped"], 0);
+    EXPECT_GE(segment["D_angle"].get<double>(), 2.0);
+    EXPECT_LT(segment["D_angle"].get<double>(), 2.1);
+    EXPECT_GE(segment["D_area"].get<double>(), 2.0);
+    EXPECT_LT(segment["D_area"].get<double>(), 2.1);
+    EXPECT_GT(segment["area_3d_mm2"].get<double>(), 5000.0);
+    EXPECT_NEAR(segment["area_2d_mm2"].get<double>() / segment["area_3d_mm2"].get<double>(), 1.0, 0.03);
+    EXPECT_GT(segment["boundary_3d_mm"].get<double>(), 300.0);
+    EXPECT_NEAR(segment["boundary_2d_mm"].get<double>() / segment["boundary_3d_mm"].get<double>(), 1.0, 0.03);
+    EXPECT_GE(segment["max_stretch"].get<double>(), 1.0);
+    EXPECT_GT(segment["seconds_flatten"].get<double>(), 0.0);
+    const Mold mold = read_mold_dxf(out / (name + ".dxf"));
+    EXPECT_EQ(mold.marks.size(), 4u) << name;
+    EXPECT_GT(signed_area(mold.outline), segment["area_2d_mm2"].get<double>());  // 2 mm allowance
+  }
+}
+
+TEST_F(CliFlatten, FlattensAnOpenPatchWithNoSegment) {
+  const fs::path patch = dir_ / "open-patch.obj";
+  write_mesh(patch, curved_patch());
+  const fs::path out = dir_ / "patch-molds";
+  const Run run = flatten("'" + patch.string() + "' -o '" + out.string() + "' --no-segment --method lscm");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto report = nlohmann::json::parse(read_text(out / "report.json"));
+  ASSERT_EQ(report["segments"].size(), 1u);
+  EXPECT_EQ(report["segments"][0]["name"], "patch");
+  EXPECT_EQ(report["segments"][0]["triangles"], 3600);
+  EXPECT_TRUE(report["side"].is_null());
+  expect_same_mesh_layout(out / "patch-3d.obj", out / "patch-flat.obj");
+  EXPECT_TRUE(fs::exists(out / "patch.dxf"));
+  EXPECT_TRUE(fs::exists(out / "patch.svg"));
+  // A cylinder piece develops exactly: its mold is the 200 mm x arc-length rectangle.
+  const Mold mold = read_mold_dxf(out / "patch.dxf");
+  EXPECT_NEAR(signed_area(mold.outline), 200.0 * 75.0 * 1.2, 0.01 * 200.0 * 75.0 * 1.2);
+}
+
+}  // namespace
+}  // namespace lastcut
