@@ -9,6 +9,7 @@
 // L u = b, factored once per mesh; each iteration is one back-substitution for u and v together.
 // The energy is translation invariant, so pinning one vertex at its current position gives exactly the
 // unconstrained minimiser: the result does not depend on where the mesh sits or how it is turned in 3D.
+// Unguarded iterations are Anderson-accelerated (anderson_acceleration.hpp) with an energy safeguard.
 #include <Eigen/Core>
 
 #include "engine/flatten/cotangent_laplacian.hpp"
@@ -22,6 +23,7 @@ struct ArapIterationReport {
   double energy_final = 0;     // ARAP energy of the result (mm^2)
   bool converged = false;      // relative energy change fell below the tolerance
   int shortened_steps = 0;     // global steps shortened so no triangle would flip or collapse
+  int rejected_accelerations = 0;  // Anderson steps that did not lower the energy (plain step taken)
   bool stalled_on_flips = false;  // stopped because even a 1/1024 step would flip or collapse a triangle
 };
 
@@ -31,6 +33,6 @@ struct ArapIterationReport {
 // (the energy still decreases: it is convex in u for fixed rotations), so a flip-free start stays flip-free.
 ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const ReducedLaplacian& laplacian,
                                         const SparseCholesky& factor, Eigen::MatrixXd& UV, int max_iterations,
-                                        double relative_energy_tolerance, bool flip_guard);
+                                        double relative_energy_tolerance, bool flip_guard, bool accelerate = true);
 
 }  // namespace lastcut

@@ -48,7 +48,8 @@ void run_arap(const TriMesh& disk, const TriangleFrames& frames, const DiskTopol
   clock = Clock::now();
   const Eigen::MatrixXd start_map = UV;
   const ArapIterationReport report = run_arap_iterations(frames, laplacian, factor, UV, options.max_iterations,
-                                                         options.relative_energy_tolerance, options.flip_guard);
+                                                         options.relative_energy_tolerance, options.flip_guard,
+                                                         options.anderson_acceleration);
   result.iterations = report.iterations;
   result.converged = report.converged;
   result.energy_start = report.energy_start;
@@ -67,8 +68,9 @@ void run_arap(const TriMesh& disk, const TriangleFrames& frames, const DiskTopol
   if (flips > 0) {
     const UntangleReport untangled = untangle_flips(frames, topology, UV);
     if (untangled.flipped_after == 0) {
-      const ArapIterationReport polish = run_arap_iterations(frames, laplacian, factor, UV, 50,
-                                                             0.0, true);
+      constexpr int kPolishIterations = 30;
+      const ArapIterationReport polish = run_arap_iterations(frames, laplacian, factor, UV, kPolishIterations,
+                                                             options.relative_energy_tolerance, true);
       result.iterations += polish.iterations;
       result.energy_final = polish.energy_final;
       result.notes.push_back(std::to_string(flips) + " flipped triangles repaired: " +
