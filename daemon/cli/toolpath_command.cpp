@@ -9,6 +9,7 @@
 #include "daemon/cli/commands.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/toolpath/cut_file.hpp"
+#include "engine/toolpath/cut_time.hpp"
 #include "engine/toolpath/layout_pieces.hpp"
 #include "engine/toolpath/machine_profile.hpp"
 #include "engine/toolpath/plan_cut_program.hpp"
@@ -78,6 +79,8 @@ int run_toolpath(const ToolpathArguments& arguments) {
   std::printf("mark length   %10.1f mm\n", stats.mark_length_mm);
   std::printf("travel length %10.1f mm\n", stats.travel_length_mm);
   std::printf("tool lifts    %10d\n", stats.tool_lifts);
+  std::printf("estimated     %10.1f min (feeds only, without acceleration)\n",
+              estimated_duration_s(program, profile) / 60.0);
   for (const Unplaced& missing : file.layout.unplaced) {
     std::printf("not in layout: %d x item %d (%s)\n", missing.count, missing.item, missing.reason.c_str());
   }

@@ -29,14 +29,14 @@ std::string error_of(Action action) {
 
 std::vector<PlacedPiece> pieces_of(const Layout& layout) { return placed_pieces(layout, shoe_instance(), SheetRef{}); }
 
-TEST(BadLayout, UnknownItemIsRefused) {
+TEST(ToolpathBadLayout, UnknownItemIsRefused) {
   Layout layout = shoe_layout();
   layout.placements[2].item = 99;
   const std::string message = error_of([&] { pieces_of(layout); });
   EXPECT_NE(message.find("item 99"), std::string::npos) << message;
 }
 
-TEST(BadLayout, NotANumberIsRefused) {
+TEST(ToolpathBadLayout, NotANumberIsRefused) {
   for (int field = 0; field < 3; ++field) {
     Layout layout = shoe_layout();
     double& value = field == 0 ? layout.placements[1].x : field == 1 ? layout.placements[1].y : layout.placements[1].rotation_deg;
@@ -50,7 +50,7 @@ TEST(BadLayout, NotANumberIsRefused) {
   EXPECT_NE(message.find("not a number"), std::string::npos) << message;
 }
 
-TEST(BadLayout, PieceOutsideTheWorkAreaIsRefusedNamingThePiece) {
+TEST(ToolpathBadLayout, PieceOutsideTheWorkAreaIsRefusedNamingThePiece) {
   Layout layout = shoe_layout();
   layout.placements[6].x = 1180.0;  // strap rotated 90 deg: reaches x = 1180 but starts at 1150
   layout.placements[0].x = 1100.0;  // strap: 1100..1220, beyond the plotter's 1189 mm
@@ -66,13 +66,13 @@ TEST(BadLayout, PieceOutsideTheWorkAreaIsRefusedNamingThePiece) {
             std::string::npos);
 }
 
-TEST(BadLayout, DegeneratePieceIsRefused) {
+TEST(ToolpathBadLayout, DegeneratePieceIsRefused) {
   std::vector<PlacedPiece> pieces = pieces_of(shoe_layout());
   pieces[2].outline.points = {{10, 10}, {20, 20}, {30, 30}};
   EXPECT_NE(error_of([&] { plan_cut_program(pieces, profile_named("hpgl-pen-plotter")); }).find("no area"), std::string::npos);
 }
 
-TEST(MachineProfileFile, ShippedProfilesLoadByName) {
+TEST(ToolpathMachineProfileFile, ShippedProfilesLoadByName) {
   for (const char* name : {"grbl-drag-knife", "grbl-tangential-knife", "hpgl-pen-plotter", "hpgl-knife-cutter"}) {
     const MachineProfile profile = profile_named(name);
     EXPECT_EQ(profile.name, name);
@@ -85,7 +85,7 @@ TEST(MachineProfileFile, ShippedProfilesLoadByName) {
   EXPECT_EQ(profile_named("hpgl-pen-plotter").native_format, CutFileFormat::Hpgl);
 }
 
-TEST(MachineProfileFile, MistakesAreErrorsNamingTheKey) {
+TEST(ToolpathMachineProfileFile, MistakesAreErrorsNamingTheKey) {
   const std::string good = read_text(std::filesystem::path(LASTCUT_SOURCE_DIR) / "config/machines/hpgl-knife-cutter.toml");
   auto message_for = [&](const std::string& from, const std::string& to) {
     std::string text = good;

@@ -53,7 +53,7 @@ std::vector<DxfEntity> entities_of(const std::vector<DxfPair>& pairs) {
   return entities;
 }
 
-TEST(DxfFile, HeaderTablesLayersAndTrueGeometry) {
+TEST(ToolpathDxfFile, HeaderTablesLayersAndTrueGeometry) {
   const NestInstance instance = shoe_instance();
   const Layout layout = shoe_layout();
   const MachineProfile profile = profile_named("grbl-drag-knife");
@@ -113,7 +113,7 @@ TEST(DxfFile, HeaderTablesLayersAndTrueGeometry) {
   }
 }
 
-TEST(SvgFile, WellFormedWithOnePathPerPiece) {
+TEST(ToolpathSvgFile, WellFormedWithOnePathPerPiece) {
   const NestInstance instance = shoe_instance();
   const Layout layout = shoe_layout();
   const MachineProfile profile = profile_named("grbl-tangential-knife");

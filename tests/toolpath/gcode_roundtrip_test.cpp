@@ -53,7 +53,7 @@ std::vector<std::vector<Point2>> tool_down_paths(const std::vector<GcodeMove>& m
   return paths;
 }
 
-TEST(GcodeRoundTrip, TangentialKnifeCutsEveryOutlineAsOneClosedPath) {
+TEST(ToolpathGcodeRoundTrip, TangentialKnifeCutsEveryOutlineAsOneClosedPath) {
   const GcodeJob job = run_job("grbl-tangential-knife", "tangential-outlines");
   const double z_cut = job.profile.cut.z_down_mm;
   // Lift-rotate-plunge splits a contour at sharp corners; the knife is "in the contour" from the
@@ -80,7 +80,7 @@ TEST(GcodeRoundTrip, TangentialKnifeCutsEveryOutlineAsOneClosedPath) {
   }
 }
 
-TEST(GcodeRoundTrip, RotaryAxisNeverTurnsMoreThanTheThresholdWhileTheKnifeIsDown) {
+TEST(ToolpathGcodeRoundTrip, RotaryAxisNeverTurnsMoreThanTheThresholdWhileTheKnifeIsDown) {
   const GcodeJob job = run_job("grbl-tangential-knife", "tangential-axis");
   const double z_cut = job.profile.cut.z_down_mm;
   const double threshold_deg = job.profile.corner_threshold_deg;
@@ -106,7 +106,7 @@ TEST(GcodeRoundTrip, RotaryAxisNeverTurnsMoreThanTheThresholdWhileTheKnifeIsDown
   EXPECT_GE(lifts_at_corners, 8) << "rectangles and heel corners need lift-rotate-plunge";
 }
 
-TEST(GcodeRoundTrip, PenMarksLandWhereTheLayoutPutsThem) {
+TEST(ToolpathGcodeRoundTrip, PenMarksLandWhereTheLayoutPutsThem) {
   const GcodeJob job = run_job("grbl-tangential-knife", "tangential-marks");
   const auto pen_paths = tool_down_paths(job.moves, [](const GcodeMove& move) {
     return move.coolant == "M8" && (move.motion == "G1" || move.motion == "G2" || move.motion == "G3");
@@ -125,7 +125,7 @@ TEST(GcodeRoundTrip, PenMarksLandWhereTheLayoutPutsThem) {
   }
 }
 
-TEST(GcodeRoundTrip, DragKnifeWithArcsBladeTipFollowsEveryOutline) {
+TEST(ToolpathGcodeRoundTrip, DragKnifeWithArcsBladeTipFollowsEveryOutline) {
   const GcodeJob job = run_job("grbl-drag-knife", "drag-arcs");
   const double z_cut = job.profile.cut.z_down_mm;
   const double blade_offset_mm = job.profile.cut.blade_offset_mm;

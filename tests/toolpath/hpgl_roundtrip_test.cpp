@@ -31,7 +31,7 @@ HpglJob write_job(const std::string& profile_name, const std::string& test_name)
   return job;
 }
 
-TEST(HpglRoundTrip, EveryOutlineIsOneClosedPathAndMarksLandWhereTheLayoutPutsThem) {
+TEST(ToolpathHpglRoundTrip, EveryOutlineIsOneClosedPathAndMarksLandWhereTheLayoutPutsThem) {
   const HpglJob job = write_job("hpgl-pen-plotter", "pen");
   const std::vector<InterpretedPath> paths = hpgl_paths_via_hp2xx(job.file, 40.0);
   EXPECT_EQ(paths.size(), job.program.strokes.size()) << "every pen-down run of the program, no more";
@@ -54,7 +54,7 @@ TEST(HpglRoundTrip, EveryOutlineIsOneClosedPathAndMarksLandWhereTheLayoutPutsThe
   }
 }
 
-TEST(HpglRoundTrip, DragKnifeBladeTipFollowsEveryOutline) {
+TEST(ToolpathHpglRoundTrip, DragKnifeBladeTipFollowsEveryOutline) {
   const HpglJob job = write_job("hpgl-knife-cutter", "knife");
   const double blade_offset_mm = profile_named("hpgl-knife-cutter").cut.blade_offset_mm;
   const std::vector<InterpretedPath> paths = hpgl_paths_via_hp2xx(job.file, 40.0);
@@ -84,7 +84,7 @@ TEST(HpglRoundTrip, DragKnifeBladeTipFollowsEveryOutline) {
   EXPECT_EQ(holder_on_outline, 0);
 }
 
-TEST(HpglRoundTrip, CommandsFitSmallInputBuffers) {
+TEST(ToolpathHpglRoundTrip, CommandsFitSmallInputBuffers) {
   const HpglJob job = write_job("hpgl-knife-cutter", "buffers");
   const MachineProfile profile = profile_named("hpgl-knife-cutter");
   const std::string text = read_text(job.file);

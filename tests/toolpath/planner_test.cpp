@@ -23,7 +23,7 @@ namespace {
 
 Polygon2 square(double x, double y, double side) { return Polygon2{{{x, y}, {x + side, y}, {x + side, y + side}, {x, y + side}}}; }
 
-TEST(TravelOrder, StopsOnALineAreVisitedInOrder) {
+TEST(ToolpathTravelOrder, StopsOnALineAreVisitedInOrder) {
   std::vector<Point2> stops;
   for (int i : {7, 2, 9, 0, 5, 3, 8, 1, 6, 4}) stops.push_back(Point2(10.0 + 50.0 * i, 20.0));
   const std::vector<int> order = order_for_short_travel(stops, Point2::Zero());
@@ -31,7 +31,7 @@ TEST(TravelOrder, StopsOnALineAreVisitedInOrder) {
   for (size_t k = 1; k < order.size(); ++k) EXPECT_LT(stops[order[k - 1]].x(), stops[order[k]].x());
 }
 
-TEST(TravelOrder, ImprovesOnNearestNeighbourTrapAndOnTheGivenOrder) {
+TEST(ToolpathTravelOrder, ImprovesOnNearestNeighbourTrapAndOnTheGivenOrder) {
   // A grid of stops in a scrambled order (deterministic): the result is a permutation that beats
   // the given order by far and comes within 10 % of the boustrophedon path, which is optimal here.
   std::vector<Point2> stops;
@@ -51,7 +51,7 @@ TEST(TravelOrder, ImprovesOnNearestNeighbourTrapAndOnTheGivenOrder) {
   EXPECT_LE(ours_mm, 1.1 * 63 * 100.0);
 }
 
-TEST(PieceContour, StartsAtTheSharpestCornerAndOvercuts) {
+TEST(ToolpathPieceContour, StartsAtTheSharpestCornerAndOvercuts) {
   const NestInstance instance = shoe_instance();
   // Corners of the mold: toe end of the lasting edge (180, 0) turns ~92 deg, heel end (0, 0)
   // ~80 deg, heel point ~20 deg; the start is the toe end, wherever the tool is.
@@ -68,7 +68,7 @@ TEST(PieceContour, StartsAtTheSharpestCornerAndOvercuts) {
   EXPECT_EQ(contour_start_vertex(circle, Point2(0, -80), 30.0), 54);
 }
 
-TEST(PlanCutProgram, MarksAndLabelBeforeEachContourAndShorterTravelThanLayoutOrder) {
+TEST(ToolpathPlanCutProgram, MarksAndLabelBeforeEachContourAndShorterTravelThanLayoutOrder) {
   const NestInstance instance = shoe_instance();
   const Layout layout = shoe_layout();
   const auto pieces = placed_pieces(layout, instance, SheetRef{});
@@ -96,7 +96,7 @@ TEST(PlanCutProgram, MarksAndLabelBeforeEachContourAndShorterTravelThanLayoutOrd
   EXPECT_EQ(ours.tool_lifts, static_cast<int>(program.strokes.size()));
 }
 
-TEST(PieceLabel, TextFromTheItemLabelInsideThePiece) {
+TEST(ToolpathPieceLabel, TextFromTheItemLabelInsideThePiece) {
   EXPECT_EQ(piece_marking(3, "42 L medial"), "3 42 L");
   EXPECT_EQ(piece_marking(12, "strap EU41.5 right"), "12 41.5 R");
   EXPECT_EQ(piece_marking(1, ""), "1");
@@ -117,7 +117,7 @@ TEST(PieceLabel, TextFromTheItemLabelInsideThePiece) {
   EXPECT_FALSE(place_text("1 42 L", square(0, 0, 5), 6.0, 2.5)) << "too small a piece gets no label";
 }
 
-TEST(StrokeFont, EveryGlyphStaysInItsBoxAndUnknownCharactersAreDrawn) {
+TEST(ToolpathStrokeFont, EveryGlyphStaysInItsBoxAndUnknownCharactersAreDrawn) {
   const std::string all = "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ-+./:()=_?#";
   for (char c : all) {
     const auto strokes = text_strokes(std::string(1, c), Point2(0, 0), 9.0);
@@ -135,7 +135,7 @@ TEST(StrokeFont, EveryGlyphStaysInItsBoxAndUnknownCharactersAreDrawn) {
   EXPECT_NEAR(text_width_mm("12", 9.0), 14.0, 1e-12);
 }
 
-TEST(DragKnife, SimulatedBladeTipCutsTheSquareCorners) {
+TEST(ToolpathDragKnife, SimulatedBladeTipCutsTheSquareCorners) {
   const Polygon2 outline = square(10, 10, 40);
   const std::vector<Point2> tip_path = contour_cut_path(outline, 0, 1.0);
   const DragKnifeOptions options{0.5, 10.0, 5.0};
@@ -148,7 +148,7 @@ TEST(DragKnife, SimulatedBladeTipCutsTheSquareCorners) {
   EXPECT_GT(distance_to_polyline(outline.points[2], naive), 0.1);
 }
 
-TEST(TangentialKnife, LiftsAtSharpCornersTurnsInPlaceAtMildOnesAngleStaysContinuous) {
+TEST(ToolpathTangentialKnife, LiftsAtSharpCornersTurnsInPlaceAtMildOnesAngleStaysContinuous) {
   Stroke stroke;
   stroke.points_mm = {{0, 0}, {10, 0}, {20, 1}, {20, 11}, {10, 11}, {0, 0}};  // 5.7 deg, 84 deg, 90 deg, ...
   double angle_deg = 350.0;  // the axis is near 360: the first angle must be 360, not 0
@@ -168,7 +168,7 @@ TEST(TangentialKnife, LiftsAtSharpCornersTurnsInPlaceAtMildOnesAngleStaysContinu
   EXPECT_EQ(angle_deg, previous);
 }
 
-TEST(ArcFit, CircleSamplesBecomeFewArcsWithinTolerance) {
+TEST(ToolpathArcFit, CircleSamplesBecomeFewArcsWithinTolerance) {
   std::vector<Point2> points;
   for (int i = 0; i <= 170; ++i) points.push_back(Point2(100, 50) + 40.0 * Point2(std::cos(i * 0.02), std::sin(i * 0.02)));
   points.push_back(points.back() + Point2(10, 0));  // a straight tail stays a line
