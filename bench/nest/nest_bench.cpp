@@ -1,0 +1,118 @@
+// Nesting benchmark: every ESICUP strip instance and every Baldacci leather instance in
+// /work/shared/data/nesting, each with the given time limits and thread count. Every layout is
+// validated by the independent Clipper checker (engine/nest/layout_check). Prints two tables:
+//   strips: utilisation, strip length, points below the best-known utilisation (sparrow's records);
+//   hides:  pieces placed / demanded, hides used, utilisation of the used hides.
+// Usage: nest_bench [--data DIR] [--limits 10,60] [--threads 2] [--seed 1] [--only NAME]
+#include <algorithm>
+#include <cstdio>
+#include <functional>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "engine/nest/layout_check.hpp"
+#include "engine/nest/nest_json.hpp"
+#include "engine/nest/nester.hpp"
+
+namespace {
+
+// Best-known utilisation (%) from /work/shared/data/README.md (sparrow, arXiv:2509.13329).
+const std::map<std::string, double> kBestKnown = {{"albano", 89.82}, {"blaz1", 86.22}, {"dagli", 90.17},
+                                                  {"fu", 92.40},     {"jakobs1", 89.25}, {"jakobs2", 87.72},
+                                                  {"mao", 86.87},    {"marques", 92.02}, {"shapes0", 69.98}};
+
+void run_threads(std::vector<std::function<void()>>& tasks) {
+  std::vector<std::thread> threads;
+  for (size_t i = 1; i < tasks.size(); ++i) threads.emplace_back(tasks[i]);
+  tasks[0]();
+  for (auto& t : threads) t.join();
+}
+
+std::vector<std::filesystem::path> json_files(const std::filesystem::path& folder) {
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+    if (entry.path().extension() == ".json") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::filesystem::path data = LASTCUT_SHARED_DATA_DIR "/nesting";
+  std::vector<double> limits = {10, 60};
+  int threads = 2;
+  std::uint64_t seed = 1;
+  std::string only;
+  for (int a = 1; a + 1 < argc; a += 2) {
+    const std::string key = argv[a], value = argv[a + 1];
+    if (key == "--data") data = value;
+    else if (key == "--threads") threads = std::atoi(value.c_str());
+    else if (key == "--seed") seed = std::strtoull(value.c_str(), nullptr, 10);
+    else if (key == "--only") only = value;
+    else if (key == "--limits") {
+      limits.clear();
+      std::stringstream list(value);
+      for (std::string item; std::getline(list, item, ',');) limits.push_back(std::atof(item.c_str()));
+    } else {
+      std::fprintf(stderr, "unknown option %s\n", key.c_str());
+      return 2;
+    }
+  }
+  int invalid = 0;
+  for (double limit : limits) {
+    std::printf("\n## strip packing, %g s, %d threads, seed %llu\n\n", limit, threads, static_cast<unsigned long long>(seed));
+    std::printf("| instance | pieces | utilisation %% | strip length | best-known %% | gap (points) | valid |\n|---|---|---|---|---|---|---|\n");
+    double gap_sum = 0, worst_gap = 0;
+    int count = 0;
+    for (const auto& file : json_files(data / "esicup")) {
+      if (!only.empty() && file.stem() != only) continue;
+      const lastcut::NestInstance instance = lastcut::read_nest_instance(file);
+      lastcut::NestOptions options;
+      options.time_limit_s = limit;
+      options.threads = threads;
+      options.seed = seed;
+      options.run_parallel = run_threads;
+      const lastcut::Layout layout = lastcut::nest(instance, options);
+      const auto problems = lastcut::check_layout(layout, instance);
+      invalid += problems.empty() ? 0 : 1;
+      const double best = kBestKnown.count(file.stem()) ? kBestKnown.at(file.stem()) : 0;
+      const double gap = best - 100 * layout.utilisation;
+      gap_sum += gap, worst_gap = std::max(worst_gap, gap), ++count;
+      std::printf("| %s | %zu | %.2f | %.3f | %.2f | %.2f | %s |\n", instance.name.c_str(), layout.placements.size(),
+                  100 * layout.utilisation, layout.strip_length.value_or(0), best, gap,
+                  problems.empty() ? "yes" : problems.front().c_str());
+      std::fflush(stdout);
+    }
+    if (count) std::printf("| **average** | | | | | %.2f (worst %.2f) | |\n", gap_sum / count, worst_gap);
+
+    std::printf("\n## leather hides, %g s, %d threads, seed %llu\n\n", limit, threads, static_cast<unsigned long long>(seed));
+    std::printf("| instance | pieces placed / demanded | hides used / available | utilisation of used hides %% | valid |\n|---|---|---|---|---|\n");
+    for (const auto& file : json_files(data / "leather")) {
+      if (!only.empty() && file.stem() != only) continue;
+      const lastcut::NestInstance instance = lastcut::read_nest_instance(file);
+      lastcut::NestOptions options;
+      options.time_limit_s = limit;
+      options.threads = threads;
+      options.seed = seed;
+      options.run_parallel = run_threads;
+      const lastcut::Layout layout = lastcut::nest(instance, options);
+      const auto problems = lastcut::check_layout(layout, instance);
+      invalid += problems.empty() ? 0 : 1;
+      int demanded = 0, available = 0;
+      for (const auto& item : instance.items) demanded += item.demand;
+      for (const auto& bin : instance.bins) available += bin.stock;
+      std::printf("| %s | %zu / %d | %d / %d | %.2f | %s |\n", instance.name.c_str(), layout.placements.size(), demanded,
+                  lastcut::used_bin_count(layout), available, 100 * layout.utilisation,
+                  problems.empty() ? "yes" : problems.front().c_str());
+      std::fflush(stdout);
+    }
+  }
+  std::printf("\ninvalid layouts: %d\n", invalid);
+  return invalid == 0 ? 0 : 1;
+}

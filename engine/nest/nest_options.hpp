@@ -1,0 +1,29 @@
+#pragma once
+// Options of the nester. The engine starts no threads: parallel work is handed to run_parallel,
+// which the caller (the CLI, the daemon) may implement with std::thread. The result depends only on
+// the instance, seed and threads when iteration_limit bounds the search; the time limit only stops
+// it early (a stopped round is thrown away, so what is returned was reached deterministically).
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "engine/nest/layout.hpp"
+
+namespace lastcut {
+
+struct NestOptions {
+  double time_limit_s = 10;              // wall-clock budget of the improvement phase
+  std::uint64_t seed = 1;                // worker w of round r draws from a stream seeded by (seed, r, w)
+  int threads = 1;                       // workers per round (each one a task handed to run_parallel)
+  std::optional<double> gap_mm;          // overrides NestInstance::gap_mm
+  std::optional<double> margin_mm;       // overrides NestInstance::margin_mm
+  std::optional<long> iteration_limit;   // improvement rounds; unset = until the time limit
+  double free_rotation_step_deg = 15;    // step of the rotations tried for freely rotating pieces
+  // Called on the caller's thread with every better layout (anytime: the first one comes early).
+  std::function<void(const Layout&)> on_improvement;
+  // Runs every task and returns when all are done. Unset: one after the other on the caller's thread.
+  std::function<void(std::vector<std::function<void()>>&)> run_parallel;
+};
+
+}  // namespace lastcut

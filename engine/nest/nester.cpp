@@ -1,0 +1,22 @@
+#include "engine/nest/nester.hpp"
+
+#include "engine/core/engine_error.hpp"
+#include "engine/nest/hide_nester.hpp"
+#include "engine/nest/strip_nester.hpp"
+
+namespace lastcut {
+
+Layout nest(const NestInstance& instance, const NestOptions& options) {
+  if (options.time_limit_s < 0) throw EngineError("nest: the time limit must not be negative");
+  if (options.threads < 1) throw EngineError("nest: at least one thread is needed");
+  if (options.gap_mm.value_or(0) < 0 || options.margin_mm.value_or(0) < 0)
+    throw EngineError("nest: gap and margin must not be negative");
+  if (options.free_rotation_step_deg <= 0 || options.free_rotation_step_deg > 180)
+    throw EngineError("nest: the free rotation step must be in (0, 180] deg");
+  if (instance.items.empty()) throw EngineError("nest instance " + instance.name + " has no items");
+  if (instance.strip_height) return nest_strip(instance, options);
+  if (instance.bins.empty()) throw EngineError("nest instance " + instance.name + " has neither a strip height nor hides");
+  return nest_hides(instance, options);
+}
+
+}  // namespace lastcut

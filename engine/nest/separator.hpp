@@ -1,0 +1,72 @@
+#pragma once
+// Overlap minimisation by guided local search: pieces may overlap temporarily; every overlapping
+// piece in turn moves to the position (sampled globally and around itself, then refined by
+// coordinate descent) that minimises its weighted overlap; the weights of pairs that keep
+// overlapping grow, so the search leaves local minima. It ends when no overlap is left (a
+// feasible layout) or after max_strikes rounds without progress.
+// Method: sparrow (Gardeyn, Vanden Berghe & Wauters, arXiv:2509.13329, 2025); GLS for nesting:
+// Egeblad, Nielsen & Odgaard 2007; separation by overlap minimisation: Imamichi, Yagiura &
+// Nagamochi 2009; penetration-depth based overlap: Umetani et al. 2009.
+#include <functional>
+#include <vector>
+
+#include "engine/nest/nest_random.hpp"
+#include "engine/nest/nest_shapes.hpp"
+
+namespace lastcut::nest_detail {
+
+// Where pieces may go. offset_range: the translations that keep the piece's bounding box inside the
+// container's bounding box (x0 > x1 when it cannot fit). exterior_overlap: 0 when the piece is inside
+// and clear of every hazard its min_quality forbids, positive otherwise (mm^2, like pair_overlap).
+class Container {
+ public:
+  virtual ~Container() = default;
+  virtual Box offset_range(const OrientedShape& shape) const = 0;
+  virtual double exterior_overlap(const OrientedShape& shape, const Point2& offset, int min_quality,
+                                  double eps_mm) const = 0;
+};
+
+struct PieceState {
+  int orientation = 0;  // index into PreparedItem::orientations
+  Point2 offset = Point2::Zero();
+};
+
+class Separator {
+ public:
+  // pieces: one entry per copy to place (pointers stay valid for the separator's life).
+  Separator(std::vector<const PreparedItem*> pieces, const Container& container, std::uint64_t seed);
+
+  void set_state(const std::vector<PieceState>& state);
+  const std::vector<PieceState>& state() const { return state_; }
+  // Sum of all unweighted overlaps (0: feasible).
+  double total_overlap() const;
+  // GLS until feasible (true) or out of strikes/time (false; the least-overlapping state is kept).
+  bool separate(int max_strikes, int max_stale_iterations, const Deadline& deadline);
+  // Greedy placement of pieces `order` one by one at the feasible spot minimising
+  // objective(world box) among sampled and refined candidates; pieces not in `order` are ignored.
+  // Returns false (piece left where it was) when no sampled spot is feasible.
+  using Objective = std::function<double(const Box& world_box)>;
+  bool place_greedy(int piece, const Objective& objective, int samples, const std::vector<char>& active);
+
+ private:
+  double eps(int a, int b) const;
+  // Weighted overlap of piece i in the given state with the container and active others; stops above bound.
+  double weighted_cost(int i, const PieceState& candidate, double bound, const std::vector<char>* active) const;
+  bool collides_any(int i, const PieceState& candidate, const std::vector<char>& active) const;
+  void update_overlaps(int i);
+  void recompute_all();
+  void move_piece(int i);
+  PieceState refine(int i, PieceState start, double& cost);
+  void update_weights();
+
+  std::vector<const PreparedItem*> pieces_;
+  const Container& container_;
+  Random random_;
+  int n_ = 0;
+  std::vector<PieceState> state_;
+  std::vector<double> overlap_;  // n x n, symmetric, unweighted pair overlap
+  std::vector<double> weight_;   // n x n GLS weights (>= 1)
+  std::vector<double> exterior_, exterior_weight_;
+};
+
+}  // namespace lastcut::nest_detail

@@ -1,0 +1,204 @@
+#include "engine/nest/strip_nester.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+
+#include "engine/nest/nest_random.hpp"
+#include "engine/nest/overlap_proxy.hpp"
+#include "engine/nest/separator.hpp"
+
+namespace lastcut {
+namespace {
+
+using namespace nest_detail;
+
+constexpr int kConstructSamples = 400;
+constexpr int kStrikes = 3;
+constexpr int kStaleIterations = 12;
+constexpr double kFirstShrink = 0.02, kSmallestShrink = 0.0015, kRestartShrink = 0.01;
+
+class StripContainer : public Container {
+ public:
+  StripContainer(double length, double height, double inset) : length_(length), height_(height), inset_(inset) {}
+  void set_length(double length) { length_ = length; }
+  Box inside() const { return {inset_, inset_, length_ - inset_, height_ - inset_}; }
+  Box offset_range(const OrientedShape& s) const override {
+    const Box in = inside();
+    return {in.x0 - s.box.x0, in.y0 - s.box.y0, in.x1 - s.box.x1, in.y1 - s.box.y1};
+  }
+  double exterior_overlap(const OrientedShape& s, const Point2& offset, int, double eps_mm) const override {
+    return rectangle_exterior_overlap(s, offset, inside(), eps_mm);
+  }
+
+ private:
+  double length_, height_, inset_;
+};
+
+std::string format_mm(double mm) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f", mm);
+  return text;
+}
+
+struct Pieces {
+  std::vector<PreparedItem> items;                  // one per NestItem
+  std::vector<const PreparedItem*> pieces;          // one per copy to place
+  std::vector<Unplaced> unplaced;
+};
+
+Pieces prepare(const NestInstance& instance, double grow_mm, double inset_mm, const NestOptions& options) {
+  Pieces result;
+  const double usable_height = *instance.strip_height - 2 * inset_mm;
+  result.items.reserve(instance.items.size());
+  for (size_t k = 0; k < instance.items.size(); ++k) {
+    const NestItem& item = instance.items[k];
+    PreparedItem prepared = prepare_item(item, static_cast<int>(k), grow_mm, options.free_rotation_step_deg);
+    // Keep only the poses that fit the strip's height.
+    std::erase_if(prepared.orientations, [&](const OrientedShape& s) { return s.box.height() > usable_height; });
+    if (item.demand > 0 && prepared.orientations.empty()) {
+      const std::string reason = !prepared.no_pose_reason.empty()
+                                     ? prepared.no_pose_reason
+                                     : "taller than the usable strip height (" + format_mm(usable_height) + " mm) in every allowed rotation";
+      result.unplaced.push_back({item.id, item.demand, reason});
+    }
+    result.items.push_back(std::move(prepared));
+  }
+  for (const PreparedItem& prepared : result.items)
+    if (!prepared.orientations.empty())
+      for (int c = 0; c < instance.items[prepared.item_index].demand; ++c) result.pieces.push_back(&prepared);
+  return result;
+}
+
+double strip_length(const std::vector<const PreparedItem*>& pieces, const std::vector<PieceState>& state, double inset) {
+  double right = 0;
+  for (size_t i = 0; i < pieces.size(); ++i)
+    right = std::max(right, pieces[i]->orientations[state[i].orientation].box.x1 + state[i].offset.x());
+  return right + inset;
+}
+
+Layout to_layout(const NestInstance& instance, const Pieces& pieces, const std::vector<PieceState>& state, double length) {
+  Layout layout;
+  layout.instance = instance.name;
+  layout.strip_length = length;
+  for (size_t i = 0; i < pieces.pieces.size(); ++i) {
+    const PreparedItem& p = *pieces.pieces[i];
+    const Pose& pose = p.orientations[state[i].orientation].pose;
+    layout.placements.push_back({instance.items[p.item_index].id, -1, 0, pose.rotation_deg, pose.mirrored,
+                                 state[i].offset.x(), state[i].offset.y()});
+  }
+  layout.unplaced = pieces.unplaced;
+  update_utilisation(layout, instance);
+  return layout;
+}
+
+// Greedy start: biggest pieces first, each at the sampled feasible spot with the smallest right edge.
+std::vector<PieceState> construct(const Pieces& pieces, double height, double inset, std::uint64_t seed) {
+  double total_width = 0;
+  for (const PreparedItem* p : pieces.pieces) total_width += p->orientations[0].box.width() + p->diameter_mm;
+  StripContainer container(total_width + 2 * std::abs(inset) + 1, height, inset);
+  Separator separator(pieces.pieces, container, seed);
+  const int n = static_cast<int>(pieces.pieces.size());
+  std::vector<int> order(n);
+  for (int i = 0; i < n; ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return pieces.pieces[a]->area_mm2 > pieces.pieces[b]->area_mm2; });
+  std::vector<char> active(n, 0);
+  const double tie = 1e-3;
+  double right = inset;
+  for (int i : order) {
+    auto objective = [tie](const Box& b) { return b.x1 + tie * b.y0; };
+    if (!separator.place_greedy(i, objective, kConstructSamples, active)) {
+      // Nothing sampled was free: put the piece right of everything placed so far.
+      std::vector<PieceState> state = separator.state();
+      const OrientedShape& s = pieces.pieces[i]->orientations[0];
+      state[i] = {0, Point2(right - s.box.x0 + 1e-6 * pieces.pieces[i]->diameter_mm, inset - s.box.y0)};
+      separator.set_state(state);
+    }
+    active[i] = 1;
+    const PieceState& placed = separator.state()[i];
+    right = std::max(right, pieces.pieces[i]->orientations[placed.orientation].box.x1 + placed.offset.x());
+  }
+  return separator.state();
+}
+
+struct Worker {
+  std::unique_ptr<StripContainer> container;
+  std::unique_ptr<Separator> separator;
+  std::vector<PieceState> result;
+  double length = 0;
+  bool success = false;
+};
+
+}  // namespace
+
+Layout nest_strip(const NestInstance& instance, const NestOptions& options) {
+  const Deadline deadline(options.time_limit_s);
+  const double gap = options.gap_mm.value_or(instance.gap_mm);
+  const double margin = options.margin_mm.value_or(instance.margin_mm);
+  const double inset = margin - gap / 2;  // outlines are grown by gap / 2
+  const double height = *instance.strip_height;
+  const Pieces pieces = prepare(instance, gap / 2, inset, options);
+  if (pieces.pieces.empty()) {
+    Layout empty = to_layout(instance, pieces, {}, 0.0);
+    if (options.on_improvement) options.on_improvement(empty);
+    return empty;
+  }
+
+  std::vector<PieceState> best = construct(pieces, height, inset, stream_seed(options.seed, 0, 0));
+  double best_length = strip_length(pieces.pieces, best, inset);
+  Layout layout = to_layout(instance, pieces, best, best_length);
+  if (options.on_improvement) options.on_improvement(layout);
+
+  const int threads = std::max(1, options.threads);
+  std::vector<Worker> workers(threads);
+  for (int w = 0; w < threads; ++w) {
+    workers[w].container = std::make_unique<StripContainer>(best_length, height, inset);
+    workers[w].separator = std::make_unique<Separator>(pieces.pieces, *workers[w].container, stream_seed(options.seed, 1, w));
+  }
+  double shrink = kFirstShrink;
+  int failures_at_this_shrink = 0;
+  for (long round = 0; !options.iteration_limit || round < *options.iteration_limit; ++round) {
+    if (deadline.passed()) break;
+    std::vector<std::function<void()>> tasks;
+    for (int w = 0; w < threads; ++w) {
+      tasks.push_back([&, w] {
+        Worker& worker = workers[w];
+        const double target = best_length * (1 - shrink * (1.0 - 0.4 * w / threads));
+        worker.container->set_length(target);
+        std::vector<PieceState> state = best;
+        for (size_t i = 0; i < state.size(); ++i) {  // push pieces beyond the new end back in
+          const double over = pieces.pieces[i]->orientations[state[i].orientation].box.x1 + state[i].offset.x() - (target - inset);
+          if (over > 0) state[i].offset.x() -= over;
+        }
+        worker.separator->set_state(state);
+        worker.success = worker.separator->separate(kStrikes, kStaleIterations, deadline);
+        worker.result = worker.separator->state();
+        worker.length = worker.success ? strip_length(pieces.pieces, worker.result, inset) : 0;
+      });
+    }
+    if (options.run_parallel) {
+      options.run_parallel(tasks);
+    } else {
+      for (auto& task : tasks) task();
+    }
+    if (deadline.passed()) break;  // a round cut short is not deterministic: drop it
+    int winner = -1;
+    for (int w = 0; w < threads; ++w)
+      if (workers[w].success && workers[w].length < best_length && (winner < 0 || workers[w].length < workers[winner].length))
+        winner = w;
+    if (winner >= 0) {
+      best = workers[winner].result;
+      best_length = workers[winner].length;
+      layout = to_layout(instance, pieces, best, best_length);
+      if (options.on_improvement) options.on_improvement(layout);
+      failures_at_this_shrink = 0;
+    } else if (++failures_at_this_shrink >= 2) {
+      failures_at_this_shrink = 0;
+      shrink *= 0.6;
+      if (shrink < kSmallestShrink) shrink = kRestartShrink;
+    }
+  }
+  return layout;
+}
+
+}  // namespace lastcut
