@@ -2,49 +2,46 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <unordered_map>
 #include <vector>
+
+#include "engine/segment/half_edge_index.hpp"
 
 namespace lastcut {
 namespace {
 
-std::uint64_t edge_key(int from, int to) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(from)) << 32) | static_cast<std::uint32_t>(to);
-}
-
-// Boundary half-edges (from -> to, in the direction of the face that owns them), chained into
-// loops. A vertex with two outgoing boundary edges (a pinch) is left to whichever loop reaches it first.
-std::vector<std::vector<int>> boundary_loops_of(const Eigen::MatrixXi& F) {
-  std::unordered_map<std::uint64_t, int> half_edges;
-  half_edges.reserve(static_cast<std::size_t>(F.rows()) * 3);
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) half_edges.emplace(edge_key(F(f, k), F(f, (k + 1) % 3)), 0);
-  std::unordered_multimap<int, int> next;
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int from = F(f, k), to = F(f, (k + 1) % 3);
-      if (!half_edges.contains(edge_key(to, from))) next.emplace(from, to);
-    }
-  std::vector<int> starts;
-  for (const auto& [from, to] : next) starts.push_back(from);
-  std::sort(starts.begin(), starts.end());  // deterministic order whatever the hash layout
-  std::unordered_map<std::uint64_t, bool> used;
+// Boundary half-edges (from -> to, in the direction of the face that owns them: the ones without
+// a twin), chained into loops. A vertex with two outgoing boundary edges (a pinch) is left to
+// whichever loop reaches it first.
+std::vector<std::vector<int>> boundary_loops_of(const Eigen::MatrixXi& F, Eigen::Index vertex_count) {
+  const HalfEdgeIndex index = build_half_edge_index(F, vertex_count);
+  std::vector<char> is_boundary(index.target.size(), 0), used(index.target.size(), 0);
+  std::vector<int> boundary_edges;
+  for (std::size_t from = 0; from + 1 < index.offsets.size(); ++from)
+    for (int i = index.offsets[from]; i < index.offsets[from + 1]; ++i)
+      if (index.find(index.target[static_cast<std::size_t>(i)], static_cast<int>(from)) < 0) {
+        is_boundary[static_cast<std::size_t>(i)] = 1;
+        boundary_edges.push_back(i);
+      }
+  auto unused_boundary_edge_from = [&](int vertex) {
+    for (int i = index.offsets[static_cast<std::size_t>(vertex)]; i < index.offsets[static_cast<std::size_t>(vertex) + 1]; ++i)
+      if (is_boundary[static_cast<std::size_t>(i)] && !used[static_cast<std::size_t>(i)]) return i;
+    return -1;
+  };
+  auto start_of = [&](int edge) {
+    return static_cast<int>(std::upper_bound(index.offsets.begin(), index.offsets.end(), edge) - index.offsets.begin()) - 1;
+  };
   std::vector<std::vector<int>> loops;
-  for (int start : starts) {
+  for (int start_edge : boundary_edges) {
+    if (used[static_cast<std::size_t>(start_edge)]) continue;
+    const int start = start_of(start_edge);
     std::vector<int> loop{start};
-    int current = start;
     bool closed = false;
-    while (true) {
-      int chosen = -1;
-      auto range = next.equal_range(current);
-      for (auto it = range.first; it != range.second; ++it)
-        if (!used[edge_key(current, it->second)] && (chosen < 0 || it->second < chosen)) chosen = it->second;
-      if (chosen < 0) break;
-      used[edge_key(current, chosen)] = true;
-      if (chosen == start) { closed = true; break; }
-      loop.push_back(chosen);
-      current = chosen;
+    for (int edge = start_edge; edge >= 0;) {
+      used[static_cast<std::size_t>(edge)] = 1;
+      const int to = index.target[static_cast<std::size_t>(edge)];
+      if (to == start) { closed = true; break; }
+      loop.push_back(to);
+      edge = unused_boundary_edge_from(to);
     }
     if (closed && loop.size() >= 3) loops.push_back(std::move(loop));
   }
@@ -62,7 +59,7 @@ double loop_diameter_mm(const Eigen::MatrixXd& V, const std::vector<int>& loop) 
 }  // namespace
 
 int fill_holes(TriMesh& mesh, double max_diameter_mm) {
-  const std::vector<std::vector<int>> loops = boundary_loops_of(mesh.F);
+  const std::vector<std::vector<int>> loops = boundary_loops_of(mesh.F, mesh.V.rows());
   std::vector<Eigen::RowVector3d> new_vertices;
   std::vector<Eigen::RowVector3i> new_faces;
   int filled = 0;

@@ -1,0 +1,256 @@
+#include "engine/mesh/mesh_file_checks.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+#include <vector>
+
+#include "engine/core/engine_error.hpp"
+
+namespace lastcut {
+namespace {
+
+std::string lower(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+std::string read_all(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw EngineError("cannot read " + path.string() + ": " + std::strerror(errno));
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+std::string read_prefix(const std::filesystem::path& path, size_t bytes) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw EngineError("cannot read " + path.string() + ": " + std::strerror(errno));
+  std::string prefix(bytes, '\0');
+  in.read(prefix.data(), static_cast<std::streamsize>(bytes));
+  prefix.resize(static_cast<size_t>(in.gcount()));
+  return prefix;
+}
+
+void check_cap(long long faces, int max_triangles, const std::filesystem::path& path) {
+  if (faces > max_triangles)
+    throw EngineError("too many triangles in " + path.filename().string() + ": " + std::to_string(faces) + " (limit " +
+                      std::to_string(max_triangles) + ")");
+}
+
+bool starts_with_solid(const std::string& prefix) {
+  size_t start = 0;
+  while (start < prefix.size() && std::isspace(static_cast<unsigned char>(prefix[start]))) ++start;
+  return lower(prefix.substr(start, 5)) == "solid";
+}
+
+// OpenMesh drops the faces of a NaN corner silently; an operator must hear the file is broken.
+void check_binary_stl_numbers(const std::filesystem::path& path, std::uint32_t count) {
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(84);
+  std::vector<char> record(50);
+  for (std::uint32_t f = 0; f < count; ++f) {
+    in.read(record.data(), 50);
+    for (int k = 3; k < 12; ++k) {
+      float value = 0.0f;
+      std::memcpy(&value, record.data() + 4 * k, 4);
+      if (!std::isfinite(value))
+        throw EngineError("coordinates that are not numbers (NaN or infinite) in triangle " + std::to_string(f + 1) + " of " +
+                          path.filename().string());
+    }
+  }
+}
+
+// Counts the ASCII STL keywords; a complete file has as many endfacet as facet, three vertex
+// lines per facet and an endsolid.
+long long check_ascii_stl(const std::filesystem::path& path, int max_triangles) {
+  const std::string text = read_all(path);
+  long long facets = 0, endfacets = 0, vertices = 0;
+  bool endsolid = false;
+  size_t i = 0;
+  const size_t n = text.size();
+  while (i < n) {
+    while (i < n && !std::isalpha(static_cast<unsigned char>(text[i]))) ++i;
+    const size_t start = i;
+    while (i < n && !std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+    const size_t length = i - start;
+    if (length < 3 || length > 8) continue;
+    const std::string word = lower(text.substr(start, length));
+    if (word == "facet") {
+      ++facets;
+      check_cap(facets, max_triangles, path);
+    } else if (word == "endfacet") {
+      ++endfacets;
+    } else if (word == "vertex") {
+      ++vertices;
+    } else if (word == "endsolid") {
+      endsolid = true;
+    }
+    if (length <= 4 && (word == "nan" || word == "inf" || word == "-nan" || word == "-inf"))
+      throw EngineError("coordinates that are not numbers (NaN or infinite) in ASCII STL " + path.filename().string());
+  }
+  if (facets == 0) throw EngineError("no triangles in ASCII STL " + path.filename().string());
+  if (!endsolid || endfacets != facets || vertices != 3 * facets)
+    throw EngineError("truncated ASCII STL " + path.filename().string() + ": ends inside facet " +
+                      std::to_string(endfacets + 1) + (endsolid ? "" : " (no endsolid)"));
+  return facets;
+}
+
+MeshFileFacts check_stl(const std::filesystem::path& path, std::uintmax_t size, int max_triangles) {
+  MeshFileFacts facts;
+  const std::string prefix = read_prefix(path, 84);
+  if (size >= 84) {
+    std::uint32_t count = 0;
+    std::memcpy(&count, prefix.data() + 80, 4);
+    if (size == 84 + 50ull * count) {
+      facts.format = MeshFileFormat::BinaryStl;
+      facts.format_name = "binary STL";
+      facts.declared_faces = count;
+      if (count == 0) throw EngineError("no triangles in binary STL " + path.filename().string());
+      check_cap(count, max_triangles, path);
+      check_binary_stl_numbers(path, count);
+      return facts;
+    }
+    if (!starts_with_solid(prefix)) {
+      check_cap(count, max_triangles, path);
+      if (size < 84 + 50ull * count)
+        throw EngineError("truncated binary STL " + path.filename().string() + ": " + std::to_string((size - 84) / 50) +
+                          " of " + std::to_string(count) + " triangles");
+      throw EngineError("binary STL " + path.filename().string() + " is longer than its " + std::to_string(count) +
+                        " triangles (" + std::to_string(size) + " bytes)");
+    }
+  } else if (!starts_with_solid(prefix)) {
+    throw EngineError("truncated binary STL " + path.filename().string() + ": " + std::to_string(size) +
+                      " bytes, the header alone is 84");
+  }
+  facts.format = MeshFileFormat::AsciiStl;
+  facts.format_name = "ASCII STL";
+  facts.declared_faces = check_ascii_stl(path, max_triangles);
+  return facts;
+}
+
+MeshFileFacts check_obj(const std::filesystem::path& path, int max_triangles) {
+  MeshFileFacts facts;
+  facts.format = MeshFileFormat::Obj;
+  facts.format_name = "OBJ";
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  long long faces = 0, vertices = 0;
+  while (std::getline(in, line)) {
+    if (line.size() >= 2 && line[0] == 'f' && std::isspace(static_cast<unsigned char>(line[1]))) ++faces;
+    if (line.size() >= 2 && line[0] == 'v' && std::isspace(static_cast<unsigned char>(line[1]))) ++vertices;
+  }
+  check_cap(faces, max_triangles, path);
+  if (faces == 0) throw EngineError("no faces in OBJ " + path.filename().string());
+  facts.declared_faces = faces;
+  facts.declared_vertices = vertices;
+  return facts;
+}
+
+MeshFileFacts check_ply(const std::filesystem::path& path, int max_triangles) {
+  MeshFileFacts facts;
+  facts.format = MeshFileFormat::Ply;
+  facts.format_name = "PLY";
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  if (!std::getline(in, line) || lower(line).rfind("ply", 0) != 0)
+    throw EngineError("not a PLY file: " + path.filename().string() + " does not start with 'ply'");
+  bool ended = false;
+  for (int lines = 0; lines < 1000 && std::getline(in, line); ++lines) {
+    std::istringstream words(line);
+    std::string keyword, element;
+    long long count = -1;
+    words >> keyword;
+    if (keyword == "end_header") {
+      ended = true;
+      break;
+    }
+    if (keyword == "element" && words >> element >> count) {
+      if (element == "face") facts.declared_faces = count;
+      if (element == "vertex") facts.declared_vertices = count;
+    }
+  }
+  if (!ended) throw EngineError("unreadable PLY header in " + path.filename().string() + " (no end_header)");
+  if (facts.declared_faces <= 0) throw EngineError("no faces in PLY " + path.filename().string());
+  check_cap(facts.declared_faces, max_triangles, path);
+  return facts;
+}
+
+MeshFileFacts check_off(const std::filesystem::path& path, int max_triangles) {
+  MeshFileFacts facts;
+  facts.format = MeshFileFormat::Off;
+  facts.format_name = "OFF";
+  std::ifstream in(path, std::ios::binary);
+  std::string keyword;
+  if (!(in >> keyword) || keyword.find("OFF") == std::string::npos)
+    throw EngineError("not an OFF file: " + path.filename().string() + " does not start with 'OFF'");
+  std::vector<long long> counts;
+  std::string token;
+  while (counts.size() < 3 && in >> token) {
+    if (token[0] == '#') {
+      std::getline(in, token);
+      continue;
+    }
+    try {
+      counts.push_back(std::stoll(token));
+    } catch (const std::exception&) {
+      throw EngineError("unreadable OFF header in " + path.filename().string() + ": '" + token + "' is not a count");
+    }
+  }
+  if (counts.size() < 2) throw EngineError("unreadable OFF header in " + path.filename().string());
+  facts.declared_vertices = counts[0];
+  facts.declared_faces = counts[1];
+  if (facts.declared_faces <= 0) throw EngineError("no faces in OFF " + path.filename().string());
+  check_cap(facts.declared_faces, max_triangles, path);
+  // OpenMesh pads a short OFF with made-up faces: check every record is there.
+  if (keyword.find("BINARY") == std::string::npos) {
+    std::string line;
+    std::getline(in, line);
+    long long vertices = 0, faces = 0;
+    while (vertices < facts.declared_vertices && std::getline(in, line)) {
+      std::istringstream numbers(line);
+      double x, y, z;
+      if (numbers >> x >> y >> z) ++vertices;
+    }
+    while (faces < facts.declared_faces && std::getline(in, line)) {
+      std::istringstream numbers(line);
+      long long corners = 0, index = 0, read = 0;
+      if (!(numbers >> corners)) continue;
+      while (read < corners && numbers >> index) ++read;
+      if (read < corners) break;
+      ++faces;
+    }
+    if (vertices < facts.declared_vertices || faces < facts.declared_faces)
+      throw EngineError("truncated OFF " + path.filename().string() + ": " + std::to_string(vertices) + " of " +
+                        std::to_string(facts.declared_vertices) + " vertices, " + std::to_string(faces) + " of " +
+                        std::to_string(facts.declared_faces) + " faces");
+  }
+  return facts;
+}
+
+}  // namespace
+
+MeshFileFacts inspect_mesh_file(const std::filesystem::path& path, int max_triangles) {
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (!std::filesystem::exists(status)) throw EngineError("cannot read " + path.string() + ": no such file");
+  if (!std::filesystem::is_regular_file(status)) throw EngineError("cannot read " + path.string() + ": not a regular file");
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (error) throw EngineError("cannot read " + path.string() + ": " + error.message());
+  const std::string extension = lower(path.extension().string());
+  if (extension != ".stl" && extension != ".obj" && extension != ".ply" && extension != ".off")
+    throw EngineError("unknown mesh format '" + extension + "' of " + path.filename().string() +
+                      " (lastcut reads .stl, .obj, .ply and .off)");
+  if (size == 0) throw EngineError("empty file " + path.filename().string());
+  if (extension == ".stl") return check_stl(path, size, max_triangles);
+  if (extension == ".obj") return check_obj(path, max_triangles);
+  if (extension == ".ply") return check_ply(path, max_triangles);
+  return check_off(path, max_triangles);
+}
+
+}  // namespace lastcut

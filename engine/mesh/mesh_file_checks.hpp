@@ -1,0 +1,24 @@
+#pragma once
+// What a mesh file is, checked before any parser sees it: OpenMesh's readers accept truncated
+// and oversized files silently (a short binary STL is read as ASCII garbage, a cut ASCII STL
+// gives the facets before the cut). Here: existence, emptiness, format by extension, binary STL
+// size = 84 + 50 n, ASCII STL complete (every facet closed, endsolid present), and the triangle
+// count against the cap from the header where the format declares it (STL, PLY, OFF) or a
+// line count (OBJ). Each failure is one EngineError line naming the file.
+#include <filesystem>
+#include <string>
+
+namespace lastcut {
+
+enum class MeshFileFormat { BinaryStl, AsciiStl, Obj, Ply, Off };
+
+struct MeshFileFacts {
+  MeshFileFormat format = MeshFileFormat::BinaryStl;
+  std::string format_name;         // "binary STL", "ASCII STL", "OBJ", "PLY", "OFF"
+  long long declared_faces = -1;   // from the header or a count of face records; -1 unknown
+  long long declared_vertices = -1;
+};
+
+MeshFileFacts inspect_mesh_file(const std::filesystem::path& path, int max_triangles);
+
+}  // namespace lastcut

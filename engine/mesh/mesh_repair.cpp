@@ -1,0 +1,159 @@
+#include "engine/mesh/mesh_repair.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+#include "engine/mesh/mesh_edges.hpp"
+
+namespace lastcut {
+
+using mesh_detail::drop_faces;
+using mesh_detail::EdgeUse;
+using mesh_detail::sorted_edge_uses;
+using mesh_detail::UnionFind;
+
+int merge_duplicate_vertices(TriMesh& mesh) {
+  const Eigen::Index n = mesh.V.rows();
+  if (n == 0) return 0;
+  const double diagonal = bounding_box_size(mesh).norm();
+  const double cell = std::max(1e-7 * diagonal, 1e-12);
+  const Eigen::RowVector3d low = mesh.V.colwise().minCoeff();
+  std::vector<std::array<int64_t, 3>> keys(static_cast<size_t>(n));
+  for (Eigen::Index v = 0; v < n; ++v)
+    for (int c = 0; c < 3; ++c) keys[static_cast<size_t>(v)][c] = std::llround((mesh.V(v, c) - low(c)) / cell);
+  std::vector<int> order(static_cast<size_t>(n));
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&keys](int a, int b) { return keys[a] != keys[b] ? keys[a] < keys[b] : a < b; });
+  std::vector<int> representative(static_cast<size_t>(n));
+  int merged = 0;
+  for (size_t k = 0; k < order.size(); ++k) {
+    const int v = order[k];
+    if (k > 0 && keys[static_cast<size_t>(order[k - 1])] == keys[static_cast<size_t>(v)]) {
+      representative[static_cast<size_t>(v)] = representative[static_cast<size_t>(order[k - 1])];
+      ++merged;
+    } else {
+      representative[static_cast<size_t>(v)] = v;
+    }
+  }
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
+    for (int c = 0; c < 3; ++c) mesh.F(f, c) = representative[static_cast<size_t>(mesh.F(f, c))];
+  mesh_detail::drop_unreferenced_vertices(mesh);
+  return merged;
+}
+
+int remove_degenerate_faces(TriMesh& mesh) {
+  const double diagonal = bounding_box_size(mesh).norm();
+  const double min_double_area = 1e-12 * diagonal * diagonal;
+  std::vector<char> removed(static_cast<size_t>(mesh.F.rows()), 0);
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    const int a = mesh.F(f, 0), b = mesh.F(f, 1), c = mesh.F(f, 2);
+    if (a == b || b == c || a == c) {
+      removed[static_cast<size_t>(f)] = 1;
+      continue;
+    }
+    const Eigen::Vector3d pa = mesh.V.row(a), pb = mesh.V.row(b), pc = mesh.V.row(c);
+    if ((pb - pa).cross(pc - pa).norm() <= min_double_area) removed[static_cast<size_t>(f)] = 1;
+  }
+  return drop_faces(mesh, removed);
+}
+
+int remove_duplicate_faces(TriMesh& mesh) {
+  std::vector<std::pair<std::array<int, 3>, int>> sorted_faces(static_cast<size_t>(mesh.F.rows()));
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    std::array<int, 3> corners{mesh.F(f, 0), mesh.F(f, 1), mesh.F(f, 2)};
+    std::sort(corners.begin(), corners.end());
+    sorted_faces[static_cast<size_t>(f)] = {corners, static_cast<int>(f)};
+  }
+  std::sort(sorted_faces.begin(), sorted_faces.end());
+  std::vector<char> removed(static_cast<size_t>(mesh.F.rows()), 0);
+  for (size_t k = 1; k < sorted_faces.size(); ++k)
+    if (sorted_faces[k].first == sorted_faces[k - 1].first) removed[static_cast<size_t>(sorted_faces[k].second)] = 1;
+  return drop_faces(mesh, removed);
+}
+
+namespace {
+
+// Flags every face that uses an edge shared by more than two faces.
+int flag_faces_on_crowded_edges(const TriMesh& mesh, std::vector<char>& removed) {
+  const std::vector<EdgeUse> uses = sorted_edge_uses(mesh, removed);
+  int flagged = 0;
+  for (size_t begin = 0; begin < uses.size();) {
+    size_t end = begin;
+    while (end < uses.size() && uses[end].key == uses[begin].key) ++end;
+    if (end - begin > 2)
+      for (size_t k = begin; k < end; ++k)
+        if (!removed[static_cast<size_t>(uses[k].face)]) {
+          removed[static_cast<size_t>(uses[k].face)] = 1;
+          ++flagged;
+        }
+    begin = end;
+  }
+  return flagged;
+}
+
+// At a vertex where several fans of faces touch only at the vertex (a "bow tie"), flags the faces
+// of all but the largest fan. Fans: corners of one vertex joined across the manifold edges.
+int flag_faces_in_extra_fans(const TriMesh& mesh, std::vector<char>& removed) {
+  const std::vector<EdgeUse> uses = sorted_edge_uses(mesh, removed);
+  UnionFind corners(static_cast<size_t>(mesh.F.rows()) * 3);
+  for (size_t k = 0; k + 1 < uses.size(); ++k) {
+    if (uses[k].key != uses[k + 1].key) continue;
+    const EdgeUse& x = uses[k];
+    const EdgeUse& y = uses[k + 1];
+    // Join the corners of the same vertex in the two faces, for both ends of the edge.
+    for (int end = 0; end < 2; ++end) {
+      const int vertex = mesh.F(x.face, (x.corner + end) % 3);
+      for (int c = 0; c < 3; ++c)
+        if (mesh.F(y.face, c) == vertex) corners.unite(3 * x.face + (x.corner + end) % 3, 3 * y.face + c);
+    }
+  }
+  // Fan sizes per vertex: count corners per root, then pick each vertex's largest root.
+  std::vector<int> fan_size(static_cast<size_t>(mesh.F.rows()) * 3, 0);
+  std::vector<int> largest_root(static_cast<size_t>(mesh.V.rows()), -1);
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
+    if (!removed[static_cast<size_t>(f)])
+      for (int c = 0; c < 3; ++c) ++fan_size[static_cast<size_t>(corners.find(static_cast<int>(3 * f + c)))];
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    if (removed[static_cast<size_t>(f)]) continue;
+    for (int c = 0; c < 3; ++c) {
+      const int root = corners.find(static_cast<int>(3 * f + c));
+      int& best = largest_root[static_cast<size_t>(mesh.F(f, c))];
+      if (best < 0 || fan_size[static_cast<size_t>(root)] > fan_size[static_cast<size_t>(best)] ||
+          (fan_size[static_cast<size_t>(root)] == fan_size[static_cast<size_t>(best)] && root < best))
+        best = root;
+    }
+  }
+  int flagged = 0;
+  std::vector<char> flag_now(static_cast<size_t>(mesh.F.rows()), 0);
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    if (removed[static_cast<size_t>(f)]) continue;
+    for (int c = 0; c < 3; ++c)
+      if (corners.find(static_cast<int>(3 * f + c)) != largest_root[static_cast<size_t>(mesh.F(f, c))]) flag_now[static_cast<size_t>(f)] = 1;
+  }
+  for (size_t f = 0; f < flag_now.size(); ++f)
+    if (flag_now[f]) {
+      removed[f] = 1;
+      ++flagged;
+    }
+  return flagged;
+}
+
+}  // namespace
+
+int remove_non_manifold_faces(TriMesh& mesh) {
+  std::vector<char> removed(static_cast<size_t>(mesh.F.rows()), 0);
+  // Removing faces can leave a new bow tie behind; a few rounds settle every case seen in scans.
+  for (int round = 0; round < 4; ++round) {
+    const int flagged = flag_faces_on_crowded_edges(mesh, removed) + flag_faces_in_extra_fans(mesh, removed);
+    if (flagged == 0) break;
+  }
+  const int dropped = drop_faces(mesh, removed);
+  mesh_detail::drop_unreferenced_vertices(mesh);
+  return dropped;
+}
+
+}  // namespace lastcut

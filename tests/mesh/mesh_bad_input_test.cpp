@@ -1,0 +1,163 @@
+// Every class of bad input is refused with an EngineError whose one line says what is wrong.
+// The files are made by the test in a temp dir; nothing is mocked.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "engine/core/engine_error.hpp"
+#include "engine/mesh/read_mesh.hpp"
+#include "test_meshes.hpp"
+
+namespace lastcut {
+namespace {
+
+// Runs `action`, expects an EngineError whose message contains `expected` and is one line.
+template <typename Action>
+void expect_refusal(Action action, const std::string& expected) {
+  try {
+    action();
+    ADD_FAILURE() << "accepted, expected a refusal mentioning '" << expected << "'";
+  } catch (const EngineError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find(expected), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << "message is not one line: " << message;
+  }
+}
+
+TriMesh small_box() { return test::box_mesh({0, 0, 0}, {250, 90, 120}, 4); }
+
+TEST(MeshBadInput, MissingFile) {
+  test::TempDir dir("missing");
+  expect_refusal([&] { read_mesh(dir / "nope.stl"); }, "no such file");
+}
+
+TEST(MeshBadInput, EmptyFile) {
+  test::TempDir dir("empty");
+  test::write_text(dir / "empty.stl", "");
+  expect_refusal([&] { read_mesh(dir / "empty.stl"); }, "empty file");
+}
+
+TEST(MeshBadInput, UnknownExtension) {
+  test::TempDir dir("extension");
+  test::write_text(dir / "scan.xyz", "1 2 3\n");
+  expect_refusal([&] { read_mesh(dir / "scan.xyz"); }, "unknown mesh format '.xyz'");
+}
+
+TEST(MeshBadInput, TruncatedBinaryStl) {
+  test::TempDir dir("truncated-binary");
+  const TriMesh box = small_box();
+  test::write_binary_stl_raw(dir / "cut.stl", box);
+  std::filesystem::resize_file(dir / "cut.stl", 84 + 50 * 100 + 17);
+  expect_refusal([&] { read_mesh(dir / "cut.stl"); }, "truncated binary STL cut.stl: 100 of 192 triangles");
+  std::filesystem::resize_file(dir / "cut.stl", 40);
+  expect_refusal([&] { read_mesh(dir / "cut.stl"); }, "truncated binary STL");
+}
+
+TEST(MeshBadInput, BinaryStlLongerThanItsCount) {
+  test::TempDir dir("long-binary");
+  test::write_binary_stl_raw(dir / "long.stl", small_box(), 150);
+  expect_refusal([&] { read_mesh(dir / "long.stl"); }, "longer than its 150 triangles");
+}
+
+TEST(MeshBadInput, TruncatedAsciiStl) {
+  test::TempDir dir("truncated-ascii");
+  test::write_ascii_stl_raw(dir / "cut.stl", small_box());
+  const auto full = std::filesystem::file_size(dir / "cut.stl");
+  std::filesystem::resize_file(dir / "cut.stl", full / 2);
+  expect_refusal([&] { read_mesh(dir / "cut.stl"); }, "truncated ASCII STL cut.stl: ends inside facet");
+}
+
+TEST(MeshBadInput, NanAndInfiniteCoordinates) {
+  test::TempDir dir("nan");
+  TriMesh box = small_box();
+  box.V(5, 1) = std::numeric_limits<double>::quiet_NaN();
+  test::write_binary_stl_raw(dir / "nan.stl", box);
+  expect_refusal([&] { read_mesh(dir / "nan.stl"); }, "NaN or infinite");
+  box = small_box();
+  box.V(7, 2) = std::numeric_limits<double>::infinity();
+  test::write_binary_stl_raw(dir / "inf.stl", box);
+  expect_refusal([&] { read_mesh(dir / "inf.stl"); }, "NaN or infinite");
+}
+
+TEST(MeshBadInput, TooManyTrianglesIsRefusedBeforeLoading) {
+  test::TempDir dir("cap");
+  const TriMesh box = small_box();
+  MeshReadOptions options;
+  options.max_triangles = 100;
+  test::write_binary_stl_raw(dir / "big.stl", box);
+  expect_refusal([&] { read_mesh(dir / "big.stl", options); }, "too many triangles in big.stl: 192 (limit 100)");
+  test::write_obj_raw(dir / "big.obj", box.V, box.F);
+  expect_refusal([&] { read_mesh(dir / "big.obj", options); }, "too many triangles");
+  write_mesh(dir / "big.ply", box);
+  expect_refusal([&] { read_mesh(dir / "big.ply", options); }, "too many triangles");
+  write_mesh(dir / "big.off", box);
+  expect_refusal([&] { read_mesh(dir / "big.off", options); }, "too many triangles");
+  // A header that claims four billion triangles is refused without reading them.
+  test::write_binary_stl_raw(dir / "liar.stl", box, 4000000000L);
+  expect_refusal([&] { read_mesh(dir / "liar.stl"); }, "too many triangles");
+}
+
+TEST(MeshBadInput, NoTrianglesAtAll) {
+  test::TempDir dir("no-faces");
+  test::write_text(dir / "points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+  expect_refusal([&] { read_mesh(dir / "points.obj"); }, "no faces");
+  test::write_text(dir / "zero.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n");
+  expect_refusal([&] { read_mesh(dir / "zero.off"); }, "no faces");
+  test::write_text(dir / "garbage.ply", "not a ply at all\n");
+  expect_refusal([&] { read_mesh(dir / "garbage.ply"); }, "not a PLY file");
+}
+
+TEST(MeshBadInput, TruncatedOff) {
+  test::TempDir dir("truncated-off");
+  write_mesh(dir / "box.off", small_box());
+  const auto full = std::filesystem::file_size(dir / "box.off");
+  std::filesystem::resize_file(dir / "box.off", full - 600);
+  expect_refusal([&] { read_mesh(dir / "box.off"); }, "box.off");
+}
+
+TEST(MeshBadInput, NonManifoldMessIsRefused) {
+  // Triangles fanned around shared edges: every edge carries three or more faces.
+  test::TempDir dir("mess");
+  std::string obj;
+  for (int k = 0; k < 40; ++k) obj += "v " + std::to_string(100.0 * std::cos(k)) + " " + std::to_string(100.0 * std::sin(k)) + " " + std::to_string(3.0 * k) + "\n";
+  for (int k = 2; k < 40; ++k) obj += "f 1 2 " + std::to_string(k + 1) + "\n";
+  test::write_text(dir / "mess.obj", obj);
+  expect_refusal([&] { read_mesh(dir / "mess.obj"); }, "non-manifold");
+}
+
+TEST(MeshBadInput, SeveralDisconnectedPieces) {
+  test::TempDir dir("pieces");
+  const TriMesh a = test::box_mesh({0, 0, 0}, {250, 90, 120}, 4);
+  const TriMesh b = test::box_mesh({400, 0, 0}, {600, 90, 100}, 4);
+  TriMesh both;
+  both.V.resize(a.V.rows() + b.V.rows(), 3);
+  both.V << a.V, b.V;
+  both.F.resize(a.F.rows() + b.F.rows(), 3);
+  both.F << a.F, (b.F.array() + static_cast<int>(a.V.rows())).matrix();
+  test::write_obj_raw(dir / "two.obj", both.V, both.F);
+  expect_refusal([&] { read_mesh(dir / "two.obj"); }, "several disconnected pieces (2 pieces, the second has");
+}
+
+TEST(MeshBadInput, AmbiguousUnitsAreRefusedUnlessGiven) {
+  test::TempDir dir("units");
+  TriMesh box = small_box();
+  box.V /= 25.4;  // a last in inches: ~ 10 units long
+  test::write_obj_raw(dir / "inches.obj", box.V, box.F);
+  expect_refusal([&] { read_mesh(dir / "inches.obj"); }, "cannot tell the length unit");
+  MeshReadOptions options;
+  options.unit = LengthUnit::Inch;
+  const MeshIntake intake = read_mesh(dir / "inches.obj", options);
+  EXPECT_NEAR(bounding_box_size(intake.mesh).x(), 250.0, 1e-4);  // OpenMesh parses floats
+}
+
+TEST(CheckIsLast, FlatPlateTinyAndHugeAreNotLasts) {
+  expect_refusal([] { check_is_last(test::box_mesh({0, 0, 0}, {260, 100, 3}, 6)); }, "not a shoe last: flat");
+  expect_refusal([] { check_is_last(test::box_mesh({0, 0, 0}, {40, 20, 20}, 6)); }, "not a shoe last: ");
+  expect_refusal([] { check_is_last(test::box_mesh({0, 0, 0}, {900, 300, 300}, 6)); }, "mm long (a last is 100..500 mm");
+  expect_refusal([] { check_is_last(test::box_mesh({0, 0, 0}, {260, 100, 100}, 1)); }, "only 12 triangles");
+  EXPECT_NO_THROW(check_is_last(test::box_mesh({0, 0, 0}, {260, 95, 120}, 6)));
+}
+
+}  // namespace
+}  // namespace lastcut

@@ -1,0 +1,38 @@
+#pragma once
+// Small meshes and raw file writers for the intake tests. The writers are written here, not
+// taken from engine/mesh, so that bad files can be made on purpose and good files do not depend
+// on the code under test.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "engine/core/tri_mesh.hpp"
+
+namespace lastcut::test {
+
+// Closed axis-aligned box from `low` to `high` (mm), each face split into n x n quads
+// (2 n^2 triangles per side), outward oriented.
+TriMesh box_mesh(const Eigen::Vector3d& low, const Eigen::Vector3d& high, int n);
+
+// A fresh, empty directory under the system temp dir, removed by the destructor.
+class TempDir {
+ public:
+  explicit TempDir(const std::string& name);
+  ~TempDir();
+  std::filesystem::path operator/(const std::string& file) const { return path_ / file; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+void write_text(const std::filesystem::path& path, const std::string& text);
+// OBJ with the given vertices and faces (0-based in F, written 1-based).
+void write_obj_raw(const std::filesystem::path& path, const Eigen::MatrixXd& V, const Eigen::MatrixXi& F);
+// ASCII STL (one facet per triangle).
+void write_ascii_stl_raw(const std::filesystem::path& path, const TriMesh& mesh);
+// Binary STL whose header claims `claimed_triangles` (defaults to the real count).
+void write_binary_stl_raw(const std::filesystem::path& path, const TriMesh& mesh, long claimed_triangles = -1);
+
+double signed_volume(const TriMesh& mesh);
+
+}  // namespace lastcut::test
