@@ -14,6 +14,7 @@ namespace {
 
 constexpr int kAngleBins = 360;
 constexpr double kSoleToTopRatio = 1.3;       // how much more flat area the sole has than the top side
+constexpr double kSoleToInstepWidthRatio = 1.08;  // how much wider a last is at the sole than over the instep
 constexpr double kTopCutBandMm = 8.0;         // the top cut lies within this of the highest point
 constexpr double kSmallestTopCutMm2 = 400.0;  // a flat top smaller than this does not set "up"
 
@@ -89,6 +90,35 @@ Eigen::Vector3d mean_normal_in_cone(const Eigen::MatrixXd& normals, const Eigen:
   return sum;
 }
 
+// Width of the surface near the bottom and near the top of the middle of the last, for a
+// candidate up direction: a last (and a foot) is wide at the sole and narrower over the instep.
+// The middle 30-70 % of the length is cut into slabs; in each, the vertices in the lowest and
+// in the highest quarter of the slab's height are measured across. Returns bottom / top width.
+double bottom_to_top_width_ratio(const TriMesh& mesh, const Eigen::Vector3d& along_axis, const Eigen::Vector3d& up) {
+  const Eigen::Vector3d across = up.cross(along_axis).normalized();
+  const Eigen::VectorXd s = mesh.V * along_axis, h = mesh.V * up, w = mesh.V * across;
+  const double s_min = s.minCoeff(), length = s.maxCoeff() - s_min;
+  constexpr int kSlabs = 5;
+  double bottom_width = 0.0, top_width = 0.0;
+  for (int slab = 0; slab < kSlabs; ++slab) {
+    const double from = s_min + (0.3 + 0.4 * slab / kSlabs) * length, to = from + 0.4 * length / kSlabs;
+    double h_low = 1e300, h_high = -1e300;
+    for (Eigen::Index v = 0; v < s.size(); ++v)
+      if (s(v) >= from && s(v) < to) { h_low = std::min(h_low, h(v)); h_high = std::max(h_high, h(v)); }
+    if (h_high <= h_low) continue;
+    const double band = 0.25 * (h_high - h_low);
+    double bottom_min = 1e300, bottom_max = -1e300, top_min = 1e300, top_max = -1e300;
+    for (Eigen::Index v = 0; v < s.size(); ++v) {
+      if (s(v) < from || s(v) >= to) continue;
+      if (h(v) < h_low + band) { bottom_min = std::min(bottom_min, w(v)); bottom_max = std::max(bottom_max, w(v)); }
+      if (h(v) > h_high - band) { top_min = std::min(top_min, w(v)); top_max = std::max(top_max, w(v)); }
+    }
+    bottom_width += bottom_max - bottom_min;
+    top_width += top_max - top_min;
+  }
+  return top_width > 0.0 ? bottom_width / top_width : 1.0;
+}
+
 struct EndHeights {
   double at_min_end_mm;
   double at_max_end_mm;
@@ -135,12 +165,23 @@ OrientedLast orient_last(const TriMesh& scan) {
   const Eigen::Vector3d long_axis = principal.axes.col(0);
   const auto [sole_angle, sole_ratio] =
       sole_direction(scan, normals, areas, principal.axes.col(1), principal.axes.col(2));
-  const Eigen::Vector3d rough_down =
+  Eigen::Vector3d rough_down =
       std::cos(sole_angle) * principal.axes.col(1) + std::sin(sole_angle) * principal.axes.col(2);
   if (sole_ratio < kSoleToTopRatio)
     throw EngineError("cannot tell the sole from the top: the largest flat side is only " + format_double(sole_ratio, 2) +
                       "x the side opposite it");
-  result.notes.push_back("sole: the flat side " + format_double(sole_ratio, 1) + "x larger than the side opposite it");
+  // The flat-area imbalance finds the up-down axis; which end of it is the sole is told by width:
+  // the sole is wide, the instep narrow (a foot's curved arch can make the sole the smaller flat side).
+  double width_ratio = bottom_to_top_width_ratio(scan, long_axis, -rough_down);
+  if (width_ratio < 1.0) {
+    rough_down = -rough_down;
+    width_ratio = 1.0 / width_ratio;
+  }
+  if (width_ratio < kSoleToInstepWidthRatio)
+    throw EngineError("cannot tell the sole from the top: the last is as wide at the bottom as at the top (" +
+                      format_double(width_ratio, 2) + "x)");
+  result.notes.push_back("sole: on the up-down axis (flat sides " + format_double(sole_ratio, 1) +
+                         "x unequal), the side " + format_double(width_ratio, 2) + "x wider than the instep");
 
   // Refine up. The sole is curved (heel pitch, toe spring), so its mean normal leans towards the
   // toe; the top cut is a plane nearly level in the wearing position, so when it is found its

@@ -1,57 +1,43 @@
 #include "engine/segment/mesh_graph.hpp"
 
 #include <algorithm>
-#include <cstdint>
+
+#include "engine/segment/half_edge_index.hpp"
 
 namespace lastcut {
 
 MeshGraph build_mesh_graph(const TriMesh& mesh) {
-  const Eigen::Index face_count = mesh.F.rows();
-  struct HalfEdge {
-    std::uint64_t key;  // (smaller vertex, larger vertex)
-    int corner;         // 3 * face + k
-  };
-  std::vector<HalfEdge> half_edges;
-  half_edges.reserve(static_cast<std::size_t>(face_count) * 3);
-  for (Eigen::Index f = 0; f < face_count; ++f)
-    for (int k = 0; k < 3; ++k) {
-      const auto a = static_cast<std::uint32_t>(mesh.F(f, k)), b = static_cast<std::uint32_t>(mesh.F(f, (k + 1) % 3));
-      const std::uint64_t key = (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
-      half_edges.push_back({key, static_cast<int>(3 * f + k)});
-    }
-  std::sort(half_edges.begin(), half_edges.end(),
-            [](const HalfEdge& x, const HalfEdge& y) { return x.key != y.key ? x.key < y.key : x.corner < y.corner; });
-
-  MeshGraph graph;
-  graph.face_neighbors = Eigen::MatrixXi::Constant(face_count, 3, -1);
+  const HalfEdgeIndex index = build_half_edge_index(mesh.F, mesh.V.rows());
   const auto vertex_count = static_cast<std::size_t>(mesh.V.rows());
-  std::vector<int> degree(vertex_count, 0);
-  std::vector<std::pair<int, int>> edges;
-  edges.reserve(half_edges.size() / 2 + 1);
-  for (std::size_t i = 0; i < half_edges.size();) {
-    std::size_t j = i;
-    while (j < half_edges.size() && half_edges[j].key == half_edges[i].key) ++j;
-    if (j - i == 2) {  // manifold interior edge; boundary and non-manifold edges keep -1
-      const int c0 = half_edges[i].corner, c1 = half_edges[i + 1].corner;
-      graph.face_neighbors(c0 / 3, c0 % 3) = c1 / 3;
-      graph.face_neighbors(c1 / 3, c1 % 3) = c0 / 3;
+  MeshGraph graph;
+  graph.face_neighbors = Eigen::MatrixXi::Constant(mesh.F.rows(), 3, -1);
+  // Neighbours of v: the ends of its outgoing half-edges, plus the starts of incoming boundary
+  // half-edges (on a boundary the last neighbour has no half-edge back to it).
+  std::vector<std::pair<int, int>> boundary_incoming;  // (vertex, neighbour)
+  for (std::size_t from = 0; from < vertex_count; ++from)
+    for (int i = index.offsets[from]; i < index.offsets[from + 1]; ++i) {
+      const int to = index.target[static_cast<std::size_t>(i)];
+      const int twin = index.find(to, static_cast<int>(from));
+      const int c = index.corner[static_cast<std::size_t>(i)];
+      if (twin >= 0)
+        graph.face_neighbors(c / 3, c % 3) = index.corner[static_cast<std::size_t>(twin)] / 3;
+      else
+        boundary_incoming.emplace_back(to, static_cast<int>(from));
     }
-    const int a = static_cast<int>(half_edges[i].key >> 32), b = static_cast<int>(half_edges[i].key & 0xffffffffu);
-    edges.emplace_back(a, b);
-    ++degree[static_cast<std::size_t>(a)];
-    ++degree[static_cast<std::size_t>(b)];
-    i = j;
-  }
+  std::sort(boundary_incoming.begin(), boundary_incoming.end());
   graph.neighbor_offsets.assign(vertex_count + 1, 0);
-  for (std::size_t v = 0; v < vertex_count; ++v) graph.neighbor_offsets[v + 1] = graph.neighbor_offsets[v] + degree[v];
-  graph.neighbors.resize(static_cast<std::size_t>(graph.neighbor_offsets[vertex_count]));
-  std::vector<int> fill(graph.neighbor_offsets.begin(), graph.neighbor_offsets.end() - 1);
-  for (const auto& [a, b] : edges) {
-    graph.neighbors[static_cast<std::size_t>(fill[static_cast<std::size_t>(a)]++)] = b;
-    graph.neighbors[static_cast<std::size_t>(fill[static_cast<std::size_t>(b)]++)] = a;
+  graph.neighbors.reserve(index.target.size() + boundary_incoming.size());
+  auto incoming = boundary_incoming.begin();
+  for (std::size_t v = 0; v < vertex_count; ++v) {
+    const auto row_begin = static_cast<std::ptrdiff_t>(graph.neighbors.size());
+    graph.neighbors.insert(graph.neighbors.end(), index.target.begin() + index.offsets[v],
+                           index.target.begin() + index.offsets[v + 1]);
+    for (; incoming != boundary_incoming.end() && incoming->first == static_cast<int>(v); ++incoming)
+      graph.neighbors.push_back(incoming->second);
+    std::sort(graph.neighbors.begin() + row_begin, graph.neighbors.end());
+    graph.neighbors.erase(std::unique(graph.neighbors.begin() + row_begin, graph.neighbors.end()), graph.neighbors.end());
+    graph.neighbor_offsets[v + 1] = static_cast<int>(graph.neighbors.size());
   }
-  for (std::size_t v = 0; v < vertex_count; ++v)
-    std::sort(graph.neighbors.begin() + graph.neighbor_offsets[v], graph.neighbors.begin() + graph.neighbor_offsets[v + 1]);
   return graph;
 }
 

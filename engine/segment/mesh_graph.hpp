@@ -14,7 +14,7 @@ struct MeshGraph {
   std::vector<int> neighbors;         // sorted per vertex
 };
 
-// mesh: V #V x 3, F #F x 3. Linear time after one sort of the edges.
+// mesh: V #V x 3, F #F x 3. Linear time (vertex degrees are small).
 MeshGraph build_mesh_graph(const TriMesh& mesh);
 
 // Connected components (across shared edges) of the faces with in_set[f] != 0.

@@ -2,63 +2,46 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <unordered_map>
-#include <unordered_set>
 
 #include "engine/core/engine_error.hpp"
+#include "engine/segment/half_edge_index.hpp"
 #include "engine/segment/surface_regions.hpp"
 
 namespace lastcut {
 namespace {
 
-std::uint64_t directed_key(int from, int to) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(from)) << 32) | static_cast<std::uint32_t>(to);
-}
-
 struct BoundaryShape {
   int loops = 0;
   bool pinched = false;
-  std::vector<int> vertices;  // every boundary vertex
+  long long euler_characteristic = 0;  // V - E + F
+  std::vector<int> vertices;           // every boundary vertex
 };
 
-BoundaryShape boundary_shape(const Eigen::MatrixXi& F) {
-  std::unordered_set<std::uint64_t> half_edges;
-  half_edges.reserve(static_cast<std::size_t>(F.rows()) * 3);
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) half_edges.insert(directed_key(F(f, k), F(f, (k + 1) % 3)));
-  std::unordered_map<int, int> next;
+// Boundary loops and Euler characteristic: a half-edge without a twin is on the boundary, and
+// E = (half-edges + boundary half-edges) / 2 on a manifold.
+BoundaryShape boundary_shape(const TriMesh& mesh) {
+  const HalfEdgeIndex index = build_half_edge_index(mesh.F, mesh.V.rows());
   BoundaryShape shape;
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int a = F(f, k), b = F(f, (k + 1) % 3);
-      if (half_edges.contains(directed_key(b, a))) continue;
-      if (!next.emplace(a, b).second) shape.pinched = true;
-      shape.vertices.push_back(a);
+  std::vector<int> next(static_cast<std::size_t>(mesh.V.rows()), -1);
+  for (std::size_t from = 0; from + 1 < index.offsets.size(); ++from)
+    for (int i = index.offsets[from]; i < index.offsets[from + 1]; ++i) {
+      const int to = index.target[static_cast<std::size_t>(i)];
+      if (index.find(static_cast<int>(from), to) != i) shape.pinched = true;  // the same edge twice
+      if (index.find(to, static_cast<int>(from)) >= 0) continue;
+      if (next[from] >= 0) shape.pinched = true;
+      next[from] = to;
+      shape.vertices.push_back(static_cast<int>(from));
     }
-  std::sort(shape.vertices.begin(), shape.vertices.end());
-  std::unordered_set<int> visited;
+  std::vector<char> visited(next.size(), 0);
   for (int start : shape.vertices) {
-    if (visited.contains(start)) continue;
+    if (visited[static_cast<std::size_t>(start)]) continue;
     ++shape.loops;
-    for (int v = start; !visited.contains(v);) {
-      visited.insert(v);
-      auto it = next.find(v);
-      if (it == next.end()) { shape.pinched = true; break; }
-      v = it->second;
-    }
+    for (int v = start; v >= 0 && !visited[static_cast<std::size_t>(v)]; v = next[static_cast<std::size_t>(v)])
+      visited[static_cast<std::size_t>(v)] = 1;
   }
+  const auto edges = static_cast<long long>((index.target.size() + shape.vertices.size()) / 2);
+  shape.euler_characteristic = static_cast<long long>(mesh.V.rows()) - edges + static_cast<long long>(mesh.F.rows());
   return shape;
-}
-
-long long euler_characteristic(const TriMesh& mesh) {
-  std::unordered_set<std::uint64_t> edges;
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int a = mesh.F(f, k), b = mesh.F(f, (k + 1) % 3);
-      edges.insert(directed_key(std::min(a, b), std::max(a, b)));
-    }
-  return static_cast<long long>(mesh.V.rows()) - static_cast<long long>(edges.size()) + static_cast<long long>(mesh.F.rows());
 }
 
 }  // namespace
@@ -99,8 +82,8 @@ Segment extract_half(const TriMesh& cut, const MeshGraph& graph, const std::vect
   segment.mesh.V.resize(static_cast<Eigen::Index>(old_index.size()), 3);
   for (std::size_t v = 0; v < old_index.size(); ++v) segment.mesh.V.row(static_cast<Eigen::Index>(v)) = cut.V.row(old_index[v]);
 
-  const BoundaryShape shape = boundary_shape(segment.mesh.F);
-  const long long euler = euler_characteristic(segment.mesh);
+  const BoundaryShape shape = boundary_shape(segment.mesh);
+  const long long euler = shape.euler_characteristic;
   if (shape.loops != 1 || shape.pinched || euler != 1)
     throw EngineError("the " + name + " half is not a single sheet (" + std::to_string(shape.loops) +
                       " boundary loops, Euler characteristic " + std::to_string(euler) +

@@ -1,5 +1,6 @@
 #include "engine/segment/segment_last.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -17,6 +18,7 @@ namespace {
 
 constexpr int kNormalSmoothingPasses = 3;  // rings over which normals are averaged before classifying
 constexpr double kSnapFraction = 0.1;      // crossings within 10 % of an edge end snap to the vertex
+constexpr double kReferenceEdgeMm = 2.0;   // smoothing_passes are counted on a mesh with edges this long
 
 std::string fixed(double value, int decimals) {
   std::ostringstream out;
@@ -24,6 +26,13 @@ std::string fixed(double value, int decimals) {
   out.precision(decimals);
   out << value;
   return out.str();
+}
+
+double mean_edge_length_mm(const TriMesh& mesh) {
+  double sum = 0.0;
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) sum += (mesh.V.row(mesh.F(f, k)) - mesh.V.row(mesh.F(f, (k + 1) % 3))).norm();
+  return sum / (3.0 * static_cast<double>(mesh.F.rows()));
 }
 
 double region_area(const std::vector<char>& region, const Eigen::VectorXd& areas) {
@@ -104,8 +113,15 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
 
   // Steps 4-5: cut along the smoothed feather line, the smoothed top rim and the plane.
   Eigen::MatrixXd fields(mesh.V.rows(), 3);
-  fields.col(kSoleField) = smoothed_indicator(mesh, graph, sole, areas, options.smoothing_passes);
-  fields.col(kTopField) = smoothed_indicator(mesh, graph, top, areas, options.smoothing_passes);
+  // The passes are meant for the reference edge length; on a finer or coarser mesh they are scaled
+  // so the curves are smoothed over the same distance in mm (diffusion spreads as sqrt(passes)).
+  const double edge_mm = mean_edge_length_mm(mesh);
+  const int field_passes =
+      options.smoothing_passes == 0
+          ? 0
+          : std::max(1, static_cast<int>(std::lround(options.smoothing_passes * std::pow(kReferenceEdgeMm / edge_mm, 2))));
+  fields.col(kSoleField) = smoothed_indicator(mesh, graph, sole, areas, field_passes);
+  fields.col(kTopField) = smoothed_indicator(mesh, graph, top, areas, field_passes);
   fields.col(kPlaneField) = (mesh.V * plane.normal).array() + plane.offset;
   for (int column : {kSoleField, kTopField, kPlaneField}) cut_along_zero_level(mesh, fields, column, kSnapFraction);
 

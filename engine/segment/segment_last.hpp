@@ -26,7 +26,7 @@ struct SegmentOptions {
   double sole_angle_rad = -std::numbers::pi / 4;  // faces at or below this elevation are sole (eq. 7)
   double top_angle_rad = std::numbers::pi / 4;    // faces at or above this elevation may be top (eq. 9)
   double plane_t = 1.0 / 3.0;                     // where the toe and heel parts of the sole contour end (eqs. 14-15)
-  int smoothing_passes = 10;                      // eq. 22 moving-average passes on the contours
+  int smoothing_passes = 10;                      // eq. 22 moving-average passes (scaled to a 2 mm edge mesh)
   double max_hole_fill_diameter_mm = 15;          // larger scan holes are not closed
 };
 

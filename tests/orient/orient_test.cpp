@@ -1,0 +1,141 @@
+// Orientation of scans in any pose: generated lasts of several sizes, both sides, with noise and
+// holes, must come back in the generator's canonical frame (up to the 3 degree tilt of its top
+// cut, which the orientation takes as level) with the right side; the FIND foot template must
+// come back the same whatever its pose; shapes that are not lasts are refused.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <iostream>
+#include <numbers>
+#include <random>
+
+#include "engine/core/engine_error.hpp"
+#include "engine/lastgen/generate_last.hpp"
+#include "engine/orient/orient_last.hpp"
+#include "../segment/segment_test_support.hpp"
+
+namespace lastcut {
+namespace {
+
+struct LastCase {
+  int eu_size;
+  FootSide side;
+  std::uint64_t seed;
+};
+
+std::string case_name(const testing::TestParamInfo<LastCase>& info) {
+  return "EU" + std::to_string(info.param.eu_size) + (info.param.side == FootSide::Left ? "Left" : "Right");
+}
+
+Eigen::Affine3d random_rigid(std::uint64_t seed) {
+  std::mt19937_64 random(seed);
+  std::normal_distribution<double> gauss;
+  Eigen::Quaterniond q(gauss(random), gauss(random), gauss(random), gauss(random));
+  Eigen::Affine3d pose = Eigen::Affine3d::Identity();
+  pose.linear() = q.normalized().toRotationMatrix();
+  pose.translation() = Eigen::Vector3d(gauss(random), gauss(random), gauss(random)) * 100.0;
+  return pose;
+}
+
+TriMesh transformed(const TriMesh& mesh, const Eigen::Affine3d& pose) {
+  TriMesh result = mesh;
+  result.V = (mesh.V * pose.linear().transpose()).rowwise() + pose.translation().transpose();
+  return result;
+}
+
+class OrientGeneratedLast : public testing::TestWithParam<LastCase> {};
+
+TEST_P(OrientGeneratedLast, RecoversTheCanonicalFrameAndTheSide) {
+  const LastCase c = GetParam();
+  LastParams params = LastParams::for_eu_size(c.eu_size, c.side);
+  params.target_triangles = 15000;
+  params.noise_mm = 0.2;
+  params.holes = 3;
+  params.random_pose = true;
+  params.seed = c.seed;
+  const GeneratedLast scan = generate_last(params);
+  const OrientedLast last = orient_last(scan.mesh);
+
+  EXPECT_EQ(last.side, c.side);
+  const Eigen::Matrix3d rotation = last.scan_to_canonical.linear();
+  EXPECT_NEAR(rotation.determinant(), 1.0, 1e-9);
+  EXPECT_LT((rotation * rotation.transpose() - Eigen::Matrix3d::Identity()).norm(), 1e-9);
+  const Eigen::Matrix3d truth = scan.canonical_to_scan.linear().transpose();  // scan -> canonical
+  const double error_deg = Eigen::AngleAxisd(rotation * truth.transpose()).angle() * 180.0 / std::numbers::pi;
+  std::cout << "rotation error " << error_deg << " deg\n";
+  EXPECT_LT(error_deg, 5.0);
+  // The generator's frame, up to that rotation: toe +X (heel to toe), up +Z.
+  EXPECT_GT((rotation * truth.transpose())(0, 0), std::cos(5.0 * std::numbers::pi / 180.0));
+  EXPECT_GT((rotation * truth.transpose())(2, 2), std::cos(5.0 * std::numbers::pi / 180.0));
+
+  // The transform and the mesh agree; sole on z = 0, heel at x = 0, length preserved.
+  const TriMesh again = transformed(scan.mesh, last.scan_to_canonical);
+  EXPECT_LT((again.V - last.mesh.V).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_NEAR(last.mesh.V.col(2).minCoeff(), 0.0, 1e-9);
+  EXPECT_NEAR(last.mesh.V.col(0).minCoeff(), 0.0, 1e-9);
+  EXPECT_NEAR(last.mesh.V.col(0).maxCoeff(), params.length_mm, 0.03 * params.length_mm);
+  EXPECT_EQ(last.mesh.F, scan.mesh.F);
+  EXPECT_GE(last.notes.size(), 3u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Sizes, OrientGeneratedLast,
+                         testing::Values(LastCase{35, FootSide::Left, 31}, LastCase{37, FootSide::Right, 32},
+                                         LastCase{41, FootSide::Left, 33}, LastCase{44, FootSide::Right, 34},
+                                         LastCase{47, FootSide::Left, 35}, LastCase{47, FootSide::Right, 36}),
+                         case_name);
+
+TEST(OrientGeneratedLast, IsDeterministic) {
+  LastParams params = LastParams::for_eu_size(42, FootSide::Right);
+  params.target_triangles = 8000;
+  params.noise_mm = 0.2;
+  params.random_pose = true;
+  const TriMesh scan = generate_last(params).mesh;
+  const OrientedLast first = orient_last(scan), second = orient_last(scan);
+  EXPECT_EQ(first.mesh.V, second.mesh.V);
+  EXPECT_TRUE(first.scan_to_canonical.isApprox(second.scan_to_canonical, 0.0));
+  EXPECT_EQ(first.notes, second.notes);
+}
+
+// A real scanned shape: the FIND foot template (metres, 1,750 triangles). It is a foot, not a
+// last, but it has a sole, a flat ankle cut and a taller heel end: whatever its pose, the same
+// canonical mesh must come back.
+TEST(OrientFootTemplate, GivesTheSameFrameInAnyPose) {
+  const TriMesh foot = test::read_obj_scaled(LASTCUT_SHARED_DATA_DIR "/meshes/find-template-foot.obj", 1000.0);
+  ASSERT_EQ(foot.F.rows(), 1750);
+  const OrientedLast reference = orient_last(foot);
+  for (const std::string& note : reference.notes) std::cout << note << "\n";
+  const Eigen::Vector3d size = bounding_box_size(reference.mesh);
+  EXPECT_GT(size.x(), 250.0);  // the foot's length lies along X
+  EXPECT_LT(size.y(), 120.0);
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    const OrientedLast posed = orient_last(transformed(foot, random_rigid(seed)));
+    EXPECT_EQ(posed.side, reference.side) << "pose " << seed;
+    EXPECT_LT((posed.mesh.V - reference.mesh.V).cwiseAbs().maxCoeff(), 0.5) << "pose " << seed;
+  }
+}
+
+std::string error_of(const TriMesh& mesh) {
+  try {
+    orient_last(mesh);
+  } catch (const EngineError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(OrientBadInput, ShapesThatAreNotLastsAreRefused) {
+  EXPECT_NE(error_of(TriMesh{}), "");
+  EXPECT_NE(error_of(test::uv_sphere(50.0, 20, 30)).find("long axis"), std::string::npos);
+  // An ellipsoid has a long axis but no sole, no top and no heel.
+  TriMesh ellipsoid = test::uv_sphere(50.0, 20, 30);
+  ellipsoid.V.col(0) *= 3.0;
+  EXPECT_NE(error_of(ellipsoid).find("cannot tell"), std::string::npos) << error_of(ellipsoid);
+  // All vertices on one point: no area.
+  TriMesh collapsed = test::uv_sphere(50.0, 20, 30);
+  collapsed.V.setZero();
+  EXPECT_NE(error_of(collapsed), "");
+}
+
+}  // namespace
+}  // namespace lastcut
