@@ -8,6 +8,7 @@
 #include "engine/lastgen/scan_artifacts.hpp"
 #include "engine/mesh/isotropic_remesh.hpp"
 #include "engine/mesh/marching_tetrahedra.hpp"
+#include "engine/mesh/midpoint_subdivision.hpp"
 
 namespace lastcut {
 namespace {
@@ -17,7 +18,17 @@ double edge_length_for(double area_mm2, int triangles) {
   return std::sqrt(4.0 * area_mm2 / (std::sqrt(3.0) * triangles));
 }
 
-TriMesh remeshed_surface(const LastShape& shape, double shape_length_mm, int target_triangles) {
+// Large meshes: remesh a quarter (or sixteenth...) of the count, subdivide 1-to-4, project the
+// new vertices and relax; far cheaper than remeshing at full density and of the same quality.
+constexpr int kLargestRemeshedTriangles = 60000;
+
+TriMesh remeshed_surface(const LastShape& shape, double shape_length_mm, int requested_triangles) {
+  int levels = 0;
+  int target_triangles = requested_triangles;
+  while (target_triangles > kLargestRemeshedTriangles) {
+    target_triangles /= 4;
+    ++levels;
+  }
   const auto [low, high] = shape.bounds_mm();
   SampleGrid grid;
   // About one target edge per cell (a last's area is ~ 1.06 length^2), so that the remesher starts
@@ -37,6 +48,12 @@ TriMesh remeshed_surface(const LastShape& shape, double shape_length_mm, int tar
   edge_mm *= std::sqrt(static_cast<double>(mesh.n_faces()) / target_triangles);
   isotropic_remesh(mesh, edge_mm, 4, project);
   adjust_triangle_count(mesh, target_triangles, 3, project);
+  if (levels == 0) return from_openmesh(mesh);
+  TriMesh fine = from_openmesh(mesh);
+  for (int level = 0; level < levels; ++level) fine = subdivide_midpoint(fine);
+  for (Eigen::Index v = 0; v < fine.V.rows(); ++v) fine.V.row(v) = shape.project(fine.V.row(v).transpose()).transpose();
+  mesh = to_openmesh(fine);
+  adjust_triangle_count(mesh, requested_triangles, 2, project);
   return from_openmesh(mesh);
 }
 

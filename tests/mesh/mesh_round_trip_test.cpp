@@ -98,3 +98,23 @@ TEST(ReferenceData, HalfFootIsOneOpenDisk) {
 
 }  // namespace
 }  // namespace lastcut
+
+namespace lastcut {
+namespace {
+
+TEST(ShippedSamples, SampleLastsAreCleanClosedLasts) {
+  for (const char* name : {"sample-last-eu42-left.stl", "sample-last-eu38-right.stl"}) {
+    const std::filesystem::path path = std::filesystem::path(LASTCUT_SOURCE_DIR) / "config" / "samples" / name;
+    ASSERT_TRUE(std::filesystem::exists(path)) << path;
+    EXPECT_LT(std::filesystem::file_size(path), 3u * 1024 * 1024);
+    const MeshIntake intake = read_mesh(path);
+    EXPECT_EQ(intake.report.format, "binary STL");
+    EXPECT_EQ(intake.mesh.triangle_count(), 50000) << name;
+    EXPECT_EQ(intake.report.boundary_loops, 0) << name;
+    EXPECT_EQ(intake.report.faces_flipped + intake.report.non_manifold_faces_removed, 0) << name;
+    EXPECT_NO_THROW(check_is_last(intake.mesh)) << name;
+  }
+}
+
+}  // namespace
+}  // namespace lastcut
