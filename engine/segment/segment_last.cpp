@@ -93,7 +93,7 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
   const MeshGraph graph = build_mesh_graph(mesh);
   const Eigen::VectorXd areas = triangle_areas(mesh);
   const Eigen::VectorXd elevation = smoothed_elevation_rad(mesh, graph, kNormalSmoothingPasses);
-  const std::vector<char> sole = sole_region(graph, elevation, areas, options.sole_angle_rad);
+  const std::vector<char> sole = sole_region(mesh, graph, elevation, areas, options.sole_angle_rad);
   const std::vector<char> top = top_region(mesh, graph, elevation, areas, options.top_angle_rad);
   for (std::size_t f = 0; f < sole.size(); ++f)
     if (sole[f] && top[f]) throw EngineError("the sole and the top cut touch: the last is not standing upright");

@@ -9,6 +9,9 @@
 namespace lastcut {
 namespace {
 
+constexpr double kSolePieceShare = 0.02;  // a low down-facing piece this share of the sole's area joins it
+constexpr double kSoleBridgeMm = 12.0;     // closing radius that joins such pieces to the sole
+
 int largest_component(const std::vector<int>& component, int count, const Eigen::VectorXd& areas) {
   const std::vector<double> sums = component_areas(component, count, areas);
   return static_cast<int>(std::max_element(sums.begin(), sums.end()) - sums.begin());
@@ -42,6 +45,27 @@ std::vector<char> grow_from(const MeshGraph& graph, int seed, Accept accept) {
     }
   }
   return region;
+}
+
+// Morphological closing over faces sharing a vertex: `rings` dilations, then `rings` erosions
+// that never remove a face of the original region. Bridges gaps up to about 2 x rings edges.
+void close_region(const TriMesh& mesh, std::vector<char>& region, int rings) {
+  const std::vector<char> original = region;
+  std::vector<char> touched(static_cast<std::size_t>(mesh.V.rows()));
+  for (int grow = 0; grow < 2 * rings; ++grow) {
+    const bool dilating = grow < rings;
+    std::fill(touched.begin(), touched.end(), 0);
+    for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
+      if (static_cast<bool>(region[static_cast<std::size_t>(f)]) == dilating)
+        for (int k = 0; k < 3; ++k) touched[static_cast<std::size_t>(mesh.F(f, k))] = 1;
+    for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+      const bool near = touched[static_cast<std::size_t>(mesh.F(f, 0))] || touched[static_cast<std::size_t>(mesh.F(f, 1))] ||
+                        touched[static_cast<std::size_t>(mesh.F(f, 2))];
+      auto& in = region[static_cast<std::size_t>(f)];
+      if (dilating && near) in = 1;
+      if (!dilating && near && !original[static_cast<std::size_t>(f)]) in = 0;
+    }
+  }
 }
 
 }  // namespace
@@ -85,16 +109,43 @@ void fill_region_gaps(const MeshGraph& graph, const Eigen::VectorXd& areas, std:
     if (component[f] >= 0 && component[f] != keep) region[f] = 1;
 }
 
-std::vector<char> sole_region(const MeshGraph& graph, const Eigen::VectorXd& elevation_rad, const Eigen::VectorXd& areas,
-                              double sole_angle_rad) {
+std::vector<char> sole_region(const TriMesh& mesh, const MeshGraph& graph, const Eigen::VectorXd& elevation_rad,
+                              const Eigen::VectorXd& areas, double sole_angle_rad) {
   std::vector<char> facing_down(static_cast<std::size_t>(elevation_rad.size()));
   for (Eigen::Index f = 0; f < elevation_rad.size(); ++f) facing_down[static_cast<std::size_t>(f)] = elevation_rad(f) <= sole_angle_rad;
   int count = 0;
   const std::vector<int> component = face_components(graph, facing_down, count);
   if (count == 0) throw EngineError("no triangle faces down: the last is not standing on its sole");
-  const int keep = largest_component(component, count, areas);
+  const std::vector<double> sums = component_areas(component, count, areas);
+  const int largest = static_cast<int>(std::max_element(sums.begin(), sums.end()) - sums.begin());
+
+  // Besides the largest piece, low pieces of some size belong to the sole too (a foot scan's toe
+  // pads, cut off from the ball by the toe crease); they are joined to it by a closing.
+  const double z_min = mesh.V.col(2).minCoeff(), low_limit = z_min + (mesh.V.col(2).maxCoeff() - z_min) / 3.0;
+  std::vector<double> weighted_z(static_cast<std::size_t>(count), 0.0);
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    const int c = component[static_cast<std::size_t>(f)];
+    if (c >= 0) weighted_z[static_cast<std::size_t>(c)] += areas(f) * face_centroid(mesh, f).z();
+  }
+  std::vector<char> keep(static_cast<std::size_t>(count), 0);
+  int kept = 0;
+  for (int c = 0; c < count; ++c) {
+    const auto i = static_cast<std::size_t>(c);
+    keep[i] = c == largest || (sums[i] >= kSolePieceShare * sums[static_cast<std::size_t>(largest)] &&
+                               weighted_z[i] / sums[i] < low_limit);
+    kept += keep[i] ? 1 : 0;
+  }
   std::vector<char> region(facing_down.size(), 0);
-  for (std::size_t f = 0; f < region.size(); ++f) region[f] = component[f] == keep;
+  for (std::size_t f = 0; f < region.size(); ++f) region[f] = component[f] >= 0 && keep[static_cast<std::size_t>(component[f])];
+  if (kept > 1) {
+    const int rings = std::clamp(static_cast<int>(std::ceil(kSoleBridgeMm / mean_edge_length_mm(mesh))), 1, 12);
+    close_region(mesh, region, rings);
+    int pieces = 0;
+    const std::vector<int> joined = face_components(graph, region, pieces);
+    const std::vector<double> piece_areas = component_areas(joined, pieces, areas);
+    const int main_piece = static_cast<int>(std::max_element(piece_areas.begin(), piece_areas.end()) - piece_areas.begin());
+    for (std::size_t f = 0; f < region.size(); ++f) region[f] = joined[f] == main_piece;
+  }
   fill_region_gaps(graph, areas, region);
   return region;
 }

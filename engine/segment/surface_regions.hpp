@@ -21,10 +21,11 @@ Eigen::VectorXd smoothed_elevation_rad(const TriMesh& mesh, const MeshGraph& gra
 // Adds to `region` every connected piece of its complement except the one with the largest area.
 void fill_region_gaps(const MeshGraph& graph, const Eigen::VectorXd& areas, std::vector<char>& region);
 
-// The largest connected set of faces with elevation <= sole_angle_rad, gaps filled. #F flags.
-// Throws EngineError when no face faces down.
-std::vector<char> sole_region(const MeshGraph& graph, const Eigen::VectorXd& elevation_rad, const Eigen::VectorXd& areas,
-                              double sole_angle_rad);
+// The largest connected set of faces with elevation <= sole_angle_rad, joined (by a closing) with
+// other down-facing pieces that lie in the lowest third of the height and have at least 2 % of
+// its area, gaps filled. #F flags. Throws EngineError when no face faces down.
+std::vector<char> sole_region(const TriMesh& mesh, const MeshGraph& graph, const Eigen::VectorXd& elevation_rad,
+                              const Eigen::VectorXd& areas, double sole_angle_rad);
 
 // The flat top cut: faces with elevation >= top_angle_rad connected to the highest such face and
 // lying within a few millimetres of the plane fitted to them, gaps filled. #F flags.

@@ -164,6 +164,35 @@ TriMesh uv_sphere(double radius_mm, int rings, int segments) {
   return mesh;
 }
 
+TriMesh midpoint_subdivided(const TriMesh& mesh, int levels) {
+  TriMesh current = mesh;
+  for (int level = 0; level < levels; ++level) {
+    std::map<std::pair<int, int>, int> midpoint;
+    std::vector<Eigen::RowVector3d> vertices;
+    for (Eigen::Index v = 0; v < current.V.rows(); ++v) vertices.push_back(current.V.row(v));
+    auto middle = [&](int a, int b) {
+      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      auto [it, inserted] = midpoint.emplace(key, static_cast<int>(vertices.size()));
+      if (inserted) vertices.push_back(0.5 * (current.V.row(a) + current.V.row(b)));
+      return it->second;
+    };
+    TriMesh finer;
+    finer.F.resize(4 * current.F.rows(), 3);
+    for (Eigen::Index f = 0; f < current.F.rows(); ++f) {
+      const int a = current.F(f, 0), b = current.F(f, 1), c = current.F(f, 2);
+      const int ab = middle(a, b), bc = middle(b, c), ca = middle(c, a);
+      finer.F.row(4 * f) = Eigen::RowVector3i(a, ab, ca);
+      finer.F.row(4 * f + 1) = Eigen::RowVector3i(ab, b, bc);
+      finer.F.row(4 * f + 2) = Eigen::RowVector3i(ca, bc, c);
+      finer.F.row(4 * f + 3) = Eigen::RowVector3i(ab, bc, ca);
+    }
+    finer.V.resize(static_cast<Eigen::Index>(vertices.size()), 3);
+    for (std::size_t i = 0; i < vertices.size(); ++i) finer.V.row(static_cast<Eigen::Index>(i)) = vertices[i];
+    current = finer;
+  }
+  return current;
+}
+
 TriMesh without_faces_around(const TriMesh& mesh, const std::vector<int>& vertices) {
   const std::set<int> removed(vertices.begin(), vertices.end());
   std::vector<Eigen::RowVector3i> kept;

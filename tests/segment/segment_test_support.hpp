@@ -35,6 +35,9 @@ Eigen::VectorXd face_elevation_rad(const TriMesh& mesh);
 // A closed UV sphere (radius_mm, rings x segments), outward faces.
 TriMesh uv_sphere(double radius_mm, int rings, int segments);
 
+// 1-to-4 midpoint subdivision (the surface is unchanged, only finer), `levels` times.
+TriMesh midpoint_subdivided(const TriMesh& mesh, int levels);
+
 // The mesh without the faces touching the given vertices (opens a hole around each).
 TriMesh without_faces_around(const TriMesh& mesh, const std::vector<int>& vertices);
 
