@@ -12,22 +12,34 @@
 namespace lastcut {
 namespace {
 
-// Triangles whose UV area is below kCollapsedAreaFraction of their 3D area (flipped ones included).
-// Guarding against collapse rather than only against flipping keeps guarded steps from squashing a
-// triangle to a sliver just short of flipping, which would be as useless in a mold as a flip.
+// A triangle is collapsed when its UV area is below kCollapsedAreaFraction of its 3D area (flipped ones
+// included). Guarding against collapse rather than only against flipping keeps guarded steps from squashing
+// a triangle to a sliver just short of flipping, which would be as useless in a mold as a flip.
 constexpr double kCollapsedAreaFraction = 0.05;
 
-int count_collapsed(const TriangleFrames& frames, const Eigen::MatrixXd& UV) {
-  int count = 0;
+enum TriangleState : char { kHealthy = 0, kCollapsed = 1, kFlipped = 2 };
+
+void classify_triangles(const TriangleFrames& frames, const Eigen::MatrixXd& UV, std::vector<char>& state) {
   const double* u = UV.col(0).data();
   const double* v = UV.col(1).data();
+  state.resize(frames.triangles.size());
   for (size_t f = 0; f < frames.triangles.size(); ++f) {
     const auto& t = frames.triangles[f];
     const double ax = u[t[1]] - u[t[0]], ay = v[t[1]] - v[t[0]];
     const double bx = u[t[2]] - u[t[0]], by = v[t[2]] - v[t[0]];
-    count += (ax * by - ay * bx) <= 2.0 * kCollapsedAreaFraction * frames.area_mm2(f) ? 1 : 0;
+    const double twice_area = ax * by - ay * bx;
+    state[f] = twice_area <= 0.0 ? kFlipped
+               : twice_area <= 2.0 * kCollapsedAreaFraction * frames.area_mm2(f) ? kCollapsed
+                                                                                   : kHealthy;
   }
-  return count;
+}
+
+// True when no triangle got worse (healthy -> collapsed or flipped, collapsed -> flipped).
+bool no_triangle_worse(const std::vector<char>& before, const std::vector<char>& after) {
+  for (size_t f = 0; f < before.size(); ++f) {
+    if (after[f] > before[f]) return false;
+  }
+  return true;
 }
 
 // History length of Anderson acceleration; Peng et al. 2018 find 5-6 a good default for ARAP.
@@ -105,7 +117,8 @@ ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const Redu
   std::vector<double> spare_rhs(rhs.size());
   Eigen::MatrixXd candidate(UV.rows(), 2), accelerated(UV.rows(), 2);
   AndersonAcceleration anderson(kAndersonDepth);
-  int flipped_now = flip_guard ? count_collapsed(frames, UV) : 0;
+  std::vector<char> state_now, state_candidate;
+  if (flip_guard) classify_triangles(frames, UV, state_now);
 
   double energy = local_step(frames, UV, constant_energy, rhs);
   report.energy_start = energy;
@@ -130,18 +143,20 @@ ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const Redu
     const double previous = energy;
     if (flip_guard) {
       double step = 1.0;
-      int flipped = count_collapsed(frames, candidate);
-      while (flipped > flipped_now && step > 1.0 / 1024.0) {
+      classify_triangles(frames, candidate, state_candidate);
+      bool acceptable = no_triangle_worse(state_now, state_candidate);
+      while (!acceptable && step > 1.0 / 1024.0) {
         step *= 0.5;
         candidate = UV + 0.5 * (candidate - UV);
-        flipped = count_collapsed(frames, candidate);
+        classify_triangles(frames, candidate, state_candidate);
+        acceptable = no_triangle_worse(state_now, state_candidate);
       }
-      if (flipped > flipped_now) {
+      if (!acceptable) {
         report.stalled_on_flips = true;
         break;
       }
       if (step < 1.0) ++report.shortened_steps;
-      flipped_now = flipped;
+      state_now.swap(state_candidate);
       UV.swap(candidate);
       energy = local_step(frames, UV, constant_energy, rhs);
     } else if (!accelerate) {

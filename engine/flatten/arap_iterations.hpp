@@ -29,7 +29,7 @@ struct ArapIterationReport {
 
 // UV (#V x 2, mm) is the start map on entry and the result on exit. `laplacian` holds the cotangent
 // Laplacian pinned at laplacian.pinned and `factor` its factorization. With flip_guard, a global step that
-// would flip or collapse (UV area < 5% of 3D area) more triangles than before is halved until it does not
+// would flip or collapse (UV area < 5% of 3D area) any triangle that was not so before is halved until it does not
 // (the energy still decreases: it is convex in u for fixed rotations), so a flip-free start stays flip-free.
 ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const ReducedLaplacian& laplacian,
                                         const SparseCholesky& factor, Eigen::MatrixXd& UV, int max_iterations,
