@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -51,14 +52,12 @@ bool starts_with_solid(const std::string& prefix) {
 
 // OpenMesh drops the faces of a NaN corner silently; an operator must hear the file is broken.
 void check_binary_stl_numbers(const std::filesystem::path& path, std::uint32_t count) {
-  std::ifstream in(path, std::ios::binary);
-  in.seekg(84);
-  std::vector<char> record(50);
+  const std::string bytes = read_all(path);  // size already checked: 84 + 50 count
   for (std::uint32_t f = 0; f < count; ++f) {
-    in.read(record.data(), 50);
+    const char* record = bytes.data() + 84 + 50 * static_cast<size_t>(f);
     for (int k = 3; k < 12; ++k) {
       float value = 0.0f;
-      std::memcpy(&value, record.data() + 4 * k, 4);
+      std::memcpy(&value, record + 4 * k, 4);
       if (!std::isfinite(value))
         throw EngineError("coordinates that are not numbers (NaN or infinite) in triangle " + std::to_string(f + 1) + " of " +
                           path.filename().string());
@@ -181,6 +180,47 @@ MeshFileFacts check_ply(const std::filesystem::path& path, int max_triangles) {
   return facts;
 }
 
+// Counts the vertex and face records after the OFF header (numbers only, no conversion to
+// coordinates), reading the whole file at once: line-by-line streams are far too slow here.
+void check_off_records(const std::filesystem::path& path, const MeshFileFacts& facts) {
+  const std::string text = read_all(path);
+  const char* cursor = text.c_str();
+  const char* const end = cursor + text.size();
+  auto next_token = [&]() -> std::pair<const char*, const char*> {
+    while (cursor < end) {
+      if (*cursor == '#') {
+        while (cursor < end && *cursor != '\n') ++cursor;
+      } else if (std::isspace(static_cast<unsigned char>(*cursor))) {
+        ++cursor;
+      } else {
+        break;
+      }
+    }
+    const char* start = cursor;
+    while (cursor < end && !std::isspace(static_cast<unsigned char>(*cursor))) ++cursor;
+    return {start, cursor};
+  };
+  // Keyword and the three counts.
+  for (int k = 0; k < 4; ++k) next_token();
+  long long values_needed = 3 * facts.declared_vertices, values = 0;
+  while (values < values_needed && next_token().first != cursor) ++values;
+  long long faces = 0;
+  for (; faces < facts.declared_faces; ++faces) {
+    const auto [start, stop] = next_token();
+    if (start == stop) break;
+    const long long corners = std::strtoll(start, nullptr, 10);
+    long long read = 0;
+    while (read < corners && next_token().first != cursor) ++read;
+    if (read < corners) break;
+    // Optional per-face colour values run to the end of the line.
+    while (cursor < end && *cursor != '\n') ++cursor;
+  }
+  if (values < values_needed || faces < facts.declared_faces)
+    throw EngineError("truncated OFF " + path.filename().string() + ": " + std::to_string(values / 3) + " of " +
+                      std::to_string(facts.declared_vertices) + " vertices, " + std::to_string(faces) + " of " +
+                      std::to_string(facts.declared_faces) + " faces");
+}
+
 MeshFileFacts check_off(const std::filesystem::path& path, int max_triangles) {
   MeshFileFacts facts;
   facts.format = MeshFileFormat::Off;
@@ -208,28 +248,7 @@ MeshFileFacts check_off(const std::filesystem::path& path, int max_triangles) {
   if (facts.declared_faces <= 0) throw EngineError("no faces in OFF " + path.filename().string());
   check_cap(facts.declared_faces, max_triangles, path);
   // OpenMesh pads a short OFF with made-up faces: check every record is there.
-  if (keyword.find("BINARY") == std::string::npos) {
-    std::string line;
-    std::getline(in, line);
-    long long vertices = 0, faces = 0;
-    while (vertices < facts.declared_vertices && std::getline(in, line)) {
-      std::istringstream numbers(line);
-      double x, y, z;
-      if (numbers >> x >> y >> z) ++vertices;
-    }
-    while (faces < facts.declared_faces && std::getline(in, line)) {
-      std::istringstream numbers(line);
-      long long corners = 0, index = 0, read = 0;
-      if (!(numbers >> corners)) continue;
-      while (read < corners && numbers >> index) ++read;
-      if (read < corners) break;
-      ++faces;
-    }
-    if (vertices < facts.declared_vertices || faces < facts.declared_faces)
-      throw EngineError("truncated OFF " + path.filename().string() + ": " + std::to_string(vertices) + " of " +
-                        std::to_string(facts.declared_vertices) + " vertices, " + std::to_string(faces) + " of " +
-                        std::to_string(facts.declared_faces) + " faces");
-  }
+  if (keyword.find("BINARY") == std::string::npos) check_off_records(path, facts);
   return facts;
 }
 

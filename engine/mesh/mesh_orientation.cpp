@@ -13,8 +13,8 @@
 
 namespace lastcut {
 
-using mesh_detail::EdgeUse;
-using mesh_detail::sorted_edge_uses;
+using mesh_detail::face_adjacency;
+using mesh_detail::FaceAdjacency;
 using mesh_detail::UnionFind;
 
 namespace {
@@ -23,25 +23,6 @@ std::string percent(double fraction) {
   char text[32];
   std::snprintf(text, sizeof text, "%.0f%%", 100.0 * fraction);
   return text;
-}
-
-// For each face, its up-to-three edge neighbours and whether each shared edge runs the same way
-// in both faces (then one of them must be flipped).
-struct FaceNeighbour {
-  int face;
-  bool same_direction;
-};
-
-std::vector<std::vector<FaceNeighbour>> face_neighbours(const TriMesh& mesh) {
-  std::vector<std::vector<FaceNeighbour>> neighbours(static_cast<size_t>(mesh.F.rows()));
-  const std::vector<EdgeUse> uses = sorted_edge_uses(mesh, {});
-  for (size_t k = 0; k + 1 < uses.size(); ++k) {
-    if (uses[k].key != uses[k + 1].key) continue;
-    const bool same = uses[k].forward == uses[k + 1].forward;
-    neighbours[static_cast<size_t>(uses[k].face)].push_back({uses[k + 1].face, same});
-    neighbours[static_cast<size_t>(uses[k + 1].face)].push_back({uses[k].face, same});
-  }
-  return neighbours;
 }
 
 }  // namespace
@@ -57,9 +38,9 @@ double signed_volume_mm3(const TriMesh& mesh) {
 
 void keep_largest_component(TriMesh& mesh, double debris_fraction, IntakeReport& report) {
   UnionFind pieces(static_cast<size_t>(mesh.F.rows()));
-  const std::vector<EdgeUse> uses = sorted_edge_uses(mesh, {});
-  for (size_t k = 0; k + 1 < uses.size(); ++k)
-    if (uses[k].key == uses[k + 1].key) pieces.unite(uses[k].face, uses[k + 1].face);
+  const FaceAdjacency adjacency = face_adjacency(mesh, {});
+  for (size_t corner = 0; corner < adjacency.neighbour.size(); ++corner)
+    if (adjacency.neighbour[corner] >= 0) pieces.unite(static_cast<int>(corner / 3), adjacency.neighbour[corner]);
   const Eigen::VectorXd areas = triangle_areas(mesh);
   std::vector<double> piece_area(static_cast<size_t>(mesh.F.rows()), 0.0);
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) piece_area[static_cast<size_t>(pieces.find(static_cast<int>(f)))] += areas(f);
@@ -89,7 +70,7 @@ void keep_largest_component(TriMesh& mesh, double debris_fraction, IntakeReport&
 }
 
 int orient_outward(TriMesh& mesh, IntakeReport& report) {
-  const auto neighbours = face_neighbours(mesh);
+  const FaceAdjacency adjacency = face_adjacency(mesh, {});
   std::vector<signed char> flip(static_cast<size_t>(mesh.F.rows()), -1);  // -1 not yet visited
   bool orientable = true;
   for (Eigen::Index seed = 0; seed < mesh.F.rows(); ++seed) {
@@ -101,12 +82,15 @@ int orient_outward(TriMesh& mesh, IntakeReport& report) {
     while (!queue.empty()) {
       const int face = queue.front();
       queue.pop_front();
-      for (const FaceNeighbour& next : neighbours[static_cast<size_t>(face)]) {
-        const signed char wanted = static_cast<signed char>(flip[static_cast<size_t>(face)] ^ (next.same_direction ? 1 : 0));
-        if (flip[static_cast<size_t>(next.face)] < 0) {
-          flip[static_cast<size_t>(next.face)] = wanted;
-          queue.push_back(next.face);
-        } else if (flip[static_cast<size_t>(next.face)] != wanted) {
+      for (int c = 0; c < 3; ++c) {
+        const size_t corner = 3 * static_cast<size_t>(face) + static_cast<size_t>(c);
+        const int next = adjacency.neighbour[corner];
+        if (next < 0) continue;
+        const signed char wanted = static_cast<signed char>(flip[static_cast<size_t>(face)] ^ adjacency.same_direction[corner]);
+        if (flip[static_cast<size_t>(next)] < 0) {
+          flip[static_cast<size_t>(next)] = wanted;
+          queue.push_back(next);
+        } else if (flip[static_cast<size_t>(next)] != wanted) {
           orientable = false;
         }
       }
@@ -124,19 +108,16 @@ int orient_outward(TriMesh& mesh, IntakeReport& report) {
 }
 
 int count_boundary_loops(const TriMesh& mesh) {
-  const std::vector<EdgeUse> uses = sorted_edge_uses(mesh, {});
+  const FaceAdjacency adjacency = face_adjacency(mesh, {});
   UnionFind chains(static_cast<size_t>(mesh.V.rows()));
   std::vector<char> on_boundary(static_cast<size_t>(mesh.V.rows()), 0);
-  for (size_t begin = 0; begin < uses.size();) {
-    size_t end = begin;
-    while (end < uses.size() && uses[end].key == uses[begin].key) ++end;
-    if (end - begin == 1) {
-      const int a = static_cast<int>(uses[begin].key >> 32), b = static_cast<int>(uses[begin].key & 0xffffffffu);
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      if (adjacency.neighbour[static_cast<size_t>(3 * f + c)] != mesh_detail::kBoundaryEdge) continue;
+      const int a = mesh.F(f, c), b = mesh.F(f, (c + 1) % 3);
       chains.unite(a, b);
       on_boundary[static_cast<size_t>(a)] = on_boundary[static_cast<size_t>(b)] = 1;
     }
-    begin = end;
-  }
   int loops = 0;
   for (Eigen::Index v = 0; v < mesh.V.rows(); ++v)
     if (on_boundary[static_cast<size_t>(v)] && chains.find(static_cast<int>(v)) == static_cast<int>(v)) ++loops;

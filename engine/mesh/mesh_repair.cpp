@@ -12,8 +12,8 @@
 namespace lastcut {
 
 using mesh_detail::drop_faces;
-using mesh_detail::EdgeUse;
-using mesh_detail::sorted_edge_uses;
+using mesh_detail::face_adjacency;
+using mesh_detail::FaceAdjacency;
 using mesh_detail::UnionFind;
 
 int merge_duplicate_vertices(TriMesh& mesh) {
@@ -78,46 +78,43 @@ int remove_duplicate_faces(TriMesh& mesh) {
 namespace {
 
 // Flags every face that uses an edge shared by more than two faces.
-int flag_faces_on_crowded_edges(const TriMesh& mesh, std::vector<char>& removed) {
-  const std::vector<EdgeUse> uses = sorted_edge_uses(mesh, removed);
+int flag_faces_on_crowded_edges(const TriMesh& mesh, const FaceAdjacency& adjacency, std::vector<char>& removed) {
   int flagged = 0;
-  for (size_t begin = 0; begin < uses.size();) {
-    size_t end = begin;
-    while (end < uses.size() && uses[end].key == uses[begin].key) ++end;
-    if (end - begin > 2)
-      for (size_t k = begin; k < end; ++k)
-        if (!removed[static_cast<size_t>(uses[k].face)]) {
-          removed[static_cast<size_t>(uses[k].face)] = 1;
-          ++flagged;
-        }
-    begin = end;
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    if (removed[static_cast<size_t>(f)]) continue;
+    for (int c = 0; c < 3; ++c)
+      if (adjacency.neighbour[static_cast<size_t>(3 * f + c)] == mesh_detail::kCrowdedEdge) {
+        removed[static_cast<size_t>(f)] = 1;
+        ++flagged;
+        break;
+      }
   }
   return flagged;
 }
 
 // At a vertex where several fans of faces touch only at the vertex (a "bow tie"), flags the faces
 // of all but the largest fan. Fans: corners of one vertex joined across the manifold edges.
-int flag_faces_in_extra_fans(const TriMesh& mesh, std::vector<char>& removed) {
-  const std::vector<EdgeUse> uses = sorted_edge_uses(mesh, removed);
-  UnionFind corners(static_cast<size_t>(mesh.F.rows()) * 3);
-  for (size_t k = 0; k + 1 < uses.size(); ++k) {
-    if (uses[k].key != uses[k + 1].key) continue;
-    const EdgeUse& x = uses[k];
-    const EdgeUse& y = uses[k + 1];
-    // Join the corners of the same vertex in the two faces, for both ends of the edge.
-    for (int end = 0; end < 2; ++end) {
-      const int vertex = mesh.F(x.face, (x.corner + end) % 3);
-      for (int c = 0; c < 3; ++c)
-        if (mesh.F(y.face, c) == vertex) corners.unite(3 * x.face + (x.corner + end) % 3, 3 * y.face + c);
+int flag_faces_in_extra_fans(const TriMesh& mesh, const FaceAdjacency& adjacency, std::vector<char>& removed) {
+  const Eigen::Index face_count = mesh.F.rows();
+  UnionFind corners(static_cast<size_t>(face_count) * 3);
+  for (Eigen::Index f = 0; f < face_count; ++f)
+    for (int c = 0; c < 3; ++c) {
+      const int g = adjacency.neighbour[static_cast<size_t>(3 * f + c)];
+      if (g < 0) continue;
+      // The edge runs from corner c to c + 1 of f; join each end with the same vertex in g.
+      const int corner_a = adjacency.neighbour_corner[static_cast<size_t>(3 * f + c)];
+      const int b = mesh.F(f, (c + 1) % 3);
+      int corner_b = 0;
+      while (mesh.F(g, corner_b) != b) ++corner_b;
+      corners.unite(static_cast<int>(3 * f + c), 3 * g + corner_a);
+      corners.unite(static_cast<int>(3 * f + (c + 1) % 3), 3 * g + corner_b);
     }
-  }
-  // Fan sizes per vertex: count corners per root, then pick each vertex's largest root.
-  std::vector<int> fan_size(static_cast<size_t>(mesh.F.rows()) * 3, 0);
+  std::vector<int> fan_size(static_cast<size_t>(face_count) * 3, 0);
   std::vector<int> largest_root(static_cast<size_t>(mesh.V.rows()), -1);
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
+  for (Eigen::Index f = 0; f < face_count; ++f)
     if (!removed[static_cast<size_t>(f)])
       for (int c = 0; c < 3; ++c) ++fan_size[static_cast<size_t>(corners.find(static_cast<int>(3 * f + c)))];
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+  for (Eigen::Index f = 0; f < face_count; ++f) {
     if (removed[static_cast<size_t>(f)]) continue;
     for (int c = 0; c < 3; ++c) {
       const int root = corners.find(static_cast<int>(3 * f + c));
@@ -127,13 +124,13 @@ int flag_faces_in_extra_fans(const TriMesh& mesh, std::vector<char>& removed) {
         best = root;
     }
   }
-  int flagged = 0;
-  std::vector<char> flag_now(static_cast<size_t>(mesh.F.rows()), 0);
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+  std::vector<char> flag_now(static_cast<size_t>(face_count), 0);
+  for (Eigen::Index f = 0; f < face_count; ++f) {
     if (removed[static_cast<size_t>(f)]) continue;
     for (int c = 0; c < 3; ++c)
       if (corners.find(static_cast<int>(3 * f + c)) != largest_root[static_cast<size_t>(mesh.F(f, c))]) flag_now[static_cast<size_t>(f)] = 1;
   }
+  int flagged = 0;
   for (size_t f = 0; f < flag_now.size(); ++f)
     if (flag_now[f]) {
       removed[f] = 1;
@@ -148,8 +145,11 @@ int remove_non_manifold_faces(TriMesh& mesh) {
   std::vector<char> removed(static_cast<size_t>(mesh.F.rows()), 0);
   // Removing faces can leave a new bow tie behind; a few rounds settle every case seen in scans.
   for (int round = 0; round < 4; ++round) {
-    const int flagged = flag_faces_on_crowded_edges(mesh, removed) + flag_faces_in_extra_fans(mesh, removed);
-    if (flagged == 0) break;
+    FaceAdjacency adjacency = face_adjacency(mesh, removed);
+    const int crowded = flag_faces_on_crowded_edges(mesh, adjacency, removed);
+    if (crowded > 0) adjacency = face_adjacency(mesh, removed);
+    const int fans = flag_faces_in_extra_fans(mesh, adjacency, removed);
+    if (crowded + fans == 0) break;
   }
   const int dropped = drop_faces(mesh, removed);
   mesh_detail::drop_unreferenced_vertices(mesh);
