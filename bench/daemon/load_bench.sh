@@ -1,0 +1,93 @@
+#!/usr/bin/env bash
+# Load benchmark of lastcutd: N scans (default 200, small generated lasts, each with its own
+# bytes) dropped into the watch folder at once while the daemon runs with one simulated grbl
+# cutter. Prints: time until every job is done, jobs per minute, inotify overflows seen, files
+# lost (must be 0), and lastcutd's peak resident memory (VmHWM) next to its memory after start,
+# to show the memory stays bounded (the queues hold ids, not geometry).
+# Usage: load_bench.sh BUILD_DIR [SCANS] [TRIANGLES]
+set -euo pipefail
+build="$(cd "${1:-build}" && pwd)"
+scans="${2:-200}"
+triangles="${3:-1500}"
+source_dir="$(cd "$(dirname "$0")/../.." && pwd)"
+bin="$build/bin"
+root="$build/bench-scratch/daemon-load"
+rm -rf "$root"
+mkdir -p "$root/incoming" "$root/staging" "$root/lasts"
+
+cat > "$root/lastcut.toml" <<TOML
+[paths]
+watch = "incoming"
+spool = "spool"
+machines = "$source_dir/config/machines"
+[watch]
+mode = "inotify"
+stable_checks = 1
+stable_interval_s = 0.1
+[jobs]
+duplicate_policy = "process"
+default_material = "calf"
+default_cutter = "cutter-1"
+compute_workers = $(nproc)
+[batch]
+window_s = 5
+max_pieces = 16
+nest_time_s = 1
+[materials.calf]
+width_mm = 800
+length_mm = 1200
+[cutters.cutter-1]
+protocol = "grbl"
+port = "cutter-1.tty"
+machine = "grbl-drag-knife"
+retry_interval_s = 0.5
+TOML
+
+for size in 38 40 42 44; do
+  "$bin/lastcut" generate -o "$root/lasts/last-$size.stl" --size "$size" --side left --triangles "$triangles" --seed "$size" >/dev/null
+done
+python3 - "$root" "$scans" <<'PY'
+import sys, os
+root, count = sys.argv[1], int(sys.argv[2])
+bases = [open(os.path.join(root, 'lasts', f'last-{s}.stl'), 'rb').read() for s in (38, 40, 42, 44)]
+for i in range(count):
+    data = bytearray(bases[i % 4])
+    data[0:80] = f'load scan {i}'.ljust(80).encode()
+    open(os.path.join(root, 'staging', f'scan-{i:04d}.stl'), 'wb').write(data)
+PY
+
+"$bin/lastcut-sim" grbl --link "$root/cutter-1.tty" --record "$root/record" --time-scale 0 > "$root/sim.log" 2>&1 &
+sim=$!
+trap 'kill $sim 2>/dev/null || true; [ -n "${daemon:-}" ] && kill $daemon 2>/dev/null || true' EXIT
+for _ in $(seq 100); do grep -q "ready:" "$root/sim.log" && break; sleep 0.1; done
+"$bin/lastcutd" --config "$root/lastcut.toml" > "$root/lastcutd.log" 2>&1 &
+daemon=$!
+for _ in $(seq 100); do grep -q "lastcutd ready" "$root/lastcutd.log" && break; sleep 0.1; done
+rss_start_kb=$(awk '/VmRSS/ {print $2}' /proc/$daemon/status)
+
+start=$(date +%s.%N)
+mv "$root"/staging/*.stl "$root/incoming/"      # all at once
+while :; do
+  finished=$(( $(ls "$root/spool/done" 2>/dev/null | wc -l) + $(ls "$root/spool/failed" 2>/dev/null | wc -l) + $(ls "$root/spool/held" 2>/dev/null | wc -l) ))
+  [ "$finished" -ge "$scans" ] && break
+  kill -0 $daemon || { echo "lastcutd died"; tail "$root/lastcutd.log"; exit 1; }
+  sleep 0.5
+done
+end=$(date +%s.%N)
+peak_kb=$(awk '/VmHWM/ {print $2}' /proc/$daemon/status)
+kill -TERM $daemon; wait $daemon || true; daemon=""
+kill -TERM $sim; wait $sim || true
+
+done_count=$(ls "$root/spool/done" | wc -l)
+failed_count=$(ls "$root/spool/failed" | wc -l)
+held_count=$(ls "$root/spool/held" | wc -l)
+left=$(ls "$root/incoming" | wc -l)
+overflows=$(grep -c "queue overflow" "$root/lastcutd.log" || true)
+cut_jobs=$(grep -c "^(lastcut job " "$root/record/grbl-received.nc" || true)
+elapsed=$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.1f", b - a }')
+echo "| scans | triangles each | workers | time to all done (s) | jobs/min | done | failed | held | left in watch folder | jobs cut (record) | inotify overflows | RSS after start (MB) | peak RSS (MB) |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+awk -v n="$scans" -v t="$triangles" -v w="$(nproc)" -v e="$elapsed" -v d="$done_count" -v f="$failed_count" -v h="$held_count" \
+    -v l="$left" -v c="$cut_jobs" -v o="$overflows" -v r0="$rss_start_kb" -v r="$peak_kb" \
+  'BEGIN { printf "| %d | %d | %d | %.1f | %.1f | %d | %d | %d | %d | %d | %d | %.1f | %.1f |\n", n, t, w, e, 60 * n / e, d, f, h, l, c, o, r0 / 1024, r / 1024 }'
+[ "$done_count" -eq "$scans" ] && [ "$left" -eq 0 ] && [ "$cut_jobs" -eq "$scans" ]
