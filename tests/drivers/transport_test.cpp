@@ -123,7 +123,9 @@ TEST(SerialPorts, UsbNamesAreCheckedAndResolvedAgainstWhatIsPlugged) {
   EXPECT_NE(error.find("lastcut ports"), std::string::npos) << error;
   for (const auto& port : list_serial_ports()) {
     EXPECT_FALSE(port.device.empty());
-    if (port.usb) EXPECT_EQ(port.stable_name().rfind("usb:", 0), 0u);
+    if (port.usb) {
+      EXPECT_EQ(port.stable_name().rfind("usb:", 0), 0u);
+    }
   }
   SerialPortInfo info;
   info.usb = true, info.usb_vid = 0x0403, info.usb_pid = 0x6001, info.usb_serial = "A10K3X";

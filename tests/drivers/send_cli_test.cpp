@@ -1,0 +1,87 @@
+// The real `lastcut send` and `lastcut ports` binaries against the real simulator over a pty:
+// exit codes 0 done / 1 failed / 3 interrupted / 2 usage, plain progress lines when not on a terminal.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "tests/drivers/sim_process.hpp"
+
+namespace lastcut::drivers {
+namespace {
+
+using testing::SimProcess;
+using testing::TempDir;
+using testing::run_command;
+
+std::string lastcut_binary() { return std::string(LASTCUT_BINARY_DIR) + "/bin/lastcut"; }
+
+std::string write_program(const TempDir& dir, int lines) {
+  std::string program = "G21\nG90\nG1 F2000\n";
+  for (int i = 0; i < lines; ++i) program += "G1 X" + std::to_string(i % 50) + " Y" + std::to_string(i % 30) + "\n";
+  const std::string path = dir / "job.nc";
+  std::ofstream(path) << program;
+  return path;
+}
+
+TEST(SendCli, DoneExitsZeroWithPlainProgressLines) {
+  TempDir dir;
+  SimProcess sim({"grbl", "--link", dir / "grbl", "--time-scale", "0", "--record", dir / "rec"});
+  ASSERT_TRUE(sim.ready()) << sim.ready_line();
+  std::string out;
+  const int rc = run_command(lastcut_binary() + " send " + write_program(dir, 200) + " --port " + (dir / "grbl") +
+                                 " --protocol grbl --timeout 3",
+                             out);
+  EXPECT_EQ(rc, 0) << out;
+  EXPECT_NE(out.find("done: job finished"), std::string::npos) << out;
+  EXPECT_NE(out.find("progress: ["), std::string::npos) << out;
+  EXPECT_EQ(out.find("\r"), std::string::npos) << "no terminal control characters in a log";
+  EXPECT_EQ(sim.stop(), 0);
+  EXPECT_EQ(testing::read_file(dir.path() / "rec" / "grbl-received.nc"), testing::read_file(dir / "job.nc"));
+}
+
+TEST(SendCli, InterruptedExitsThreeAndSaysNothingIsResent) {
+  TempDir dir;
+  SimProcess sim({"grbl", "--link", dir / "grbl", "--time-scale", "0", "--fault", "error-at-line=10:22"});
+  ASSERT_TRUE(sim.ready());
+  std::string out;
+  const int rc = run_command(lastcut_binary() + " send " + write_program(dir, 100) + " --port " + (dir / "grbl") +
+                                 " --protocol grbl --timeout 3",
+                             out);
+  EXPECT_EQ(rc, 3) << out;
+  EXPECT_NE(out.find("INTERRUPTED"), std::string::npos) << out;
+  EXPECT_NE(out.find("error:22"), std::string::npos) << out;
+  EXPECT_NE(out.find("nothing was resent"), std::string::npos) << out;
+}
+
+TEST(SendCli, FailedAndUsageErrorsHaveTheirOwnExitCodes) {
+  TempDir dir;
+  const std::string file = write_program(dir, 5);
+  std::string out;
+  EXPECT_EQ(run_command(lastcut_binary() + " send " + file + " --port " + (dir / "nothing") + " --protocol grbl", out), 1) << out;
+  EXPECT_NE(out.find("failed (nothing was cut)"), std::string::npos) << out;
+  EXPECT_EQ(run_command(lastcut_binary() + " send " + file + " --port " + (dir / "nothing"), out), 2) << out;
+  EXPECT_NE(out.find("--protocol"), std::string::npos) << out;
+  EXPECT_EQ(run_command(lastcut_binary() + " send " + file, out), 2) << out;
+}
+
+TEST(SendCli, ModbusJobThroughTheCommandLine) {
+  TempDir dir;
+  const int port = testing::free_loopback_port();
+  SimProcess sim({"modbus-tcp", "--port", std::to_string(port), "--cut-s", "0.1"});
+  ASSERT_TRUE(sim.ready());
+  std::string out;
+  const int rc = run_command(lastcut_binary() + " send " + write_program(dir, 50) + " --modbus tcp://127.0.0.1:" +
+                                 std::to_string(port) + " --job-id CLI-1 --timeout 2",
+                             out);
+  EXPECT_EQ(rc, 0) << out;
+  EXPECT_NE(out.find("PLC reports the job done"), std::string::npos) << out;
+}
+
+TEST(SendCli, PortsListsWithoutError) {
+  std::string out;
+  EXPECT_EQ(run_command(lastcut_binary() + " ports", out), 0) << out;
+  EXPECT_TRUE(out.find("DEVICE") != std::string::npos || out.find("no serial ports") != std::string::npos) << out;
+}
+
+}  // namespace
+}  // namespace lastcut::drivers
