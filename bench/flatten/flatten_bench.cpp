@@ -1,6 +1,6 @@
 // Flattening benchmark: ARAP on half lasts (init, factorization, per-iteration, total, distortion reached)
 // against plain baselines measured in the same run, the sparse Cholesky backends, and LSCM vs ARAP.
-// Usage: bench_flatten [--no-400k]      Prints markdown tables (docs/benchmarks-flatten.md).
+// Usage: bench_flatten [--no-400k] [--arap-only]   Prints markdown tables (docs/benchmarks-flatten.md).
 #include <time.h>
 
 #include <algorithm>
@@ -118,7 +118,11 @@ void solver_rows(const BenchHalf& half) {
 int main(int argc, char** argv) {
   using namespace lastcut;
   using namespace lastcut::bench;
-  const bool largest = !(argc > 1 && std::strcmp(argv[1], "--no-400k") == 0);
+  bool largest = true, arap_only = false;
+  for (int i = 1; i < argc; ++i) {
+    largest = largest && std::strcmp(argv[i], "--no-400k") != 0;
+    arap_only = arap_only || std::strcmp(argv[i], "--arap-only") == 0;
+  }
   std::vector<BenchHalf> halves = reference_halves(largest);
   for (BenchHalf& generated : generated_halves()) halves.push_back(std::move(generated));
   std::sort(halves.begin(), halves.end(),
@@ -141,6 +145,7 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
     ours.push_back(std::move(t));
   }
+  if (arap_only) return 0;
 
   std::printf("\n## Baselines measured in the same run\n\n"
               "Plain = same start map and Laplacian, no Anderson acceleration; refactorizing = plain ARAP that "
