@@ -40,6 +40,7 @@ std::string cpu_model() {
   return "unknown CPU";
 }
 
+#ifndef LASTCUT_BENCH_HAS_NESTER
 // Stand-in while the nester is not built: every copy of every item, in file order, at its first
 // allowed rotation, stacked by bounding box in columns up the strip. A valid layout (no
 // overlaps) whose own order is the file order.
@@ -74,6 +75,7 @@ lastcut::Layout column_layout(const lastcut::NestInstance& instance) {
   layout.strip_length = column_x + column_width;
   return layout;
 }
+#endif
 
 double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());

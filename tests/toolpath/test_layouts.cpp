@@ -1,9 +1,11 @@
 #include "test_layouts.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numbers>
 #include <sstream>
+#include <unistd.h>
 
 #include "engine/toolpath/cut_program.hpp"
 
