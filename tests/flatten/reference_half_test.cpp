@@ -4,7 +4,10 @@
 
 #include <string>
 
+#include "engine/flatten/cotangent_laplacian.hpp"
+#include "engine/flatten/disk_topology.hpp"
 #include "engine/flatten/flatten.hpp"
+#include "engine/flatten/tutte_embedding.hpp"
 #include "tests/flatten/flatten_fixtures.hpp"
 
 namespace lastcut {
@@ -30,6 +33,27 @@ TEST(ReferenceHalf, FlattensWithoutFlipsAndWithLowDistortion) {
   }
   std::printf("iterations %d, D_angle %.4f, D_area %.4f, area error %.2f %%, boundary error %.2f %%\n",
               result.iterations, d.D_angle, d.D_area, d.area_error_pct, d.boundary_error_pct);
+}
+
+TEST(ReferenceHalf, StartMapIsFlipFreeOnAConvexOutline) {
+  const TriMesh half =
+      testing::read_off(std::string(LASTCUT_SHARED_DATA_DIR) + "/meshes/find-template-half-52k.off", 1000.0);
+  const DiskTopology topology = check_disk(half);
+  ASSERT_GT(topology.boundary_loop.size(), 100u);
+  const TriangleFrames frames = compute_triangle_frames(half);
+  ReducedLaplacian laplacian = build_reduced_pattern(frames, topology, topology.boundary_loop.front());
+  SparseCholesky factor;
+  factor.analyze_pattern(laplacian.matrix);
+  const Eigen::MatrixXd start = tutte_embedding(half, frames, topology, laplacian, factor);
+  EXPECT_EQ(count_flipped_triangles(half.F, start), 0);
+  // The outline is strictly convex and counter-clockwise: every turn is to the left.
+  const auto& loop = topology.boundary_loop;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const Eigen::RowVector2d a = start.row(loop[i]), b = start.row(loop[(i + 1) % loop.size()]),
+                             c = start.row(loop[(i + 2) % loop.size()]);
+    const Eigen::RowVector2d ab = b - a, bc = c - b;
+    ASSERT_GT(ab.x() * bc.y() - ab.y() * bc.x(), 0.0) << "at outline vertex " << i;
+  }
 }
 
 }  // namespace
