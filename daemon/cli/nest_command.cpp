@@ -1,17 +1,135 @@
-// PLACEHOLDER: replaced by the module that owns this command.
+// `lastcut nest INPUT... --time-limit S [--seed N] [--threads N] [--gap MM] [--margin MM]
+//  -o LAYOUT.json [--svg PICTURE.svg]`: nests pieces on a strip or on hides and writes a
+// self-contained layout (engine/nest/nest_json.hpp) that `lastcut toolpath` reads.
+// INPUT is a nest instance (JSON), or mold DXFs / folders written by `lastcut flatten` together
+// with --roll-width MM. Every layout written is first checked by the independent layout checker.
+#include <algorithm>
 #include <cstdio>
+#include <functional>
+#include <memory>
+#include <exception>
+#include <filesystem>
+#include <string>
+#include <thread>
+#include <vector>
 
 #include "daemon/cli/commands.hpp"
+#include "engine/core/engine_error.hpp"
+#include "engine/mold/mold_dxf.hpp"
+#include "engine/nest/layout_check.hpp"
+#include "engine/nest/layout_svg.hpp"
+#include "engine/nest/mold_items.hpp"
+#include "engine/nest/nest_json.hpp"
+#include "engine/nest/nester.hpp"
 
 namespace lastcut::cli {
+namespace {
+
+struct NestArguments {
+  std::vector<std::string> inputs;
+  double time_limit_s = 10;
+  std::uint64_t seed = 1;
+  int threads = 0;  // 0: all cores
+  double gap_mm = -1, margin_mm = -1;
+  double roll_width_mm = 0;
+  int copies = 1;
+  bool mirrored_twins = false;
+  std::string output_path, svg_path;
+};
+
+// The engine has no threads of its own: the command runs the workers of a round on std::threads.
+void run_on_threads(std::vector<std::function<void()>>& tasks) {
+  std::vector<std::thread> threads;
+  for (size_t i = 1; i < tasks.size(); ++i) threads.emplace_back(tasks[i]);
+  if (!tasks.empty()) tasks[0]();
+  for (auto& t : threads) t.join();
+}
+
+std::vector<Mold> read_molds(const std::vector<std::string>& inputs) {
+  std::vector<Mold> molds;
+  for (const std::string& input : inputs) {
+    const std::filesystem::path path(input);
+    if (std::filesystem::is_directory(path)) {
+      std::vector<std::filesystem::path> files;
+      for (const auto& entry : std::filesystem::directory_iterator(path))
+        if (entry.path().extension() == ".dxf") files.push_back(entry.path());
+      std::sort(files.begin(), files.end());
+      if (files.empty()) throw EngineError("folder " + input + " holds no mold DXF files");
+      for (const auto& file : files) molds.push_back(read_mold_dxf(file));
+    } else {
+      molds.push_back(read_mold_dxf(path));
+    }
+  }
+  return molds;
+}
+
+NestInstance load_instance(const NestArguments& a) {
+  const bool single_json = a.inputs.size() == 1 && std::filesystem::path(a.inputs[0]).extension() == ".json";
+  if (single_json) {
+    if (a.roll_width_mm > 0) throw EngineError("--roll-width is for mold DXFs; a JSON instance carries its own strip or hides");
+    return read_nest_instance(a.inputs[0]);
+  }
+  if (a.roll_width_mm <= 0) throw EngineError("nesting molds needs --roll-width MM (the usable width of the roll)");
+  MoldNestSpec spec;
+  spec.roll_width_mm = a.roll_width_mm;
+  spec.copies = a.copies;
+  spec.mirrored_twins = a.mirrored_twins;
+  return instance_from_molds(read_molds(a.inputs), spec, std::filesystem::path(a.inputs[0]).stem().string());
+}
+
+int run_nest(const NestArguments& a) {
+  try {
+    const NestInstance instance = load_instance(a);
+    NestOptions options;
+    options.time_limit_s = a.time_limit_s;
+    options.seed = a.seed;
+    options.threads = a.threads > 0 ? a.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    if (a.gap_mm >= 0) options.gap_mm = a.gap_mm;
+    if (a.margin_mm >= 0) options.margin_mm = a.margin_mm;
+    options.run_parallel = run_on_threads;
+    const Layout layout = nest(instance, options);
+    const std::vector<std::string> problems = check_layout(layout, instance, options.gap_mm.value_or(-1), options.margin_mm.value_or(-1));
+    if (!problems.empty()) throw EngineError("internal error, layout failed the check: " + problems.front());
+    NestInstance written = instance;  // the layout records the gap and margin it was made with
+    written.gap_mm = options.gap_mm.value_or(instance.gap_mm);
+    written.margin_mm = options.margin_mm.value_or(instance.margin_mm);
+    write_layout(a.output_path, layout, written);
+    if (!a.svg_path.empty()) write_layout_svg(a.svg_path, layout, written);
+    int demanded = 0, unplaced = 0;
+    for (const NestItem& item : instance.items) demanded += item.demand;
+    for (const Unplaced& u : layout.unplaced) unplaced += u.count;
+    if (layout.strip_length)
+      std::printf("%s: %zu of %d pieces on a strip %.1f mm long, utilisation %.2f %%\n", instance.name.c_str(),
+                  layout.placements.size(), demanded, *layout.strip_length, 100 * layout.utilisation);
+    else
+      std::printf("%s: %zu of %d pieces on %d hide(s), utilisation of the used hides %.2f %%\n", instance.name.c_str(),
+                  layout.placements.size(), demanded, used_bin_count(layout), 100 * layout.utilisation);
+    for (const Unplaced& u : layout.unplaced)
+      std::printf("  not placed: item %d x%d: %s\n", u.item, u.count, u.reason.c_str());
+    return unplaced > 0 ? 3 : 0;
+  } catch (const EngineError& error) {
+    std::fprintf(stderr, "lastcut nest: error: %s\n", error.what());
+    return 1;
+  }
+}
+
+}  // namespace
 
 void add_nest_command(CLI::App& app, int& exit_code) {
-  auto* command = app.add_subcommand("nest", "(not built yet)");
-  command->allow_extras();
-  command->callback([&exit_code] {
-    std::fprintf(stderr, "lastcut: error: 'nest' is not built yet\n");
-    exit_code = 2;
-  });
+  auto arguments = std::make_shared<NestArguments>();
+  auto* command = app.add_subcommand("nest", "nest pieces on a strip or on hides and write a layout (exit 3: some pieces did not fit)");
+  command->add_option("input", arguments->inputs, "nest instance (JSON), or mold DXF files / folders from `lastcut flatten`")->required();
+  command->add_option("--time-limit", arguments->time_limit_s, "seconds to improve the layout")->check(CLI::NonNegativeNumber)->required();
+  command->add_option("--seed", arguments->seed, "random seed (same seed and threads: same layout for the same rounds)");
+  command->add_option("--threads", arguments->threads, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  command->add_option("--gap", arguments->gap_mm, "minimum distance between pieces, mm (kerf + clearance)")->check(CLI::NonNegativeNumber);
+  command->add_option("--margin", arguments->margin_mm, "minimum distance from the material edge and defects, mm")->check(CLI::NonNegativeNumber);
+  command->add_option("--roll-width", arguments->roll_width_mm, "usable roll width for mold DXFs, mm")->check(CLI::PositiveNumber);
+  command->add_option("--copies", arguments->copies, "copies of every mold (mold DXFs only)")->check(CLI::PositiveNumber);
+  command->add_flag("--mirrored-twins", arguments->mirrored_twins, "add every mold mirrored, for the other foot (mold DXFs only)");
+  command->add_option("-o,--output", arguments->output_path, "layout JSON to write")->required();
+  command->add_option("--svg", arguments->svg_path, "SVG picture of the layout to write");
+  command->callback([arguments, &exit_code] { exit_code = run_nest(*arguments); });
 }
 
 }  // namespace lastcut::cli

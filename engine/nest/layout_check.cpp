@@ -175,7 +175,11 @@ std::vector<std::string> check_layout(const Layout& layout, const NestInstance& 
                            text(gap > 0 ? ": closer than the gap (%.3g mm2 of overlap when grown by gap/2)" : ": overlap (%.3g mm2)",
                                 common / (s.scale * s.scale)));
     }
-  // Reported figures.
+  // Reported figures (only computable when every reference resolves).
+  const bool references_resolve = std::all_of(layout.placements.begin(), layout.placements.end(), [&](const Placement& p) {
+    return items.count(p.item) && (strip || bins.count(p.bin));
+  });
+  if (!references_resolve) return problems;
   Layout recomputed = layout;
   update_utilisation(recomputed, instance);
   if (std::abs(recomputed.utilisation - layout.utilisation) > 1e-6)

@@ -1,0 +1,126 @@
+// JSON I/O: the shared benchmark files parse, layouts round-trip with their embedded instance, and
+// bad input is refused with one readable line.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "engine/core/engine_error.hpp"
+#include "engine/nest/layout_check.hpp"
+#include "engine/nest/nest_json.hpp"
+#include "nest_test_instances.hpp"
+
+namespace lastcut {
+namespace {
+
+const std::filesystem::path kData = LASTCUT_SHARED_DATA_DIR "/nesting";
+
+TEST(NestJson, ReadsEveryShippedInstance) {
+  int files = 0;
+  for (const char* folder : {"esicup", "leather"})
+    for (const auto& entry : std::filesystem::directory_iterator(kData / folder)) {
+      const NestInstance instance = read_nest_instance(entry.path());
+      EXPECT_FALSE(instance.items.empty()) << entry.path();
+      for (const NestItem& item : instance.items) EXPECT_GT(signed_area(item.shape), 0) << entry.path() << " item " << item.id;
+      ++files;
+    }
+  EXPECT_EQ(files, 15);
+  const NestInstance albano = read_nest_instance(kData / "esicup/albano.json");
+  ASSERT_TRUE(albano.strip_height);
+  EXPECT_DOUBLE_EQ(*albano.strip_height, 4900.0);
+  EXPECT_EQ(albano.items[0].allowed_rotations_deg, (std::vector<double>{0, 180}));
+  EXPECT_EQ(albano.items[0].shape.points.size(), 14u);  // closing point dropped
+  const NestInstance hides = read_nest_instance(kData / "leather/baldacci3.json");
+  EXPECT_FALSE(hides.strip_height);
+  EXPECT_EQ(hides.bins.size(), 12u);
+  EXPECT_EQ(hides.bins[0].holes.size(), 6u);
+  EXPECT_FALSE(hides.bins[0].zones.empty());
+  EXPECT_TRUE(hides.items[0].allowed_rotations_deg.empty());  // free rotation
+}
+
+TEST(NestJson, LayoutRoundTripIsSelfContained) {
+  NestInstance instance = test::small_hide();
+  instance.items[0].label = "order 12 size 42 L";
+  instance.items[0].marks.push_back({"toe", {1, 2}, {3, 4}});
+  instance.items[0].grain_deg = 90;
+  instance.items[0].grain_tolerance_deg = 5;
+  instance.items[1].allow_mirror = true;
+  instance.gap_mm = 1.5;
+  Layout layout;
+  layout.instance = instance.name;
+  layout.placements.push_back({0, 7, 0, 90, false, 50, 60});
+  layout.placements.push_back({1, 7, 0, 180, true, 300, 100});
+  layout.unplaced.push_back({0, 3, "no room left"});
+  layout.unplaced.push_back({1, 2, "no room left"});
+  update_utilisation(layout, instance);
+  const nlohmann::json json = layout_to_json(layout, instance);
+  EXPECT_EQ(json["placements"][0]["bin"], 7);
+  EXPECT_FALSE(json.contains("strip_length"));
+  const Layout back = layout_from_json(nlohmann::json::parse(json.dump()));
+  const NestInstance embedded = instance_from_layout_json(nlohmann::json::parse(json.dump()));
+  ASSERT_EQ(back.placements.size(), 2u);
+  EXPECT_EQ(back.placements[1].mirrored, true);
+  EXPECT_DOUBLE_EQ(back.placements[1].rotation_deg, 180);
+  EXPECT_DOUBLE_EQ(back.utilisation, layout.utilisation);
+  EXPECT_EQ(back.unplaced[0].reason, "no room left");
+  ASSERT_EQ(embedded.items.size(), 2u);
+  EXPECT_EQ(embedded.items[0].label, "order 12 size 42 L");
+  EXPECT_EQ(embedded.items[0].marks[0].to_mm, Point2(3, 4));
+  EXPECT_EQ(*embedded.items[0].grain_deg, 90);
+  EXPECT_EQ(embedded.items[0].min_quality, 2);
+  EXPECT_EQ(embedded.bins[0].holes.size(), 1u);
+  EXPECT_EQ(embedded.bins[0].zones[0].quality, 1);
+  EXPECT_DOUBLE_EQ(embedded.gap_mm, 1.5);
+  // The same placed shapes from the original and from the embedded instance.
+  EXPECT_TRUE(placed_shape(embedded.items[1], back.placements[1]).points[2].isApprox(
+      placed_shape(instance.items[1], layout.placements[1]).points[2]));
+}
+
+TEST(NestJson, StripLayoutCarriesLengthAndHeight) {
+  const NestInstance instance = test::small_strip();
+  Layout layout;
+  layout.instance = instance.name;
+  layout.strip_length = 123.5;
+  const nlohmann::json json = layout_to_json(layout, instance);
+  EXPECT_DOUBLE_EQ(json["strip_length"].get<double>(), 123.5);
+  EXPECT_DOUBLE_EQ(json["strip_height"].get<double>(), 100.0);
+  EXPECT_FALSE(json["placements"].empty() && json.contains("bins"));
+  EXPECT_DOUBLE_EQ(*instance_from_layout_json(json).strip_height, 100.0);
+}
+
+void expect_refused(const std::string& text, const std::string& words) {
+  try {
+    instance_from_json(nlohmann::json::parse(text), "bad.json");
+    ADD_FAILURE() << "accepted: " << text;
+  } catch (const EngineError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find(words), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+TEST(NestJson, RefusesBadInstances) {
+  expect_refused(R"({"items": []})", "neither");
+  expect_refused(R"({"strip_height": 10, "items": [{"id": 0, "shape": [[0,0],[1,0]]}]})", "at least 3");
+  expect_refused(R"({"strip_height": 10, "items": [{"id": 0, "shape": [[0,0],[1,0],[2,0]]}]})", "zero area");
+  expect_refused(R"({"strip_height": -1, "items": []})", "positive");
+  expect_refused(R"({"strip_height": 10, "items": [{"id": 0, "demand": -2, "shape": [[0,0],[1,0],[0,1]]}]})", "negative");
+  expect_refused(R"({"strip_height": 10, "items": [{"id": 0, "shape": [[0,0],[1,0],[0,1]]}, {"id": 0, "shape": [[0,0],[1,0],[0,1]]}]})", "twice");
+  expect_refused(R"({"strip_height": 10, "items": [{"id": 0, "shape": [[0,0],["a",0],[0,1]]}]})", "number");
+  expect_refused(R"({"strip_height": 10, "items": [{"id": 0, "shape": {"type": "circle", "data": []}}]})", "circle");
+  expect_refused(R"({"strip_height": 10, "items": [{"id": 0, "allowed_orientations": [], "shape": [[0,0],[1,0],[0,1]]}]})", "no rotation");
+  expect_refused(R"([1, 2])", "object");
+  EXPECT_THROW(layout_from_json(nlohmann::json::parse(R"({"placements": [{"item": 0}]})")), EngineError);
+  EXPECT_THROW(instance_from_layout_json(nlohmann::json::parse(R"({"placements": []})")), EngineError);
+}
+
+TEST(NestJson, RefusesFilesThatAreNotJson) {
+  const auto path = std::filesystem::temp_directory_path() / "lastcut-nest-not-json.json";
+  std::ofstream(path) << "{\"strip_height\": 10, \"items\": [";
+  EXPECT_THROW(read_nest_instance(path), EngineError);
+  EXPECT_THROW(read_nest_instance(path.string() + ".missing"), EngineError);
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace lastcut
