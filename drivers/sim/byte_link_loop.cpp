@@ -8,6 +8,7 @@
 #include <deque>
 #include <poll.h>
 #include <sys/socket.h>
+#include <termios.h>
 #include <unistd.h>
 
 #include "drivers/sim/sim_link.hpp"
@@ -29,7 +30,8 @@ struct TimedByte {
 // One direction of the serial line: a byte is delivered 10 bit times after the previous one.
 class Wire {
  public:
-  explicit Wire(int baud) : byte_s_(baud > 0 ? 10.0 / baud : 0.0) {}
+  explicit Wire(int baud) { set_baud(baud); }
+  void set_baud(int baud) { byte_s_ = baud > 0 ? 10.0 / baud : 0.0; }
   void push(const char* data, size_t n, double now_s) {
     for (size_t i = 0; i < n; ++i) {
       free_at_s_ = std::max(free_at_s_, now_s) + byte_s_;
@@ -47,10 +49,25 @@ class Wire {
   size_t size() const { return queue_.size(); }
 
  private:
-  double byte_s_;
+  double byte_s_ = 0;
   double free_at_s_ = 0;
   std::deque<TimedByte> queue_;
 };
+
+// The baud rate the client set on its end of the pty (both ends share one termios), 0 if unknown.
+int client_baud(int slave_fd) {
+  termios tio{};
+  if (slave_fd < 0 || ::tcgetattr(slave_fd, &tio) != 0) return 0;
+  static const std::pair<speed_t, int> kSpeeds[] = {{B1200, 1200},     {B2400, 2400},     {B4800, 4800},
+                                                    {B9600, 9600},     {B19200, 19200},   {B38400, 38400},
+                                                    {B57600, 57600},   {B115200, 115200}, {B230400, 230400},
+                                                    {B460800, 460800}, {B921600, 921600}};
+  const speed_t speed = ::cfgetospeed(&tio);
+  for (const auto& [constant, baud] : kSpeeds) {
+    if (constant == speed) return baud;
+  }
+  return 0;
+}
 
 }  // namespace
 
@@ -66,7 +83,11 @@ int run_byte_device(ByteDevice& device, const ByteLinkOptions& options, const st
     if (listener < 0) return 1;
     ready("127.0.0.1:" + std::to_string(options.tcp_port));
   }
-  Wire inbound(options.baud), outbound(options.baud);
+  // baud < 0: model the wire at whatever rate the client configured on the pty, as a real
+  // device would have to be set to the same rate as its sender.
+  const bool follow_client = options.baud < 0;
+  int wire_baud = follow_client ? 9600 : options.baud;
+  Wire inbound(wire_baud), outbound(wire_baud);
   std::string unsent;  // output the kernel did not take yet
   bool dropped = false, stalled = false;
   double last_record_s = 0;
@@ -75,9 +96,22 @@ int run_byte_device(ByteDevice& device, const ByteLinkOptions& options, const st
 
   while (!stop.load()) {
     const double now = clock_s();
+    if (follow_client) {
+      const int baud = client_baud(pty.slave_keep);
+      if (baud > 0 && baud != wire_baud) {
+        wire_baud = baud;
+        inbound.set_baud(baud);
+        outbound.set_baud(baud);
+      }
+    }
+    // The device runs at the modelled arrival time of each byte, so its answers leave at the
+    // time a real controller would send them, however late this process was woken.
     while (inbound.ready(now)) {
       const TimedByte b = inbound.pop();
       device.receive(b.byte, b.at_s);
+      device.advance(b.at_s);
+      const std::string out = device.take_output();
+      if (!stalled && !out.empty()) outbound.push(out.data(), out.size(), b.at_s);
     }
     device.advance(now);
     const std::string out = device.take_output();
@@ -112,7 +146,9 @@ int run_byte_device(ByteDevice& device, const ByteLinkOptions& options, const st
       last_record_s = now;
     }
 
-    double wake = std::min({inbound.next_s(), outbound.next_s(), device.next_event_s(), now + 0.05});
+    // Bytes in between need no wake-up of their own (they are processed at their modelled
+    // times anyway): waking at most every 0.5 ms for input keeps the loop cheap on a busy PC.
+    double wake = std::min({std::max(inbound.next_s(), now + 0.0005), outbound.next_s(), device.next_event_s(), now + 0.05});
     if (!unsent.empty()) wake = std::min(wake, now + 0.002);
     const double wait_s = std::max(0.0, wake - clock_s());
     pollfd fds[2];

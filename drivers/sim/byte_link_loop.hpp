@@ -14,7 +14,7 @@ namespace lastcut::drivers::sim {
 struct ByteLinkOptions {
   std::string link_path;             // create a pty and this symlink ...
   int tcp_port = 0;                  // ... or listen on 127.0.0.1:tcp_port
-  int baud = 115200;                 // wire model; 0 = not rate limited
+  int baud = -1;                     // wire model: bits/s, 0 = not rate limited, -1 = the rate the client set on the pty
   std::filesystem::path record_dir;  // empty: record nothing
   Faults faults;
 };

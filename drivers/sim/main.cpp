@@ -38,7 +38,9 @@ void add_common(CLI::App* command, CommonOptions& options, int default_baud) {
   options.baud = default_baud;
   command->add_option("--link", options.link, "create a pseudo-terminal and a symlink at this path");
   command->add_option("--port", options.port, "listen on 127.0.0.1:PORT instead")->check(CLI::Range(1, 65535));
-  command->add_option("--baud", options.baud, "wire rate modelled on the link (10 bits per byte); 0 = unlimited");
+  command->add_option("--baud", options.baud,
+                      "wire rate modelled on the link (10 bits per byte); 0 = unlimited; default: on a pty, the rate the "
+                      "client sets (as a real device must match its sender); over TCP unlimited");
   command->add_option("--record", options.record, "folder where what was received is recorded");
   command->add_option("--fault", options.faults,
                       "inject a fault: drop-at-line=N, stall-at-line=N, garbage-at-line=N, error-at-line=N[:CODE], "
@@ -70,7 +72,8 @@ int check_common(const CommonOptions& options, lastcut::drivers::sim::Faults& fa
 
 int run_bytes(lastcut::drivers::sim::ByteDevice& device, const CommonOptions& options,
               const lastcut::drivers::sim::Faults& faults) {
-  lastcut::drivers::sim::ByteLinkOptions link{options.link, options.port, options.baud, options.record, faults};
+  const int baud = options.baud >= 0 ? options.baud : options.link.empty() ? 0 : -1;
+  lastcut::drivers::sim::ByteLinkOptions link{options.link, options.port, baud, options.record, faults};
   std::string error;
   const int code = lastcut::drivers::sim::run_byte_device(device, link, g_stop, print_ready, error);
   if (code != 0) std::fprintf(stderr, "lastcut-sim: error: %s\n", error.c_str());
@@ -87,7 +90,7 @@ int main(int argc, char** argv) {
   CommonOptions grbl_common;
   GrblMachineOptions grbl_options;
   auto* grbl = app.add_subcommand("grbl", "grbl 1.1 controller");
-  add_common(grbl, grbl_common, 115200);
+  add_common(grbl, grbl_common, -1);
   grbl->add_option("--rx-buffer", grbl_options.rx_buffer_bytes, "serial receive buffer, bytes")->check(CLI::Range(16, 65536));
   grbl->add_option("--time-scale", grbl_options.time_scale, "motion time factor (0 = instant, 1 = real time)");
 
@@ -95,7 +98,7 @@ int main(int argc, char** argv) {
   HpglCutterOptions hpgl_options;
   std::string svg_path;
   auto* hpgl = app.add_subcommand("hpgl", "HPGL cutter/plotter");
-  add_common(hpgl, hpgl_common, 9600);
+  add_common(hpgl, hpgl_common, -1);
   hpgl->add_option("--handshake", hpgl_options.handshake, "xonxoff | escb | none")->check(CLI::IsMember({"xonxoff", "escb", "none"}));
   hpgl->add_option("--buffer", hpgl_options.buffer_bytes, "input buffer, bytes")->check(CLI::Range(64, 65536));
   hpgl->add_option("--speed", hpgl_options.speed_mm_per_s, "cutting speed, mm/s");
