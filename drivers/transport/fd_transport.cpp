@@ -7,6 +7,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/ioctl.h>
+#include <sys/socket.h>
 #include <termios.h>
 #include <thread>
 #include <unistd.h>
@@ -61,7 +62,10 @@ IoStatus FdTransport::write(std::string_view data, double timeout_s) {
   const auto start = std::chrono::steady_clock::now();
   size_t done = 0;
   while (done < data.size()) {
-    const ssize_t put = ::write(fd_, data.data() + done, data.size() - done);
+    // Sockets: MSG_NOSIGNAL, so a plotter closing the connection is an error here, not a SIGPIPE
+    // that kills the daemon.
+    const ssize_t put = is_tty_ ? ::write(fd_, data.data() + done, data.size() - done)
+                                : ::send(fd_, data.data() + done, data.size() - done, MSG_NOSIGNAL);
     if (put > 0) {
       done += static_cast<size_t>(put);
       continue;

@@ -90,6 +90,9 @@ TEST(Transport, TcpLoopbackAndRefusedConnection) {
   IoStatus status = opened.transport->read(bytes, 1);
   EXPECT_FALSE(status.ok);
   EXPECT_TRUE(status.closed);
+  // Writing to a closed connection is an error result, never a SIGPIPE that kills the process.
+  IoStatus first = opened.transport->write("PU;", 1), second = opened.transport->write("PU;", 1);
+  EXPECT_FALSE(first.ok && second.ok);
   ::close(listener);
   const OpenResult refused = open_transport("tcp://127.0.0.1:" + std::to_string(port), {}, 1);
   EXPECT_FALSE(refused.transport);
