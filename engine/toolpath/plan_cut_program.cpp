@@ -158,6 +158,7 @@ CutProgram plan_cut_program(const std::vector<PlacedPiece>& pieces, const Machin
   std::vector<int> sequence(clean.size());
   std::iota(sequence.begin(), sequence.end(), 0);
   if (order == PieceOrder::ShortTravel) sequence = order_for_short_travel(stops, Point2::Zero());
+  if (order == PieceOrder::NearestNeighbour) sequence = order_by_nearest_neighbour(stops, Point2::Zero());
 
   CutProgram program;
   program.work_area_x_mm = profile.work_area_x_mm;

@@ -19,6 +19,7 @@ namespace lastcut {
 enum class PieceOrder {
   ShortTravel,  // nearest neighbour + 2-opt + Or-opt
   AsGiven,      // the order of `pieces` (the layout's own order), for comparison
+  NearestNeighbour,  // nearest neighbour alone, for comparison
 };
 
 // Throws EngineError (one line naming the piece) when a piece is degenerate, not finite or lies

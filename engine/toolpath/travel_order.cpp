@@ -75,9 +75,7 @@ bool improve_or_opt(Tour& tour) {
   return false;
 }
 
-}  // namespace
-
-std::vector<int> order_for_short_travel(const std::vector<Point2>& stops_mm, const Point2& home_mm) {
+Tour nearest_neighbour_tour(const std::vector<Point2>& stops_mm, const Point2& home_mm) {
   const size_t n = stops_mm.size();
   Tour tour;
   tour.point.push_back(home_mm);
@@ -99,6 +97,19 @@ std::vector<int> order_for_short_travel(const std::vector<Point2>& stops_mm, con
     tour.point.push_back(here);
     tour.stop.push_back(nearest);
   }
+  return tour;
+}
+
+}  // namespace
+
+std::vector<int> order_by_nearest_neighbour(const std::vector<Point2>& stops_mm, const Point2& home_mm) {
+  const Tour tour = nearest_neighbour_tour(stops_mm, home_mm);
+  return std::vector<int>(tour.stop.begin() + 1, tour.stop.end());
+}
+
+std::vector<int> order_for_short_travel(const std::vector<Point2>& stops_mm, const Point2& home_mm) {
+  const size_t n = stops_mm.size();
+  Tour tour = nearest_neighbour_tour(stops_mm, home_mm);
   for (int round = 0; round < kMaxRounds; ++round) {
     const bool two_opt = improve_two_opt(tour);
     bool or_opt = false;

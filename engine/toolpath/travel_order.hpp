@@ -15,6 +15,8 @@ namespace lastcut {
 
 // stops_mm #N points; returns a permutation of 0..N-1 (the visiting order).
 std::vector<int> order_for_short_travel(const std::vector<Point2>& stops_mm, const Point2& home_mm);
+// Nearest neighbour alone, without the improvement moves (for comparison in benchmarks).
+std::vector<int> order_by_nearest_neighbour(const std::vector<Point2>& stops_mm, const Point2& home_mm);
 
 // Length (mm) of the open path home -> stops_mm[order[0]] -> ... -> stops_mm[order[N-1]].
 double open_path_length(const std::vector<Point2>& stops_mm, const std::vector<int>& order, const Point2& home_mm);

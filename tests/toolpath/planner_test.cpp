@@ -48,6 +48,7 @@ TEST(ToolpathTravelOrder, ImprovesOnNearestNeighbourTrapAndOnTheGivenOrder) {
   const double ours_mm = open_path_length(stops, order, Point2::Zero());
   const double given_mm = open_path_length(stops, given, Point2::Zero());
   EXPECT_LT(ours_mm, 0.3 * given_mm);
+  EXPECT_LE(ours_mm, open_path_length(stops, order_by_nearest_neighbour(stops, Point2::Zero()), Point2::Zero()) + 1e-9);
   EXPECT_LE(ours_mm, 1.1 * 63 * 100.0);
 }
 
