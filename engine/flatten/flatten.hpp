@@ -3,9 +3,13 @@
 //
 // ARAP (default): L. Liu, L. Zhang, Y. Xu, C. Gotsman, S. J. Gortler, "A Local/Global Approach to Mesh
 // Parameterization", SGP 2008, as used in M. Sabaliauskas' thesis (Vilnius University 2017, sections 2.2-2.4):
-// analytic 2x2 SVD in the local step, the Laplacian factored once by sparse Cholesky for the global step.
-// Start map: a flip-free convex-combination embedding (tutte_embedding.hpp); steps that would flip a
-// triangle are shortened, so the result has no flipped triangle.
+// analytic 2x2 SVD in the local step, the Laplacian factored once by sparse Cholesky for the global step,
+// Anderson acceleration of the iteration (anderson_acceleration.hpp).
+// Start map: a flip-free convex-combination embedding (tutte_embedding.hpp). If ARAP folds triangles
+// (it can, where the surface is far from developable), they are untangled locally and polished with
+// flip-guarded steps (untangle.hpp); if that fails, flip-guarded ARAP restarts from the flip-free start map.
+// Either way FlattenResult::notes says what happened and flipped_triangles what is left (0 in every case
+// we have seen).
 // LSCM: B. Lévy, S. Petitjean, N. Ray, J. Maillot, SIGGRAPH 2002 (lscm.hpp), for comparison.
 //
 // Usage:
