@@ -153,12 +153,23 @@ CutProgram plan_cut_program(const std::vector<PlacedPiece>& pieces, const Machin
   clean.reserve(pieces.size());
   for (size_t i = 0; i < pieces.size(); ++i) clean.push_back(checked_piece(pieces[i], i, profile));
 
-  std::vector<Point2> stops;
-  for (const PlacedPiece& piece : clean) stops.push_back(tour_stop(piece.outline));
+  // Where the tool arrives at a piece (its label, else its first mark) and where it leaves it
+  // (the contour start). The label is measured with the widest order number it can get.
+  std::vector<Point2> entries, exits;
+  const int widest_order = static_cast<int>(std::pow(10.0, std::floor(std::log10(std::max<double>(1, clean.size())))) * 10 - 1);
+  for (const PlacedPiece& piece : clean) {
+    exits.push_back(tour_stop(piece.outline));
+    std::optional<PlacedText> label;
+    if (profile.label.enabled && profile.pen) {
+      label = place_text(piece_marking(widest_order, piece.label), piece.outline, profile.label.height_mm,
+                         profile.label.min_height_mm);
+    }
+    entries.push_back(label ? label->center_mm : piece.marks.empty() ? exits.back() : piece.marks.front().from_mm);
+  }
   std::vector<int> sequence(clean.size());
   std::iota(sequence.begin(), sequence.end(), 0);
-  if (order == PieceOrder::ShortTravel) sequence = order_for_short_travel(stops, Point2::Zero());
-  if (order == PieceOrder::NearestNeighbour) sequence = order_by_nearest_neighbour(stops, Point2::Zero());
+  if (order == PieceOrder::ShortTravel) sequence = order_for_short_travel(entries, exits, Point2::Zero());
+  if (order == PieceOrder::NearestNeighbour) sequence = order_by_nearest_neighbour(entries, exits, Point2::Zero());
 
   CutProgram program;
   program.work_area_x_mm = profile.work_area_x_mm;
