@@ -3,7 +3,7 @@
 // validated by the independent Clipper checker (engine/nest/layout_check). Prints two tables:
 //   strips: utilisation, strip length, points below the best-known utilisation (sparrow's records);
 //   hides:  pieces placed / demanded, hides used, utilisation of the used hides.
-// Usage: nest_bench [--data DIR] [--limits 10,60] [--threads 2] [--seed 1] [--only NAME]
+// Usage: nest_bench [--data DIR] [--limits 10,60] [--threads 2] [--seed 1] [--only NAME] [--svg-dir DIR]
 #include <algorithm>
 #include <cstdio>
 #include <functional>
@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "engine/nest/layout_check.hpp"
+#include "engine/nest/layout_svg.hpp"
 #include "engine/nest/nest_json.hpp"
 #include "engine/nest/nester.hpp"
 
@@ -49,12 +50,14 @@ int main(int argc, char** argv) {
   int threads = 2;
   std::uint64_t seed = 1;
   std::string only;
+  std::filesystem::path svg_dir;  // when set: a picture of every layout
   for (int a = 1; a + 1 < argc; a += 2) {
     const std::string key = argv[a], value = argv[a + 1];
     if (key == "--data") data = value;
     else if (key == "--threads") threads = std::atoi(value.c_str());
     else if (key == "--seed") seed = std::strtoull(value.c_str(), nullptr, 10);
     else if (key == "--only") only = value;
+    else if (key == "--svg-dir") svg_dir = value;
     else if (key == "--limits") {
       limits.clear();
       std::stringstream list(value);
@@ -81,6 +84,7 @@ int main(int argc, char** argv) {
       const lastcut::Layout layout = lastcut::nest(instance, options);
       const auto problems = lastcut::check_layout(layout, instance);
       invalid += problems.empty() ? 0 : 1;
+      if (!svg_dir.empty()) lastcut::write_layout_svg(svg_dir / ("nest-" + instance.name + ".svg"), layout, instance);
       const double best = kBestKnown.count(file.stem()) ? kBestKnown.at(file.stem()) : 0;
       const double gap = best - 100 * layout.utilisation;
       gap_sum += gap, worst_gap = std::max(worst_gap, gap), ++count;
@@ -104,6 +108,7 @@ int main(int argc, char** argv) {
       const lastcut::Layout layout = lastcut::nest(instance, options);
       const auto problems = lastcut::check_layout(layout, instance);
       invalid += problems.empty() ? 0 : 1;
+      if (!svg_dir.empty()) lastcut::write_layout_svg(svg_dir / ("nest-" + instance.name + ".svg"), layout, instance);
       int demanded = 0, available = 0;
       for (const auto& item : instance.items) demanded += item.demand;
       for (const auto& bin : instance.bins) available += bin.stock;

@@ -32,7 +32,9 @@ struct NestArguments {
   int threads = 0;  // 0: all cores
   double gap_mm = -1, margin_mm = -1;
   double roll_width_mm = 0;
+  std::string hides_path;  // molds on the hides of this instance file instead of a roll
   int copies = 1;
+  int min_quality = 0;
   bool mirrored_twins = false;
   std::string output_path, svg_path;
 };
@@ -69,12 +71,24 @@ NestInstance load_instance(const NestArguments& a) {
     if (a.roll_width_mm > 0) throw EngineError("--roll-width is for mold DXFs; a JSON instance carries its own strip or hides");
     return read_nest_instance(a.inputs[0]);
   }
-  if (a.roll_width_mm <= 0) throw EngineError("nesting molds needs --roll-width MM (the usable width of the roll)");
+  if (a.roll_width_mm <= 0 && a.hides_path.empty())
+    throw EngineError("nesting molds needs --roll-width MM (the usable width of the roll) or --hides HIDES.json");
+  if (a.roll_width_mm > 0 && !a.hides_path.empty()) throw EngineError("choose a roll (--roll-width) or hides (--hides), not both");
   MoldNestSpec spec;
-  spec.roll_width_mm = a.roll_width_mm;
+  spec.roll_width_mm = a.roll_width_mm > 0 ? a.roll_width_mm : 1;
   spec.copies = a.copies;
   spec.mirrored_twins = a.mirrored_twins;
-  return instance_from_molds(read_molds(a.inputs), spec, std::filesystem::path(a.inputs[0]).stem().string());
+  NestInstance instance = instance_from_molds(read_molds(a.inputs), spec, std::filesystem::path(a.inputs[0]).stem().string());
+  if (!a.hides_path.empty()) {
+    const NestInstance hides = read_nest_instance(a.hides_path);
+    if (hides.bins.empty()) throw EngineError(a.hides_path + " has no \"bins\" (hides)");
+    instance.strip_height.reset();
+    instance.bins = hides.bins;
+    instance.gap_mm = hides.gap_mm;
+    instance.margin_mm = hides.margin_mm;
+    for (NestItem& item : instance.items) item.min_quality = a.min_quality;
+  }
+  return instance;
 }
 
 int run_nest(const NestArguments& a) {
@@ -125,6 +139,8 @@ void add_nest_command(CLI::App& app, int& exit_code) {
   command->add_option("--gap", arguments->gap_mm, "minimum distance between pieces, mm (kerf + clearance)")->check(CLI::NonNegativeNumber);
   command->add_option("--margin", arguments->margin_mm, "minimum distance from the material edge and defects, mm")->check(CLI::NonNegativeNumber);
   command->add_option("--roll-width", arguments->roll_width_mm, "usable roll width for mold DXFs, mm")->check(CLI::PositiveNumber);
+  command->add_option("--hides", arguments->hides_path, "nest mold DXFs on the hides (\"bins\") of this instance file");
+  command->add_option("--min-quality", arguments->min_quality, "lowest leather quality the molds may lie on (with --hides)");
   command->add_option("--copies", arguments->copies, "copies of every mold (mold DXFs only)")->check(CLI::PositiveNumber);
   command->add_flag("--mirrored-twins", arguments->mirrored_twins, "add every mold mirrored, for the other foot (mold DXFs only)");
   command->add_option("-o,--output", arguments->output_path, "layout JSON to write")->required();
