@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -15,7 +16,7 @@
 namespace lastcut {
 namespace {
 
-struct Run {
+struct CommandResult {
   int exit_code;
   std::string out, err;
 };
@@ -35,7 +36,7 @@ class CliGenerate : public ::testing::Test {
     return text.str();
   }
 
-  Run run(const std::string& arguments) const {
+  CommandResult run(const std::string& arguments) const {
     const std::string command = std::string("'") + LASTCUT_BINARY_DIR + "/bin/lastcut' generate " + arguments + " >'" +
                                 (dir_ / "out.txt").string() + "' 2>'" + (dir_ / "err.txt").string() + "'";
     const int status = std::system(command.c_str());
@@ -47,7 +48,7 @@ class CliGenerate : public ::testing::Test {
 
 TEST_F(CliGenerate, WritesTheAskedLastAndTheSameBytesForTheSameSeed) {
   const std::string file = (dir_ / "a.obj").string();
-  const Run first = run("-o '" + file + "' --size 40 --side right --triangles 3000 --noise 0.1 --holes 2 --seed 5");
+  const CommandResult first = run("-o '" + file + "' --size 40 --side right --triangles 3000 --noise 0.1 --holes 2 --seed 5");
   ASSERT_EQ(first.exit_code, 0) << first.err;
   EXPECT_NE(first.out.find("wrote"), std::string::npos) << first.out;
   const MeshIntake intake = read_mesh(file);
@@ -61,7 +62,7 @@ TEST_F(CliGenerate, WritesTheAskedLastAndTheSameBytesForTheSameSeed) {
 
 TEST_F(CliGenerate, RandomPoseIsWrittenAndUndoesToTheCanonicalFrame) {
   const std::string file = (dir_ / "posed.stl").string(), pose = (dir_ / "pose.json").string();
-  const Run result = run("-o '" + file + "' --size 42 --triangles 3000 --random-pose --seed 9 --pose-out '" + pose + "'");
+  const CommandResult result = run("-o '" + file + "' --size 42 --triangles 3000 --random-pose --seed 9 --pose-out '" + pose + "'");
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const nlohmann::json document = nlohmann::json::parse(slurp(pose));
   Eigen::Matrix4d matrix;
@@ -78,7 +79,7 @@ TEST_F(CliGenerate, RandomPoseIsWrittenAndUndoesToTheCanonicalFrame) {
 }
 
 TEST_F(CliGenerate, BadArgumentsFailWithOneLine) {
-  Run result = run("-o '" + (dir_ / "x.stl").string() + "' --size 30");
+  CommandResult result = run("-o '" + (dir_ / "x.stl").string() + "' --size 30");
   EXPECT_NE(result.exit_code, 0);
   EXPECT_NE(result.err.find("size"), std::string::npos) << result.err;
   result = run("-o '" + (dir_ / "x.xyz").string() + "'");
