@@ -23,7 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
+struct CommandRun {
   int exit_code = -1;
   bool crashed = false;
   std::string out, err;
@@ -44,12 +44,12 @@ class CliFlatten : public ::testing::Test {
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
 
-  static Run flatten(const std::string& arguments) {
+  static CommandRun flatten(const std::string& arguments) {
     const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
     const std::string command = std::string("'") + LASTCUT_BINARY_DIR + "/bin/lastcut' flatten " + arguments + " >'" +
                                 out.string() + "' 2>'" + err.string() + "'";
     const int status = std::system(command.c_str());
-    Run run;
+    CommandRun run;
     // The shell reports a child killed by a signal as 128 + signal.
     run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     run.crashed = !WIFEXITED(status) || run.exit_code > 128;
@@ -60,7 +60,7 @@ class CliFlatten : public ::testing::Test {
 
   // Non-zero exit, no crash, exactly one line "lastcut: error: ..." that contains `reason`.
   static void expect_refused(const fs::path& scan, const std::string& extra, const std::string& reason) {
-    const Run run = flatten("'" + scan.string() + "' -o '" + (dir_ / "refused").string() + "' " + extra);
+    const CommandRun run = flatten("'" + scan.string() + "' -o '" + (dir_ / "refused").string() + "' " + extra);
     EXPECT_FALSE(run.crashed) << scan << ": " << run.err;
     EXPECT_NE(run.exit_code, 0) << scan;
     EXPECT_TRUE(run.err.starts_with("lastcut: error: ")) << scan << ": " << run.err;
@@ -181,8 +181,11 @@ void expect_same_mesh_layout(const fs::path& mesh3d, const fs::path& flat) {
   EXPECT_EQ(faces(mesh3d), faces(flat));
   std::ifstream in(flat);
   std::string line;
-  while (std::getline(in, line))
-    if (line.starts_with("v ")) ASSERT_TRUE(line.ends_with(" 0")) << line;
+  while (std::getline(in, line)) {
+    if (line.starts_with("v ")) {
+      ASSERT_TRUE(line.ends_with(" 0")) << line;
+    }
+  }
 }
 
 TEST_F(CliFlatten, FlattensALastIntoTheContractFiles) {
@@ -194,7 +197,7 @@ TEST_F(CliFlatten, FlattensALastIntoTheContractFiles) {
   const fs::path scan = dir_ / "last.stl";
   write_stl_binary(scan, generate_last(params).mesh);
   const fs::path out = dir_ / "molds";
-  const Run run = flatten("'" + scan.string() + "' -o '" + out.string() + "' --allowance 2");
+  const CommandRun run = flatten("'" + scan.string() + "' -o '" + out.string() + "' --allowance 2");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_TRUE(run.err.empty()) << run.err;
 
@@ -231,7 +234,7 @@ TEST_F(CliFlatten, FlattensAnOpenPatchWithNoSegment) {
   const fs::path patch = dir_ / "open-patch.obj";
   write_mesh(patch, curved_patch());
   const fs::path out = dir_ / "patch-molds";
-  const Run run = flatten("'" + patch.string() + "' -o '" + out.string() + "' --no-segment --method lscm");
+  const CommandRun run = flatten("'" + patch.string() + "' -o '" + out.string() + "' --no-segment --method lscm");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto report = nlohmann::json::parse(read_text(out / "report.json"));
   ASSERT_EQ(report["segments"].size(), 1u);
