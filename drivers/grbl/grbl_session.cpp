@@ -85,6 +85,7 @@ void GrblSession::note(const Reply& reply) {
 StepResult GrblSession::query_status(Reply& status, double timeout_s) {
   const double deadline = monotonic_s() + timeout_s;
   double next_poll = 0;
+  std::string last_garbage;
   while (monotonic_s() < deadline) {
     if (monotonic_s() >= next_poll) {
       if (auto w = write(std::string(1, kStatusQuery)); !w.ok) return w;
@@ -97,9 +98,13 @@ StepResult GrblSession::query_status(Reply& status, double timeout_s) {
       status = reply;
       return {};
     }
-    if (got && reply.kind == ReplyKind::Garbage) {
-      return {false, false, "unintelligible reply '" + reply.text.substr(0, 40) + "' (wrong baud rate or not a grbl machine?)"};
-    }
+    // A partial line right after opening the port (the tail of a banner printed before we
+    // flushed) is normal; only a link that never answers sensibly is an error.
+    if (got && reply.kind == ReplyKind::Garbage) last_garbage = reply.text.substr(0, 40);
+  }
+  if (!last_garbage.empty()) {
+    return {false, false, "only unintelligible replies ('" + last_garbage + "') within " +
+                              std::to_string(static_cast<int>(timeout_s)) + " s (wrong baud rate or not a grbl machine?)"};
   }
   return {false, false, "no status reply from grbl within " + std::to_string(static_cast<int>(timeout_s)) + " s on " +
                             link_.describe()};
