@@ -1,0 +1,93 @@
+// The real `lastcut nest` binary: writes a layout that the independent checker accepts and a
+// picture, exits 3 when pieces are left over, and refuses bad input with one line.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "engine/nest/layout_check.hpp"
+#include "engine/nest/nest_json.hpp"
+#include "nest_test_instances.hpp"
+
+namespace lastcut {
+namespace {
+
+const std::filesystem::path kBinary = LASTCUT_BINARY_DIR "/bin/lastcut";
+
+struct CliRun {
+  int exit_code;
+  std::string output;
+};
+
+CliRun run(const std::string& arguments) {
+  const std::string command = kBinary.string() + " " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string output;
+  char buffer[512];
+  while (pipe && fgets(buffer, sizeof buffer, pipe)) output += buffer;
+  const int status = pipe ? pclose(pipe) : -1;
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+std::filesystem::path temp_dir() {
+  const auto dir = std::filesystem::temp_directory_path() / ("lastcut-nest-cli-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+TEST(NestCli, WritesACheckedLayoutAndPicture) {
+  ASSERT_TRUE(std::filesystem::exists(kBinary)) << "build the lastcut target first";
+  const auto dir = temp_dir();
+  std::ofstream(dir / "strip.json") << instance_to_json(test::small_strip()).dump();
+  const CliRun result = run("nest " + (dir / "strip.json").string() + " --time-limit 1 --threads 2 --gap 1 -o " +
+                         (dir / "layout.json").string() + " --svg " + (dir / "layout.svg").string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("10 of 10 pieces"), std::string::npos) << result.output;
+  const nlohmann::json json = read_json_file(dir / "layout.json");
+  const Layout layout = layout_from_json(json);
+  const NestInstance embedded = instance_from_layout_json(json);
+  EXPECT_DOUBLE_EQ(embedded.gap_mm, 1.0);  // the gap the layout was made with travels with it
+  EXPECT_EQ(check_layout(layout, embedded), std::vector<std::string>{});
+  std::ifstream svg(dir / "layout.svg");
+  const std::string picture((std::istreambuf_iterator<char>(svg)), std::istreambuf_iterator<char>());
+  EXPECT_NE(picture.find("<svg"), std::string::npos);
+  EXPECT_NE(picture.find("utilisation"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(NestCli, ExitsThreeWhenPiecesAreLeftOver) {
+  const auto dir = temp_dir();
+  NestInstance instance = test::small_hide();
+  instance.items.push_back(test::item(5, test::rectangle(500, 40), 1, {}));
+  std::ofstream(dir / "hide.json") << instance_to_json(instance).dump();
+  const CliRun result = run("nest " + (dir / "hide.json").string() + " --time-limit 0.5 --threads 1 -o " + (dir / "layout.json").string());
+  EXPECT_EQ(result.exit_code, 3) << result.output;
+  EXPECT_NE(result.output.find("not placed: item 5"), std::string::npos) << result.output;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(NestCli, RefusesBadInputWithOneLine) {
+  const auto dir = temp_dir();
+  std::ofstream(dir / "broken.json") << "{\"strip_height\": 10, \"items\": [{\"id\": 0, \"shape\": [[0,0],[1,0]]}]}";
+  const CliRun bad = run("nest " + (dir / "broken.json").string() + " --time-limit 1 -o " + (dir / "out.json").string());
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.output.find("lastcut nest: error:"), std::string::npos) << bad.output;
+  EXPECT_NE(bad.output.find("at least 3"), std::string::npos) << bad.output;
+  EXPECT_EQ(std::count(bad.output.begin(), bad.output.end(), '\n'), 1) << bad.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
+  const CliRun missing = run("nest " + (dir / "missing.json").string() + " --time-limit 1 -o " + (dir / "out.json").string());
+  EXPECT_EQ(missing.exit_code, 1) << missing.output;
+  const CliRun molds_without_roll = run("nest " + dir.string() + " --time-limit 1 -o " + (dir / "out.json").string());
+  EXPECT_EQ(molds_without_roll.exit_code, 1) << molds_without_roll.output;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace lastcut
