@@ -53,8 +53,8 @@ count=0
 for sample in "${samples[@]}"; do
   name="$(basename "$sample")"
   if [ $count -eq 0 ]; then
-    # The first one comes with a sidecar: an order for the plotter, both feet (pair).
-    printf 'order = "4711"\ncustomer = "demo"\nsize = "EU 42"\nside = "pair"\ncutter = "plotter-1"\n' \
+    # The first one comes with a sidecar: an order number, both feet (pair).
+    printf 'order = "4711"\ncustomer = "demo"\nsize = "EU 42"\nside = "pair"\n' \
       > "$demo/incoming/${name%.*}.job.toml"
   fi
   cp "$sample" "$demo/incoming/.$name.part"

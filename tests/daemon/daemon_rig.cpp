@@ -21,8 +21,9 @@ DaemonRig::DaemonRig(const std::string& name, RigOptions options)
                      "[batch]\nwindow_s = " + std::to_string(options_.batch_window_s) + "\nnest_time_s = 0.3\n"
                      "[materials.calf]\nwidth_mm = 800\nlength_mm = 1200\nspacing_mm = 3\n";
   for (const std::string& cutter : options_.cutters) {
-    toml += "[cutters." + cutter + "]\nprotocol = \"grbl\"\nport = \"" + cutter + ".tty\"\ntimeout_s = 5\n"
-            "machine = \"grbl-drag-knife\"\nretry_interval_s = 0.5\n";
+    // HPGL plotters: the simulator records the exact bytes, so a cut file can be found in it.
+    toml += "[cutters." + cutter + "]\nprotocol = \"hpgl\"\nport = \"" + cutter + ".tty\"\nflow = \"xonxoff\"\n"
+            "timeout_s = 5\nmachine = \"hpgl-pen-plotter\"\nretry_interval_s = 0.5\n";
   }
   toml += options_.extra_config;
   write_text(config_file(), toml);
@@ -35,7 +36,7 @@ DaemonRig::~DaemonRig() {
 
 void DaemonRig::start_cutters() {
   for (const std::string& cutter : options_.cutters) {
-    std::vector<std::string> argv = {binary("lastcut-sim").string(), "grbl", "--link", (root_ / (cutter + ".tty")).string(),
+    std::vector<std::string> argv = {binary("lastcut-sim").string(), "hpgl", "--link", (root_ / (cutter + ".tty")).string(),
                                      "--record", (root_ / ("record-" + cutter)).string(), "--time-scale", "0"};
     if (auto fault = options_.sim_faults.find(cutter); fault != options_.sim_faults.end()) {
       argv.push_back("--fault");
@@ -75,7 +76,7 @@ void DaemonRig::kill_daemon() {
 }
 
 std::string DaemonRig::received(const std::string& cutter) const {
-  return read_text(root_ / ("record-" + cutter) / "grbl-received.nc");
+  return read_text(root_ / ("record-" + cutter) / "hpgl-received.hpgl");
 }
 
 std::map<std::string, nlohmann::json> DaemonRig::jobs(const std::string& folder) const {
@@ -83,7 +84,9 @@ std::map<std::string, nlohmann::json> DaemonRig::jobs(const std::string& folder)
   std::error_code error;
   for (std::filesystem::directory_iterator it(spool() / folder, error), end; !error && it != end; it.increment(error)) {
     if (it->path().filename().string()[0] == '.') continue;
-    result[it->path().filename().string()] = nlohmann::json::parse(read_text(it->path() / "state.json"));
+    // A folder being claimed has no state.json for a moment (readers skip it, like the daemon).
+    auto state = nlohmann::json::parse(read_text(it->path() / "state.json"), nullptr, false);
+    if (!state.is_discarded()) result[it->path().filename().string()] = state;
   }
   return result;
 }

@@ -1,5 +1,5 @@
 #pragma once
-// DaemonRig: a whole installation in a scratch folder for end-to-end tests: simulated grbl
+// DaemonRig: a whole installation in a scratch folder for end-to-end tests: simulated HPGL
 // cutters (lastcut-sim) on pseudo-terminals, a generated configuration, lastcutd itself, and
 // small generated lasts (lastcut generate) to drop into the watch folder.
 #include <filesystem>

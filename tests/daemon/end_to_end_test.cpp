@@ -1,5 +1,5 @@
 // lastcutd end to end with the real binaries: generated lasts dropped into the watch folder,
-// two simulated grbl cutters on pseudo-terminals, and the spool and the simulators' records
+// two simulated HPGL cutters on pseudo-terminals, and the spool and the simulators' records
 // checked afterwards. Proves: every job reaches the right cutter exactly once, bad input ends
 // in failed/ with the reason, duplicates follow the policy, a cutter fault holds only that
 // cutter's job, a held job is cut after `lastcut requeue`, and a clean stop leaves nothing in work/.
@@ -89,20 +89,24 @@ TEST(DaemonEndToEnd, TenScansReachTheRightCutterExactlyOnce) {
   for (std::size_t i = 0; i < lasts.size(); ++i) {
     const std::string id = job_of(rig, "good-" + std::to_string(i) + ".stl");
     EXPECT_EQ(done.at(id).value("stage", ""), "cut");
-    EXPECT_EQ(count_occurrences(on_cutter_1, "(lastcut job " + id + ")"), 1) << id;
-    EXPECT_EQ(count_occurrences(on_cutter_2, "(lastcut job " + id + ")"), 0) << id;
+    // The exact cut file of its batch reached cutter-1 once, and never cutter-2.
+    const std::string cut = read_text(rig.spool() / "done" / id / "cut.plt");
+    ASSERT_FALSE(cut.empty()) << id;
+    EXPECT_EQ(count_occurrences(on_cutter_1, cut), 1) << id;
+    EXPECT_EQ(count_occurrences(on_cutter_2, cut), 0) << id;
     const auto report = nlohmann::json::parse(read_text(rig.spool() / "done" / id / "report.json"));
     EXPECT_EQ(report.at("batch").value("cutter", ""), "cutter-1");
     EXPECT_GT(report.at("batch").value("utilisation", 0.0), 0.0);
-    EXPECT_TRUE(std::filesystem::exists(rig.spool() / "done" / id / "cut.nc"));
     EXPECT_TRUE(std::filesystem::exists(rig.spool() / "done" / id / "preview.svg"));
     EXPECT_TRUE(std::filesystem::exists(rig.spool() / "done" / id / "molds" / "report.json"));
   }
   const std::string order = job_of(rig, "order-4711.stl");
   EXPECT_EQ(done.at(order).at("ticket").value("order", ""), "4711");
-  EXPECT_EQ(count_occurrences(on_cutter_2, "(lastcut job " + order + ")"), 1);
-  EXPECT_EQ(count_occurrences(on_cutter_1, "(lastcut job " + order + ")"), 0);
-  EXPECT_EQ(count_occurrences(on_cutter_1 + on_cutter_2, "(lastcut job " + duplicate + ")"), 0);
+  const std::string order_cut = read_text(rig.spool() / "done" / order / "cut.plt");
+  ASSERT_FALSE(order_cut.empty());
+  EXPECT_EQ(count_occurrences(on_cutter_2, order_cut), 1);
+  EXPECT_EQ(count_occurrences(on_cutter_1, order_cut), 0);
+  EXPECT_FALSE(std::filesystem::exists(rig.spool() / "done" / duplicate / "cut.plt")) << "the duplicate is not cut";
   EXPECT_TRUE(std::filesystem::exists(rig.spool() / "done" / order / "order-4711.job.toml"));
 
   // The operator's log names the order and says where bad jobs went.
@@ -115,7 +119,7 @@ TEST(DaemonEndToEnd, TenScansReachTheRightCutterExactlyOnce) {
 TEST(DaemonEndToEnd, ACutterFaultHoldsItsJobWhileTheOtherCutterKeepsWorking) {
   RigOptions options;
   options.cutters = {"cutter-1", "cutter-2"};
-  options.sim_faults = {{"cutter-2", "alarm-at-line=40:1"}};
+  options.sim_faults = {{"cutter-2", "drop-at-line=20"}};
   DaemonRig rig("e2e-fault", options);
   rig.start_cutters();
   rig.start_daemon();
@@ -153,18 +157,18 @@ TEST(DaemonEndToEnd, ACutterFaultHoldsItsJobWhileTheOtherCutterKeepsWorking) {
   EXPECT_EQ(run_command({binary("lastcut").string(), "requeue", faulty, "--config", rig.config_file().string()},
                         requeue_log), 0) << read_text(requeue_log);
   // Restart the simulators without the fault, under the same links.
-  Process cutter_1({binary("lastcut-sim").string(), "grbl", "--link", (rig.root() / "cutter-1.tty").string(),
+  Process cutter_1({binary("lastcut-sim").string(), "hpgl", "--link", (rig.root() / "cutter-1.tty").string(),
                     "--record", (rig.root() / "record2-cutter-1").string(), "--time-scale", "0"},
                    rig.root() / "sim2-1.log");
-  Process cutter_2({binary("lastcut-sim").string(), "grbl", "--link", (rig.root() / "cutter-2.tty").string(),
+  Process cutter_2({binary("lastcut-sim").string(), "hpgl", "--link", (rig.root() / "cutter-2.tty").string(),
                     "--record", (rig.root() / "record2-cutter-2").string(), "--time-scale", "0"},
                    rig.root() / "sim2-2.log");
   ASSERT_TRUE(wait_until([&] { return rig.jobs("done").count(faulty) == 1; }, 60)) << read_text(rig.daemon_log());
   EXPECT_EQ(rig.stop_daemon(), 0);
   cutter_2.signal(SIGTERM);
   cutter_2.wait(10);
-  EXPECT_EQ(count_occurrences(read_text(rig.root() / "record2-cutter-2" / "grbl-received.nc"),
-                              "(lastcut job " + faulty + ")"), 1);
+  EXPECT_EQ(count_occurrences(read_text(rig.root() / "record2-cutter-2" / "hpgl-received.hpgl"),
+                              read_text(rig.spool() / "done" / faulty / "cut.plt")), 1);
   cutter_1.signal(SIGTERM);
   cutter_1.wait(10);
 }
