@@ -4,6 +4,7 @@
 //   strips: utilisation, strip length, points below the best-known utilisation (sparrow's records);
 //   hides:  pieces placed / demanded, hides used, utilisation of the used hides.
 // Usage: nest_bench [--data DIR] [--limits 10,60] [--threads 2] [--seed 1] [--only NAME] [--svg-dir DIR]
+//        nest_bench --limits 20 --svg-dir DIR --instance FILE   (options before --instance)
 #include <algorithm>
 #include <cstdio>
 #include <functional>
@@ -58,6 +59,24 @@ int main(int argc, char** argv) {
     else if (key == "--seed") seed = std::strtoull(value.c_str(), nullptr, 10);
     else if (key == "--only") only = value;
     else if (key == "--svg-dir") svg_dir = value;
+    else if (key == "--instance") {  // one instance file (strip or hides), one run per limit, with its picture
+      const lastcut::NestInstance instance = lastcut::read_nest_instance(value);
+      for (double limit : limits) {
+        lastcut::NestOptions options;
+        options.time_limit_s = limit;
+        options.threads = threads;
+        options.seed = seed;
+        options.run_parallel = run_threads;
+        const lastcut::Layout layout = lastcut::nest(instance, options);
+        const auto problems = lastcut::check_layout(layout, instance);
+        std::printf("%s %g s: %zu placed, %zu unplaced entries, %d hides, length %.1f, utilisation %.2f %%, %s\n", instance.name.c_str(), limit,
+                    layout.placements.size(), layout.unplaced.size(), lastcut::used_bin_count(layout), layout.strip_length.value_or(0),
+                    100 * layout.utilisation, problems.empty() ? "valid" : problems.front().c_str());
+        if (!svg_dir.empty()) lastcut::write_layout_svg(svg_dir / ("nest-" + instance.name + ".svg"), layout, instance);
+        if (!problems.empty()) return 1;
+      }
+      return 0;
+    }
     else if (key == "--limits") {
       limits.clear();
       std::stringstream list(value);
