@@ -90,7 +90,7 @@ std::string unplaced_reason(const std::vector<const PreparedItem*>& pieces, int 
   for (size_t s = 0; s < slots.size(); ++s) {
     Separator separator(pieces, *slots[s].container, stream_seed(seed, s, 11));
     if (separator.place_greedy(i, [](const Box& b) { return b.x1; }, 4 * samples_for(*pieces[i]), active))
-      return "no room left on the " + std::to_string(slots.size()) + " hides available";
+      return "no room left on the " + std::to_string(slots.size()) + (slots.size() == 1 ? " hide" : " hides") + " available";
   }
   return "does not fit on any hide (too large, or blocked by defects, margin or quality zones)";
 }
