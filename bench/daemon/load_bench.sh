@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Load benchmark of lastcutd: N scans (default 200, small generated lasts, each with its own
-# bytes) dropped into the watch folder at once while the daemon runs with one simulated grbl
+# bytes) dropped into the watch folder at once while the daemon runs with one simulated HPGL
 # cutter. Prints: time until every job is done, jobs per minute, inotify overflows seen, files
 # lost (must be 0), and lastcutd's peak resident memory (VmHWM) next to its memory after start,
 # to show the memory stays bounded (the queues hold ids, not geometry).
@@ -37,9 +37,10 @@ nest_time_s = 1
 width_mm = 800
 length_mm = 1200
 [cutters.cutter-1]
-protocol = "grbl"
+protocol = "hpgl"
 port = "cutter-1.tty"
-machine = "grbl-drag-knife"
+flow = "xonxoff"
+machine = "hpgl-pen-plotter"
 retry_interval_s = 0.5
 TOML
 
@@ -56,7 +57,7 @@ for i in range(count):
     open(os.path.join(root, 'staging', f'scan-{i:04d}.stl'), 'wb').write(data)
 PY
 
-"$bin/lastcut-sim" grbl --link "$root/cutter-1.tty" --record "$root/record" --time-scale 0 > "$root/sim.log" 2>&1 &
+"$bin/lastcut-sim" hpgl --link "$root/cutter-1.tty" --record "$root/record" --time-scale 0 > "$root/sim.log" 2>&1 &
 sim=$!
 trap 'kill $sim 2>/dev/null || true; [ -n "${daemon:-}" ] && kill $daemon 2>/dev/null || true' EXIT
 for _ in $(seq 100); do grep -q "ready:" "$root/sim.log" && break; sleep 0.1; done
@@ -83,7 +84,20 @@ failed_count=$(ls "$root/spool/failed" | wc -l)
 held_count=$(ls "$root/spool/held" | wc -l)
 left=$(ls "$root/incoming" | wc -l)
 overflows=$(grep -c "queue overflow" "$root/lastcutd.log" || true)
-cut_jobs=$(grep -c "^(lastcut job " "$root/record/grbl-received.nc" || true)
+cut_jobs=$(python3 - "$root" <<'PY'
+import json, os, sys
+root = sys.argv[1]
+record = open(os.path.join(root, 'record', 'hpgl-received.hpgl')).read()
+total = 0
+for batch in os.listdir(os.path.join(root, 'spool', 'batches')):
+    info = json.load(open(os.path.join(root, 'spool', 'batches', batch, 'batch.json')))
+    if info.get('cut_file') and info.get('stage') == 'cut':
+        program = open(os.path.join(root, 'spool', 'batches', batch, info['cut_file'])).read()
+        if record.count(program) == 1:
+            total += len(info['jobs'])
+print(total)
+PY
+)
 elapsed=$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.1f", b - a }')
 echo "| scans | triangles each | workers | time to all done (s) | jobs/min | done | failed | held | left in watch folder | jobs cut (record) | inotify overflows | RSS after start (MB) | peak RSS (MB) |"
 echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
