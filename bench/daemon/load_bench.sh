@@ -8,7 +8,7 @@
 set -euo pipefail
 build="$(cd "${1:-build}" && pwd)"
 scans="${2:-200}"
-triangles="${3:-1500}"
+triangles="${3:-2000}"
 source_dir="$(cd "$(dirname "$0")/../.." && pwd)"
 bin="$build/bin"
 root="$build/bench-scratch/daemon-load"
