@@ -13,6 +13,10 @@ void Pipeline::add_to_batcher(const JobState& state) {
   if (inserted || it->second.job_ids.empty()) it->second.opened = Clock::now();
   it->second.job_ids.push_back(state.id);
   it->second.pieces += std::max(1, state.piece_count);
+  // Closed at once when full: many jobs may finish within one tick (after a burst of files),
+  // and a batch must never grow past max_pieces (it would no longer fit the table).
+  const int max_pieces = config()->batch.max_pieces;
+  if (max_pieces > 0 && it->second.pieces >= max_pieces) close_batch(it->first, it->second);
 }
 
 void Pipeline::close_due_batches(Clock::time_point now, bool force) {
