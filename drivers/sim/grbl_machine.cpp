@@ -266,11 +266,17 @@ int GrblMachine::execute_gcode(const std::string& body) {
   while (i < body.size()) {
     const char letter = body[i++];
     if (letter < 'A' || letter > 'Z') return 1;
-    const char* start = body.c_str() + i;
+    // A G-code number is [+-]digits[.digits]; strtod would also take hex ("0X58" after "G"
+    // once spaces are gone), exponents and "inf", which grbl does not.
+    const size_t number_start = i;
+    if (i < body.size() && (body[i] == '+' || body[i] == '-')) ++i;
+    const size_t digits_start = i;
+    while (i < body.size() && (std::isdigit(static_cast<unsigned char>(body[i])) || body[i] == '.')) ++i;
+    if (i == digits_start) return 2;
+    const std::string number_text = body.substr(number_start, i - number_start);
     char* end = nullptr;
-    const double value = std::strtod(start, &end);
-    if (end == start) return 2;
-    i += static_cast<size_t>(end - start);
+    const double value = std::strtod(number_text.c_str(), &end);
+    if (end != number_text.c_str() + number_text.size()) return 2;
     if (kLetters.find(letter) == std::string::npos) return 20;
     switch (letter) {
       case 'G':
