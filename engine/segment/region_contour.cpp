@@ -1,6 +1,7 @@
 #include "engine/segment/region_contour.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <queue>
@@ -59,9 +60,37 @@ std::vector<int> region_boundary_loop(const TriMesh& mesh, const MeshGraph& grap
   return loop;
 }
 
-std::vector<Eigen::Vector3d> smooth_closed_polyline(std::vector<Eigen::Vector3d> points, int passes) {
+namespace {
+
+// The closed loop resampled at equal arc-length steps (the step count is rounded so the steps
+// close the loop exactly).
+std::vector<Eigen::Vector3d> resample_closed(const std::vector<Eigen::Vector3d>& points, double spacing_mm) {
   const std::size_t n = points.size();
-  if (n < 3) return points;
+  std::vector<double> along(n + 1, 0.0);
+  for (std::size_t i = 0; i < n; ++i) along[i + 1] = along[i] + (points[(i + 1) % n] - points[i]).norm();
+  const double length = along[n];
+  const auto count = static_cast<std::size_t>(std::max(3.0, std::round(length / spacing_mm)));
+  std::vector<Eigen::Vector3d> samples;
+  samples.reserve(count);
+  std::size_t edge = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    const double s = length * static_cast<double>(k) / static_cast<double>(count);
+    while (edge + 1 < n && along[edge + 1] <= s) ++edge;
+    const double l = along[edge + 1] - along[edge];
+    const double u = l > 0.0 ? (s - along[edge]) / l : 0.0;
+    samples.push_back(points[edge] + u * (points[(edge + 1) % n] - points[edge]));
+  }
+  return samples;
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector3d> smooth_closed_polyline(const std::vector<Eigen::Vector3d>& input, int passes,
+                                                    double spacing_mm) {
+  if (input.size() < 3) return input;
+  if (!(spacing_mm > 0.0)) throw EngineError("the contour resampling step must be positive");
+  std::vector<Eigen::Vector3d> points = resample_closed(input, spacing_mm);
+  const std::size_t n = points.size();
   std::vector<Eigen::Vector3d> next(n);
   for (int pass = 0; pass < passes; ++pass) {
     for (std::size_t i = 0; i < n; ++i)

@@ -18,8 +18,11 @@ namespace lastcut {
 // Throws EngineError when the region has no closed boundary.
 std::vector<int> region_boundary_loop(const TriMesh& mesh, const MeshGraph& graph, const std::vector<char>& region);
 
-// Moving average of eq. 22 on a closed polyline, P*_v = P_v / 2 + (P_prev + P_next) / 4, `passes` times.
-// points: closed loop, mm (first point not repeated).
-std::vector<Eigen::Vector3d> smooth_closed_polyline(std::vector<Eigen::Vector3d> points, int passes);
+// Moving average of eq. 22 on a closed polyline, P*_v = P_v / 2 + (P_prev + P_next) / 4, `passes` times,
+// after resampling the loop at equal arc-length steps of about spacing_mm: the passes then smooth
+// over the same distance in mm whatever the vertex spacing of the scan.
+// points: closed loop, mm (first point not repeated). spacing_mm > 0.
+std::vector<Eigen::Vector3d> smooth_closed_polyline(const std::vector<Eigen::Vector3d>& points, int passes,
+                                                    double spacing_mm);
 
 }  // namespace lastcut

@@ -46,7 +46,7 @@ double region_area(const std::vector<char>& region, const Eigen::VectorXd& areas
 // moving average of eq. 22 on the mesh graph, minus 1/2: its zero level set is the region
 // boundary smoothed at the scale of a few edges, lying exactly on the surface.
 Eigen::VectorXd smoothed_indicator(const TriMesh& mesh, const MeshGraph& graph, const std::vector<char>& region,
-                                   const Eigen::VectorXd& areas, int passes) {
+                                   const Eigen::VectorXd& areas, double passes) {
   const Eigen::Index vertex_count = mesh.V.rows();
   Eigen::VectorXd inside = Eigen::VectorXd::Zero(vertex_count), total = Eigen::VectorXd::Zero(vertex_count);
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
@@ -56,13 +56,16 @@ Eigen::VectorXd smoothed_indicator(const TriMesh& mesh, const MeshGraph& graph, 
     }
   Eigen::VectorXd value = (total.array() > 0.0).select(inside.array() / total.array(), 0.0);
   Eigen::VectorXd next(vertex_count);
-  for (int pass = 0; pass < passes; ++pass) {
+  // A fractional last pass moves only that share of the way, so the smoothing distance in mm
+  // changes continuously with the edge length instead of in whole-pass jumps.
+  for (int pass = 0; pass < static_cast<int>(std::ceil(passes)); ++pass) {
+    const double share = std::min(1.0, passes - pass);
     for (Eigen::Index v = 0; v < vertex_count; ++v) {
       const int begin = graph.neighbor_offsets[static_cast<std::size_t>(v)];
       const int end = graph.neighbor_offsets[static_cast<std::size_t>(v) + 1];
       double sum = 0.0;
       for (int i = begin; i < end; ++i) sum += value(graph.neighbors[static_cast<std::size_t>(i)]);
-      next(v) = end > begin ? 0.5 * value(v) + 0.5 * sum / (end - begin) : value(v);
+      next(v) = end > begin ? value(v) + share * 0.5 * (sum / (end - begin) - value(v)) : value(v);
     }
     value.swap(next);
   }
@@ -101,9 +104,9 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
   result.notes.push_back("sole " + fixed(100.0 * region_area(sole, areas) / total_area, 1) + " % of the surface, top cut " +
                          fixed(100.0 * region_area(top, areas) / total_area, 1) + " %");
   const std::vector<Eigen::Vector3d> lower = smooth_closed_polyline(
-      loop_points(mesh, region_boundary_loop(mesh, graph, sole)), options.smoothing_passes);
+      loop_points(mesh, region_boundary_loop(mesh, graph, sole)), options.smoothing_passes, kReferenceEdgeMm);
   const std::vector<Eigen::Vector3d> upper = smooth_closed_polyline(
-      loop_points(mesh, region_boundary_loop(mesh, graph, top)), options.smoothing_passes);
+      loop_points(mesh, region_boundary_loop(mesh, graph, top)), options.smoothing_passes, kReferenceEdgeMm);
 
   // Step 3: the split plane.
   const SplitPlane plane = split_plane(lower, upper, options.plane_t, last.side);
@@ -116,10 +119,7 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
   // The passes are meant for the reference edge length; on a finer or coarser mesh they are scaled
   // so the curves are smoothed over the same distance in mm (diffusion spreads as sqrt(passes)).
   const double edge_mm = mean_edge_length_mm(mesh);
-  const int field_passes =
-      options.smoothing_passes == 0
-          ? 0
-          : std::max(1, static_cast<int>(std::lround(options.smoothing_passes * std::pow(kReferenceEdgeMm / edge_mm, 2))));
+  const double field_passes = options.smoothing_passes * std::pow(kReferenceEdgeMm / edge_mm, 2);
   fields.col(kSoleField) = smoothed_indicator(mesh, graph, sole, areas, field_passes);
   fields.col(kTopField) = smoothed_indicator(mesh, graph, top, areas, field_passes);
   fields.col(kPlaneField) = (mesh.V * plane.normal).array() + plane.offset;

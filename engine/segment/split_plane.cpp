@@ -7,10 +7,28 @@
 namespace lastcut {
 namespace {
 
-Eigen::Vector3d mean_of(const std::vector<Eigen::Vector3d>& points) {
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3d& p : points) sum += p;
-  return sum / static_cast<double>(points.size());
+// Centroid of a closed polyline as a curve (arc-length weighted), restricted to the part where the
+// affine function side(p) >= 0. Each edge is clipped exactly at side = 0, so the result does not
+// depend on how densely the curve is sampled: a vertex average would move towards wherever the
+// mesh happens to have more vertices. Returns false when no length lies on that side.
+template <typename Side>
+bool curve_centroid(const std::vector<Eigen::Vector3d>& loop, Side side, Eigen::Vector3d& centroid) {
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();
+  double length = 0.0;
+  const std::size_t n = loop.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    Eigen::Vector3d p = loop[i], q = loop[(i + 1) % n];
+    const double sp = side(p), sq = side(q);
+    if (sp < 0.0 && sq < 0.0) continue;
+    if (sp < 0.0) p = p + (q - p) * (sp / (sp - sq));
+    if (sq < 0.0) q = p + (q - p) * (sp / (sp - sq));
+    const double l = (q - p).norm();
+    moment += 0.5 * l * (p + q);
+    length += l;
+  }
+  if (!(length > 0.0)) return false;
+  centroid = moment / length;
+  return true;
 }
 
 }  // namespace
@@ -31,16 +49,12 @@ SplitPlane split_plane(const std::vector<Eigen::Vector3d>& lower, const std::vec
   const Eigen::Vector3d A = lower[ia], B = lower[ib];
   // delta(t, C) = (C - A(1-t) - Bt) . (A - B)
   auto delta = [&](double s, const Eigen::Vector3d& C) { return (C - A * (1.0 - s) - B * s).dot(A - B); };
-  std::vector<Eigen::Vector3d> near_a, near_b;
-  for (const Eigen::Vector3d& C : lower) {
-    if (delta(t, C) > 0.0) near_a.push_back(C);        // M1, eq. 14
-    if (delta(1.0 - t, C) < 0.0) near_b.push_back(C);  // M2, eq. 15
-  }
-  if (near_a.empty() || near_b.empty()) throw EngineError("the sole contour has no points near its toe or heel end");
   SplitPlane plane;
-  plane.T1 = mean_of(upper);
-  plane.T2 = mean_of(near_a);
-  plane.T3 = mean_of(near_b);
+  // T1, T2, T3 as curve integrals (eqs. 14-16 with arc-length measure instead of vertex counts).
+  const bool has_top = curve_centroid(upper, [](const Eigen::Vector3d&) { return 1.0; }, plane.T1);
+  const bool has_a = curve_centroid(lower, [&](const Eigen::Vector3d& C) { return delta(t, C); }, plane.T2);        // M1
+  const bool has_b = curve_centroid(lower, [&](const Eigen::Vector3d& C) { return -delta(1.0 - t, C); }, plane.T3);  // M2
+  if (!has_top || !has_a || !has_b) throw EngineError("the sole contour has no points near its toe or heel end");
   // Eqs. 17-19 expand the determinant with rows (T2 - T1) and (T3 - T2): the normal is their cross product.
   const Eigen::Vector3d normal = (plane.T2 - plane.T1).cross(plane.T3 - plane.T2);
   const double length = normal.norm();

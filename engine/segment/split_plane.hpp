@@ -6,6 +6,8 @@
 // M2 = those on B's side of gamma(1-t). The split plane passes through
 //   T1 = mean of the upper contour (the centre of the top opening, as the experts draw it),
 //   T2 = mean of M1, T3 = mean of M2.
+// The means are taken along the curves (arc-length weighted, edges clipped exactly at gamma), not
+// over vertices, so the plane does not move when the scan's triangle density changes.
 #include <Eigen/Core>
 #include <vector>
 
