@@ -16,7 +16,10 @@
 namespace lastcut {
 namespace {
 
-constexpr int kNormalSmoothingPasses = 3;  // rings over which normals are averaged before classifying
+// Normals are averaged over this many rings on a mesh with kNormalReferenceEdgeMm edges before
+// classifying; on other meshes the ring count follows so the radius in mm stays the same.
+constexpr double kNormalSmoothingPasses = 3.0;
+constexpr double kNormalReferenceEdgeMm = 3.0;
 constexpr double kSnapFraction = 0.1;      // crossings within 10 % of an edge end snap to the vertex
 constexpr double kReferenceEdgeMm = 2.0;   // smoothing_passes are counted on a mesh with edges this long
 
@@ -45,7 +48,7 @@ double region_area(const std::vector<char>& region, const Eigen::VectorXd& areas
 // The region's indicator (share of each vertex's surrounding area inside the region) after the
 // moving average of eq. 22 on the mesh graph, minus 1/2: its zero level set is the region
 // boundary smoothed at the scale of a few edges, lying exactly on the surface.
-Eigen::VectorXd smoothed_indicator(const TriMesh& mesh, const MeshGraph& graph, const std::vector<char>& region,
+Eigen::VectorXd smoothed_indicator(const TriMesh& mesh, const std::vector<char>& region,
                                    const Eigen::VectorXd& areas, double passes) {
   const Eigen::Index vertex_count = mesh.V.rows();
   Eigen::VectorXd inside = Eigen::VectorXd::Zero(vertex_count), total = Eigen::VectorXd::Zero(vertex_count);
@@ -55,19 +58,20 @@ Eigen::VectorXd smoothed_indicator(const TriMesh& mesh, const MeshGraph& graph, 
       if (region[static_cast<std::size_t>(f)]) inside(mesh.F(f, k)) += areas(f);
     }
   Eigen::VectorXd value = (total.array() > 0.0).select(inside.array() / total.array(), 0.0);
-  Eigen::VectorXd next(vertex_count);
-  // A fractional last pass moves only that share of the way, so the smoothing distance in mm
-  // changes continuously with the edge length instead of in whole-pass jumps.
+  // Each pass averages vertices to faces and faces back to vertices weighted by area: unlike a
+  // uniform neighbour mean, this does not lean towards where the mesh has more or smaller
+  // triangles. A fractional last pass moves only that share of the way, so the smoothing distance
+  // in mm changes continuously with the edge length instead of in whole-pass jumps.
+  Eigen::VectorXd face_value(mesh.F.rows()), next(vertex_count);
   for (int pass = 0; pass < static_cast<int>(std::ceil(passes)); ++pass) {
     const double share = std::min(1.0, passes - pass);
-    for (Eigen::Index v = 0; v < vertex_count; ++v) {
-      const int begin = graph.neighbor_offsets[static_cast<std::size_t>(v)];
-      const int end = graph.neighbor_offsets[static_cast<std::size_t>(v) + 1];
-      double sum = 0.0;
-      for (int i = begin; i < end; ++i) sum += value(graph.neighbors[static_cast<std::size_t>(i)]);
-      next(v) = end > begin ? value(v) + share * 0.5 * (sum / (end - begin) - value(v)) : value(v);
+    next.setZero();
+    for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+      const double mean = (value(mesh.F(f, 0)) + value(mesh.F(f, 1)) + value(mesh.F(f, 2))) / 3.0;
+      for (int k = 0; k < 3; ++k) next(mesh.F(f, k)) += areas(f) * mean;
     }
-    value.swap(next);
+    for (Eigen::Index v = 0; v < vertex_count; ++v)
+      if (total(v) > 0.0) value(v) += share * (next(v) / total(v) - value(v));
   }
   return value.array() - 0.5;
 }
@@ -95,7 +99,9 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
   // Step 2: sole and top regions, and their contours (Dijkstra, then eq. 22).
   const MeshGraph graph = build_mesh_graph(mesh);
   const Eigen::VectorXd areas = triangle_areas(mesh);
-  const Eigen::VectorXd elevation = smoothed_elevation_rad(mesh, graph, kNormalSmoothingPasses);
+  const double edge_mm = mean_edge_length_mm(mesh);
+  const Eigen::VectorXd elevation =
+      smoothed_elevation_rad(mesh, graph, kNormalSmoothingPasses * std::pow(kNormalReferenceEdgeMm / edge_mm, 2));
   const std::vector<char> sole = sole_region(mesh, graph, elevation, areas, options.sole_angle_rad);
   const std::vector<char> top = top_region(mesh, graph, elevation, areas, options.top_angle_rad);
   for (std::size_t f = 0; f < sole.size(); ++f)
@@ -118,10 +124,9 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
   Eigen::MatrixXd fields(mesh.V.rows(), 3);
   // The passes are meant for the reference edge length; on a finer or coarser mesh they are scaled
   // so the curves are smoothed over the same distance in mm (diffusion spreads as sqrt(passes)).
-  const double edge_mm = mean_edge_length_mm(mesh);
   const double field_passes = options.smoothing_passes * std::pow(kReferenceEdgeMm / edge_mm, 2);
-  fields.col(kSoleField) = smoothed_indicator(mesh, graph, sole, areas, field_passes);
-  fields.col(kTopField) = smoothed_indicator(mesh, graph, top, areas, field_passes);
+  fields.col(kSoleField) = smoothed_indicator(mesh, sole, areas, field_passes);
+  fields.col(kTopField) = smoothed_indicator(mesh, top, areas, field_passes);
   fields.col(kPlaneField) = (mesh.V * plane.normal).array() + plane.offset;
   for (int column : {kSoleField, kTopField, kPlaneField}) cut_along_zero_level(mesh, fields, column, kSnapFraction);
 

@@ -70,7 +70,7 @@ void close_region(const TriMesh& mesh, std::vector<char>& region, int rings) {
 
 }  // namespace
 
-Eigen::VectorXd smoothed_elevation_rad(const TriMesh& mesh, const MeshGraph& graph, int passes) {
+Eigen::VectorXd smoothed_elevation_rad(const TriMesh& mesh, const MeshGraph& graph, double passes) {
   const Eigen::Index vertex_count = mesh.V.rows();
   Eigen::MatrixXd normals = Eigen::MatrixXd::Zero(vertex_count, 3);
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
@@ -79,12 +79,15 @@ Eigen::VectorXd smoothed_elevation_rad(const TriMesh& mesh, const MeshGraph& gra
     for (int k = 0; k < 3; ++k) normals.row(mesh.F(f, k)) += area_normal;
   }
   Eigen::MatrixXd next(vertex_count, 3);
-  for (int pass = 0; pass < passes; ++pass) {
+  // A fractional last pass adds only that share of the neighbours, so the smoothing radius in mm
+  // can follow the edge length continuously.
+  for (int pass = 0; pass < static_cast<int>(std::ceil(passes)); ++pass) {
+    const double share = std::min(1.0, passes - pass);
     for (Eigen::Index v = 0; v < vertex_count; ++v) {
-      Eigen::RowVector3d sum = normals.row(v);
+      Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
       for (int i = graph.neighbor_offsets[static_cast<std::size_t>(v)]; i < graph.neighbor_offsets[static_cast<std::size_t>(v) + 1]; ++i)
         sum += normals.row(graph.neighbors[static_cast<std::size_t>(i)]);
-      next.row(v) = sum;
+      next.row(v) = normals.row(v) + share * sum;
     }
     normals.swap(next);
     normals.rowwise().normalize();

@@ -16,7 +16,7 @@ namespace lastcut {
 
 // Elevation angle (rad, in [-pi/2, pi/2]) of each face's normal after `passes` rounds of
 // averaging vertex normals with their neighbours. Returns #F.
-Eigen::VectorXd smoothed_elevation_rad(const TriMesh& mesh, const MeshGraph& graph, int passes);
+Eigen::VectorXd smoothed_elevation_rad(const TriMesh& mesh, const MeshGraph& graph, double passes);
 
 // Adds to `region` every connected piece of its complement except the one with the largest area.
 void fill_region_gaps(const MeshGraph& graph, const Eigen::VectorXd& areas, std::vector<char>& region);

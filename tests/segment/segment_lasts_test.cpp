@@ -139,7 +139,7 @@ TEST(SegmentGeneratedLast, CutCurvesAreSmoothWhereTriangleBoundariesAreStairs) {
   const OrientedLast last = scanned_last({42, FootSide::Right, 22}, 12000);
   const MeshGraph graph = build_mesh_graph(last.mesh);
   const std::vector<char> sole =
-      sole_region(last.mesh, graph, smoothed_elevation_rad(last.mesh, graph, 3), triangle_areas(last.mesh), -std::numbers::pi / 4);
+      sole_region(last.mesh, graph, smoothed_elevation_rad(last.mesh, graph, 3.0), triangle_areas(last.mesh), -std::numbers::pi / 4);
   const test::BoundarySmoothness stairs =
       test::boundary_smoothness(last.mesh, region_boundary_loop(last.mesh, graph, sole), {}, 0.0);
 
