@@ -88,6 +88,60 @@ class TableReader {
     value = static_cast<int>(v);
   }
 
+  void flag(const std::string& key, bool& value) {
+    const toml::node* found = node(key);
+    if (!found) return;
+    if (!found->is_boolean()) {
+      errors_.push_back(where(key_path(key), *found) + ": must be true or false");
+      return;
+    }
+    value = *found->value<bool>();
+  }
+
+  // A list of whole numbers each within min_value .. max_value, e.g. [20, 22].
+  void integers(const std::string& key, std::vector<int>& values, int min_value, int max_value) {
+    const toml::node* found = node(key);
+    if (!found) return;
+    const toml::array* list = found->as_array();
+    if (!list) {
+      errors_.push_back(where(key_path(key), *found) + ": must be a list of whole numbers, e.g. [20, 22]");
+      return;
+    }
+    std::vector<int> read;
+    for (const toml::node& item : *list) {
+      const auto v = item.value<int64_t>();
+      if (!item.is_integer() || *v < min_value || *v > max_value) {
+        std::ostringstream out;
+        out << where(key_path(key), item) << ": each entry must be a whole number in " << min_value << " .. "
+            << max_value;
+        errors_.push_back(out.str());
+        return;
+      }
+      read.push_back(static_cast<int>(*v));
+    }
+    values = std::move(read);
+  }
+
+  // A list of texts in quotes, e.g. ["$110=5000", "$111=5000"].
+  void texts(const std::string& key, std::vector<std::string>& values) {
+    const toml::node* found = node(key);
+    if (!found) return;
+    const toml::array* list = found->as_array();
+    if (!list) {
+      errors_.push_back(where(key_path(key), *found) + ": must be a list of texts in quotes");
+      return;
+    }
+    std::vector<std::string> read;
+    for (const toml::node& item : *list) {
+      if (!item.is_string()) {
+        errors_.push_back(where(key_path(key), item) + ": each entry must be a text in quotes");
+        return;
+      }
+      read.push_back(*item.value<std::string>());
+    }
+    values = std::move(read);
+  }
+
   const toml::table* subtable(const std::string& key, bool required) {
     const toml::node* found = node(key);
     if (!found) {
@@ -228,6 +282,14 @@ void read_cutters(TableReader& root, const std::filesystem::path& base, DaemonCo
     reader.text("flow", cutter.flow);
     reader.number("timeout_s", cutter.timeout_s, 0.1, 3600);
     reader.text("grbl_unlock", cutter.grbl_unlock);
+    reader.integer("data_bits", cutter.data_bits, 5, 8);
+    reader.integer("stop_bits", cutter.stop_bits, 1, 2);
+    reader.integers("harmless_grbl_errors", cutter.harmless_grbl_errors, 1, 255);
+    reader.texts("grbl_settings", cutter.grbl_settings);
+    reader.text("hpgl_handshake", cutter.hpgl_handshake);
+    reader.flag("hpgl_status_queries", cutter.hpgl_status_queries);
+    reader.text("modbus_map", cutter.modbus_map);
+    reader.integer("modbus_unit_id", cutter.modbus_unit_id, 0, 247);
     reader.text("machine", cutter.machine, true);
     reader.number("retry_interval_s", cutter.retry_interval_s, 0.1, 86400);
     reader.reject_unknown();
@@ -244,6 +306,18 @@ void read_cutters(TableReader& root, const std::filesystem::path& base, DaemonCo
     if (cutter.grbl_unlock != "never" && cutter.grbl_unlock != "unlock") {
       errors.push_back(path + ".grbl_unlock: \"" + cutter.grbl_unlock + "\" is not one of never, unlock");
     }
+    if (!cutter.hpgl_handshake.empty() && cutter.hpgl_handshake != "escb") {
+      errors.push_back(path + ".hpgl_handshake: \"" + cutter.hpgl_handshake + "\" is not one of \"\" (follow flow), escb");
+    }
+    for (const std::string& setting : cutter.grbl_settings) {
+      // One "$N=value" line each: anything else would be streamed to the machine as a command.
+      const auto equals = setting.find('=');
+      if (setting.size() < 4 || setting[0] != '$' || equals == std::string::npos || equals < 2 ||
+          setting.find_first_not_of("0123456789", 1) != equals || equals + 1 == setting.size()) {
+        errors.push_back(path + ".grbl_settings: \"" + setting + "\" is not a grbl setting line like \"$110=5000\"");
+      }
+    }
+    if (!cutter.modbus_map.empty()) cutter.modbus_map = resolve(base, cutter.modbus_map).string();
     for (const std::string* address : {&cutter.port, &cutter.modbus}) {
       const bool tcp = address->rfind("tcp://", 0) == 0;
       if (tcp && address->rfind("tcp://127.0.0.1:", 0) != 0 && address->rfind("tcp://localhost:", 0) != 0) {

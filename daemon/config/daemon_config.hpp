@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace lastcut::daemon {
 
@@ -60,7 +61,15 @@ struct CutterSection {
   std::string parity = "N";      // N | E | O
   std::string flow = "none";     // none | xonxoff | rtscts
   double timeout_s = 10;         // longest silence from the device before the job is declared lost
+  int data_bits = 8;             // 5 .. 8
+  int stop_bits = 1;             // 1 | 2
   std::string grbl_unlock = "never";  // never | unlock
+  std::vector<int> harmless_grbl_errors;  // grbl error:N codes that do not stop the job
+  std::vector<std::string> grbl_settings; // "$110=5000" lines sent before each job
+  std::string hpgl_handshake;    // "" = follow flow | "escb" = ESC.B buffer-space handshake
+  bool hpgl_status_queries = true;  // the plotter answers ESC.O / ESC.E / OA
+  std::string modbus_map;        // register map TOML (relative to this file); empty = built-in default
+  int modbus_unit_id = 1;        // 0 .. 247
   std::string machine;           // machine profile name (paths.machines/<machine>.toml) or path
   double retry_interval_s = 30;  // cutter unreachable: wait this long before trying again
 };

@@ -21,7 +21,15 @@ drivers::CutterConfig driver_config(const std::string& name, const CutterSection
   config.parity = section.parity.empty() ? 'N' : section.parity[0];
   config.flow = section.flow;
   config.timeout_s = section.timeout_s;
+  config.data_bits = section.data_bits;
+  config.stop_bits = section.stop_bits;
   config.grbl_unlock = section.grbl_unlock;
+  config.harmless_grbl_errors = section.harmless_grbl_errors;
+  config.grbl_settings = section.grbl_settings;
+  config.hpgl_handshake = section.hpgl_handshake;
+  config.hpgl_status_queries = section.hpgl_status_queries;
+  config.modbus_map = section.modbus_map;
+  config.modbus_unit_id = section.modbus_unit_id;
   config.job_id = job.substr(0, 16);
   return config;
 }
