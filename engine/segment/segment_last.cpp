@@ -109,26 +109,35 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
   const double total_area = areas.sum();
   result.notes.push_back("sole " + fixed(100.0 * region_area(sole, areas) / total_area, 1) + " % of the surface, top cut " +
                          fixed(100.0 * region_area(top, areas) / total_area, 1) + " %");
-  const std::vector<Eigen::Vector3d> lower = smooth_closed_polyline(
-      loop_points(mesh, region_boundary_loop(mesh, graph, sole)), options.smoothing_passes, kReferenceEdgeMm);
-  const std::vector<Eigen::Vector3d> upper = smooth_closed_polyline(
-      loop_points(mesh, region_boundary_loop(mesh, graph, top)), options.smoothing_passes, kReferenceEdgeMm);
 
-  // Step 3: the split plane.
-  const SplitPlane plane = split_plane(lower, upper, options.plane_t, last.side);
+  // Steps 2 and 5: the feather line and the top rim as zero level sets of the smoothed region
+  // indicators, cut into the mesh. The passes are meant for the reference edge length; on a finer
+  // or coarser mesh they are scaled so the curves are smoothed over the same distance in mm
+  // (diffusion spreads as sqrt(passes)).
+  Eigen::MatrixXd fields = Eigen::MatrixXd::Zero(mesh.V.rows(), 3);
+  const double field_passes = options.smoothing_passes * std::pow(kReferenceEdgeMm / edge_mm, 2);
+  fields.col(kSoleField) = smoothed_indicator(mesh, sole, areas, field_passes);
+  fields.col(kTopField) = smoothed_indicator(mesh, top, areas, field_passes);
+  for (int column : {kSoleField, kTopField}) cut_along_zero_level(mesh, fields, column, kSnapFraction);
+
+  // Step 3: the split plane from those smooth curves (not from the staircase of mesh edges, whose
+  // shape follows the triangulation).
+  const MeshGraph level_graph = build_mesh_graph(mesh);
+  auto level_loop = [&](int column) {
+    std::vector<char> region(static_cast<std::size_t>(mesh.F.rows()));
+    for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
+      region[static_cast<std::size_t>(f)] =
+          fields(mesh.F(f, 0), column) + fields(mesh.F(f, 1), column) + fields(mesh.F(f, 2), column) > 0.0;
+    return smooth_closed_polyline(loop_points(mesh, region_boundary_loop(mesh, level_graph, region)), 0, kReferenceEdgeMm);
+  };
+  const SplitPlane plane = split_plane(level_loop(kSoleField), level_loop(kTopField), options.plane_t, last.side);
   result.notes.push_back("split plane normal (" + fixed(plane.normal.x(), 3) + ", " + fixed(plane.normal.y(), 3) + ", " +
                          fixed(plane.normal.z(), 3) + ") through the top centre (" + fixed(plane.T1.x(), 1) + ", " +
                          fixed(plane.T1.y(), 1) + ", " + fixed(plane.T1.z(), 1) + ") mm");
 
-  // Steps 4-5: cut along the smoothed feather line, the smoothed top rim and the plane.
-  Eigen::MatrixXd fields(mesh.V.rows(), 3);
-  // The passes are meant for the reference edge length; on a finer or coarser mesh they are scaled
-  // so the curves are smoothed over the same distance in mm (diffusion spreads as sqrt(passes)).
-  const double field_passes = options.smoothing_passes * std::pow(kReferenceEdgeMm / edge_mm, 2);
-  fields.col(kSoleField) = smoothed_indicator(mesh, sole, areas, field_passes);
-  fields.col(kTopField) = smoothed_indicator(mesh, top, areas, field_passes);
+  // Step 4: cut along the plane.
   fields.col(kPlaneField) = (mesh.V * plane.normal).array() + plane.offset;
-  for (int column : {kSoleField, kTopField, kPlaneField}) cut_along_zero_level(mesh, fields, column, kSnapFraction);
+  cut_along_zero_level(mesh, fields, kPlaneField, kSnapFraction);
 
   enum Label : int { kSole = 0, kTop = 1, kMedial = 2, kLateral = 3 };
   std::vector<int> labels(static_cast<std::size_t>(mesh.F.rows()));
