@@ -8,9 +8,14 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 root="$(pwd)"
 
-bash scripts/setup.sh
-bash scripts/build.sh build
-bin="$root/build/bin"
+# LASTCUT_DEMO_BUILD=build-folder: reuse an existing build (developers), skipping setup and build.
+if [ -n "${LASTCUT_DEMO_BUILD:-}" ]; then
+  bin="$(cd "$LASTCUT_DEMO_BUILD" && pwd)/bin"
+else
+  bash scripts/setup.sh
+  bash scripts/build.sh build
+  bin="$root/build/bin"
+fi
 
 demo="$root/demo"
 rm -rf "$demo/incoming" "$demo/spool" "$demo/staging" "$demo/cutter-records"
@@ -41,22 +46,17 @@ pids+=($daemon)
 for _ in $(seq 100); do grep -q "lastcutd ready" "$demo/lastcutd.log" && break; sleep 0.1; done
 
 echo "== dropping the sample lasts into $demo/incoming"
-shopt -s nullglob
-samples=(config/samples/*.stl config/samples/*.obj config/samples/*.ply config/samples/*.off)
-if [ ${#samples[@]} -eq 0 ]; then
-  # No bundled samples in this checkout: make a pair with the parametric last generator.
-  "$bin/lastcut" generate -o "$demo/staging/sample-eu42-left.stl" --size 42 --side left --triangles 20000 --seed 1
-  "$bin/lastcut" generate -o "$demo/staging/sample-eu38-right.stl" --size 38 --side right --triangles 20000 --seed 2
-  samples=("$demo/staging/sample-eu42-left.stl" "$demo/staging/sample-eu38-right.stl")
-fi
+# The bundled sample lasts: the first goes to the default cutter (the grbl table) with a sidecar
+# giving its order and both feet; the second names the HPGL plotter in its sidecar.
+samples=(config/samples/sample-last-eu42-left.stl config/samples/sample-last-eu38-right.stl)
+printf 'order = "4711"\ncustomer = "demo"\nsize = "EU 42"\nside = "pair"\n' \
+  > "$demo/incoming/sample-last-eu42-left.job.toml"
+printf 'order = "4712"\ncustomer = "demo"\nsize = "EU 38"\ncutter = "plotter-1"\n' \
+  > "$demo/incoming/sample-last-eu38-right.job.toml"
 count=0
 for sample in "${samples[@]}"; do
+  [ -f "$sample" ] || { echo "demo: the sample last $sample is missing"; exit 1; }
   name="$(basename "$sample")"
-  if [ $count -eq 0 ]; then
-    # The first one comes with a sidecar: an order number, both feet (pair).
-    printf 'order = "4711"\ncustomer = "demo"\nsize = "EU 42"\nside = "pair"\n' \
-      > "$demo/incoming/${name%.*}.job.toml"
-  fi
   cp "$sample" "$demo/incoming/.$name.part"
   mv "$demo/incoming/.$name.part" "$demo/incoming/$name"   # complete files appear at once
   echo "  $name"
@@ -64,7 +64,7 @@ for sample in "${samples[@]}"; do
 done
 
 echo "== waiting for the jobs (lastcut status)"
-for _ in $(seq 600); do
+for _ in $(seq 360); do
   if ! kill -0 "$daemon" 2>/dev/null; then echo "demo: lastcutd stopped:"; cat "$demo/lastcutd.log"; exit 1; fi
   finished=$(( $(ls "$demo/spool/done" 2>/dev/null | wc -l) + $(ls "$demo/spool/failed" 2>/dev/null | wc -l) + $(ls "$demo/spool/held" 2>/dev/null | wc -l) ))
   [ "$finished" -ge "$count" ] && [ -z "$(ls "$demo/spool/work" 2>/dev/null)" ] && break
