@@ -5,11 +5,13 @@
 //  1. small scan holes are closed (engine/mesh/fill_holes.hpp);
 //  2. faces are classified by normal elevation into sole, sides and top, and the sole and the flat
 //     top cut become one connected region each (surface_regions.hpp);
-//  3. their boundaries, found with Dijkstra (region_contour.hpp) and smoothed by eq. 22, place the
-//     split plane through T1, T2, T3 (split_plane.hpp);
-//  4. the mesh is cut along three smooth curves: the feather line and the top rim (the 1/2 level
-//     sets of the sole and top indicator functions after the eq. 22 moving average on the mesh
-//     graph) and the plane (level_set_cut.hpp), so mold edges are smooth curves, not staircases;
+//  3. the mesh is cut along the feather line and the top rim: the 1/2 level sets of the sole and top
+//     indicator functions after the eq. 22 moving average (area-weighted, over a fixed distance in
+//     mm) (level_set_cut.hpp), so mold edges are smooth curves, not staircases;
+//  4. those two cut curves, traced with Dijkstra (region_contour.hpp), place the split plane through
+//     T1, T2, T3 as arc-length means (split_plane.hpp), and the mesh is cut along the plane.
+//     Every step is measured in mm, not in vertices, so a denser or coarser scan of the same last
+//     gives the same curves;
 //  5. the faces between the curves on either side of the plane form the two halves, each checked
 //     to be a topological disk (segment_halves.hpp).
 #include <map>
@@ -26,7 +28,7 @@ struct SegmentOptions {
   double sole_angle_rad = -std::numbers::pi / 4;  // faces at or below this elevation are sole (eq. 7)
   double top_angle_rad = std::numbers::pi / 4;    // faces at or above this elevation may be top (eq. 9)
   double plane_t = 1.0 / 3.0;                     // where the toe and heel parts of the sole contour end (eqs. 14-15)
-  int smoothing_passes = 10;                      // eq. 22 moving-average passes (scaled to a 2 mm edge mesh)
+  int smoothing_passes = 10;                      // eq. 22 moving-average passes on a 2 mm edge mesh (scaled to the same mm on others)
   double max_hole_fill_diameter_mm = 15;          // larger scan holes are not closed
 };
 
