@@ -21,9 +21,14 @@ DaemonRig::DaemonRig(const std::string& name, RigOptions options)
                      "[batch]\nwindow_s = " + std::to_string(options_.batch_window_s) + "\nnest_time_s = 0.3\n"
                      "[materials.calf]\nwidth_mm = 800\nlength_mm = 1200\nspacing_mm = 3\n";
   for (const std::string& cutter : options_.cutters) {
-    // HPGL plotters: the simulator records the exact bytes, so a cut file can be found in it.
-    toml += "[cutters." + cutter + "]\nprotocol = \"hpgl\"\nport = \"" + cutter + ".tty\"\nflow = \"xonxoff\"\n"
-            "timeout_s = 5\nmachine = \"hpgl-pen-plotter\"\nretry_interval_s = 0.5\n";
+    // Both simulators record the exact bytes they were sent, so a cut file can be found in them.
+    if (is_grbl(cutter)) {
+      toml += "[cutters." + cutter + "]\nprotocol = \"grbl\"\nport = \"" + cutter + ".tty\"\n"
+              "timeout_s = 5\nmachine = \"grbl-drag-knife\"\nretry_interval_s = 0.5\n";
+    } else {
+      toml += "[cutters." + cutter + "]\nprotocol = \"hpgl\"\nport = \"" + cutter + ".tty\"\nflow = \"xonxoff\"\n"
+              "timeout_s = 5\nmachine = \"hpgl-pen-plotter\"\nretry_interval_s = 0.5\n";
+    }
   }
   toml += options_.extra_config;
   write_text(config_file(), toml);
@@ -36,7 +41,7 @@ DaemonRig::~DaemonRig() {
 
 void DaemonRig::start_cutters() {
   for (const std::string& cutter : options_.cutters) {
-    std::vector<std::string> argv = {binary("lastcut-sim").string(), "hpgl", "--link", (root_ / (cutter + ".tty")).string(),
+    std::vector<std::string> argv = {binary("lastcut-sim").string(), is_grbl(cutter) ? "grbl" : "hpgl", "--link", (root_ / (cutter + ".tty")).string(),
                                      "--record", (root_ / ("record-" + cutter)).string(), "--time-scale", "0"};
     if (auto fault = options_.sim_faults.find(cutter); fault != options_.sim_faults.end()) {
       argv.push_back("--fault");
@@ -76,7 +81,7 @@ void DaemonRig::kill_daemon() {
 }
 
 std::string DaemonRig::received(const std::string& cutter) const {
-  return read_text(root_ / ("record-" + cutter) / "hpgl-received.hpgl");
+  return read_text(root_ / ("record-" + cutter) / (is_grbl(cutter) ? "grbl-received.nc" : "hpgl-received.hpgl"));
 }
 
 std::map<std::string, nlohmann::json> DaemonRig::jobs(const std::string& folder) const {

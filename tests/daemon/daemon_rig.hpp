@@ -1,10 +1,11 @@
 #pragma once
 // DaemonRig: a whole installation in a scratch folder for end-to-end tests: simulated HPGL
-// cutters (lastcut-sim) on pseudo-terminals, a generated configuration, lastcutd itself, and
+// plotters or grbl tables (lastcut-sim) on pseudo-terminals, a generated configuration, lastcutd itself, and
 // small generated lasts (lastcut generate) to drop into the watch folder.
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@ namespace lastcut::daemon::testing {
 struct RigOptions {
   std::vector<std::string> cutters = {"cutter-1"};
   std::map<std::string, std::string> sim_faults;  // cutter -> --fault argument
+  std::set<std::string> grbl_cutters;             // these are grbl tables (G-code); the others HPGL plotters
   std::string duplicate_policy = "skip";
   double batch_window_s = 0;
   std::string extra_config;                       // appended to the generated TOML
@@ -43,6 +45,9 @@ class DaemonRig {
 
   // What cutter `name` received (the simulator's record), after stop_cutters().
   std::string received(const std::string& cutter) const;
+  bool is_grbl(const std::string& cutter) const { return options_.grbl_cutters.count(cutter) > 0; }
+  // The cut file a job of `cutter` keeps in its spool folder: cut.nc (grbl) or cut.plt (HPGL).
+  std::string cut_file_name(const std::string& cutter) const { return is_grbl(cutter) ? "cut.nc" : "cut.plt"; }
   // Jobs per spool folder: id -> state.json.
   std::map<std::string, nlohmann::json> jobs(const std::string& folder) const;
   // True when the watch folder and work/ are empty and `expected` jobs have finished.

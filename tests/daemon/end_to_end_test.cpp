@@ -1,5 +1,5 @@
 // lastcutd end to end with the real binaries: generated lasts dropped into the watch folder,
-// two simulated HPGL cutters on pseudo-terminals, and the spool and the simulators' records
+// a simulated grbl table and HPGL plotters on pseudo-terminals, and the spool and the simulators' records
 // checked afterwards. Proves: every job reaches the right cutter exactly once, bad input ends
 // in failed/ with the reason, duplicates follow the policy, a cutter fault holds only that
 // cutter's job, a held job is cut after `lastcut requeue`, and a clean stop leaves nothing in work/.
@@ -29,6 +29,7 @@ std::string job_of(const DaemonRig& rig, const std::string& scan, std::string* f
 TEST(DaemonEndToEnd, TenScansReachTheRightCutterExactlyOnce) {
   RigOptions options;
   options.cutters = {"cutter-1", "cutter-2"};
+  options.grbl_cutters = {"cutter-1"};  // G-code to a grbl table; cutter-2 is an HPGL plotter
   options.batch_window_s = 1.0;
   DaemonRig rig("e2e-ten", options);
   rig.start_cutters();
@@ -89,11 +90,13 @@ TEST(DaemonEndToEnd, TenScansReachTheRightCutterExactlyOnce) {
   for (std::size_t i = 0; i < lasts.size(); ++i) {
     const std::string id = job_of(rig, "good-" + std::to_string(i) + ".stl");
     EXPECT_EQ(done.at(id).value("stage", ""), "cut");
-    // The exact cut file of its batch reached cutter-1 once, and never cutter-2.
-    const std::string cut = read_text(rig.spool() / "done" / id / "cut.plt");
+    // The exact G-code of its batch reached the grbl table cutter-1 once, and never cutter-2;
+    // the job's own comment line says which program carried it.
+    const std::string cut = read_text(rig.spool() / "done" / id / rig.cut_file_name("cutter-1"));
     ASSERT_FALSE(cut.empty()) << id;
     EXPECT_EQ(count_occurrences(on_cutter_1, cut), 1) << id;
     EXPECT_EQ(count_occurrences(on_cutter_2, cut), 0) << id;
+    EXPECT_EQ(count_occurrences(on_cutter_1, "(lastcut job " + id + ")"), 1) << id;
     const auto report = nlohmann::json::parse(read_text(rig.spool() / "done" / id / "report.json"));
     EXPECT_EQ(report.at("batch").value("cutter", ""), "cutter-1");
     EXPECT_GT(report.at("batch").value("utilisation", 0.0), 0.0);
@@ -102,11 +105,12 @@ TEST(DaemonEndToEnd, TenScansReachTheRightCutterExactlyOnce) {
   }
   const std::string order = job_of(rig, "order-4711.stl");
   EXPECT_EQ(done.at(order).at("ticket").value("order", ""), "4711");
-  const std::string order_cut = read_text(rig.spool() / "done" / order / "cut.plt");
+  const std::string order_cut = read_text(rig.spool() / "done" / order / rig.cut_file_name("cutter-2"));
   ASSERT_FALSE(order_cut.empty());
   EXPECT_EQ(count_occurrences(on_cutter_2, order_cut), 1);
   EXPECT_EQ(count_occurrences(on_cutter_1, order_cut), 0);
   EXPECT_FALSE(std::filesystem::exists(rig.spool() / "done" / duplicate / "cut.plt")) << "the duplicate is not cut";
+  EXPECT_FALSE(std::filesystem::exists(rig.spool() / "done" / duplicate / "cut.nc")) << "the duplicate is not cut";
   EXPECT_TRUE(std::filesystem::exists(rig.spool() / "done" / order / "order-4711.job.toml"));
 
   // The operator's log names the order and says where bad jobs went.
