@@ -92,6 +92,39 @@ TEST(DaemonConfig, EnumerationsAndCrossReferencesAreChecked) {
   EXPECT_NE(result.error.find("cutters.a.parity"), std::string::npos);
 }
 
+TEST(DaemonConfig, DriverSettingsAreReadAndChecked) {
+  auto result = load_text(minimal("data_bits = 7\nstop_bits = 2\nharmless_grbl_errors = [20, 22]\n"
+                                  "grbl_settings = [\"$110=5000\", \"$32=0\"]\nhpgl_handshake = \"escb\"\n"
+                                  "hpgl_status_queries = false\nmodbus_map = \"map.toml\"\nmodbus_unit_id = 3\n"));
+  ASSERT_TRUE(result.config) << result.error;
+  const CutterSection& cutter = result.config->cutters.at("a");
+  EXPECT_EQ(cutter.data_bits, 7);
+  EXPECT_EQ(cutter.stop_bits, 2);
+  EXPECT_EQ(cutter.harmless_grbl_errors, (std::vector<int>{20, 22}));
+  EXPECT_EQ(cutter.grbl_settings, (std::vector<std::string>{"$110=5000", "$32=0"}));
+  EXPECT_EQ(cutter.hpgl_handshake, "escb");
+  EXPECT_FALSE(cutter.hpgl_status_queries);
+  EXPECT_EQ(std::filesystem::path(cutter.modbus_map).filename(), "map.toml");
+  EXPECT_TRUE(std::filesystem::path(cutter.modbus_map).is_absolute()) << "taken from the file's folder";
+  EXPECT_EQ(cutter.modbus_unit_id, 3);
+
+  result = load_text(minimal("stop_bits = 3\n"));
+  ASSERT_FALSE(result.config);
+  EXPECT_NE(result.error.find("cutters.a.stop_bits (line 16): 3 is outside"), std::string::npos) << result.error;
+  result = load_text(minimal("harmless_grbl_errors = [\"20\"]\n"));
+  ASSERT_FALSE(result.config);
+  EXPECT_NE(result.error.find("cutters.a.harmless_grbl_errors"), std::string::npos) << result.error;
+  result = load_text(minimal("grbl_settings = [\"G0X10\"]\n"));
+  ASSERT_FALSE(result.config);
+  EXPECT_NE(result.error.find("is not a grbl setting line"), std::string::npos) << result.error;
+  result = load_text(minimal("hpgl_handshake = \"dtr\"\n"));
+  ASSERT_FALSE(result.config);
+  EXPECT_NE(result.error.find("cutters.a.hpgl_handshake"), std::string::npos) << result.error;
+  result = load_text(minimal("hpgl_status_queries = \"yes\"\n"));
+  ASSERT_FALSE(result.config);
+  EXPECT_NE(result.error.find("must be true or false"), std::string::npos) << result.error;
+}
+
 TEST(DaemonConfig, OnlyLoopbackNetworkCuttersAreAccepted) {
   std::string text = minimal();
   text.replace(text.find("/dev/ttyUSB0"), 12, "tcp://10.0.0.5:23");
