@@ -26,4 +26,11 @@ void make_counter_clockwise(Polygon2& polygon) {
   if (signed_area(polygon) < 0.0) std::reverse(polygon.points.begin(), polygon.points.end());
 }
 
+double distance_to_segment(const Point2& point, const Point2& a, const Point2& b) {
+  const Point2 ab = b - a;
+  const double length_squared = ab.squaredNorm();
+  const double t = length_squared > 0.0 ? std::clamp((point - a).dot(ab) / length_squared, 0.0, 1.0) : 0.0;
+  return (a + t * ab - point).norm();
+}
+
 }  // namespace lastcut

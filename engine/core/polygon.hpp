@@ -18,5 +18,7 @@ double signed_area(const Polygon2& polygon);
 double perimeter(const Polygon2& polygon);
 // Reverses the order of the points when the polygon is clockwise.
 void make_counter_clockwise(Polygon2& polygon);
+// Distance (mm) from a point to the closed segment a-b (a point when a == b).
+double distance_to_segment(const Point2& point, const Point2& a, const Point2& b);
 
 }  // namespace lastcut

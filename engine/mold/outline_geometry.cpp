@@ -95,13 +95,6 @@ std::vector<std::pair<int, int>> find_self_intersections(const Polygon2& polygon
   return found;
 }
 
-double distance_to_segment(const Point2& p, const Point2& a, const Point2& b) {
-  const Point2 ab = b - a;
-  const double length_squared = ab.squaredNorm();
-  const double t = length_squared > 0.0 ? std::clamp((p - a).dot(ab) / length_squared, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).norm();
-}
-
 OutlinePoint closest_outline_point(const Polygon2& polygon, const Point2& p) {
   OutlinePoint best;
   best.distance_mm = std::numeric_limits<double>::infinity();

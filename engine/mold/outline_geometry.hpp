@@ -16,9 +16,6 @@ std::vector<std::pair<int, int>> find_self_intersections(const Polygon2& polygon
 
 inline bool is_simple(const Polygon2& polygon) { return !find_self_intersection(polygon).has_value(); }
 
-// Distance (mm) from point p to segment ab.
-double distance_to_segment(const Point2& p, const Point2& a, const Point2& b);
-
 struct OutlinePoint {
   Point2 point = Point2::Zero();  // closest point on the outline (mm)
   int edge = 0;                   // edge index it lies on

@@ -18,13 +18,6 @@ bool on_segment(const Point2& a, const Point2& b, const Point2& p) {
          p.y() <= std::max(a.y(), b.y());
 }
 
-double distance_to_segment(const Point2& p, const Point2& a, const Point2& b) {
-  const Point2 ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).norm();
-}
-
 void simplify_span(const std::vector<Point2>& ring, size_t first, size_t last, double tolerance,
                    std::vector<char>& keep) {
   const size_t n = ring.size();

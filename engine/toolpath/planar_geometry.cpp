@@ -36,13 +36,6 @@ bool point_in_polygon(const Point2& point, const Polygon2& polygon) {
   return inside;
 }
 
-double distance_to_segment(const Point2& point, const Point2& a, const Point2& b) {
-  const Point2 ab = b - a;
-  const double length_sq = ab.squaredNorm();
-  const double t = length_sq > 0.0 ? std::clamp((point - a).dot(ab) / length_sq, 0.0, 1.0) : 0.0;
-  return (a + t * ab - point).norm();
-}
-
 double distance_to_boundary(const Point2& point, const Polygon2& polygon) {
   double best = std::numeric_limits<double>::infinity();
   const auto& p = polygon.points;

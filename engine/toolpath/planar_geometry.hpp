@@ -10,8 +10,6 @@ namespace lastcut {
 bool point_in_polygon(const Point2& point, const Polygon2& polygon);
 // Distance (mm) from a point to the polygon's boundary, closing edge included.
 double distance_to_boundary(const Point2& point, const Polygon2& polygon);
-// Distance (mm) from a point to the segment a-b.
-double distance_to_segment(const Point2& point, const Point2& a, const Point2& b);
 // True when the closed segments a-b and c-d share a point.
 bool segments_intersect(const Point2& a, const Point2& b, const Point2& c, const Point2& d);
 // Signed turn (radians, CCW positive, in (-pi, pi]) from direction `from` to direction `to`.
