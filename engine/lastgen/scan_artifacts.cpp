@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "engine/core/engine_error.hpp"
+#include "engine/mesh/mesh_edges.hpp"
 
 namespace lastcut {
 namespace {
@@ -33,21 +34,6 @@ Eigen::MatrixXd vertex_normals(const TriMesh& mesh) {
     if (length > 0.0) normals.row(v) /= length;
   }
   return normals;
-}
-
-void drop_unreferenced_vertices(TriMesh& mesh) {
-  std::vector<int> new_index(static_cast<size_t>(mesh.V.rows()), -1);
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
-    for (int c = 0; c < 3; ++c) new_index[static_cast<size_t>(mesh.F(f, c))] = 0;
-  int count = 0;
-  for (auto& index : new_index)
-    if (index == 0) index = count++;
-  Eigen::MatrixXd kept(count, 3);
-  for (Eigen::Index v = 0; v < mesh.V.rows(); ++v)
-    if (new_index[static_cast<size_t>(v)] >= 0) kept.row(new_index[static_cast<size_t>(v)]) = mesh.V.row(v);
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
-    for (int c = 0; c < 3; ++c) mesh.F(f, c) = new_index[static_cast<size_t>(mesh.F(f, c))];
-  mesh.V = std::move(kept);
 }
 
 }  // namespace
@@ -101,7 +87,7 @@ void punch_holes(TriMesh& mesh, int count, const std::function<bool(const Eigen:
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
     if (!removed[static_cast<size_t>(f)]) kept.row(rows++) = mesh.F.row(f);
   mesh.F = kept.topRows(rows);
-  drop_unreferenced_vertices(mesh);
+  mesh_detail::drop_unreferenced_vertices(mesh);
 }
 
 Eigen::Affine3d random_pose(std::mt19937_64& random) {
