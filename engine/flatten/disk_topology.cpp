@@ -136,4 +136,17 @@ DiskTopology check_disk(const TriMesh& mesh) {
   return topology;
 }
 
+int farthest_vertex_on_loop(const TriMesh& mesh, const std::vector<int>& loop, int from) {
+  int best = loop[0];
+  double best_sq = -1.0;
+  for (int v : loop) {
+    const double d = (mesh.V.row(v) - mesh.V.row(from)).squaredNorm();
+    if (d > best_sq) {
+      best_sq = d;
+      best = v;
+    }
+  }
+  return best;
+}
+
 }  // namespace lastcut

@@ -22,4 +22,8 @@ struct DiskTopology {
 // no boundary, holes).
 DiskTopology check_disk(const TriMesh& mesh);
 
+// The vertex of `loop` (non-empty vertex indices) farthest in 3D from vertex `from`: used to pick
+// far-apart boundary vertices (LSCM pins, the start map's long axis).
+int farthest_vertex_on_loop(const TriMesh& mesh, const std::vector<int>& loop, int from);
+
 }  // namespace lastcut

@@ -8,27 +8,10 @@
 #include "engine/core/engine_error.hpp"
 
 namespace lastcut {
-namespace {
-
-int farthest_from(const TriMesh& mesh, const std::vector<int>& loop, int from) {
-  int best = loop[0];
-  double best_sq = -1.0;
-  for (int v : loop) {
-    const double d = (mesh.V.row(v) - mesh.V.row(from)).squaredNorm();
-    if (d > best_sq) {
-      best_sq = d;
-      best = v;
-    }
-  }
-  return best;
-}
-
-}  // namespace
-
 LscmResult lscm(const TriMesh& mesh, const TriangleFrames& frames, const DiskTopology& topology, SparseSolver solver) {
   const int n = mesh.vertex_count();
-  const int pin_a = farthest_from(mesh, topology.boundary_loop, topology.boundary_loop[0]);
-  const int pin_b = farthest_from(mesh, topology.boundary_loop, pin_a);
+  const int pin_a = farthest_vertex_on_loop(mesh, topology.boundary_loop, topology.boundary_loop[0]);
+  const int pin_b = farthest_vertex_on_loop(mesh, topology.boundary_loop, pin_a);
   if (pin_a == pin_b) throw EngineError("cannot flatten: all boundary vertices coincide");
   const double pin_distance = (mesh.V.row(pin_b) - mesh.V.row(pin_a)).norm();
 

@@ -1,4 +1,5 @@
 // Convex-combination embedding on an ellipse; see tutte_embedding.hpp.
+#include "engine/flatten/disk_topology.hpp"
 #include "engine/flatten/tutte_embedding.hpp"
 
 #include <algorithm>
@@ -16,19 +17,6 @@ double ellipse_perimeter(double a, double b) {
   return std::numbers::pi * (3.0 * (a + b) - std::sqrt((3.0 * a + b) * (a + 3.0 * b)));
 }
 
-int farthest_boundary_vertex(const TriMesh& mesh, const std::vector<int>& loop, int from) {
-  int best = loop[0];
-  double best_sq = -1.0;
-  for (int v : loop) {
-    const double d = (mesh.V.row(v) - mesh.V.row(from)).squaredNorm();
-    if (d > best_sq) {
-      best_sq = d;
-      best = v;
-    }
-  }
-  return best;
-}
-
 }  // namespace
 
 Eigen::MatrixXd boundary_on_ellipse(const TriMesh& mesh, const std::vector<int>& loop, double area_mm2) {
@@ -39,8 +27,8 @@ Eigen::MatrixXd boundary_on_ellipse(const TriMesh& mesh, const std::vector<int>&
     arc[i + 1] = arc[i] + (mesh.V.row(loop[(i + 1) % count]) - mesh.V.row(loop[i])).norm();
   }
   const double perimeter = arc[count];
-  const int end_a = farthest_boundary_vertex(mesh, loop, loop[0]);
-  const int end_b = farthest_boundary_vertex(mesh, loop, end_a);
+  const int end_a = farthest_vertex_on_loop(mesh, loop, loop[0]);
+  const int end_b = farthest_vertex_on_loop(mesh, loop, end_a);
   const int ia = static_cast<int>(std::find(loop.begin(), loop.end(), end_a) - loop.begin());
   int ib = static_cast<int>(std::find(loop.begin(), loop.end(), end_b) - loop.begin());
   if (ib == ia) ib = (ia + count / 2) % count;
