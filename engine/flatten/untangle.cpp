@@ -1,7 +1,11 @@
-// Local untangling of flipped triangles by a regional Tutte embedding; see untangle.hpp.
+// Local untangling of flipped triangles: star kernels, then regional embeddings; see untangle.hpp.
 #include "engine/flatten/untangle.hpp"
 
+#include "engine/flatten/star_untangle.hpp"
+
 #include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <utility>
 #include <vector>
 
 namespace lastcut {
@@ -18,23 +22,36 @@ std::vector<int> flipped_triangles(const TriangleFrames& frames, const Eigen::Ma
   return flipped;
 }
 
-// Re-places the movable vertices (movable_index[v] >= 0) by the uniform-weight Tutte embedding with every
-// other vertex held. Returns false if the local system cannot be factored.
-bool place_region(const DiskTopology& topology, const std::vector<int>& movable, const std::vector<int>& movable_index,
-                  Eigen::MatrixXd& UV) {
+// Smallest half-edge weight of the shape-preserving placement (cot(89.4 deg) / 2): clamping the
+// cotangent weights keeps every weight positive, so each vertex lands inside the hull of its neighbours.
+constexpr double kMinimumHalfWeight = 0.01;
+
+// Re-places the movable vertices (movable_index[v] >= 0) by a convex-combination embedding with every other
+// vertex held. Uniform weights (cotangent_weighted false) are Tutte's; clamped cotangent weights from the
+// 3D triangles reproduce a flat region exactly and a curved one nearly isometrically, so the region keeps
+// the shape ARAP gave its held ring and does not bunch up against a concave stretch of it.
+// Returns false if the local system cannot be factored.
+bool place_region(const TriangleFrames& frames, const std::vector<int>& movable,
+                  const std::vector<int>& movable_index, bool cotangent_weighted, Eigen::MatrixXd& UV) {
   const int n = static_cast<int>(movable.size());
   std::vector<Eigen::Triplet<double>> triplets;
   Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, 2);
-  for (int i = 0; i < n; ++i) {
-    const int v = movable[i];
-    const int begin = topology.neighbor_offsets[v], end = topology.neighbor_offsets[v + 1];
-    triplets.emplace_back(i, i, static_cast<double>(end - begin));
-    for (int k = begin; k < end; ++k) {
-      const int w = topology.neighbors[k];
-      if (movable_index[w] >= 0) {
-        triplets.emplace_back(i, movable_index[w], -1.0);
-      } else {
-        rhs.row(i) += UV.row(w);
+  // Summed over the triangles: an interior edge gets both halves of its weight (uniform: 1 + 1).
+  for (size_t f = 0; f < frames.triangles.size(); ++f) {
+    const auto& t = frames.triangles[f];
+    if (movable_index[t[0]] < 0 && movable_index[t[1]] < 0 && movable_index[t[2]] < 0) continue;
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+      const double w = cotangent_weighted ? std::max(frames.half_weight[3 * f + k], kMinimumHalfWeight) : 1.0;
+      for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, a}}) {
+        const int row = movable_index[from];
+        if (row < 0) continue;
+        triplets.emplace_back(row, row, w);
+        if (movable_index[to] >= 0) {
+          triplets.emplace_back(row, movable_index[to], -w);
+        } else {
+          rhs.row(row) += w * UV.row(to);
+        }
       }
     }
   }
@@ -150,12 +167,15 @@ UntangleReport regional_tutte(const TriangleFrames& frames, const DiskTopology& 
       movable_index[v] = static_cast<int>(movable.size());
       movable.push_back(v);
     }
-    UV = original;
-    if (movable.empty() || !place_region(topology, movable, movable_index, UV)) continue;
-    report.rings = rings;
-    report.moved_vertices = static_cast<int>(movable.size());
-    report.flipped_after = static_cast<int>(flipped_triangles(frames, UV).size());
-    if (report.flipped_after == 0) return report;
+    if (movable.empty()) continue;
+    for (const bool cotangent_weighted : {true, false}) {
+      UV = original;
+      if (!place_region(frames, movable, movable_index, cotangent_weighted, UV)) continue;
+      report.rings = rings;
+      report.moved_vertices = static_cast<int>(movable.size());
+      report.flipped_after = static_cast<int>(flipped_triangles(frames, UV).size());
+      if (report.flipped_after == 0) return report;
+    }
   }
   UV = original;
   report.flipped_after = report.flipped_before;
@@ -168,6 +188,10 @@ UntangleReport untangle_flips(const TriangleFrames& frames, const DiskTopology& 
                               int max_rings) {
   const std::vector<int> flipped = flipped_triangles(frames, UV);
   if (flipped.empty()) return {};
+  const StarUntangleReport star = star_untangle(frames, topology, UV);
+  if (star.flipped_after == 0) {
+    return {star.flipped_before, 0, star.rings, star.moved_vertices};
+  }
   const UntangleReport exact = regional_tutte(frames, topology, UV, flipped, max_rings);
   if (exact.flipped_after == 0) return exact;
   return relax_with_sliding_outline(frames, topology, UV, flipped, max_rings / 2);

@@ -1,12 +1,14 @@
 #pragma once
-// Local repair of flipped triangles in a flattening: the vertices within a few rings of the flipped
-// triangles are re-placed by a Tutte embedding of that region (each vertex the average of its neighbours,
-// solved exactly by sparse Cholesky) with the region's outer ring held, doubling the radius until nothing
-// is flipped. W. T. Tutte, "How to draw a graph", Proc. London Math. Soc. 13, 1963: when the held ring is
-// convex the region is guaranteed flip-free; around a small fold it is close enough to convex in practice.
-// If that fails (a fold reaching the outline), Gauss-Seidel averaging grown ring by ring, with outline
-// vertices sliding between their boundary neighbours, is tried. Only the region moves, so ARAP can
-// polish it with flip-guarded steps afterwards.
+// Local repair of flipped triangles in a flattening, most local first:
+//  1. vertex by vertex into the kernel of its star, a few rings at most (star_untangle.hpp);
+//  2. the vertices within a few rings of the flipped triangles re-placed by a convex-combination embedding
+//     of that region with its outer ring held (clamped cotangent weights, then Tutte's uniform ones),
+//     doubling the radius until nothing is flipped. W. T. Tutte, "How to draw a graph", Proc. London Math.
+//     Soc. 13, 1963: flip-free when the held ring is convex; measured on the FIND halves, the region's
+//     outer ring is concave enough that new folds appear next to it, which is why (1) comes first;
+//  3. Gauss-Seidel averaging grown ring by ring, with outline vertices sliding between their boundary
+//     neighbours.
+// Only the region moves, so ARAP can polish it with flip-guarded steps afterwards.
 #include <Eigen/Core>
 
 #include "engine/flatten/cotangent_laplacian.hpp"
