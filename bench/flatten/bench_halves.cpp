@@ -6,6 +6,9 @@
 #include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 
 #include "engine/core/engine_error.hpp"
@@ -55,25 +58,70 @@ std::vector<BenchHalf> reference_halves(bool largest) {
   return halves;
 }
 
-std::vector<BenchHalf> generated_halves() {
+#ifdef LASTCUT_BENCH_HAS_SEGMENT
+namespace {
+
+TriMesh generated_last(int last_triangles) {
+  LastParams params = LastParams::for_eu_size(42, FootSide::Left);
+  params.target_triangles = last_triangles;
+  return generate_last(params).mesh;
+}
+
+Segmentation segment_generated(const TriMesh& last) {
+  // Generated lasts are already in the canonical frame (no random pose): no orientation step needed.
+  const OrientedLast oriented{last, Eigen::Affine3d::Identity(), FootSide::Left, {}};
+  return segment_last(oriented);
+}
+
+}  // namespace
+#endif
+
+std::vector<BenchHalf> generated_halves(const std::vector<int>& half_triangles) {
   std::vector<BenchHalf> halves;
 #ifdef LASTCUT_BENCH_HAS_SEGMENT
-  for (int last_triangles : {60000, 240000}) {
-    LastParams params = LastParams::for_eu_size(42, FootSide::Left);
-    params.target_triangles = last_triangles;
+  for (int target : half_triangles) {
+    // The medial half is ~37 % of an EU 42 last; correct the last's size by the half it gave.
+    double half_fraction = 0.368;
     try {
-      const GeneratedLast last = generate_last(params);
-      // Generated lasts are already in the canonical frame (no random pose): no orientation step needed.
-      OrientedLast oriented{last.mesh, Eigen::Affine3d::Identity(), FootSide::Left, {}};
-      const Segmentation halves_of_last = segment_last(oriented);
-      halves.push_back({"generated EU42 last (" + std::to_string(last_triangles / 1000) + "k), medial half",
-                        halves_of_last.medial.mesh});
+      for (int attempt = 0; attempt < 4; ++attempt) {
+        const int last_triangles = static_cast<int>(target / half_fraction);
+        const TriMesh last = generated_last(last_triangles);
+        TriMesh medial = segment_generated(last).medial.mesh;
+        const int got = medial.triangle_count();
+        if (std::abs(got - target) <= 0.02 * target || attempt == 3) {
+          halves.push_back({"generated EU42 last (" + std::to_string((last_triangles + 500) / 1000) +
+                                "k), medial half",
+                            std::move(medial)});
+          break;
+        }
+        half_fraction = static_cast<double>(got) / last.triangle_count();
+      }
     } catch (const EngineError& e) {
-      std::printf("(generated %dk last skipped: %s)\n", last_triangles / 1000, e.what());
+      std::printf("(generated half of %dk skipped: %s)\n", target / 1000, e.what());
     }
   }
+#else
+  (void)half_triangles;
 #endif
   return halves;
+}
+
+double segmentation_seconds(int last_triangles, int repeats) {
+#ifdef LASTCUT_BENCH_HAS_SEGMENT
+  const TriMesh last = generated_last(last_triangles);
+  double best = 1e30;
+  for (int r = 0; r < repeats; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    const Segmentation halves = segment_generated(last);
+    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    if (halves.medial.mesh.triangle_count() == 0) return -1.0;
+  }
+  return best;
+#else
+  (void)last_triangles;
+  (void)repeats;
+  return -1.0;
+#endif
 }
 
 }  // namespace lastcut::bench

@@ -1,7 +1,7 @@
 #pragma once
 // The half-last meshes the flattening benchmark runs on: the shared reference half (a real scanned
-// foot template, FIND, MIT) at its own size, decimated and subdivided, and halves of generated lasts
-// cut by the segmentation module when it is built.
+// foot template, FIND, MIT) at its own size, decimated and subdivided, and medial halves of generated
+// lasts cut by the segmentation module when it is built, sized to ~25k, ~100k and ~400k triangles.
 #include <string>
 #include <vector>
 
@@ -18,8 +18,13 @@ struct BenchHalf {
 // subdivided again (~400k). `largest` false skips the ~400k one.
 std::vector<BenchHalf> reference_halves(bool largest);
 
-// Medial halves of generated EU 42 lasts (lastgen + orient + segment), sized near 25k and 100k triangles.
+// Medial halves of generated EU 42 lasts (lastgen + segment) with half_triangles[i] triangles +/- 2 %
+// (the last's triangle count is corrected from the half it gave until the half is within 2 %).
 // Empty when the segmentation module is not built.
-std::vector<BenchHalf> generated_halves();
+std::vector<BenchHalf> generated_halves(const std::vector<int>& half_triangles);
+
+// Wall seconds of segment_last on a generated EU 42 last of `last_triangles` triangles (best of
+// `repeats`), or a negative value when the segmentation module is not built.
+double segmentation_seconds(int last_triangles, int repeats);
 
 }  // namespace lastcut::bench

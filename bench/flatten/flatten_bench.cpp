@@ -1,6 +1,6 @@
 // Flattening benchmark: ARAP on half lasts (init, factorization, per-iteration, total, distortion reached)
 // against plain baselines measured in the same run, the sparse Cholesky backends, and LSCM vs ARAP.
-// Usage: bench_flatten [--no-400k] [--arap-only]   Prints markdown tables (docs/benchmarks-flatten.md).
+// Usage: bench_flatten [--no-400k] [--arap-only] [--only NAME-PART] [--save FOLDER]   Prints markdown tables (docs/benchmarks-flatten.md).
 #include <time.h>
 
 #include <algorithm>
@@ -15,6 +15,7 @@
 #include "engine/flatten/disk_topology.hpp"
 #include "engine/flatten/flatten.hpp"
 #include "engine/flatten/tutte_embedding.hpp"
+#include "engine/mesh/write_mesh.hpp"
 
 namespace lastcut::bench {
 namespace {
@@ -119,14 +120,26 @@ int main(int argc, char** argv) {
   using namespace lastcut;
   using namespace lastcut::bench;
   bool largest = true, arap_only = false;
+  std::string only;         // run only the halves whose name contains this
+  std::string save_folder;  // write each half there as <triangles>.off (to profile one half alone)
   for (int i = 1; i < argc; ++i) {
     largest = largest && std::strcmp(argv[i], "--no-400k") != 0;
     arap_only = arap_only || std::strcmp(argv[i], "--arap-only") == 0;
+    if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) only = argv[++i];
+    if (std::strcmp(argv[i], "--save") == 0 && i + 1 < argc) save_folder = argv[++i];
   }
   std::vector<BenchHalf> halves = reference_halves(largest);
-  for (BenchHalf& generated : generated_halves()) halves.push_back(std::move(generated));
+  std::vector<int> generated_sizes = {25000, 100000};
+  if (largest) generated_sizes.push_back(400000);
+  for (BenchHalf& generated : generated_halves(generated_sizes)) halves.push_back(std::move(generated));
+  std::erase_if(halves, [&](const BenchHalf& h) { return h.name.find(only) == std::string::npos; });
   std::sort(halves.begin(), halves.end(),
             [](const BenchHalf& a, const BenchHalf& b) { return a.mesh.triangle_count() < b.mesh.triangle_count(); });
+  if (!save_folder.empty()) {
+    for (const BenchHalf& half : halves) {
+      write_mesh(save_folder + "/" + std::to_string(half.mesh.triangle_count()) + ".off", half.mesh);
+    }
+  }
 
   std::printf("## ARAP (default options: Auto solver = %s, Anderson acceleration, tolerance 1e-6)\n\n",
               std::string(to_string(SparseCholesky().backend())).c_str());
@@ -168,6 +181,12 @@ int main(int argc, char** argv) {
                 plain.result.iterations, plain.result.seconds_total, per_iteration, refactorizing_total,
                 plain.result.seconds_total / our_total, refactorizing_total / our_total);
     std::fflush(stdout);
+  }
+
+  const double segment_s = segmentation_seconds(100000, 3);
+  if (segment_s >= 0) {
+    std::printf("\n## Segmentation (engine/segment) of a generated EU 42 last of 100,000 triangles: %.3f s "
+                "(wall, best of 3)\n", segment_s);
   }
 
   std::printf("\n## Sparse Cholesky of the ARAP Laplacian (best of 3, wall s; solve = u and v together)\n\n"
