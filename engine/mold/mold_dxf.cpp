@@ -2,102 +2,22 @@
 
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "engine/core/dxf_document.hpp"
 #include "engine/core/engine_error.hpp"
+#include "engine/core/polygon_centroid.hpp"
 
 namespace lastcut {
 
 namespace {
 
 constexpr double kTextHeight_mm = 2.5;
-
-class DxfWriter {
- public:
-  void pair(int code, const std::string& value) { out_ << code << '\n' << value << '\n'; }
-  void pair(int code, int value) { pair(code, std::to_string(value)); }
-  void number(int code, double value) {
-    char text[48];
-    std::snprintf(text, sizeof text, "%.6f", value);
-    pair(code, text);
-  }
-  void point(int first_code, const Point2& p) {
-    number(first_code, p.x());
-    number(first_code + 10, p.y());
-    number(first_code + 20, 0.0);
-  }
-  std::string text() const { return out_.str(); }
-
- private:
-  std::ostringstream out_;
-};
-
-void write_header_and_tables(DxfWriter& dxf) {
-  dxf.pair(0, "SECTION");
-  dxf.pair(2, "HEADER");
-  dxf.pair(9, "$ACADVER");
-  dxf.pair(1, "AC1009");
-  dxf.pair(9, "$INSUNITS");
-  dxf.pair(70, 4);  // millimetres
-  dxf.pair(9, "$MEASUREMENT");
-  dxf.pair(70, 1);  // metric
-  dxf.pair(0, "ENDSEC");
-  dxf.pair(0, "SECTION");
-  dxf.pair(2, "TABLES");
-  dxf.pair(0, "TABLE");
-  dxf.pair(2, "LTYPE");
-  dxf.pair(70, 1);
-  dxf.pair(0, "LTYPE");
-  dxf.pair(2, "CONTINUOUS");
-  dxf.pair(70, 0);
-  dxf.pair(3, "Solid line");
-  dxf.pair(72, 65);
-  dxf.pair(73, 0);
-  dxf.number(40, 0.0);
-  dxf.pair(0, "ENDTAB");
-  dxf.pair(0, "TABLE");
-  dxf.pair(2, "LAYER");
-  dxf.pair(70, 3);
-  const std::pair<const char*, int> layers[] = {{"CUT", 7}, {"MARK", 1}, {"LABEL", 3}};  // white, red, green
-  for (const auto& [layer, color] : layers) {
-    dxf.pair(0, "LAYER");
-    dxf.pair(2, layer);
-    dxf.pair(70, 0);
-    dxf.pair(62, color);
-    dxf.pair(6, "CONTINUOUS");
-  }
-  dxf.pair(0, "ENDTAB");
-  dxf.pair(0, "ENDSEC");
-}
-
-void write_text(DxfWriter& dxf, const char* layer, const Point2& at, const std::string& text) {
-  dxf.pair(0, "TEXT");
-  dxf.pair(8, layer);
-  dxf.point(10, at);
-  dxf.number(40, kTextHeight_mm);
-  dxf.pair(1, text);
-}
-
-Point2 area_centroid(const Polygon2& outline) {
-  const auto& p = outline.points;
-  Point2 sum = Point2::Zero();
-  double twice_area = 0.0;
-  for (size_t i = 0; i < p.size(); ++i) {
-    const Point2& a = p[i];
-    const Point2& b = p[(i + 1) % p.size()];
-    const double w = a.x() * b.y() - b.x() * a.y();
-    sum += w * (a + b);
-    twice_area += w;
-  }
-  return twice_area != 0.0 ? Point2(sum / (3.0 * twice_area)) : p.front();
-}
 
 // One entity of the ENTITIES section: its type and its group pairs in file order.
 struct Entity {
@@ -187,36 +107,18 @@ std::string text_of(const Entity& entity) {
 }  // namespace
 
 void write_mold_dxf(const std::filesystem::path& path, const Mold& mold) {
-  DxfWriter dxf;
-  write_header_and_tables(dxf);
-  dxf.pair(0, "SECTION");
-  dxf.pair(2, "ENTITIES");
-  dxf.pair(0, "POLYLINE");
-  dxf.pair(8, "CUT");
-  dxf.pair(66, 1);
-  dxf.point(10, Point2::Zero());
-  dxf.pair(70, 1);  // closed
-  for (const auto& p : mold.outline.points) {
-    dxf.pair(0, "VERTEX");
-    dxf.pair(8, "CUT");
-    dxf.point(10, p);
-  }
-  dxf.pair(0, "SEQEND");
-  dxf.pair(8, "CUT");
+  DxfDocument dxf(DxfVersion::R12, {{"CUT", 7}, {"MARK", 1}, {"LABEL", 3}});  // white, red, green
+  dxf.polyline("CUT", mold.outline.points, true);
   for (const auto& mark : mold.marks) {
     const Point2 inner = mark.position_mm + kNotchLength_mm * mark.inward_direction;
-    dxf.pair(0, "LINE");
-    dxf.pair(8, "MARK");
-    dxf.point(10, mark.position_mm);
-    dxf.point(11, inner);
-    write_text(dxf, "MARK", inner, mark.name);
+    dxf.line("MARK", mark.position_mm, inner);
+    dxf.text("MARK", inner, kTextHeight_mm, mark.name);
   }
-  if (!mold.name.empty() && !mold.outline.points.empty()) write_text(dxf, "LABEL", area_centroid(mold.outline), mold.name);
-  dxf.pair(0, "ENDSEC");
-  dxf.pair(0, "EOF");
+  if (!mold.name.empty() && !mold.outline.points.empty())
+    dxf.text("LABEL", area_centroid(mold.outline), kTextHeight_mm, mold.name);
 
   std::ofstream out(path, std::ios::binary);
-  const std::string text = dxf.text();
+  const std::string text = dxf.str();
   out.write(text.data(), static_cast<std::streamsize>(text.size()));
   if (!out) throw EngineError("cannot write mold file " + path.string());
 }
