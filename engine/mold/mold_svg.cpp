@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "engine/core/engine_error.hpp"
+#include "engine/core/svg_document.hpp"
 
 namespace lastcut {
 
@@ -34,18 +35,6 @@ double percentile(std::vector<double> values, double fraction) {
   const size_t k = std::min(values.size() - 1, static_cast<size_t>(fraction * static_cast<double>(values.size() - 1)));
   std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
   return values[k];
-}
-
-std::string xml_escaped(const std::string& text) {
-  std::string escaped;
-  for (char c : text) {
-    if (c == '<') escaped += "&lt;";
-    else if (c == '>') escaped += "&gt;";
-    else if (c == '&') escaped += "&amp;";
-    else if (c == '"') escaped += "&quot;";
-    else escaped += c;
-  }
-  return escaped;
 }
 
 struct Frame {
@@ -93,9 +82,7 @@ void write_mold_svg(const std::filesystem::path& path, const Mold& mold, const E
   }
 
   std::ostringstream svg;
-  svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << fmt(width_mm) << "mm\" height=\"" << fmt(height_mm)
-      << "mm\" viewBox=\"0 0 " << fmt(width_mm) << ' ' << fmt(height_mm) << "\">\n"
+  svg << svg_document_start({0.0, 0.0, width_mm, height_mm})
       << "<title>mold " << xml_escaped(mold.name) << ": stretch of the leather (1 = unstrained), 1:1 in mm</title>\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<g id=\"stretch\" stroke-width=\"0.02\">\n";
   for (int b = 0; b < kBins; ++b) {
@@ -135,7 +122,7 @@ void write_mold_svg(const std::filesystem::path& path, const Mold& mold, const E
   const double scale_y = legend_top + 20;
   svg << "<line x1=\"" << fmt(kMargin_mm) << "\" y1=\"" << fmt(scale_y) << "\" x2=\"" << fmt(kMargin_mm + 50) << "\" y2=\""
       << fmt(scale_y) << "\" stroke=\"black\" stroke-width=\"0.5\"/>\n"
-      << "<text x=\"" << fmt(kMargin_mm + 52) << "\" y=\"" << fmt(scale_y + 1) << "\">50 mm</text>\n</g>\n</svg>\n";
+      << "<text x=\"" << fmt(kMargin_mm + 52) << "\" y=\"" << fmt(scale_y + 1) << "\">50 mm</text>\n</g>\n" << kSvgDocumentEnd;
 
   std::ofstream out(path, std::ios::binary);
   const std::string text = svg.str();

@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "engine/core/engine_error.hpp"
+#include "engine/core/polygon_centroid.hpp"
+#include "engine/core/svg_document.hpp"
 
 namespace lastcut {
 namespace {
@@ -24,29 +26,6 @@ std::string points(const Polygon2& polygon, double dx, double dy) {
   out.precision(10);
   for (const Point2& p : polygon.points) out << (p.x() + dx) << ',' << (p.y() + dy) << ' ';
   return out.str();
-}
-
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
-  }
-  return out;
-}
-
-Point2 centroid(const Polygon2& polygon) {
-  double a = 0, cx = 0, cy = 0;
-  for (size_t i = 0, n = polygon.points.size(); i < n; ++i) {
-    const Point2& p = polygon.points[i];
-    const Point2& q = polygon.points[(i + 1) % n];
-    const double c = p.x() * q.y() - q.x() * p.y();
-    a += c, cx += (p.x() + q.x()) * c, cy += (p.y() + q.y()) * c;
-  }
-  return std::abs(a) > 0 ? Point2(cx / (3 * a), cy / (3 * a)) : polygon.points[0];
 }
 
 }  // namespace
@@ -79,8 +58,7 @@ std::string layout_svg(const Layout& layout, const NestInstance& instance) {
   height += pad * (panels.size() + 1) + header + footer;
   std::ostringstream svg;
   svg.precision(10);
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " << width + 2 * pad << ' ' << height
-      << "\" width=\"1200\" font-family=\"sans-serif\">\n";
+  svg << svg_document_start({0.0, 0.0, width + 2 * pad, height}, 1200, "font-family=\"sans-serif\"");
   svg << "<defs><pattern id=\"defect\" width=\"" << text_size << "\" height=\"" << text_size
       << "\" patternUnits=\"userSpaceOnUse\" patternTransform=\"rotate(45)\"><rect width=\"" << text_size << "\" height=\""
       << text_size << "\" fill=\"#f4c7c3\"/><line x1=\"0\" y1=\"0\" x2=\"0\" y2=\"" << text_size
@@ -96,7 +74,7 @@ std::string layout_svg(const Layout& layout, const NestInstance& instance) {
   } else {
     line += ", " + std::to_string(used_bin_count(layout)) + " hide(s)";
   }
-  svg << "<text x=\"" << pad << "\" y=\"" << 2 * text_size << "\" font-size=\"" << 1.3 * text_size << "\">" << escape(line) << "</text>\n";
+  svg << "<text x=\"" << pad << "\" y=\"" << 2 * text_size << "\" font-size=\"" << 1.3 * text_size << "\">" << xml_escaped(line) << "</text>\n";
   double top = header + pad;
   const double stroke = 0.0015 * width;
   for (const Panel& panel : panels) {
@@ -131,10 +109,10 @@ std::string layout_svg(const Layout& layout, const NestInstance& instance) {
     for (const Placement& p : layout.placements) {
       if (p.bin != panel.bin || p.copy != panel.copy) continue;
       const NestItem& item = find_item(instance, p.item);
-      const Point2 c = centroid(placed_shape(item, p));
+      const Point2 c = area_centroid(placed_shape(item, p));
       const std::string label = item.label.empty() ? std::to_string(item.id) : item.label;
       svg << "<text x=\"" << pad - panel.frame.x0 + c.x() << "\" y=\"" << top + panel.frame.y1 - c.y() << "\" font-size=\"" << text_size
-          << "\" text-anchor=\"middle\" dominant-baseline=\"middle\" fill=\"#17202a\">" << escape(label) << (p.mirrored ? " (m)" : "") << "</text>\n";
+          << "\" text-anchor=\"middle\" dominant-baseline=\"middle\" fill=\"#17202a\">" << xml_escaped(label) << (p.mirrored ? " (m)" : "") << "</text>\n";
     }
     if (panel.bin >= 0)
       svg << "<text x=\"" << pad << "\" y=\"" << top + text_size << "\" font-size=\"" << text_size << "\" fill=\"#6b4f2a\">hide "
@@ -144,9 +122,9 @@ std::string layout_svg(const Layout& layout, const NestInstance& instance) {
   for (const Unplaced& u : layout.unplaced) {
     top += 1.5 * text_size;
     svg << "<text x=\"" << pad << "\" y=\"" << top << "\" font-size=\"" << text_size << "\" fill=\"#c0392b\">NOT PLACED: item " << u.item << " x"
-        << u.count << ": " << escape(u.reason) << "</text>\n";
+        << u.count << ": " << xml_escaped(u.reason) << "</text>\n";
   }
-  svg << "</svg>\n";
+  svg << kSvgDocumentEnd;
   return svg.str();
 }
 

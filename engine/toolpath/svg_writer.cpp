@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "engine/core/svg_document.hpp"
+
 namespace lastcut {
 namespace {
 
@@ -21,18 +23,6 @@ std::string path_data(const std::vector<Point2>& points_mm, bool closed) {
   return closed ? data + " Z" : data;
 }
 
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
-  }
-  return out;
-}
-
 }  // namespace
 
 std::string write_svg(const CutProgram& program) {
@@ -47,10 +37,7 @@ std::string write_svg(const CutProgram& program) {
   const double width_mm = high.x() - low.x() + 2 * margin_mm;
   const double height_mm = high.y() - low.y() + 2 * margin_mm;
   std::ostringstream svg;
-  svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << fixed(width_mm) << "mm\" height=\""
-      << fixed(height_mm) << "mm\" viewBox=\"" << fixed(low.x() - margin_mm) << " " << fixed(-high.y() - margin_mm)
-      << " " << fixed(width_mm) << " " << fixed(height_mm) << "\">\n"
+  svg << svg_document_start({low.x() - margin_mm, -high.y() - margin_mm, width_mm, height_mm})
       << "<title>lastcut cut program: " << program.pieces.size() << " pieces</title>\n"
       << "<g transform=\"scale(1,-1)\" fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
   svg << "<rect x=\"0\" y=\"0\" width=\"" << fixed(program.work_area_x_mm) << "\" height=\""
@@ -66,7 +53,7 @@ std::string write_svg(const CutProgram& program) {
   for (size_t i = 0; i < program.pieces.size(); ++i) {
     const ProgramPiece& piece = program.pieces[i];
     svg << "<path d=\"" << path_data(piece.outline_mm.points, true) << "\"><title>" << i + 1 << ": item "
-        << piece.item_id << " " << escaped(piece.label) << "</title></path>\n";
+        << piece.item_id << " " << xml_escaped(piece.label) << "</title></path>\n";
   }
   svg << "</g>\n<g id=\"mark\" stroke=\"#d00000\" stroke-width=\"0.4\">\n";
   for (const Stroke& stroke : program.tip_strokes) {
@@ -81,7 +68,7 @@ std::string write_svg(const CutProgram& program) {
     const Point2& start = piece.outline_mm.points.front();
     svg << "<circle cx=\"" << fixed(start.x()) << "\" cy=\"" << fixed(start.y()) << "\" r=\"1\"/>\n";
   }
-  svg << "</g>\n</g>\n</svg>\n";
+  svg << "</g>\n</g>\n" << kSvgDocumentEnd;
   return svg.str();
 }
 
