@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "engine/core/engine_error.hpp"
+#include "engine/mesh/ply_records.hpp"
+#include "engine/mesh/text_tokens.hpp"
 
 namespace lastcut {
 namespace {
@@ -100,15 +102,29 @@ long long check_ascii_stl(const std::filesystem::path& path, int max_triangles) 
   return facets;
 }
 
-MeshFileFacts check_stl(const std::filesystem::path& path, std::uintmax_t size, int max_triangles) {
+// "truncated PLY scan.ply: 120 of 120 vertices, 80 of 236 faces"
+EngineError truncated_error(const char* format_name, const std::filesystem::path& path, const MeshFileFacts& facts,
+                            long long vertices_read, long long faces_read) {
+  return EngineError(std::string("truncated ") + format_name + " " + path.filename().string() + ": " +
+                     std::to_string(vertices_read) + " of " + std::to_string(facts.declared_vertices) + " vertices, " +
+                     std::to_string(faces_read) + " of " + std::to_string(facts.declared_faces) + " faces");
+}
+
+MeshFileFacts facts_of(MeshFileFormat format) {
+  static constexpr const char* kNames[] = {"binary STL", "ASCII STL", "OBJ", "PLY", "OFF"};
   MeshFileFacts facts;
+  facts.format = format;
+  facts.format_name = kNames[static_cast<int>(format)];
+  return facts;
+}
+
+MeshFileFacts check_stl(const std::filesystem::path& path, std::uintmax_t size, int max_triangles) {
   const std::string prefix = read_prefix(path, 84);
   if (size >= 84) {
     std::uint32_t count = 0;
     std::memcpy(&count, prefix.data() + 80, 4);
     if (size == 84 + 50ull * count) {
-      facts.format = MeshFileFormat::BinaryStl;
-      facts.format_name = "binary STL";
+      MeshFileFacts facts = facts_of(MeshFileFormat::BinaryStl);
       facts.declared_faces = count;
       if (count == 0) throw EngineError("no triangles in binary STL " + path.filename().string());
       check_cap(count, max_triangles, path);
@@ -127,16 +143,13 @@ MeshFileFacts check_stl(const std::filesystem::path& path, std::uintmax_t size, 
     throw EngineError("truncated binary STL " + path.filename().string() + ": " + std::to_string(size) +
                       " bytes, the header alone is 84");
   }
-  facts.format = MeshFileFormat::AsciiStl;
-  facts.format_name = "ASCII STL";
+  MeshFileFacts facts = facts_of(MeshFileFormat::AsciiStl);
   facts.declared_faces = check_ascii_stl(path, max_triangles);
   return facts;
 }
 
 MeshFileFacts check_obj(const std::filesystem::path& path, int max_triangles) {
-  MeshFileFacts facts;
-  facts.format = MeshFileFormat::Obj;
-  facts.format_name = "OBJ";
+  MeshFileFacts facts = facts_of(MeshFileFormat::Obj);
   std::ifstream in(path, std::ios::binary);
   std::string line;
   long long faces = 0, vertices = 0;
@@ -152,31 +165,23 @@ MeshFileFacts check_obj(const std::filesystem::path& path, int max_triangles) {
 }
 
 MeshFileFacts check_ply(const std::filesystem::path& path, int max_triangles) {
-  MeshFileFacts facts;
-  facts.format = MeshFileFormat::Ply;
-  facts.format_name = "PLY";
-  std::ifstream in(path, std::ios::binary);
-  std::string line;
-  if (!std::getline(in, line) || lower(line).rfind("ply", 0) != 0)
-    throw EngineError("not a PLY file: " + path.filename().string() + " does not start with 'ply'");
-  bool ended = false;
-  for (int lines = 0; lines < 1000 && std::getline(in, line); ++lines) {
-    std::istringstream words(line);
-    std::string keyword, element;
-    long long count = -1;
-    words >> keyword;
-    if (keyword == "end_header") {
-      ended = true;
-      break;
-    }
-    if (keyword == "element" && words >> element >> count) {
-      if (element == "face") facts.declared_faces = count;
-      if (element == "vertex") facts.declared_vertices = count;
-    }
+  MeshFileFacts facts = facts_of(MeshFileFormat::Ply);
+  const PlyHeader header = read_ply_header(path);
+  for (const PlyElement& element : header.elements) {
+    if (element.name == "face") facts.declared_faces = element.declared_count;
+    if (element.name == "vertex") facts.declared_vertices = element.declared_count;
   }
-  if (!ended) throw EngineError("unreadable PLY header in " + path.filename().string() + " (no end_header)");
   if (facts.declared_faces <= 0) throw EngineError("no faces in PLY " + path.filename().string());
   check_cap(facts.declared_faces, max_triangles, path);
+  const std::vector<long long> records = count_ply_records(read_all(path), header);
+  long long vertices = 0, faces = 0;
+  bool complete = true;
+  for (size_t e = 0; e < header.elements.size(); ++e) {
+    complete = complete && records[e] == header.elements[e].declared_count;
+    if (header.elements[e].name == "vertex") vertices = records[e];
+    if (header.elements[e].name == "face") faces = records[e];
+  }
+  if (!complete) throw truncated_error("PLY", path, facts, vertices, faces);
   return facts;
 }
 
@@ -184,47 +189,28 @@ MeshFileFacts check_ply(const std::filesystem::path& path, int max_triangles) {
 // coordinates), reading the whole file at once: line-by-line streams are far too slow here.
 void check_off_records(const std::filesystem::path& path, const MeshFileFacts& facts) {
   const std::string text = read_all(path);
-  const char* cursor = text.c_str();
-  const char* const end = cursor + text.size();
-  auto next_token = [&]() -> std::pair<const char*, const char*> {
-    while (cursor < end) {
-      if (*cursor == '#') {
-        while (cursor < end && *cursor != '\n') ++cursor;
-      } else if (std::isspace(static_cast<unsigned char>(*cursor))) {
-        ++cursor;
-      } else {
-        break;
-      }
-    }
-    const char* start = cursor;
-    while (cursor < end && !std::isspace(static_cast<unsigned char>(*cursor))) ++cursor;
-    return {start, cursor};
-  };
+  TextTokens tokens(text, true);
   // Keyword and the three counts.
-  for (int k = 0; k < 4; ++k) next_token();
-  long long values_needed = 3 * facts.declared_vertices, values = 0;
-  while (values < values_needed && next_token().first != cursor) ++values;
+  for (int k = 0; k < 4; ++k) tokens.next();
+  const long long values_needed = 3 * facts.declared_vertices;
+  long long values = 0;
+  while (values < values_needed && !tokens.next().empty()) ++values;
   long long faces = 0;
   for (; faces < facts.declared_faces; ++faces) {
-    const auto [start, stop] = next_token();
-    if (start == stop) break;
-    const long long corners = std::strtoll(start, nullptr, 10);
+    const std::string_view corners_text = tokens.next();
+    if (corners_text.empty()) break;
+    const long long corners = std::strtoll(std::string(corners_text).c_str(), nullptr, 10);
     long long read = 0;
-    while (read < corners && next_token().first != cursor) ++read;
+    while (read < corners && !tokens.next().empty()) ++read;
     if (read < corners) break;
-    // Optional per-face colour values run to the end of the line.
-    while (cursor < end && *cursor != '\n') ++cursor;
+    tokens.skip_line();  // optional per-face colour values
   }
   if (values < values_needed || faces < facts.declared_faces)
-    throw EngineError("truncated OFF " + path.filename().string() + ": " + std::to_string(values / 3) + " of " +
-                      std::to_string(facts.declared_vertices) + " vertices, " + std::to_string(faces) + " of " +
-                      std::to_string(facts.declared_faces) + " faces");
+    throw truncated_error("OFF", path, facts, values / 3, faces);
 }
 
 MeshFileFacts check_off(const std::filesystem::path& path, int max_triangles) {
-  MeshFileFacts facts;
-  facts.format = MeshFileFormat::Off;
-  facts.format_name = "OFF";
+  MeshFileFacts facts = facts_of(MeshFileFormat::Off);
   std::ifstream in(path, std::ios::binary);
   std::string keyword;
   if (!(in >> keyword) || keyword.find("OFF") == std::string::npos)

@@ -116,6 +116,46 @@ TEST(MeshBadInput, TruncatedOff) {
   expect_refusal([&] { read_mesh(dir / "box.off"); }, "box.off");
 }
 
+// OpenMesh reads a short PLY without complaint; intake must name what is missing.
+TEST(MeshBadInput, TruncatedBinaryPly) {
+  test::TempDir dir("truncated-binary-ply");
+  const TriMesh box = small_box();
+  const std::string vertices = std::to_string(box.V.rows());
+  write_mesh(dir / "box.ply", box);
+  const auto full = std::filesystem::file_size(dir / "box.ply");
+  const auto face_record_bytes = 1 + 3 * 4;  // uchar count, three int indices
+  std::filesystem::resize_file(dir / "box.ply", full - 50 * face_record_bytes - 5);
+  expect_refusal([&] { read_mesh(dir / "box.ply"); },
+                 "truncated PLY box.ply: " + vertices + " of " + vertices + " vertices, 141 of 192 faces");
+  // Cut inside the vertices: 10 whole vertices (3 floats each) and a part of the eleventh.
+  const auto body = full - 192 * face_record_bytes - box.V.rows() * 12;
+  std::filesystem::resize_file(dir / "box.ply", body + 10 * 12 + 7);
+  expect_refusal([&] { read_mesh(dir / "box.ply"); }, "truncated PLY box.ply: 10 of " + vertices + " vertices, 0 of 192 faces");
+  std::filesystem::resize_file(dir / "box.ply", body);
+  expect_refusal([&] { read_mesh(dir / "box.ply"); }, "truncated PLY box.ply: 0 of " + vertices + " vertices");
+}
+
+TEST(MeshBadInput, TruncatedAsciiPly) {
+  test::TempDir dir("truncated-ascii-ply");
+  const TriMesh box = small_box();
+  test::write_ascii_ply_raw(dir / "box.ply", box);
+  EXPECT_EQ(read_mesh(dir / "box.ply").mesh.triangle_count(), 192);  // the whole file is good
+  const auto full = std::filesystem::file_size(dir / "box.ply");
+  std::filesystem::resize_file(dir / "box.ply", full - 3);  // the last face loses its last index
+  expect_refusal([&] { read_mesh(dir / "box.ply"); }, "191 of 192 faces");
+  std::filesystem::resize_file(dir / "box.ply", full / 3);
+  expect_refusal([&] { read_mesh(dir / "box.ply"); }, "truncated PLY box.ply: ");
+}
+
+TEST(MeshBadInput, PlyHeaderWithUnknownTypeOrFormat) {
+  test::TempDir dir("ply-header");
+  test::write_text(dir / "type.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float128 x\n"
+                                      "element face 1\nproperty list uchar int vertex_indices\nend_header\n");
+  expect_refusal([&] { read_mesh(dir / "type.ply"); }, "unknown property type 'float128'");
+  test::write_text(dir / "format.ply", "ply\nformat binary_middle_endian 1.0\nelement face 1\nend_header\n");
+  expect_refusal([&] { read_mesh(dir / "format.ply"); }, "unknown format 'binary_middle_endian'");
+}
+
 TEST(MeshBadInput, NonManifoldMessIsRefused) {
   // Triangles fanned around shared edges: every edge carries three or more faces.
   test::TempDir dir("mess");

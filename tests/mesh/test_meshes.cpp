@@ -97,6 +97,17 @@ void write_ascii_stl_raw(const std::filesystem::path& path, const TriMesh& mesh)
   out << "endsolid test\n";
 }
 
+void write_ascii_ply_raw(const std::filesystem::path& path, const TriMesh& mesh) {
+  std::ofstream out(path);
+  out.precision(9);
+  out << "ply\nformat ascii 1.0\ncomment test\nelement vertex " << mesh.V.rows()
+      << "\nproperty float x\nproperty float y\nproperty float z\nelement face " << mesh.F.rows()
+      << "\nproperty list uchar int vertex_indices\nend_header\n";
+  for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) out << mesh.V(v, 0) << ' ' << mesh.V(v, 1) << ' ' << mesh.V(v, 2) << '\n';
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) out << "3 " << mesh.F(f, 0) << ' ' << mesh.F(f, 1) << ' ' << mesh.F(f, 2) << '\n';
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
 void write_binary_stl_raw(const std::filesystem::path& path, const TriMesh& mesh, long claimed_triangles) {
   std::ofstream out(path, std::ios::binary);
   char header[80] = "test binary STL";

@@ -30,6 +30,8 @@ void write_text(const std::filesystem::path& path, const std::string& text);
 void write_obj_raw(const std::filesystem::path& path, const Eigen::MatrixXd& V, const Eigen::MatrixXi& F);
 // ASCII STL (one facet per triangle).
 void write_ascii_stl_raw(const std::filesystem::path& path, const TriMesh& mesh);
+// ASCII PLY ("format ascii 1.0"): float x y z per vertex, a "3 a b c" list per face.
+void write_ascii_ply_raw(const std::filesystem::path& path, const TriMesh& mesh);
 // Binary STL whose header claims `claimed_triangles` (defaults to the real count).
 void write_binary_stl_raw(const std::filesystem::path& path, const TriMesh& mesh, long claimed_triangles = -1);
 

@@ -1,0 +1,162 @@
+#include "engine/mesh/ply_records.hpp"
+
+#include <charconv>
+#include <cstdint>
+#include <fstream>
+#include <sstream>
+
+#include "engine/core/engine_error.hpp"
+#include "engine/mesh/text_tokens.hpp"
+
+namespace lastcut {
+namespace {
+
+// Size in bytes of a PLY scalar type (both the 1.0 names and the sized ones); 0 when unknown.
+int scalar_size(const std::string& type) {
+  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+  if (type == "int" || type == "uint" || type == "int32" || type == "uint32" || type == "float" || type == "float32")
+    return 4;
+  if (type == "double" || type == "float64") return 8;
+  return 0;
+}
+
+// A list length of `size` bytes at `at`, in the file's byte order. Lengths are small unsigned
+// numbers in practice (uchar, int); a negative signed int reads as a huge count, which then
+// cannot fit in the rest of the file and counts as the record where the file breaks.
+std::uint64_t read_count(const std::string& bytes, size_t at, int size, bool big_endian) {
+  std::uint64_t value = 0;
+  for (int k = 0; k < size; ++k) {
+    const auto byte = static_cast<unsigned char>(bytes[at + static_cast<size_t>(big_endian ? k : size - 1 - k)]);
+    value = (value << 8) | byte;
+  }
+  return value;
+}
+
+// Complete binary records of `element` from `offset` on (advanced past them).
+long long count_binary(const std::string& bytes, const PlyElement& element, bool big_endian, size_t& offset) {
+  bool fixed_size = true;
+  size_t record_bytes = 0;
+  for (const PlyProperty& property : element.properties) {
+    fixed_size = fixed_size && !property.is_list;
+    record_bytes += static_cast<size_t>(property.size_bytes);
+  }
+  const size_t available = bytes.size() - offset;
+  if (fixed_size) {
+    const auto whole = record_bytes == 0 ? element.declared_count
+                                         : static_cast<long long>(available / record_bytes);
+    const long long records = std::min(element.declared_count, whole);
+    offset += static_cast<size_t>(records) * record_bytes;
+    return records;
+  }
+  for (long long record = 0; record < element.declared_count; ++record) {
+    size_t at = offset;
+    for (const PlyProperty& property : element.properties) {
+      if (!property.is_list) {
+        at += static_cast<size_t>(property.size_bytes);
+        continue;
+      }
+      if (at + static_cast<size_t>(property.count_size_bytes) > bytes.size()) return record;
+      const std::uint64_t items = read_count(bytes, at, property.count_size_bytes, big_endian);
+      at += static_cast<size_t>(property.count_size_bytes);
+      if (items > (bytes.size() - at) / static_cast<size_t>(property.size_bytes)) return record;
+      at += static_cast<size_t>(items) * static_cast<size_t>(property.size_bytes);
+    }
+    if (at > bytes.size()) return record;
+    offset = at;
+  }
+  return element.declared_count;
+}
+
+// Complete ASCII records of `element`: one token per scalar, a length and that many items per list.
+long long count_ascii(TextTokens& tokens, const PlyElement& element) {
+  for (long long record = 0; record < element.declared_count; ++record) {
+    for (const PlyProperty& property : element.properties) {
+      const std::string_view token = tokens.next();
+      if (token.empty()) return record;
+      if (!property.is_list) continue;
+      long long items = 0;
+      const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), items);
+      if (error != std::errc() || items < 0) return record;
+      for (long long item = 0; item < items; ++item)
+        if (tokens.next().empty()) return record;
+    }
+  }
+  return element.declared_count;
+}
+
+}  // namespace
+
+PlyHeader read_ply_header(const std::filesystem::path& path) {
+  const std::string name = path.filename().string();
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  if (!std::getline(in, line) || !(line.rfind("ply", 0) == 0 || line.rfind("PLY", 0) == 0))
+    throw EngineError("not a PLY file: " + name + " does not start with 'ply'");
+  PlyHeader header;
+  bool has_format = false;
+  for (int lines = 0; lines < 1000 && std::getline(in, line); ++lines) {
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if (keyword == "end_header") {
+      if (!has_format) throw EngineError("unreadable PLY header in " + name + " (no format line)");
+      header.body_offset = static_cast<size_t>(in.tellg());
+      return header;
+    }
+    if (keyword == "format") {
+      std::string format;
+      words >> format;
+      if (format == "ascii") header.encoding = PlyEncoding::Ascii;
+      else if (format == "binary_little_endian") header.encoding = PlyEncoding::BinaryLittleEndian;
+      else if (format == "binary_big_endian") header.encoding = PlyEncoding::BinaryBigEndian;
+      else throw EngineError("unreadable PLY header in " + name + ": unknown format '" + format + "'");
+      has_format = true;
+    } else if (keyword == "element") {
+      PlyElement element;
+      if (!(words >> element.name >> element.declared_count) || element.declared_count < 0)
+        throw EngineError("unreadable PLY header in " + name + ": element without a count");
+      header.elements.push_back(std::move(element));
+    } else if (keyword == "property") {
+      if (header.elements.empty()) throw EngineError("unreadable PLY header in " + name + ": property before any element");
+      PlyProperty property;
+      std::string type, count_type, item_type;
+      words >> type;
+      if (type == "list") {
+        words >> count_type >> item_type;
+        property.is_list = true;
+        property.count_size_bytes = scalar_size(count_type);
+        property.size_bytes = scalar_size(item_type);
+        if (property.count_size_bytes == 0 || property.count_size_bytes == 8) type = count_type;
+        else if (property.size_bytes == 0) type = item_type;
+      } else {
+        property.size_bytes = scalar_size(type);
+      }
+      if (property.size_bytes == 0 || property.count_size_bytes == 8 || (property.is_list && property.count_size_bytes == 0))
+        throw EngineError("unreadable PLY header in " + name + ": unknown property type '" + type + "'");
+      header.elements.back().properties.push_back(property);
+    }
+  }
+  throw EngineError("unreadable PLY header in " + name + " (no end_header)");
+}
+
+std::vector<long long> count_ply_records(const std::string& file_bytes, const PlyHeader& header) {
+  std::vector<long long> counts;
+  size_t offset = std::min(header.body_offset, file_bytes.size());
+  TextTokens tokens(file_bytes, false);
+  tokens.seek(offset);
+  bool short_element_seen = false;
+  for (const PlyElement& element : header.elements) {
+    long long records = 0;
+    if (!short_element_seen) {
+      records = header.encoding == PlyEncoding::Ascii
+                    ? count_ascii(tokens, element)
+                    : count_binary(file_bytes, element, header.encoding == PlyEncoding::BinaryBigEndian, offset);
+    }
+    short_element_seen = short_element_seen || records < element.declared_count;
+    counts.push_back(records);
+  }
+  return counts;
+}
+
+}  // namespace lastcut
