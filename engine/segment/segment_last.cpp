@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "engine/core/engine_error.hpp"
 #include "engine/mesh/fill_holes.hpp"
+#include "engine/segment/contour_fields.hpp"
 #include "engine/segment/level_set_cut.hpp"
 #include "engine/segment/mesh_graph.hpp"
 #include "engine/segment/region_contour.hpp"
@@ -22,6 +24,8 @@ constexpr double kNormalSmoothingPasses = 3.0;
 constexpr double kNormalReferenceEdgeMm = 3.0;
 constexpr double kSnapFraction = 0.1;      // crossings within 10 % of an edge end snap to the vertex
 constexpr double kReferenceEdgeMm = 2.0;   // smoothing_passes are counted on a mesh with edges this long
+constexpr double kGeometricSmoothingPasses = 5.0;   // on the height and depth fields, against scanner noise
+constexpr double kMaxFitRmsMm = 0.8;       // a sole or top cut fitted worse than this is not used
 
 std::string fixed(double value, int decimals) {
   std::ostringstream out;
@@ -46,8 +50,9 @@ double region_area(const std::vector<char>& region, const Eigen::VectorXd& areas
 }
 
 // The region's indicator (share of each vertex's surrounding area inside the region) after the
-// moving average of eq. 22 on the mesh graph, minus 1/2: its zero level set is the region
-// boundary smoothed at the scale of a few edges, lying exactly on the surface.
+// moving average of eq. 22, minus 1/2: its zero level set is the region boundary smoothed at the
+// scale of a few edges, lying exactly on the surface. Used where the geometric fields
+// (contour_fields.hpp) do not apply.
 Eigen::VectorXd smoothed_indicator(const TriMesh& mesh, const std::vector<char>& region,
                                    const Eigen::VectorXd& areas, double passes) {
   const Eigen::Index vertex_count = mesh.V.rows();
@@ -57,23 +62,8 @@ Eigen::VectorXd smoothed_indicator(const TriMesh& mesh, const std::vector<char>&
       total(mesh.F(f, k)) += areas(f);
       if (region[static_cast<std::size_t>(f)]) inside(mesh.F(f, k)) += areas(f);
     }
-  Eigen::VectorXd value = (total.array() > 0.0).select(inside.array() / total.array(), 0.0);
-  // Each pass averages vertices to faces and faces back to vertices weighted by area: unlike a
-  // uniform neighbour mean, this does not lean towards where the mesh has more or smaller
-  // triangles. A fractional last pass moves only that share of the way, so the smoothing distance
-  // in mm changes continuously with the edge length instead of in whole-pass jumps.
-  Eigen::VectorXd face_value(mesh.F.rows()), next(vertex_count);
-  for (int pass = 0; pass < static_cast<int>(std::ceil(passes)); ++pass) {
-    const double share = std::min(1.0, passes - pass);
-    next.setZero();
-    for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-      const double mean = (value(mesh.F(f, 0)) + value(mesh.F(f, 1)) + value(mesh.F(f, 2))) / 3.0;
-      for (int k = 0; k < 3; ++k) next(mesh.F(f, k)) += areas(f) * mean;
-    }
-    for (Eigen::Index v = 0; v < vertex_count; ++v)
-      if (total(v) > 0.0) value(v) += share * (next(v) / total(v) - value(v));
-  }
-  return value.array() - 0.5;
+  const Eigen::VectorXd value = (total.array() > 0.0).select(inside.array() / total.array(), 0.0);
+  return smooth_vertex_field(mesh, areas, value, passes).array() - 0.5;
 }
 
 std::vector<Eigen::Vector3d> loop_points(const TriMesh& mesh, const std::vector<int>& loop) {
@@ -89,6 +79,8 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
   if (!(options.sole_angle_rad < 0.0 && options.top_angle_rad > 0.0))
     throw EngineError("segmentation angles must be negative for the sole and positive for the top");
   if (options.smoothing_passes < 0) throw EngineError("segmentation smoothing passes must not be negative");
+  if (!(options.feather_height_mm > 0.0 && options.rim_depth_mm > 0.0))
+    throw EngineError("the feather line height and the top rim depth must be positive (mm)");
   Segmentation result;
   TriMesh mesh = last.mesh;
   const int filled = fill_holes(mesh, options.max_hole_fill_diameter_mm);
@@ -116,8 +108,23 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
   // (diffusion spreads as sqrt(passes)).
   Eigen::MatrixXd fields = Eigen::MatrixXd::Zero(mesh.V.rows(), 3);
   const double field_passes = options.smoothing_passes * std::pow(kReferenceEdgeMm / edge_mm, 2);
-  fields.col(kSoleField) = smoothed_indicator(mesh, sole, areas, field_passes);
-  fields.col(kTopField) = smoothed_indicator(mesh, top, areas, field_passes);
+  // Where the fits hold, the curves are placed by the shape (a height above the sole, a depth
+  // below the top plane), lightly smoothed against scanner noise; else by the classification.
+  const double geometric_passes = kGeometricSmoothingPasses * std::pow(kReferenceEdgeMm / edge_mm, 2);
+  const std::optional<Eigen::VectorXd> sole_field =
+      sole_height_field(mesh, graph, sole, areas, options.feather_height_mm, kMaxFitRmsMm);
+  const std::optional<Eigen::VectorXd> top_field = top_plane_field(mesh, graph, top, areas, options.rim_depth_mm, kMaxFitRmsMm);
+  // Clamped to a ramp symmetric about the curve before the moving average: otherwise the steep
+  // drop of the height down the side walls would drag the averaged curve onto the flat part.
+  auto ramp = [&](const Eigen::VectorXd& field, double half_width_mm) {
+    return smooth_vertex_field(mesh, areas, field.cwiseMax(-half_width_mm).cwiseMin(half_width_mm), geometric_passes);
+  };
+  fields.col(kSoleField) = sole_field ? ramp(*sole_field, options.feather_height_mm)
+                                      : smoothed_indicator(mesh, sole, areas, field_passes);
+  fields.col(kTopField) = top_field ? ramp(*top_field, options.rim_depth_mm)
+                                    : smoothed_indicator(mesh, top, areas, field_passes);
+  if (!sole_field) result.notes.push_back("the sole is not a smooth surface: feather line from the normal angle");
+  if (!top_field) result.notes.push_back("the top cut is not flat: top rim from the normal angle");
   for (int column : {kSoleField, kTopField}) cut_along_zero_level(mesh, fields, column, kSnapFraction);
 
   // Step 3: the split plane from those smooth curves (not from the staircase of mesh edges, whose

@@ -5,9 +5,13 @@
 //  1. small scan holes are closed (engine/mesh/fill_holes.hpp);
 //  2. faces are classified by normal elevation into sole, sides and top, and the sole and the flat
 //     top cut become one connected region each (surface_regions.hpp);
-//  3. the mesh is cut along the feather line and the top rim: the 1/2 level sets of the sole and top
-//     indicator functions after the eq. 22 moving average (area-weighted, over a fixed distance in
-//     mm) (level_set_cut.hpp), so mold edges are smooth curves, not staircases;
+//  3. the mesh is cut along the feather line and the top rim (level_set_cut.hpp), so mold edges are
+//     smooth curves, not staircases. The classification of step 2 alone places them where the
+//     normal crosses +-45 degrees, which in the arch is reached so gradually that noise and sampling
+//     moved the curve by millimetres; so the sole surface and the top plane are fitted to the
+//     classified regions and the curves run at a fixed height above the sole and depth below the
+//     top plane (contour_fields.hpp). Where a fit fails (not a last: a foot's toes) the 1/2 level
+//     set of the region indicator after the eq. 22 moving average is used, as the thesis does;
 //  4. those two cut curves, traced with Dijkstra (region_contour.hpp), place the split plane through
 //     T1, T2, T3 as arc-length means (split_plane.hpp), and the mesh is cut along the plane.
 //     Every step is measured in mm, not in vertices, so a denser or coarser scan of the same last
@@ -30,6 +34,9 @@ struct SegmentOptions {
   double plane_t = 1.0 / 3.0;                     // where the toe and heel parts of the sole contour end (eqs. 14-15)
   int smoothing_passes = 10;                      // eq. 22 moving-average passes on a 2 mm edge mesh (scaled to the same mm on others)
   double max_hole_fill_diameter_mm = 15;          // larger scan holes are not closed
+  // Where the sole and the top cut fit smooth shapes, the curves are placed by height, not angle:
+  double feather_height_mm = 1.5;  // the feather line runs this high above the fitted sole surface
+  double rim_depth_mm = 1.0;       // the top rim runs this deep below the fitted top plane
 };
 
 struct Segment {
