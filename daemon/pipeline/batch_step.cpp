@@ -6,6 +6,7 @@
 #include <set>
 
 #include "daemon/pipeline/engine_steps.hpp"
+#include "daemon/pipeline/piece_label_text.hpp"
 #include "daemon/spool/durable_file.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/nest/nest_json.hpp"
@@ -33,7 +34,9 @@ std::vector<NestItem> job_items(const BatchJobInput& job, const MaterialConfig& 
   if (!in || json.is_discarded() || !json.contains("pieces")) throw EngineError("the molds file pieces.json is unreadable");
   std::vector<double> rotations;
   for (int angle = 0; angle < 360; angle += material.rotation_step_deg) rotations.push_back(angle);
-  const std::string who = job.ticket.order.empty() ? job.job_id.substr(job.job_id.size() - 6) : job.ticket.order;
+  // The foot is the scan's (the molds are its geometry); the sidecar's only when the scan's is unknown.
+  std::string scan_foot = json.value("side", "");
+  if (scan_foot.empty() && (job.ticket.side == "left" || job.ticket.side == "right")) scan_foot = job.ticket.side;
   const bool pair = job.ticket.side == "pair";
   std::vector<NestItem> items;
   for (const auto& piece : json.at("pieces")) {
@@ -53,10 +56,9 @@ std::vector<NestItem> job_items(const BatchJobInput& job, const MaterialConfig& 
       }
       item.demand = job.ticket.quantity;
       item.allowed_rotations_deg = rotations;
-      std::string side = json.value("side", "");
-      if (pair) side = mirror ? "mirror" : side;
-      item.label = who + (job.ticket.size.empty() ? "" : " " + job.ticket.size) + " " +
-                   piece.at("name").get<std::string>() + (side.empty() ? "" : " " + side.substr(0, 1));
+      // The mirrored copy of a pair is the same half of the other foot.
+      item.label = piece_label_text({job.ticket.order, job.scan_name, job.ticket.size,
+                                     mirror ? opposite_foot(scan_foot) : scan_foot, piece.at("name").get<std::string>()});
       items.push_back(std::move(item));
     }
   }

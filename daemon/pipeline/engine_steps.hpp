@@ -37,6 +37,7 @@ struct BatchJobInput {
   std::string job_id;
   std::filesystem::path job_dir;  // holds pieces.json
   JobTicket ticket;
+  std::string scan_name;          // names the pieces of a job without an order number
 };
 
 struct BatchOutcome {

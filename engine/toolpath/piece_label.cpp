@@ -37,6 +37,7 @@ bool box_fits(const Point2& center_mm, double width_mm, double height_mm, const 
 }  // namespace
 
 std::string piece_marking(int order, const std::string& item_label) {
+  if (item_label.starts_with('#')) return std::to_string(order) + " " + item_label;
   std::string size;
   std::string side;
   std::istringstream words(item_label);

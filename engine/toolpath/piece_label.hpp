@@ -1,6 +1,7 @@
 #pragma once
 // The short text drawn on each piece so the operator can sort the cut pieces: its place in the
-// cutting order, the size and L/R taken from the item label ("42 L medial" -> "3 42 L").
+// cutting order, the size and L/R taken from the item label ("42 L medial" -> "3 42 L"), or the
+// whole label when its writer made it ready to draw ("#4711 EU44 L med" -> "3 #4711 EU44 L med").
 // The text is placed where it fits: the box of the text must lie inside the outline with a
 // clearance; candidate centres are grid points ranked by their distance to the outline (the
 // roomiest first), and the letter height shrinks from height_mm down to min_height_mm.
@@ -12,8 +13,9 @@
 
 namespace lastcut {
 
-// "order size side": size is the first word of item_label holding a digit (its digits and
-// decimal point), side is L or R when a word of the label is L/R/LEFT/RIGHT (any case).
+// "order label" when item_label starts with '#' (the daemon's labels: order or scan, size, foot,
+// half). Otherwise "order size side": size is the first word of item_label holding a digit (its
+// digits and decimal point), side is L or R when a word of the label is L/R/LEFT/RIGHT (any case).
 std::string piece_marking(int order, const std::string& item_label);
 
 struct PlacedText {

@@ -102,6 +102,16 @@ TEST(DaemonEndToEnd, TenScansReachTheRightCutterExactlyOnce) {
     EXPECT_GT(report.at("batch").value("utilisation", 0.0), 0.0);
     EXPECT_TRUE(std::filesystem::exists(rig.spool() / "done" / id / "preview.svg"));
     EXPECT_TRUE(std::filesystem::exists(rig.spool() / "done" / id / "molds" / "report.json"));
+    // Each half is labelled with the scan's name, its foot and which half it is, in the layout
+    // and in the preview the operator checks before cutting.
+    const std::string foot = lasts[i].second == "left" ? " L " : " R ";
+    const std::string layout = read_text(rig.spool() / "done" / id / "layout.json");
+    const std::string preview = read_text(rig.spool() / "done" / id / "preview.svg");
+    for (const char* half : {"med", "lat"}) {
+      const std::string label = "#good-" + std::to_string(i) + foot + half;
+      EXPECT_NE(layout.find("\"" + label + "\""), std::string::npos) << label << " not in the layout of " << id;
+      EXPECT_NE(preview.find(" " + label + "</title>"), std::string::npos) << label << " not in the preview of " << id;
+    }
   }
   const std::string order = job_of(rig, "order-4711.stl");
   EXPECT_EQ(done.at(order).at("ticket").value("order", ""), "4711");
@@ -112,6 +122,10 @@ TEST(DaemonEndToEnd, TenScansReachTheRightCutterExactlyOnce) {
   EXPECT_FALSE(std::filesystem::exists(rig.spool() / "done" / duplicate / "cut.plt")) << "the duplicate is not cut";
   EXPECT_FALSE(std::filesystem::exists(rig.spool() / "done" / duplicate / "cut.nc")) << "the duplicate is not cut";
   EXPECT_TRUE(std::filesystem::exists(rig.spool() / "done" / order / "order-4711.job.toml"));
+  // The order's pieces carry its number and size instead of the scan's name.
+  const std::string order_layout = read_text(rig.spool() / "done" / order / "layout.json");
+  EXPECT_NE(order_layout.find("\"#4711 EU44 L med\""), std::string::npos) << order_layout.substr(0, 2000);
+  EXPECT_NE(order_layout.find("\"#4711 EU44 L lat\""), std::string::npos);
 
   // The operator's log names the order and says where bad jobs went.
   const std::string log = read_text(rig.daemon_log());

@@ -101,6 +101,9 @@ TEST(ToolpathPieceLabel, TextFromTheItemLabelInsideThePiece) {
   EXPECT_EQ(piece_marking(3, "42 L medial"), "3 42 L");
   EXPECT_EQ(piece_marking(12, "strap EU41.5 right"), "12 41.5 R");
   EXPECT_EQ(piece_marking(1, ""), "1");
+  // Labels made ready to draw (the daemon's) are written whole after the order number.
+  EXPECT_EQ(piece_marking(4, "#4711 EU44 L med"), "4 #4711 EU44 L med");
+  EXPECT_EQ(piece_marking(11, "#mueller-anna R lat"), "11 #mueller-anna R lat");
   const NestInstance instance = shoe_instance();
   const Layout layout = shoe_layout();
   const auto pieces = placed_pieces(layout, instance, SheetRef{});
