@@ -8,10 +8,12 @@
 //   repeatability_bench --quick    the 3 pairs the scan test checks
 //   --no-noise, --no-pose, --same-density, --no-holes  drop one difference between the scans,
 //   to see which one moves the molds
+//   --feather-height MM, --rim-depth MM  segmentation options (engine/segment/segment_last.hpp)
 #include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <cmath>
 #include <filesystem>
@@ -102,7 +104,10 @@ std::pair<double, Eigen::Vector3d> boundary_gap_3d_mm(const lastcut::TriMesh& a,
 
 int main(int argc, char** argv) {
   bool quick = false, noise = true, pose = true, density = true, holes = true;
+  lastcut::ScanOptions options;
   for (int i = 1; i < argc; ++i) {
+    if (i + 1 < argc && std::strcmp(argv[i], "--feather-height") == 0) options.segment_options.feather_height_mm = std::atof(argv[++i]);
+    if (i + 1 < argc && std::strcmp(argv[i], "--rim-depth") == 0) options.segment_options.rim_depth_mm = std::atof(argv[++i]);
     quick |= std::strcmp(argv[i], "--quick") == 0;
     noise &= std::strcmp(argv[i], "--no-noise") != 0;
     pose &= std::strcmp(argv[i], "--no-pose") != 0;
@@ -135,8 +140,8 @@ int main(int argc, char** argv) {
     second.target_triangles = density ? 24000 : 16000;
     second.seed = pair.seed + 1;
     try {
-      const lastcut::ScanResult a = lastcut::scan_to_molds(write_scan(dir, "a", first), {});
-      const lastcut::ScanResult b = lastcut::scan_to_molds(write_scan(dir, "b", second), {});
+      const lastcut::ScanResult a = lastcut::scan_to_molds(write_scan(dir, "a", first), options);
+      const lastcut::ScanResult b = lastcut::scan_to_molds(write_scan(dir, "b", second), options);
       for (const auto* result : {&a, &b})
         for (const std::string& note : result->notes)
           if (note.find("normal angle") != std::string::npos) std::printf("note: %s\n", note.c_str());

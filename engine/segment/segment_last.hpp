@@ -36,7 +36,7 @@ struct SegmentOptions {
   double max_hole_fill_diameter_mm = 15;          // larger scan holes are not closed
   // Where the sole and the top cut fit smooth shapes, the curves are placed by height, not angle:
   double feather_height_mm = 1.5;  // the feather line runs this high above the fitted sole surface
-  double rim_depth_mm = 1.0;       // the top rim runs this deep below the fitted top plane
+  double rim_depth_mm = 1.25;      // the top rim runs this deep below the fitted top plane
 };
 
 struct Segment {

@@ -43,34 +43,44 @@ const SegmentResult& segment_named(const ScanResult& result, const std::string& 
   throw EngineError("no segment " + name);
 }
 
-// Target (issue 2): within 1 mm. NOT MET yet: measured 1.49 mm medial, 1.58 mm lateral, from the
-// feather line in the arch (normal-angle threshold reached gradually) and the back corner of the
-// top rim. Until segmentation finds those by geometry, this test holds the thesis's tolerance for a
-// mold corner (2 mm) so that a regression beyond it fails; the 1 mm figure is tracked in issue 2.
-TEST_F(ScanPipeline, TwoScansOfOneLastGiveTheSameMoldsWithinTheThesisCornerTolerance) {
-  LastParams first = LastParams::for_eu_size(42, FootSide::Left);
-  first.noise_mm = 0.2;
-  first.random_pose = true;
-  first.holes = 3;
-  first.target_triangles = 16000;
-  first.seed = 11;
-  LastParams second = first;
-  second.target_triangles = 24000;
-  second.seed = 12;
-  const ScanResult a = scan_to_molds(scan_of("first", first), {});
-  const ScanResult b = scan_to_molds(scan_of("second", second), {});
-  ASSERT_EQ(a.side, FootSide::Left);
-  ASSERT_EQ(b.side, FootSide::Left);
-  for (const std::string name : {"medial", "lateral"}) {
-    const Mold& mold_a = segment_named(a, name).mold;
-    const Mold& mold_b = segment_named(b, name).mold;
-    ASSERT_EQ(mold_a.marks.size(), 4u) << name;
-    const RigidTransform2 alignment = align_molds(mold_b, mold_a);
-    const double distance_mm = hausdorff_distance_mm(transformed(mold_b.outline, alignment), mold_a.outline);
-    RecordProperty(name + "_hausdorff_mm", std::to_string(distance_mm));
-    EXPECT_LT(distance_mm, 2.0) << name;
-    // Not trivially small either: the scans really differ.
-    EXPECT_GT(distance_mm, 0.01) << name;
+// Issue 2: two scans of one last (another pose, 0.2 mm noise with another seed, 16k against 24k
+// triangles, 3 holes) give molds whose outlines agree within 1 mm after rigid alignment, half the
+// thesis's 2 mm tolerance for a mold corner. Three lasts (sizes, both feet), not one lucky pair;
+// bench/segment/repeatability_bench measures 12 more pairs (docs/benchmarks-segment.md).
+struct RepeatCase {
+  int eu_size;
+  FootSide side;
+  std::uint64_t seed;
+};
+
+TEST_F(ScanPipeline, TwoScansOfOneLastGiveTheSameMoldsWithin1mm) {
+  for (const RepeatCase& c : {RepeatCase{42, FootSide::Left, 11}, RepeatCase{38, FootSide::Right, 21},
+                              RepeatCase{45, FootSide::Left, 31}}) {
+    SCOPED_TRACE("EU " + std::to_string(c.eu_size) + (c.side == FootSide::Left ? " left" : " right"));
+    LastParams first = LastParams::for_eu_size(c.eu_size, c.side);
+    first.noise_mm = 0.2;
+    first.random_pose = true;
+    first.holes = 3;
+    first.target_triangles = 16000;
+    first.seed = c.seed;
+    LastParams second = first;
+    second.target_triangles = 24000;
+    second.seed = c.seed + 1;
+    const ScanResult a = scan_to_molds(scan_of("first", first), {});
+    const ScanResult b = scan_to_molds(scan_of("second", second), {});
+    ASSERT_EQ(a.side, c.side);
+    ASSERT_EQ(b.side, c.side);
+    for (const std::string name : {"medial", "lateral"}) {
+      const Mold& mold_a = segment_named(a, name).mold;
+      const Mold& mold_b = segment_named(b, name).mold;
+      ASSERT_EQ(mold_a.marks.size(), 4u) << name;
+      const RigidTransform2 alignment = align_molds(mold_b, mold_a);
+      const double distance_mm = hausdorff_distance_mm(transformed(mold_b.outline, alignment), mold_a.outline);
+      RecordProperty("EU" + std::to_string(c.eu_size) + "_" + name + "_hausdorff_mm", std::to_string(distance_mm));
+      EXPECT_LT(distance_mm, 1.0) << name;
+      // Not trivially small either: the scans really differ.
+      EXPECT_GT(distance_mm, 0.01) << name;
+    }
   }
 }
 
