@@ -2,12 +2,14 @@
 #include "engine/flatten/flatten.hpp"
 
 #include <chrono>
+#include <optional>
 
 #include "engine/core/engine_error.hpp"
 #include "engine/flatten/arap_iterations.hpp"
 #include "engine/flatten/cotangent_laplacian.hpp"
 #include "engine/flatten/disk_topology.hpp"
 #include "engine/flatten/lscm.hpp"
+#include "engine/flatten/plane_rotation_start.hpp"
 #include "engine/flatten/tutte_embedding.hpp"
 #include "engine/flatten/untangle.hpp"
 
@@ -20,33 +22,49 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// The flip-free Tutte start map (tutte_embedding.hpp), on its own copy of the pattern and its own factor:
+// the ARAP factor stays intact. Costs one more factorization.
+Eigen::MatrixXd flip_free_start(const TriMesh& disk, const TriangleFrames& frames, const DiskTopology& topology,
+                                const ReducedLaplacian& arap_laplacian, const FlattenOptions& options,
+                                FlattenResult& result) {
+  ReducedLaplacian laplacian = arap_laplacian;
+  SparseCholesky factor(options.solver);
+  factor.analyze_pattern(laplacian.matrix);
+  ++result.factorizations;
+  return tutte_embedding(disk, frames, topology, laplacian, factor);
+}
+
 void run_arap(const TriMesh& disk, const TriangleFrames& frames, const DiskTopology& topology,
               const FlattenOptions& options, FlattenResult& result) {
   auto clock = Clock::now();
   ReducedLaplacian laplacian = build_reduced_pattern(frames, topology, topology.boundary_loop.front());
-  SparseCholesky factor(options.solver);
-  result.seconds_init += seconds_since(clock);
-
-  clock = Clock::now();
-  factor.analyze_pattern(laplacian.matrix);
-  result.seconds_factorize += seconds_since(clock);
-
-  // Start map: its own factorization (positive weights, boundary fixed) on the shared symbolic analysis.
-  clock = Clock::now();
-  Eigen::MatrixXd UV = tutte_embedding(disk, frames, topology, laplacian, factor);
-  ++result.factorizations;
-  result.seconds_init += seconds_since(clock);
-
-  clock = Clock::now();
   std::vector<char> fixed(disk.vertex_count(), 0);
   fixed[laplacian.pinned] = 1;
   assemble_laplacian(frames, frames.half_weight, fixed, laplacian);
+  SparseCholesky factor(options.solver);
+  result.seconds_init += seconds_since(clock);
+
+  // One factorization of the cotangent Laplacian serves the start map and every ARAP iteration.
+  clock = Clock::now();
+  factor.analyze_pattern(laplacian.matrix);
   factor.factorize(laplacian.matrix);
   ++result.factorizations;
   result.seconds_factorize += seconds_since(clock);
 
   clock = Clock::now();
-  const Eigen::MatrixXd start_map = UV;
+  // Flip-guarded ARAP keeps a flip-free start flip-free, so it starts from the Tutte map.
+  std::optional<Eigen::MatrixXd> start;
+  if (!options.flip_guard) start = plane_rotation_start(disk, frames, topology, laplacian, factor);
+  if (options.flip_guard) {
+    start = flip_free_start(disk, frames, topology, laplacian, options, result);
+  } else if (!start) {
+    result.notes.push_back("the half faces no one way (mean normal near zero): started from the Tutte embedding");
+    start = flip_free_start(disk, frames, topology, laplacian, options, result);
+  }
+  Eigen::MatrixXd UV = std::move(*start);
+  result.seconds_init += seconds_since(clock);
+
+  clock = Clock::now();
   const ArapIterationReport report = run_arap_iterations(frames, laplacian, factor, UV, options.max_iterations,
                                                          options.relative_energy_tolerance, options.flip_guard,
                                                          options.anderson_acceleration);
@@ -78,8 +96,8 @@ void run_arap(const TriMesh& disk, const TriangleFrames& frames, const DiskTopol
                              std::to_string(untangled.rings) + " rings, then " + std::to_string(polish.iterations) +
                              " flip-guarded ARAP iterations");
     } else {
-      // Fall back to the flip-free start map and flip-guarded ARAP from there.
-      UV = start_map;
+      // Fall back to the flip-free Tutte map and flip-guarded ARAP from there.
+      UV = flip_free_start(disk, frames, topology, laplacian, options, result);
       const ArapIterationReport guarded = run_arap_iterations(frames, laplacian, factor, UV, options.max_iterations,
                                                               options.relative_energy_tolerance, true);
       result.iterations += guarded.iterations;

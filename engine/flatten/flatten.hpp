@@ -5,11 +5,13 @@
 // Parameterization", SGP 2008, as used in M. Sabaliauskas' thesis (Vilnius University 2017, sections 2.2-2.4):
 // analytic 2x2 SVD in the local step, the Laplacian factored once by sparse Cholesky for the global step,
 // Anderson acceleration of the iteration (anderson_acceleration.hpp).
-// Start map: a flip-free convex-combination embedding (tutte_embedding.hpp). If ARAP folds triangles
-// (it can, where the surface is far from developable), they are untangled locally and polished with
-// flip-guarded steps (untangle.hpp); if that fails, flip-guarded ARAP restarts from the flip-free start map.
-// Either way FlattenResult::notes says what happened and flipped_triangles what is left (0 in every case
-// we have seen).
+// Start map: one global step of ARAP with every triangle turned onto the half's mean plane
+// (plane_rotation_start.hpp), solved with the Laplacian factor ARAP needs anyway, so a flattening costs
+// one sparse factorization. If ARAP folds triangles (it can, where the surface is far from developable),
+// they are untangled locally (untangle.hpp, star_untangle.hpp) and polished with flip-guarded steps; if
+// that fails, flip-guarded ARAP restarts from the flip-free Tutte embedding (tutte_embedding.hpp, one more
+// factorization). Either way FlattenResult::notes says what happened and flipped_triangles what is left
+// (0 in every case we have seen).
 // LSCM: B. Lévy, S. Petitjean, N. Ray, J. Maillot, SIGGRAPH 2002 (lscm.hpp), for comparison.
 //
 // Usage:
@@ -33,8 +35,9 @@ struct FlattenOptions {
   int max_iterations = 200;                  // ARAP local/global iterations at most
   double relative_energy_tolerance = 1e-6;   // stop when (E_prev - E) <= tol * E_prev
   SparseSolver solver = SparseSolver::Auto;
-  // Halve ARAP steps that would fold a triangle, from the start (slower, more distortion); by default
-  // ARAP runs free and the few folds it may leave are repaired afterwards (see FlattenResult::notes).
+  // Start from the flip-free Tutte map (one more factorization) and halve ARAP steps that would fold a
+  // triangle (slower, more distortion); by default ARAP runs free and the few folds it may leave are
+  // repaired afterwards (see FlattenResult::notes).
   bool flip_guard = false;
   // Anderson acceleration of the local/global iteration (Peng et al. 2018): same fixed point, fewer iterations.
   bool anderson_acceleration = true;
@@ -43,9 +46,9 @@ struct FlattenOptions {
 struct FlattenResult {
   Eigen::MatrixXd UV;              // #V x 2, mm, same vertex order as the input, centred on the vertex mean
   int iterations = 0;              // ARAP global steps
-  int factorizations = 0;          // numeric sparse Cholesky factorizations (symbolic analysis is shared)
-  double seconds_init = 0;         // checks, frames, pattern, start map (without its factorization)
-  double seconds_factorize = 0;    // symbolic analysis + every numeric factorization
+  int factorizations = 0;          // numeric sparse Cholesky factorizations: 1, +1 if the Tutte map was needed
+  double seconds_init = 0;         // checks, frames, pattern, start map (and the Tutte map if it was needed)
+  double seconds_factorize = 0;    // symbolic analysis + numeric factorization of the ARAP Laplacian
   double seconds_iterations = 0;   // ARAP local/global iterations
   double seconds_total = 0;
   int flipped_triangles = 0;       // after the repair/fallback below
