@@ -1,6 +1,8 @@
 // Inputs the segmentation must refuse with one readable line instead of returning nonsense.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "engine/core/engine_error.hpp"
 #include "engine/lastgen/generate_last.hpp"
 #include "engine/segment/segment_last.hpp"
@@ -51,6 +53,12 @@ TEST(SegmentBadInput, BadOptionsAreRefused) {
   options = {};
   options.plane_t = 0.7;
   EXPECT_NE(error_of(last, options), "");
+  options = {};
+  options.feather_height_mm = 0.0;
+  EXPECT_NE(error_of(last, options).find("feather line height"), std::string::npos) << error_of(last, options);
+  options = {};
+  options.rim_depth_mm = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(error_of(last, options).find("top rim depth"), std::string::npos) << error_of(last, options);
 }
 
 // A hole larger than the fill limit in a side wall leaves that half with two boundary loops: the
