@@ -194,10 +194,11 @@ std::optional<Eigen::VectorXd> sole_height_field(const TriMesh& mesh, const Mesh
   basis.x0 = low.x();
   basis.intervals = std::max(1, static_cast<int>(std::ceil((high.x() - low.x()) / kSoleKnotSpacingMm)));
   basis.knot_spacing_mm = (high.x() - low.x()) / basis.intervals;
-  auto residual_of = [&](const Eigen::VectorXd& coefficients) {
-    Eigen::VectorXd residual(mesh.V.rows());
+  // Residuals on the sole only while refitting (the rest is not used until the end).
+  auto residual_of = [&](const Eigen::VectorXd& coefficients, bool everywhere) {
+    Eigen::VectorXd residual = Eigen::VectorXd::Zero(mesh.V.rows());
     for (Eigen::Index v = 0; v < mesh.V.rows(); ++v)
-      residual(v) = mesh.V(v, 2) - basis(mesh.V(v, 0), mesh.V(v, 1)).dot(coefficients);
+      if (everywhere || region_weight(v) > 0.0) residual(v) = mesh.V(v, 2) - basis(mesh.V(v, 0), mesh.V(v, 1)).dot(coefficients);
     return residual;
   };
   // The region reaches up into the feather edge's rounding; each refit keeps the points near the
@@ -205,11 +206,11 @@ std::optional<Eigen::VectorXd> sole_height_field(const TriMesh& mesh, const Mesh
   Eigen::VectorXd coefficients = fit_height(mesh, basis, region_weight);
   Eigen::VectorXd weight = region_weight;
   for (double limit_mm : {2.0, 1.0, 0.6}) {
-    weight = inliers(region_weight, residual_of(coefficients), limit_mm);
+    weight = inliers(region_weight, residual_of(coefficients, false), limit_mm);
     if (weight.sum() < kMinInlierShare * region_weight.sum()) return std::nullopt;
     coefficients = fit_height(mesh, basis, weight);
   }
-  const Eigen::VectorXd residual = residual_of(coefficients);
+  const Eigen::VectorXd residual = residual_of(coefficients, true);
   if (weighted_rms(residual, weight) > max_rms_mm) return std::nullopt;
   Eigen::VectorXd field = height_mm - residual.array();
   keep_connected_to_region(graph, region_weight, field);
