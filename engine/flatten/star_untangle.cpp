@@ -58,9 +58,9 @@ double twice_area(const Eigen::MatrixXd& UV, const std::array<int, 3>& t) {
   return ax * by - ay * bx;
 }
 
-int count_flips(const TriangleFrames& frames, const Eigen::MatrixXd& UV) {
+int count_flips(const TriangleFrames& frames, const std::vector<int>& faces, const Eigen::MatrixXd& UV) {
   int flips = 0;
-  for (const auto& t : frames.triangles) flips += twice_area(UV, t) <= 0.0 ? 1 : 0;
+  for (int f : faces) flips += twice_area(UV, frames.triangles[f]) <= 0.0 ? 1 : 0;
   return flips;
 }
 
@@ -91,15 +91,23 @@ StarUntangleReport star_untangle(const TriangleFrames& frames, const DiskTopolog
     }
   }
 
-  std::vector<char> active(vertex_count, 0);
-  std::vector<int> region;
-  for (int f : flipped) {
-    for (int v : frames.triangles[f]) {
-      if (!active[v]) {
-        active[v] = 1;
-        region.push_back(v);
+  // Only the region's vertices move and every flipped triangle has one, so the flips can only change
+  // among the triangles around the region: those are the ones counted after each sweep.
+  std::vector<char> active(vertex_count, 0), touched(face_count, 0);
+  std::vector<int> region, region_faces;
+  const auto add_to_region = [&](int v) {
+    if (active[v]) return;
+    active[v] = 1;
+    region.push_back(v);
+    for (int s = star_offsets[v]; s < star_offsets[v + 1]; ++s) {
+      if (!touched[stars[s]]) {
+        touched[stars[s]] = 1;
+        region_faces.push_back(stars[s]);
       }
     }
+  };
+  for (int f : flipped) {
+    for (int v : frames.triangles[f]) add_to_region(v);
   }
   const Eigen::MatrixXd original = UV;
   std::vector<HalfPlane> planes;
@@ -109,11 +117,7 @@ StarUntangleReport star_untangle(const TriangleFrames& frames, const DiskTopolog
       const size_t inner = region.size();
       for (size_t i = 0; i < inner; ++i) {
         for (int k = topology.neighbor_offsets[region[i]]; k < topology.neighbor_offsets[region[i] + 1]; ++k) {
-          const int w = topology.neighbors[k];
-          if (!active[w]) {
-            active[w] = 1;
-            region.push_back(w);
-          }
+          add_to_region(topology.neighbors[k]);
         }
       }
       ++report.rings;
@@ -143,7 +147,7 @@ StarUntangleReport star_untangle(const TriangleFrames& frames, const DiskTopolog
       if (chebyshev_centre(planes, centre, margin)) UV.row(v) = centre.transpose();
     }
     report.sweeps = sweep + 1;
-    flips = count_flips(frames, UV);
+    flips = count_flips(frames, region_faces, UV);
   }
   report.moved_vertices = static_cast<int>(region.size());
   report.flipped_after = flips;

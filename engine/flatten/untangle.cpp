@@ -25,6 +25,9 @@ std::vector<int> flipped_triangles(const TriangleFrames& frames, const Eigen::Ma
 // Smallest half-edge weight of the shape-preserving placement (cot(89.4 deg) / 2): clamping the
 // cotangent weights keeps every weight positive, so each vertex lands inside the hull of its neighbours.
 constexpr double kMinimumHalfWeight = 0.01;
+// Star untangling after a regional placement: a few rings and sweeps around what is left folded.
+constexpr int kCleanupRings = 4;
+constexpr int kCleanupSweeps = 64;
 
 // Re-places the movable vertices (movable_index[v] >= 0) by a convex-combination embedding with every other
 // vertex held. Uniform weights (cotangent_weighted false) are Tutte's; clamped cotangent weights from the
@@ -174,6 +177,11 @@ UntangleReport regional_tutte(const TriangleFrames& frames, const DiskTopology& 
       report.rings = rings;
       report.moved_vertices = static_cast<int>(movable.size());
       report.flipped_after = static_cast<int>(flipped_triangles(frames, UV).size());
+      // What a concave stretch of the held ring leaves folded next to it is a few slivers: star untangling
+      // removes those.
+      if (report.flipped_after > 0) {
+        report.flipped_after = star_untangle(frames, topology, UV, kCleanupRings, kCleanupSweeps).flipped_after;
+      }
       if (report.flipped_after == 0) return report;
     }
   }
