@@ -99,8 +99,8 @@ bool rings_collide(const PlacedRing& a, const PlacedRing& b) {
     }
   }
   // No boundary contact: collide only when one contains the other.
-  if (point_in_ring(ra[0] + shift, rb)) return true;
-  return point_in_ring(rb[0] - shift, ra);
+  if (point_in_ring(a.interior_point() + shift, rb)) return true;
+  return point_in_ring(b.interior_point() - shift, ra);
 }
 
 std::vector<Point2> simplify_ring(const std::vector<Point2>& ring, double tolerance_mm) {

@@ -29,7 +29,12 @@ struct PlacedRing {
   const std::vector<Point2>* ring = nullptr;  // #P points, counter-clockwise
   Box box;                                    // of the ring in its own frame
   Point2 offset = Point2::Zero();             // translation, mm
+  // A point well inside the ring (own frame), e.g. its largest pole's centre; null: the first vertex.
+  // Decides containment when no edges touch: a vertex can sit on the other ring's boundary, where the
+  // crossing test may answer either way, an interior point cannot.
+  const Point2* interior = nullptr;
   Box world_box() const { return box.shifted(offset); }
+  Point2 interior_point() const { return interior ? *interior : (*ring)[0]; }
 };
 
 // Interiors or boundaries of the two placed polygons share a point.

@@ -14,7 +14,9 @@ constexpr int kRefineEvaluations = 60;
 constexpr double kWeightGrowthLow = 1.2, kWeightGrowthHigh = 2.0, kWeightDecay = 0.95;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-PlacedRing placed(const OrientedShape& shape, const Point2& offset) { return {&shape.outline, shape.box, offset}; }
+PlacedRing placed(const OrientedShape& shape, const Point2& offset) {
+  return {&shape.outline, shape.box, offset, shape.poles.empty() ? nullptr : &shape.poles.front().center};
+}
 
 }  // namespace
 
@@ -188,7 +190,11 @@ bool Separator::separate(int max_strikes, int max_stale_iterations, const Deadli
   if (best_total == 0) return true;
   std::vector<PieceState> best_state = state_;
   std::vector<int> order;
-  for (int strike = 0; strike < max_strikes; ++strike) {
+  // A strike is a run of sweeps that ends without a substantial (2 %) improvement on the overlap it
+  // started from; a substantial improvement also resets the stale counter (sparrow, Algorithm 9).
+  constexpr double kSubstantial = 0.98;
+  for (int strike = 0; strike < max_strikes;) {
+    const double strike_start = total_overlap();
     for (int stale = 0; stale < max_stale_iterations;) {
       if (deadline.passed()) {
         set_state(best_state);
@@ -205,13 +211,15 @@ bool Separator::separate(int max_strikes, int max_stale_iterations, const Deadli
       const double total = total_overlap();
       if (total == 0) return true;
       if (total < best_total) {
-        best_total = total, best_state = state_, stale = 0;
+        if (total < kSubstantial * best_total) stale = 0;
+        best_total = total, best_state = state_;
       } else {
         ++stale;
       }
       update_weights();
     }
-    set_state(best_state);
+    strike = best_total < kSubstantial * strike_start ? 0 : strike + 1;
+    set_state(best_state);  // back to the least overlap, keeping the weights learnt so far
   }
   return false;
 }
