@@ -1,12 +1,15 @@
 #include "engine/nest/strip_nester.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
 #include "engine/nest/nest_random.hpp"
 #include "engine/nest/overlap_proxy.hpp"
 #include "engine/nest/separator.hpp"
+#include "engine/nest/strip_moves.hpp"
 
 namespace lastcut {
 namespace {
@@ -14,9 +17,20 @@ namespace {
 using namespace nest_detail;
 
 constexpr int kConstructSamples = 400;
-constexpr int kStrikes = 3;
-constexpr int kStaleIterations = 12;
-constexpr double kFirstShrink = 0.02, kSmallestShrink = 0.0015, kRestartShrink = 0.01;
+// The search of sparrow (Gardeyn, Vanden Berghe & Wauters, arXiv:2509.13329, 2025; Algorithms 12, 13)
+// with its parameters scaled to a one-minute budget on two cores: the exploration shrinks the strip
+// after every success and otherwise keeps trying at that length from a pool of failed layouts,
+// disrupted; the compression (the last 20 %) shrinks the best layout by ever smaller ratios.
+constexpr double kExplorationShare = 0.8;
+// The exploration's shrink ratio adapts (sparrow uses a fixed 0.1 % over 20 minutes): it grows while
+// every shrink separates at the first attempt and halves (down to the least) when one fails.
+constexpr double kShrinkFirst = 0.01, kShrinkLeast = 0.001, kShrinkMost = 0.05;
+constexpr double kShrinkGrowth = 1.25, kShrinkCut = 0.5;
+constexpr int kExplorationStrikes = 3, kExplorationStale = 100;
+constexpr int kCompressionStrikes = 5, kCompressionStale = 50;
+constexpr double kCompressionShrinkFirst = 0.0005, kCompressionShrinkLast = 0.00001;
+constexpr size_t kPoolSize = 16;
+constexpr double kPoolSpread = 0.25;
 
 class StripContainer : public Container {
  public:
@@ -121,18 +135,39 @@ std::vector<PieceState> construct(const Pieces& pieces, double height, double in
   return separator.state();
 }
 
+// One independent search (sparrow's exploration, then compression) on its own thread. Between
+// rounds the strip nester hands it the best layout of all searches when it has fallen behind.
 struct Worker {
   std::unique_ptr<StripContainer> container;
   std::unique_ptr<Separator> separator;
-  std::vector<PieceState> result;
+  Random random{0};
+  std::vector<PieceState> current;  // what the next round separates, at `width`
+  double width = 0;
+  double shrink = kShrinkFirst;     // exploration shrink ratio
+  std::vector<std::pair<double, std::vector<PieceState>>> pool;  // infeasible layouts at `width`, least overlap first
+  std::vector<PieceState> result;   // of the last round
   double length = 0;
   bool success = false;
 };
 
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A pool index, small ones likelier: |N(0, 0.25)| (Irwin-Hall approximation, platform independent) of the size.
+size_t pick_from_pool(size_t size, Random& random) {
+  double normal = -2;
+  for (int k = 0; k < 4; ++k) normal += random.uniform();
+  const double sample = std::min(0.999, std::abs(normal * std::sqrt(3.0) * kPoolSpread));
+  return static_cast<size_t>(sample * static_cast<double>(size));
+}
+
 }  // namespace
 
 Layout nest_strip(const NestInstance& instance, const NestOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
   const Deadline deadline(options.time_limit_s);
+  const Deadline exploration_end(kExplorationShare * options.time_limit_s);
   const double gap = options.gap_mm.value_or(instance.gap_mm);
   const double margin = options.margin_mm.value_or(instance.margin_mm);
   const double inset = margin - gap / 2;  // outlines are grown by gap / 2
@@ -154,26 +189,52 @@ Layout nest_strip(const NestInstance& instance, const NestOptions& options) {
   for (int w = 0; w < threads; ++w) {
     workers[w].container = std::make_unique<StripContainer>(best_length, height, inset);
     workers[w].separator = std::make_unique<Separator>(pieces.pieces, *workers[w].container, stream_seed(options.seed, 1, w));
+    workers[w].random = Random(stream_seed(options.seed, 2, w));
+    workers[w].shrink = kShrinkFirst * (1 + w);  // different steps: the searches differ from the start
   }
-  double shrink = kFirstShrink;
-  int failures_at_this_shrink = 0;
-  for (long round = 0; !options.iteration_limit || round < *options.iteration_limit; ++round) {
+  // Starts worker w from the best layout, shrunk by `ratio` at `split_x` (the middle when negative).
+  auto restart = [&](Worker& worker, double ratio, double split_x) {
+    worker.width = best_length * (1 - ratio);
+    worker.container->set_length(worker.width);
+    worker.current = best;
+    shrink_strip(pieces.pieces, worker.current, split_x < 0 ? 0.5 * best_length : split_x, best_length - worker.width,
+                 *worker.container);
+    worker.pool.clear();
+  };
+  for (Worker& worker : workers) restart(worker, worker.shrink, -1);
+
+  const long rounds = options.iteration_limit.value_or(0);
+  for (long round = 0; !options.iteration_limit || round < rounds; ++round) {
     if (deadline.passed()) break;
+    const bool compressing = options.iteration_limit ? round >= kExplorationShare * static_cast<double>(rounds)
+                                                     : exploration_end.passed();
     std::vector<std::function<void()>> tasks;
     for (int w = 0; w < threads; ++w) {
-      tasks.push_back([&, w] {
+      tasks.push_back([&, w, compressing] {
         Worker& worker = workers[w];
-        const double target = best_length * (1 - shrink * (1.0 - 0.4 * w / threads));
-        worker.container->set_length(target);
-        std::vector<PieceState> state = best;
-        for (size_t i = 0; i < state.size(); ++i) {  // push pieces beyond the new end back in
-          const double over = pieces.pieces[i]->orientations[state[i].orientation].box.x1 + state[i].offset.x() - (target - inset);
-          if (over > 0) state[i].offset.x() -= over;
-        }
-        worker.separator->set_state(state);
-        worker.success = worker.separator->separate(kStrikes, kStaleIterations, deadline);
+        worker.container->set_length(worker.width);
+        worker.separator->set_state(worker.current);
+        worker.success = compressing ? worker.separator->separate(kCompressionStrikes, kCompressionStale, deadline)
+                                     : worker.separator->separate(kExplorationStrikes, kExplorationStale, deadline);
         worker.result = worker.separator->state();
         worker.length = worker.success ? strip_length(pieces.pieces, worker.result, inset) : 0;
+        if (worker.success || compressing) return;
+        if (worker.shrink > kShrinkLeast) {
+          // Too bold a shrink: retry the least overlapping layout on a strip half as much shorter than the best.
+          worker.shrink = std::max(kShrinkLeast, worker.shrink * kShrinkCut);
+          worker.width = std::max(worker.width, best_length * (1 - worker.shrink));
+          worker.current = worker.result;
+          worker.pool.clear();
+          return;
+        }
+        // Keep the failed layout; go on from one of the least overlapping ones, disrupted.
+        auto& pool = worker.pool;
+        const double loss = worker.separator->total_overlap();
+        auto at = std::lower_bound(pool.begin(), pool.end(), loss, [](const auto& e, double l) { return e.first < l; });
+        pool.insert(at, {loss, worker.result});
+        if (pool.size() > kPoolSize) pool.pop_back();
+        worker.current = pool[pick_from_pool(pool.size(), worker.random)].second;
+        disrupt_layout(pieces.pieces, worker.current, *worker.container, worker.random);
       });
     }
     if (options.run_parallel) {
@@ -191,11 +252,21 @@ Layout nest_strip(const NestInstance& instance, const NestOptions& options) {
       best_length = workers[winner].length;
       layout = to_layout(instance, pieces, best, best_length);
       if (options.on_improvement) options.on_improvement(layout);
-      failures_at_this_shrink = 0;
-    } else if (++failures_at_this_shrink >= 2) {
-      failures_at_this_shrink = 0;
-      shrink *= 0.6;
-      if (shrink < kSmallestShrink) shrink = kRestartShrink;
+    }
+    // Searches that succeeded, or that work on a strip no shorter than the best, go on from the best.
+    for (Worker& worker : workers) {
+      if (!compressing && !worker.success && worker.width < best_length) continue;
+      if (compressing) {
+        const double progress = options.iteration_limit
+                                    ? (round + 1 - kExplorationShare * static_cast<double>(rounds)) /
+                                          ((1 - kExplorationShare) * static_cast<double>(rounds))
+                                    : (seconds_since(start) / options.time_limit_s - kExplorationShare) / (1 - kExplorationShare);
+        const double ratio = kCompressionShrinkFirst + std::clamp(progress, 0.0, 1.0) * (kCompressionShrinkLast - kCompressionShrinkFirst);
+        restart(worker, ratio, worker.random.uniform(0, best_length));
+      } else {
+        if (worker.success && worker.pool.empty()) worker.shrink = std::min(kShrinkMost, worker.shrink * kShrinkGrowth);
+        restart(worker, worker.shrink, -1);
+      }
     }
   }
   return layout;
