@@ -4,6 +4,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace lastcut {
 namespace {
@@ -13,6 +14,7 @@ constexpr double kSolePenalty = 0.01;         // second-difference penalty, rela
 constexpr int kSoleDegreeY = 2;      // crown across the sole
 constexpr int kSoleMixedDegreeX = 2; // how the crown changes along the last
 constexpr double kMinInlierShare = 0.5;
+constexpr int kMaxSoleIntervals = 64;        // bounds the solve for an object far larger than a last
 
 // Each vertex's share of the area of its faces that belong to `region` (mm^2), #V.
 Eigen::VectorXd region_vertex_weights(const TriMesh& mesh, const std::vector<char>& region, const Eigen::VectorXd& areas) {
@@ -156,7 +158,7 @@ Eigen::VectorXd smooth_vertex_field(const TriMesh& mesh, const Eigen::VectorXd& 
   return values;
 }
 
-std::optional<Eigen::VectorXd> top_plane_field(const TriMesh& mesh, const MeshGraph& graph, const std::vector<char>& top,
+std::optional<ContourField> top_plane_field(const TriMesh& mesh, const MeshGraph& graph, const std::vector<char>& top,
                                                const Eigen::VectorXd& areas, double depth_mm, double max_rms_mm) {
   const Eigen::VectorXd region_weight = region_vertex_weights(mesh, top, areas);
   if (!((region_weight.array() > 0.0).count() >= 3)) return std::nullopt;
@@ -171,13 +173,14 @@ std::optional<Eigen::VectorXd> top_plane_field(const TriMesh& mesh, const MeshGr
     plane = fit_plane(mesh, weight);
   }
   const Eigen::VectorXd height = (mesh.V.rowwise() - plane.point.transpose()) * plane.normal;
-  if (weighted_rms(height, weight) > max_rms_mm) return std::nullopt;
+  const double rms_mm = weighted_rms(height, weight);
+  if (rms_mm > max_rms_mm) return std::nullopt;
   Eigen::VectorXd field = height.array() + depth_mm;
   keep_connected_to_region(graph, region_weight, field);
-  return field;
+  return ContourField{std::move(field), rms_mm};
 }
 
-std::optional<Eigen::VectorXd> sole_height_field(const TriMesh& mesh, const MeshGraph& graph,
+std::optional<ContourField> sole_height_field(const TriMesh& mesh, const MeshGraph& graph,
                                                  const std::vector<char>& sole, const Eigen::VectorXd& areas,
                                                  double height_mm, double max_rms_mm) {
   const Eigen::VectorXd region_weight = region_vertex_weights(mesh, sole, areas);
@@ -192,7 +195,7 @@ std::optional<Eigen::VectorXd> sole_height_field(const TriMesh& mesh, const Mesh
   basis.centre = 0.5 * (low + high);
   basis.scale = 0.5 * (high - low);
   basis.x0 = low.x();
-  basis.intervals = std::max(1, static_cast<int>(std::ceil((high.x() - low.x()) / kSoleKnotSpacingMm)));
+  basis.intervals = std::clamp(static_cast<int>(std::ceil((high.x() - low.x()) / kSoleKnotSpacingMm)), 1, kMaxSoleIntervals);
   basis.knot_spacing_mm = (high.x() - low.x()) / basis.intervals;
   // Residuals on the sole only while refitting (the rest is not used until the end).
   auto residual_of = [&](const Eigen::VectorXd& coefficients, bool everywhere) {
@@ -211,10 +214,11 @@ std::optional<Eigen::VectorXd> sole_height_field(const TriMesh& mesh, const Mesh
     coefficients = fit_height(mesh, basis, weight);
   }
   const Eigen::VectorXd residual = residual_of(coefficients, true);
-  if (weighted_rms(residual, weight) > max_rms_mm) return std::nullopt;
+  const double rms_mm = weighted_rms(residual, weight);
+  if (rms_mm > max_rms_mm) return std::nullopt;
   Eigen::VectorXd field = height_mm - residual.array();
   keep_connected_to_region(graph, region_weight, field);
-  return field;
+  return ContourField{std::move(field), rms_mm};
 }
 
 }  // namespace lastcut

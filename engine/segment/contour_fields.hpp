@@ -25,6 +25,11 @@
 
 namespace lastcut {
 
+struct ContourField {
+  Eigen::VectorXd values;  // #V, mm: > 0 inside the sole or top region, 0 on the curve
+  double fit_rms_mm = 0;   // RMS distance of the fitted points from the fitted sole surface or plane
+};
+
 // Area-weighted moving average of a vertex field (eq. 22 applied on the surface): each pass averages
 // vertices to faces and back, weighted by face area, so it does not lean towards denser parts of the
 // mesh; a fractional last pass moves only that share of the way. values #V, areas #F (mm^2).
@@ -34,13 +39,13 @@ Eigen::VectorXd smooth_vertex_field(const TriMesh& mesh, const Eigen::VectorXd& 
 // depth_mm below the plane fitted to `top` (#F flags): field = signed height above the plane + depth_mm
 // (mm), #V. Returns nothing when the region is too small or not flat (RMS distance to the plane
 // above max_rms_mm), so the caller keeps the classification.
-std::optional<Eigen::VectorXd> top_plane_field(const TriMesh& mesh, const MeshGraph& graph, const std::vector<char>& top,
+std::optional<ContourField> top_plane_field(const TriMesh& mesh, const MeshGraph& graph, const std::vector<char>& top,
                                                const Eigen::VectorXd& areas, double depth_mm, double max_rms_mm);
 
 // height_mm above the height field fitted to `sole` (#F flags): field = height_mm - (z - s(x, y))
 // (mm), #V. Returns nothing when the fit is poor (RMS residual above max_rms_mm, e.g. the toes of
 // a foot scan), so the caller keeps the classification.
-std::optional<Eigen::VectorXd> sole_height_field(const TriMesh& mesh, const MeshGraph& graph,
+std::optional<ContourField> sole_height_field(const TriMesh& mesh, const MeshGraph& graph,
                                                  const std::vector<char>& sole, const Eigen::VectorXd& areas,
                                                  double height_mm, double max_rms_mm);
 

@@ -111,20 +111,24 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
   // Where the fits hold, the curves are placed by the shape (a height above the sole, a depth
   // below the top plane), lightly smoothed against scanner noise; else by the classification.
   const double geometric_passes = kGeometricSmoothingPasses * std::pow(kReferenceEdgeMm / edge_mm, 2);
-  const std::optional<Eigen::VectorXd> sole_field =
+  const std::optional<ContourField> sole_field =
       sole_height_field(mesh, graph, sole, areas, options.feather_height_mm, kMaxFitRmsMm);
-  const std::optional<Eigen::VectorXd> top_field = top_plane_field(mesh, graph, top, areas, options.rim_depth_mm, kMaxFitRmsMm);
+  const std::optional<ContourField> top_field = top_plane_field(mesh, graph, top, areas, options.rim_depth_mm, kMaxFitRmsMm);
   // Clamped to a ramp symmetric about the curve before the moving average: otherwise the steep
   // drop of the height down the side walls would drag the averaged curve onto the flat part.
   auto ramp = [&](const Eigen::VectorXd& field, double half_width_mm) {
     return smooth_vertex_field(mesh, areas, field.cwiseMax(-half_width_mm).cwiseMin(half_width_mm), geometric_passes);
   };
-  fields.col(kSoleField) = sole_field ? ramp(*sole_field, options.feather_height_mm)
+  fields.col(kSoleField) = sole_field ? ramp(sole_field->values, options.feather_height_mm)
                                       : smoothed_indicator(mesh, sole, areas, field_passes);
-  fields.col(kTopField) = top_field ? ramp(*top_field, options.rim_depth_mm)
+  fields.col(kTopField) = top_field ? ramp(top_field->values, options.rim_depth_mm)
                                     : smoothed_indicator(mesh, top, areas, field_passes);
-  if (!sole_field) result.notes.push_back("the sole is not a smooth surface: feather line from the normal angle");
-  if (!top_field) result.notes.push_back("the top cut is not flat: top rim from the normal angle");
+  result.notes.push_back(sole_field ? "feather line " + fixed(options.feather_height_mm, 2) + " mm above the sole surface (fitted within " +
+                                           fixed(sole_field->fit_rms_mm, 2) + " mm RMS)"
+                                     : std::string("the sole is not a smooth surface: feather line from the normal angle"));
+  result.notes.push_back(top_field ? "top rim " + fixed(options.rim_depth_mm, 2) + " mm below the top cut plane (fitted within " +
+                                         fixed(top_field->fit_rms_mm, 2) + " mm RMS)"
+                                   : std::string("the top cut is not flat: top rim from the normal angle"));
   for (int column : {kSoleField, kTopField}) cut_along_zero_level(mesh, fields, column, kSnapFraction);
 
   // Step 3: the split plane from those smooth curves (not from the staircase of mesh edges, whose
