@@ -3,7 +3,11 @@
 // go through the whole scan-to-molds pipeline; the molds of each half are aligned rigidly and
 // their outlines compared by the symmetric Hausdorff distance. Prints a table per pair and half,
 // with where on the first mold the largest gap lies (mm from its bounding-box corner), so a change
-// to the segmentation can be measured over many pairs, not one lucky one.
+// to the segmentation can be measured over many pairs, not one lucky one. Also printed: the 3D
+// areas and boundary lengths of both halves, the flattening's boundary error, the largest gap
+// between the two cut curves in 3D (canonical frames; it includes the small difference between
+// the two orientations, so it is a where-to-look, not a measure), and any segmentation note that
+// the normal angle had to be used.
 //   repeatability_bench            12 pairs: EU 36..46, both feet, 16k vs 24k triangles
 //   repeatability_bench --quick    the 3 pairs the scan test checks
 //   --no-noise, --no-pose, --same-density, --no-holes  drop one difference between the scans,
