@@ -4,10 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <regex>
 
 #include "drivers/cutter.hpp"
 #include "tests/drivers/sim_process.hpp"
+#include "tests/drivers/stream_checks.hpp"
 
 namespace lastcut::drivers {
 namespace {
@@ -15,6 +15,9 @@ namespace {
 using testing::SimProcess;
 using testing::TempDir;
 using testing::read_file;
+using testing::expect_interrupted;
+using testing::stat_value;
+using testing::timed_send;
 
 std::string make_program(int lines) {
   std::string program = "G21\nG90\nG1 F3000\n";
@@ -23,13 +26,6 @@ std::string make_program(int lines) {
   }
   program += "G0 X0 Y0\nM2\n";
   return program;
-}
-
-int stat_value(const std::string& json, const std::string& key) {
-  std::smatch m;
-  const std::regex pattern("\"" + key + "\": ([0-9]+)");
-  if (!std::regex_search(json, m, pattern)) return -1;
-  return std::stoi(m[1]);
 }
 
 struct GrblFixture {
@@ -114,11 +110,7 @@ TEST(GrblStream, ErrorStopsTheJobHoldsAndResetsAndResendsNothing) {
   GrblFixture f({"--fault", "error-at-line=20:20"});
   ASSERT_TRUE(f.sim->ready());
   const std::string program = make_program(200);
-  const SendResult result = f.send(program);
-  EXPECT_EQ(result.outcome, SendOutcome::Interrupted);
-  EXPECT_NE(result.reason.find("error:20"), std::string::npos) << result.reason;
-  EXPECT_NE(result.reason.find("Unsupported command"), std::string::npos) << result.reason;
-  EXPECT_NE(result.reason.find("nothing was resent"), std::string::npos);
+  expect_interrupted(f.send(program), {"error:20", "Unsupported command", "nothing was resent"});
   const auto [received, stats] = f.record();
   EXPECT_EQ(program.rfind(received, 0), 0u) << "what arrived must be a prefix of the program: no line sent twice";
   EXPECT_LT(received.size(), program.size());
@@ -141,10 +133,7 @@ TEST(GrblStream, ConfiguredHarmlessErrorsAreLoggedNotFatal) {
 TEST(GrblStream, AlarmInterruptsAndTheNextJobIsRefusedUntilUnlocked) {
   GrblFixture f({"--fault", "alarm-at-line=30:1"});
   ASSERT_TRUE(f.sim->ready());
-  const SendResult result = f.send(make_program(100));
-  EXPECT_EQ(result.outcome, SendOutcome::Interrupted);
-  EXPECT_NE(result.reason.find("ALARM:1"), std::string::npos) << result.reason;
-  EXPECT_NE(result.reason.find("Hard limit"), std::string::npos) << result.reason;
+  expect_interrupted(f.send(make_program(100)), {"ALARM:1", "Hard limit"});
 
   const SendResult refused = f.send(make_program(10));
   EXPECT_EQ(refused.outcome, SendOutcome::Failed);
@@ -158,11 +147,8 @@ TEST(GrblStream, AlarmInterruptsAndTheNextJobIsRefusedUntilUnlocked) {
 TEST(GrblStream, DroppedLinkEndsInInterruptedWithinTheTimeout) {
   GrblFixture f({"--fault", "drop-at-line=50"});
   ASSERT_TRUE(f.sim->ready());
-  const auto start = std::chrono::steady_clock::now();
-  const SendResult result = f.send(make_program(300));
-  const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  EXPECT_EQ(result.outcome, SendOutcome::Interrupted);
-  EXPECT_NE(result.reason.find("lost"), std::string::npos) << result.reason;
+  const auto [result, elapsed_s] = timed_send(f.config, make_program(300));
+  expect_interrupted(result, {"lost"});
   EXPECT_LT(elapsed_s, f.config.timeout_s + 2);
 }
 
@@ -170,11 +156,8 @@ TEST(GrblStream, StalledControllerEndsInInterruptedWithinTheTimeout) {
   GrblFixture f({"--fault", "stall-at-line=50"});
   ASSERT_TRUE(f.sim->ready());
   f.config.timeout_s = 1.5;
-  const auto start = std::chrono::steady_clock::now();
-  const SendResult result = f.send(make_program(300));
-  const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  EXPECT_EQ(result.outcome, SendOutcome::Interrupted);
-  EXPECT_NE(result.reason.find("no reply"), std::string::npos) << result.reason;
+  const auto [result, elapsed_s] = timed_send(f.config, make_program(300));
+  expect_interrupted(result, {"no reply"});
   EXPECT_GE(elapsed_s, 1.5);
   EXPECT_LT(elapsed_s, 1.5 + 3 * 1.5 + 1) << "feed hold and reset attempts are bounded by the timeout too";
 }
@@ -182,9 +165,7 @@ TEST(GrblStream, StalledControllerEndsInInterruptedWithinTheTimeout) {
 TEST(GrblStream, GarbageReplyStopsTheJob) {
   GrblFixture f({"--fault", "garbage-at-line=40"});
   ASSERT_TRUE(f.sim->ready());
-  const SendResult result = f.send(make_program(200));
-  EXPECT_EQ(result.outcome, SendOutcome::Interrupted);
-  EXPECT_NE(result.reason.find("unintelligible"), std::string::npos) << result.reason;
+  expect_interrupted(f.send(make_program(200)), {"unintelligible"});
 }
 
 TEST(GrblStream, CancelHoldsAndResetsTheMachine) {
@@ -211,20 +192,10 @@ TEST(GrblStream, SettingsAreSentOneAtATimeAndRefusalFailsBeforeCutting) {
 }
 
 TEST(GrblStream, OverLoopbackTcp) {
-  TempDir dir;
-  const int port = testing::free_loopback_port();
-  SimProcess sim({"grbl", "--port", std::to_string(port), "--baud", "0", "--time-scale", "0", "--record", dir / "rec"});
-  ASSERT_TRUE(sim.ready()) << sim.ready_line();
   CutterConfig config;
-  config.protocol = "grbl";
-  config.port = "tcp://127.0.0.1:" + std::to_string(port);
   config.timeout_s = 3;
-  const std::string program = make_program(200);
-  const std::atomic<bool> never{false};
-  const SendResult result = send_job(config, program, nullptr, never);
-  EXPECT_EQ(result.outcome, SendOutcome::Done) << result.reason;
-  EXPECT_EQ(sim.stop(), 0);
-  EXPECT_EQ(read_file(dir.path() / "rec" / "grbl-received.nc"), program);
+  testing::expect_delivered_over_loopback("grbl", {"--baud", "0", "--time-scale", "0"}, config, make_program(200),
+                                          "grbl-received.nc");
 }
 
 TEST(GrblStream, ProbeReportsStateAndMissingPortsFailCleanly) {

@@ -4,12 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
-#include <regex>
 
 #include "drivers/cutter.hpp"
 #include "drivers/hpgl/hpgl_status.hpp"
 #include "tests/drivers/sim_process.hpp"
+#include "tests/drivers/stream_checks.hpp"
 
 namespace lastcut::drivers {
 namespace {
@@ -17,6 +16,9 @@ namespace {
 using testing::SimProcess;
 using testing::TempDir;
 using testing::read_file;
+using testing::expect_interrupted;
+using testing::stat_value;
+using testing::timed_send;
 
 std::string make_hpgl(int segments) {
   std::string program = "IN;SP1;PU0,0;\n";
@@ -25,12 +27,6 @@ std::string make_hpgl(int segments) {
   }
   program += "PU0,0;SP0;\n";
   return program;
-}
-
-int stat_value(const std::string& json, const std::string& key) {
-  std::smatch m;
-  if (!std::regex_search(json, m, std::regex("\"" + key + "\": ([0-9]+)"))) return -1;
-  return std::stoi(m[1]);
 }
 
 struct HpglFixture {
@@ -99,23 +95,27 @@ TEST(HpglStream, WithoutFlowControlASlowCutterOverflowsAndSaysSo) {
   EXPECT_GT(stat_value(stats, "overflows"), 0);
 }
 
-TEST(HpglStream, DeviceErrorInterrupts) {
-  HpglFixture f("escb", {"--fault", "error-at-line=40:13"});
+// A fault injected into the plotter ends the job as Interrupted with the reason in words.
+void expect_fault_interrupts(const std::string& handshake, const std::string& fault,
+                             std::initializer_list<const char*> reason) {
+  HpglFixture f(handshake, {"--fault", fault});
   ASSERT_TRUE(f.sim->ready());
-  const SendResult result = f.send(make_hpgl(150));
-  EXPECT_EQ(result.outcome, SendOutcome::Interrupted);
-  EXPECT_NE(result.reason.find("device error 13"), std::string::npos) << result.reason;
-  EXPECT_NE(result.reason.find("nothing was resent"), std::string::npos);
+  expect_interrupted(f.send(make_hpgl(150)), reason);
 }
+
+TEST(HpglStream, DeviceErrorInterrupts) {
+  expect_fault_interrupts("escb", "error-at-line=40:13", {"device error 13", "nothing was resent"});
+}
+
+TEST(HpglStream, GarbageAnswerInterrupts) { expect_fault_interrupts("escb", "garbage-at-line=30", {"unintelligible"}); }
+
+TEST(HpglStream, DroppedLinkInterrupts) { expect_fault_interrupts("xonxoff", "drop-at-line=30", {"lost"}); }
 
 TEST(HpglStream, StalledCutterInterruptsWithinTheTimeout) {
   HpglFixture f("escb", {"--fault", "stall-at-line=30"});
   ASSERT_TRUE(f.sim->ready());
-  const auto start = std::chrono::steady_clock::now();
-  const SendResult result = f.send(make_hpgl(150));
-  const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  EXPECT_EQ(result.outcome, SendOutcome::Interrupted);
-  EXPECT_NE(result.reason.find("no answer"), std::string::npos) << result.reason;
+  const auto [result, elapsed_s] = timed_send(f.config, make_hpgl(150));
+  expect_interrupted(result, {"no answer"});
   EXPECT_LT(elapsed_s, f.config.timeout_s + 2);
 }
 
@@ -125,44 +125,15 @@ TEST(HpglStream, XoffHeldForeverInterruptsWithinTheTimeout) {
   HpglFixture f("xonxoff", {"--fault", "stall-at-line=6", "--speed", "20"});
   ASSERT_TRUE(f.sim->ready());
   f.config.timeout_s = 0.2;  // XOFF may last 10 x timeout_s = 2 s
-  const SendResult result = f.send(make_hpgl(400));
-  EXPECT_EQ(result.outcome, SendOutcome::Interrupted);
-  EXPECT_NE(result.reason.find("XOFF"), std::string::npos) << result.reason;
-}
-
-TEST(HpglStream, GarbageAnswerInterrupts) {
-  HpglFixture f("escb", {"--fault", "garbage-at-line=30"});
-  ASSERT_TRUE(f.sim->ready());
-  const SendResult result = f.send(make_hpgl(150));
-  EXPECT_EQ(result.outcome, SendOutcome::Interrupted);
-  EXPECT_NE(result.reason.find("unintelligible"), std::string::npos) << result.reason;
-}
-
-TEST(HpglStream, DroppedLinkInterrupts) {
-  HpglFixture f("xonxoff", {"--fault", "drop-at-line=30"});
-  ASSERT_TRUE(f.sim->ready());
-  const SendResult result = f.send(make_hpgl(150));
-  EXPECT_EQ(result.outcome, SendOutcome::Interrupted);
-  EXPECT_NE(result.reason.find("lost"), std::string::npos) << result.reason;
+  expect_interrupted(f.send(make_hpgl(400)), {"XOFF"});
 }
 
 TEST(HpglStream, OverLoopbackTcp) {
-  TempDir dir;
-  const int port = testing::free_loopback_port();
-  SimProcess sim({"hpgl", "--port", std::to_string(port), "--handshake", "escb", "--baud", "0", "--time-scale", "0",
-                  "--record", dir / "rec"});
-  ASSERT_TRUE(sim.ready()) << sim.ready_line();
   CutterConfig config;
-  config.protocol = "hpgl";
-  config.port = "tcp://127.0.0.1:" + std::to_string(port);
   config.hpgl_handshake = "escb";
   config.timeout_s = 2;
-  const std::string program = make_hpgl(300);
-  const std::atomic<bool> never{false};
-  const SendResult result = send_job(config, program, nullptr, never);
-  EXPECT_EQ(result.outcome, SendOutcome::Done) << result.reason;
-  EXPECT_EQ(sim.stop(), 0);
-  EXPECT_EQ(read_file(dir.path() / "rec" / "hpgl-received.hpgl"), program);
+  testing::expect_delivered_over_loopback("hpgl", {"--handshake", "escb", "--baud", "0", "--time-scale", "0"}, config,
+                                          make_hpgl(300), "hpgl-received.hpgl");
 }
 
 TEST(HpglStatus, ExplainsDeviceAndInstructionErrors) {
