@@ -16,20 +16,13 @@ namespace {
 
 constexpr double kTolerance_mm = 0.025;
 
-struct GcodeJob {
-  NestInstance instance = shoe_instance();
-  Layout layout = shoe_layout();
-  MachineProfile profile;
+struct GcodeJob : ShoeJob {
   std::vector<GcodeMove> moves;
 };
 
 GcodeJob run_job(const std::string& profile_name, const std::string& test_name) {
-  GcodeJob job;
-  job.profile = profile_named(profile_name);
-  const CutProgram program = plan_cut_program(placed_pieces(job.layout, job.instance, SheetRef{}), job.profile);
-  const auto file = scratch_dir(test_name) / "job.nc";
-  write_text(file, write_gcode(program, job.profile));
-  job.moves = gcode_moves_via_node(file, job.profile.gcode.rotary_axis);
+  GcodeJob job{write_shoe_job(profile_name, test_name, "job.nc", write_gcode), {}};
+  job.moves = gcode_moves_via_node(job.file, job.profile.gcode.rotary_axis);
   return job;
 }
 

@@ -15,24 +15,12 @@ namespace {
 
 constexpr double kTolerance_mm = 0.025;
 
-struct HpglJob {
-  NestInstance instance = shoe_instance();
-  Layout layout = shoe_layout();
-  CutProgram program;
-  std::filesystem::path file;
-};
-
-HpglJob write_job(const std::string& profile_name, const std::string& test_name) {
-  HpglJob job;
-  const MachineProfile profile = profile_named(profile_name);
-  job.program = plan_cut_program(placed_pieces(job.layout, job.instance, SheetRef{}), profile);
-  job.file = scratch_dir(test_name) / "job.plt";
-  write_text(job.file, write_hpgl(job.program, profile));
-  return job;
+ShoeJob write_job(const std::string& profile_name, const std::string& test_name) {
+  return write_shoe_job(profile_name, test_name, "job.plt", write_hpgl);
 }
 
 TEST(ToolpathHpglRoundTrip, EveryOutlineIsOneClosedPathAndMarksLandWhereTheLayoutPutsThem) {
-  const HpglJob job = write_job("hpgl-pen-plotter", "pen");
+  const ShoeJob job = write_job("hpgl-pen-plotter", "pen");
   const std::vector<InterpretedPath> paths = hpgl_paths_via_hp2xx(job.file, 40.0);
   EXPECT_EQ(paths.size(), job.program.strokes.size()) << "every pen-down run of the program, no more";
   for (const Placement& placement : job.layout.placements) {
@@ -55,7 +43,7 @@ TEST(ToolpathHpglRoundTrip, EveryOutlineIsOneClosedPathAndMarksLandWhereTheLayou
 }
 
 TEST(ToolpathHpglRoundTrip, DragKnifeBladeTipFollowsEveryOutline) {
-  const HpglJob job = write_job("hpgl-knife-cutter", "knife");
+  const ShoeJob job = write_job("hpgl-knife-cutter", "knife");
   const double blade_offset_mm = profile_named("hpgl-knife-cutter").cut.blade_offset_mm;
   const std::vector<InterpretedPath> paths = hpgl_paths_via_hp2xx(job.file, 40.0);
   for (const Placement& placement : job.layout.placements) {
@@ -85,8 +73,8 @@ TEST(ToolpathHpglRoundTrip, DragKnifeBladeTipFollowsEveryOutline) {
 }
 
 TEST(ToolpathHpglRoundTrip, CommandsFitSmallInputBuffers) {
-  const HpglJob job = write_job("hpgl-knife-cutter", "buffers");
-  const MachineProfile profile = profile_named("hpgl-knife-cutter");
+  const ShoeJob job = write_job("hpgl-knife-cutter", "buffers");
+  const MachineProfile& profile = job.profile;
   const std::string text = read_text(job.file);
   EXPECT_EQ(text.rfind("IN;", 0), 0u);
   std::istringstream lines(text);

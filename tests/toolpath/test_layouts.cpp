@@ -7,6 +7,8 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "engine/toolpath/layout_pieces.hpp"
+#include "engine/toolpath/plan_cut_program.hpp"
 #include "engine/toolpath/cut_program.hpp"
 
 namespace lastcut::test {
@@ -96,6 +98,16 @@ Polygon2 expected_outline(const NestItem& item, const Placement& placement) {
 
 MachineProfile profile_named(const std::string& name) {
   return load_machine_profile(name, {std::filesystem::path(LASTCUT_SOURCE_DIR) / "config" / "machines"});
+}
+
+ShoeJob write_shoe_job(const std::string& profile_name, const std::string& test_name, const std::string& file_name,
+                       CutFileWriter writer) {
+  ShoeJob job;
+  job.profile = profile_named(profile_name);
+  job.program = plan_cut_program(placed_pieces(job.layout, job.instance, SheetRef{}), job.profile);
+  job.file = scratch_dir(test_name) / file_name;
+  write_text(job.file, writer(job.program, job.profile));
+  return job;
 }
 
 std::filesystem::path scratch_dir(const std::string& test_name) {

@@ -10,6 +10,7 @@
 
 #include "engine/nest/layout.hpp"
 #include "engine/nest/nest_problem.hpp"
+#include "engine/toolpath/cut_program.hpp"
 #include "engine/toolpath/machine_profile.hpp"
 
 namespace lastcut::test {
@@ -22,6 +23,18 @@ Point2 expected_point(const Point2& own, const Placement& placement);
 Polygon2 expected_outline(const NestItem& item, const Placement& placement);
 
 MachineProfile profile_named(const std::string& name);
+
+// The shoe layout planned for one machine profile and written as that machine's cut file.
+struct ShoeJob {
+  NestInstance instance = shoe_instance();
+  Layout layout = shoe_layout();
+  MachineProfile profile;
+  CutProgram program;
+  std::filesystem::path file;  // the cut file, in scratch_dir(test_name)
+};
+using CutFileWriter = std::string (*)(const CutProgram& program, const MachineProfile& profile);
+ShoeJob write_shoe_job(const std::string& profile_name, const std::string& test_name, const std::string& file_name,
+                       CutFileWriter writer);
 
 // A fresh directory under the system temp dir for one test's files.
 std::filesystem::path scratch_dir(const std::string& test_name);
