@@ -6,6 +6,7 @@
 #include "engine/core/engine_error.hpp"
 #include "engine/mesh/read_mesh.hpp"
 #include "test_meshes.hpp"
+#include "tests/lastgen/mesh_checks.hpp"
 
 namespace lastcut {
 namespace {
@@ -24,7 +25,7 @@ TEST(MeshRepair, CleanBoxNeedsNoRepair) {
                 r.non_manifold_faces_removed + r.loose_components_removed + r.boundary_loops,
             0);
   EXPECT_EQ(intake.mesh.triangle_count(), 192);
-  EXPECT_NEAR(test::signed_volume(intake.mesh), 250.0 * 90.0 * 120.0, 1e-6);
+  EXPECT_NEAR(test::signed_volume_mm3(intake.mesh), 250.0 * 90.0 * 120.0, 1e-6);
   EXPECT_NE(r.unit_note.find("millimetres"), std::string::npos) << r.unit_note;
 }
 
@@ -74,7 +75,7 @@ TEST(MeshRepair, PlantedDefectsAreRepairedAndCounted) {
   EXPECT_EQ(r.boundary_loops, 0);
   EXPECT_EQ(intake.mesh.triangle_count(), 192);
   EXPECT_EQ(intake.mesh.vertex_count(), original_vertices);
-  EXPECT_NEAR(test::signed_volume(intake.mesh), 250.0 * 90.0 * 120.0, 1e-6);
+  EXPECT_NEAR(test::signed_volume_mm3(intake.mesh), 250.0 * 90.0 * 120.0, 1e-6);
 }
 
 TEST(MeshRepair, InsideOutScanIsTurnedOutward) {
@@ -84,7 +85,7 @@ TEST(MeshRepair, InsideOutScanIsTurnedOutward) {
   test::write_obj_raw(dir / "inside_out.obj", box.V, box.F);
   const MeshIntake intake = read_mesh(dir / "inside_out.obj");
   EXPECT_EQ(intake.report.faces_flipped, 192);
-  EXPECT_NEAR(test::signed_volume(intake.mesh), 250.0 * 90.0 * 120.0, 1e-6);
+  EXPECT_NEAR(test::signed_volume_mm3(intake.mesh), 250.0 * 90.0 * 120.0, 1e-6);
 }
 
 TEST(MeshRepair, FinOnAnEdgeAndBowTieAreCutAway) {
@@ -109,7 +110,7 @@ TEST(MeshRepair, FinOnAnEdgeAndBowTieAreCutAway) {
   EXPECT_EQ(intake.report.non_manifold_faces_removed, 4);
   EXPECT_EQ(intake.report.boundary_loops, 1);
   EXPECT_EQ(intake.mesh.triangle_count(), 192 - 2);
-  EXPECT_GT(test::signed_volume(intake.mesh), 0.0);
+  EXPECT_GT(test::signed_volume_mm3(intake.mesh), 0.0);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "engine/lastgen/generate_last.hpp"
 #include "engine/mesh/read_mesh.hpp"
 #include "test_meshes.hpp"
+#include "tests/lastgen/mesh_checks.hpp"
 
 namespace lastcut {
 namespace {
@@ -36,7 +37,7 @@ TEST_P(RoundTrip, GeneratedLastComesBackUnchanged) {
   EXPECT_EQ(r.degenerate_faces_removed + r.duplicate_faces_removed + r.faces_flipped + r.non_manifold_faces_removed, 0);
   EXPECT_EQ(r.boundary_loops, 0);
   EXPECT_TRUE(bounding_box_size(intake.mesh).isApprox(bounding_box_size(sample_last()), 1e-5));
-  EXPECT_NEAR(test::signed_volume(intake.mesh) / test::signed_volume(sample_last()), 1.0, 1e-5);
+  EXPECT_NEAR(test::signed_volume_mm3(intake.mesh) / test::signed_volume_mm3(sample_last()), 1.0, 1e-5);
   EXPECT_NO_THROW(check_is_last(intake.mesh));
 }
 
@@ -83,7 +84,7 @@ TEST(ReferenceData, FindFootTemplateInMetresLoadsAsA270MillimetreFoot) {
   EXPECT_EQ(intake.report.triangles_read, 1750);
   const Eigen::Vector3d size = bounding_box_size(intake.mesh);
   EXPECT_NEAR(size.maxCoeff(), 270.0, 15.0);
-  EXPECT_GT(test::signed_volume(intake.mesh), 0.0);
+  EXPECT_GT(test::signed_volume_mm3(intake.mesh), 0.0);
   EXPECT_NO_THROW(check_is_last(intake.mesh));  // a foot passes the coarse plausibility test
 }
 

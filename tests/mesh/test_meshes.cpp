@@ -124,13 +124,4 @@ void write_binary_stl_raw(const std::filesystem::path& path, const TriMesh& mesh
   }
 }
 
-double signed_volume(const TriMesh& mesh) {
-  double volume = 0.0;
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-    const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
-    volume += a.dot(b.cross(c)) / 6.0;
-  }
-  return volume;
-}
-
 }  // namespace lastcut::test

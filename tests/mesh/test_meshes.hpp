@@ -35,6 +35,4 @@ void write_ascii_ply_raw(const std::filesystem::path& path, const TriMesh& mesh)
 // Binary STL whose header claims `claimed_triangles` (defaults to the real count).
 void write_binary_stl_raw(const std::filesystem::path& path, const TriMesh& mesh, long claimed_triangles = -1);
 
-double signed_volume(const TriMesh& mesh);
-
 }  // namespace lastcut::test
