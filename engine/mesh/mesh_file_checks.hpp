@@ -2,7 +2,8 @@
 // What a mesh file is, checked before any parser sees it: OpenMesh's readers accept truncated
 // and oversized files silently (a short binary STL is read as ASCII garbage, a cut ASCII STL
 // gives the facets before the cut). Here: existence, emptiness, format by extension, binary STL
-// size = 84 + 50 n, ASCII STL complete (every facet closed, endsolid present), and the triangle
+// size = 84 + 50 n, ASCII STL complete (every facet closed, endsolid present), PLY and ASCII OFF
+// holding every vertex and face record their header declares (ply_records.hpp), and the triangle
 // count against the cap from the header where the format declares it (STL, PLY, OFF) or a
 // line count (OBJ). Each failure is one EngineError line naming the file.
 #include <filesystem>
