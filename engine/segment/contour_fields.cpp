@@ -94,7 +94,7 @@ struct SoleBasis {
 
   Eigen::VectorXd operator()(double x, double y) const {
     Eigen::VectorXd row = Eigen::VectorXd::Zero(size());
-    const double s = (x - x0) / knot_spacing_mm;
+    const double s = std::clamp((x - x0) / knot_spacing_mm, -1e6, 1e6);  // keeps floor() within int
     const int i = std::clamp(static_cast<int>(std::floor(s)), 0, intervals - 1);
     const double t = std::clamp(s - i, 0.0, 1.0), beyond = s - i - t;  // beyond: past an end, in knot spacings
     const double value[4] = {std::pow(1.0 - t, 3) / 6.0, (3.0 * t * t * t - 6.0 * t * t + 4.0) / 6.0,
