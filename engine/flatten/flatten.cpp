@@ -104,7 +104,7 @@ void run_arap(const TriMesh& disk, const TriangleFrames& frames, const DiskTopol
       result.energy_final = guarded.energy_final;
       result.converged = guarded.converged;
       result.notes.push_back(std::to_string(flips) + " flipped triangles could not be repaired locally; fell back to "
-                             "the flip-free start map with flip-guarded ARAP (" +
+                             "the flip-free Tutte map with flip-guarded ARAP (" +
                              std::to_string(guarded.iterations) + " iterations, more distortion)");
     }
   }
@@ -135,7 +135,7 @@ FlattenResult flatten(const TriMesh& disk, const FlattenOptions& options) {
       result.UV = std::move(conformal.UV);
     } else {
       result.notes.push_back("LSCM flipped " + std::to_string(flips) +
-                             " triangles; fell back to ARAP from a flip-free start");
+                             " triangles; fell back to ARAP");
       FlattenResult arap;
       run_arap(disk, frames, topology, options, arap);
       result.UV = std::move(arap.UV);
