@@ -2,6 +2,8 @@
 // a fold at the outline are untangled by moving only a few rings; everything farther away stays put.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <queue>
 
 #include "engine/flatten/cotangent_laplacian.hpp"
@@ -110,6 +112,31 @@ TEST(StarUntangle, FoldedBlockAndFoldedOutlineAreUntangled) {
   EXPECT_EQ(report.flipped_before, flips);
   EXPECT_EQ(report.flipped_after, 0);
   expect_untangled_locally(f, folded, repaired, moved, 9);
+}
+
+TEST(StarUntangle, SwirledDiscIsUntangled) {
+  // Every vertex within 12 mm of the middle turned about it by up to 340 degrees (most at the centre):
+  // overlapping triangles over many neighbouring stars, untangled together.
+  const Folded f = developed_cylinder();
+  const Eigen::RowVector2d centre = f.flat.colwise().mean();
+  Eigen::MatrixXd folded = f.flat;
+  std::vector<int> moved;
+  for (int v = 0; v < f.mesh.vertex_count(); ++v) {
+    const Eigen::RowVector2d offset = f.flat.row(v) - centre;
+    const double r = offset.norm();
+    if (r >= 12.0) continue;
+    const double angle = 6.0 * (1.0 - r / 12.0);
+    folded.row(v) = centre + Eigen::RowVector2d(std::cos(angle) * offset.x() - std::sin(angle) * offset.y(),
+                                                std::sin(angle) * offset.x() + std::cos(angle) * offset.y());
+    moved.push_back(v);
+  }
+  const int flips = count_flipped_triangles(f.mesh.F, folded);
+  ASSERT_GT(flips, 10);
+  Eigen::MatrixXd repaired = folded;
+  const UntangleReport report = untangle_flips(f.frames, f.topology, repaired);
+  std::printf("%d flipped, repaired within %d rings, %d vertices moved\n", flips, report.rings, report.moved_vertices);
+  EXPECT_EQ(report.flipped_after, 0);
+  expect_untangled_locally(f, folded, repaired, moved, 16);
 }
 
 TEST(StarUntangle, FlipFreeMapIsLeftAlone) {
