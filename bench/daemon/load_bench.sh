@@ -15,38 +15,14 @@ root="$build/bench-scratch/daemon-load"
 rm -rf "$root"
 mkdir -p "$root/incoming" "$root/staging" "$root/lasts"
 
-cat > "$root/lastcut.toml" <<TOML
-[paths]
-watch = "incoming"
-spool = "spool"
-machines = "$source_dir/config/machines"
-[watch]
-mode = "inotify"
-stable_checks = 1
-stable_interval_s = 0.1
-[jobs]
-duplicate_policy = "process"
-default_material = "calf"
-default_cutter = "cutter-1"
-compute_workers = $(nproc)
-[batch]
-window_s = 5
-max_pieces = 16
-nest_time_s = 1
-[materials.calf]
-width_mm = 800
-length_mm = 1200
-[cutters.cutter-1]
-protocol = "hpgl"
-port = "cutter-1.tty"
-flow = "xonxoff"
-machine = "hpgl-pen-plotter"
-retry_interval_s = 0.5
-TOML
+source "$source_dir/tests/stress/daemon_scratch.sh"
+write_daemon_config "$root/lastcut.toml" "$source_dir" \
+  'stable_interval_s = 0.1' \
+  "compute_workers = $(nproc)" \
+  $'window_s = 5\nmax_pieces = 16\nnest_time_s = 1' \
+  'retry_interval_s = 0.5'
 
-for size in 38 40 42 44; do
-  "$bin/lastcut" generate -o "$root/lasts/last-$size.stl" --size "$size" --side left --triangles "$triangles" --seed "$size" >/dev/null
-done
+generate_left_lasts "$bin" "$root/lasts" "$triangles" 38 40 42 44
 python3 - "$root" "$scans" <<'PY'
 import sys, os
 root, count = sys.argv[1], int(sys.argv[2])
@@ -60,10 +36,10 @@ PY
 "$bin/lastcut-sim" hpgl --link "$root/cutter-1.tty" --record "$root/record" --time-scale 0 > "$root/sim.log" 2>&1 &
 sim=$!
 trap 'kill $sim 2>/dev/null || true; [ -n "${daemon:-}" ] && kill $daemon 2>/dev/null || true' EXIT
-for _ in $(seq 100); do grep -q "ready:" "$root/sim.log" && break; sleep 0.1; done
+wait_for_line "$root/sim.log" "ready:" || true
 "$bin/lastcutd" --config "$root/lastcut.toml" > "$root/lastcutd.log" 2>&1 &
 daemon=$!
-for _ in $(seq 100); do grep -q "lastcutd ready" "$root/lastcutd.log" && break; sleep 0.1; done
+wait_for_line "$root/lastcutd.log" "lastcutd ready" || true
 rss_start_kb=$(awk '/VmRSS/ {print $2}' /proc/$daemon/status)
 
 start=$(date +%s.%N)

@@ -21,42 +21,14 @@ rm -rf "$root"
 mkdir -p "$root/incoming" "$root/staging" "$root/lasts"
 echo "crash test: $trials trials, seed $seed, folder $root"
 
-cat > "$root/lastcut.toml" <<TOML
-[paths]
-watch = "incoming"
-spool = "spool"
-machines = "$source_dir/config/machines"
-[watch]
-mode = "inotify"
-rescan_interval_s = 2
-stable_checks = 1
-stable_interval_s = 0.05
-incomplete_grace_s = 0.5
-[jobs]
-duplicate_policy = "process"
-# Kills from outside land during computations too; they must not fail good scans.
-max_attempts = 100
-default_material = "calf"
-default_cutter = "cutter-1"
-stop_grace_s = 10
-[batch]
-window_s = 0.3
-nest_time_s = 0.2
-[materials.calf]
-width_mm = 800
-length_mm = 1200
-[cutters.cutter-1]
-protocol = "hpgl"
-port = "cutter-1.tty"
-flow = "xonxoff"
-timeout_s = 5
-machine = "hpgl-pen-plotter"
-retry_interval_s = 0.3
-TOML
+source "$source_dir/tests/stress/daemon_scratch.sh"
+write_daemon_config "$root/lastcut.toml" "$source_dir" \
+  $'rescan_interval_s = 2\nstable_interval_s = 0.05\nincomplete_grace_s = 0.5' \
+  $'# Kills from outside land during computations too; they must not fail good scans.\nmax_attempts = 100\nstop_grace_s = 10' \
+  $'window_s = 0.3\nnest_time_s = 0.2' \
+  $'timeout_s = 5\nretry_interval_s = 0.3'
 
-for size in 39 41 43; do
-  "$bin/lastcut" generate -o "$root/lasts/last-$size.stl" --size "$size" --side left --triangles 2000 --seed "$size" >/dev/null
-done
+generate_left_lasts "$bin" "$root/lasts" 2000 39 41 43
 
 # An HPGL plotter (the simulator records the exact bytes received); the wire is modelled at
 # 38400 baud, so a cut takes long enough to be killed in the middle.
@@ -69,7 +41,7 @@ cleanup() {
   kill "$sim_pid" 2>/dev/null || true
 }
 trap cleanup EXIT
-for _ in $(seq 100); do grep -q "ready:" "$root/sim.log" && break; sleep 0.1; done
+wait_for_line "$root/sim.log" "ready:" || true
 
 # A new scan: a generated last with its own 80-byte header, so every file has its own hash.
 dropped=0
