@@ -3,26 +3,23 @@
 #include <cstdio>
 
 namespace lastcut {
-namespace {
 
-std::string micrometres(double value_mm) {
+std::string svg_number_mm(double value_mm) {
   char text[48];
   std::snprintf(text, sizeof text, "%.3f", value_mm);
   return text;
 }
-
-}  // namespace
 
 std::string svg_document_start(const SvgViewBox& view_box, int display_width_px, std::string_view extra_attributes) {
   std::string size;
   if (display_width_px > 0) {
     size = "width=\"" + std::to_string(display_width_px) + "\"";
   } else {
-    size = "width=\"" + micrometres(view_box.width_mm) + "mm\" height=\"" + micrometres(view_box.height_mm) + "mm\"";
+    size = "width=\"" + svg_number_mm(view_box.width_mm) + "mm\" height=\"" + svg_number_mm(view_box.height_mm) + "mm\"";
   }
   std::string start = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" " + size +
-                      " viewBox=\"" + micrometres(view_box.x_mm) + " " + micrometres(view_box.y_mm) + " " +
-                      micrometres(view_box.width_mm) + " " + micrometres(view_box.height_mm) + "\"";
+                      " viewBox=\"" + svg_number_mm(view_box.x_mm) + " " + svg_number_mm(view_box.y_mm) + " " +
+                      svg_number_mm(view_box.width_mm) + " " + svg_number_mm(view_box.height_mm) + "\"";
   if (!extra_attributes.empty()) start += " " + std::string(extra_attributes);
   return start + ">\n";
 }

@@ -19,6 +19,9 @@ std::string svg_document_start(const SvgViewBox& view_box, int display_width_px 
                                std::string_view extra_attributes = {});
 constexpr std::string_view kSvgDocumentEnd = "</svg>\n";
 
+// A coordinate or length in mm with 3 decimals (1 um), the resolution of lastcut's pictures.
+std::string svg_number_mm(double value_mm);
+
 // `text` with < > & " replaced by their entities, for element text and attribute values.
 std::string xml_escaped(std::string_view text);
 

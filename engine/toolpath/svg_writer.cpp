@@ -1,7 +1,6 @@
 #include "engine/toolpath/svg_writer.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <sstream>
 
 #include "engine/core/svg_document.hpp"
@@ -9,16 +8,10 @@
 namespace lastcut {
 namespace {
 
-std::string fixed(double value) {
-  char buffer[48];
-  std::snprintf(buffer, sizeof buffer, "%.3f", value);
-  return buffer;
-}
-
 std::string path_data(const std::vector<Point2>& points_mm, bool closed) {
   std::string data;
   for (size_t i = 0; i < points_mm.size(); ++i) {
-    data += (i == 0 ? "M" : " L") + fixed(points_mm[i].x()) + "," + fixed(points_mm[i].y());
+    data += (i == 0 ? "M" : " L") + svg_number_mm(points_mm[i].x()) + "," + svg_number_mm(points_mm[i].y());
   }
   return closed ? data + " Z" : data;
 }
@@ -40,8 +33,8 @@ std::string write_svg(const CutProgram& program) {
   svg << svg_document_start({low.x() - margin_mm, -high.y() - margin_mm, width_mm, height_mm})
       << "<title>lastcut cut program: " << program.pieces.size() << " pieces</title>\n"
       << "<g transform=\"scale(1,-1)\" fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
-  svg << "<rect x=\"0\" y=\"0\" width=\"" << fixed(program.work_area_x_mm) << "\" height=\""
-      << fixed(program.work_area_y_mm) << "\" stroke=\"#bbbbbb\" stroke-width=\"0.5\"/>\n";
+  svg << "<rect x=\"0\" y=\"0\" width=\"" << svg_number_mm(program.work_area_x_mm) << "\" height=\""
+      << svg_number_mm(program.work_area_y_mm) << "\" stroke=\"#bbbbbb\" stroke-width=\"0.5\"/>\n";
   svg << "<g id=\"travel\" stroke=\"#999999\" stroke-width=\"0.3\" stroke-dasharray=\"2,2\">\n";
   Point2 tool_mm = Point2::Zero();
   for (const Stroke& stroke : program.tip_strokes) {
@@ -66,7 +59,7 @@ std::string write_svg(const CutProgram& program) {
   svg << "</g>\n<g id=\"start\" fill=\"#00a000\" stroke=\"none\">\n";
   for (const ProgramPiece& piece : program.pieces) {
     const Point2& start = piece.outline_mm.points.front();
-    svg << "<circle cx=\"" << fixed(start.x()) << "\" cy=\"" << fixed(start.y()) << "\" r=\"1\"/>\n";
+    svg << "<circle cx=\"" << svg_number_mm(start.x()) << "\" cy=\"" << svg_number_mm(start.y()) << "\" r=\"1\"/>\n";
   }
   svg << "</g>\n</g>\n" << kSvgDocumentEnd;
   return svg.str();
