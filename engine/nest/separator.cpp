@@ -1,6 +1,7 @@
 #include "engine/nest/separator.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "engine/nest/overlap_proxy.hpp"
@@ -27,6 +28,7 @@ Separator::Separator(std::vector<const PreparedItem*> pieces, const Container& c
   weight_.assign(static_cast<size_t>(n_) * n_, 1.0);
   exterior_.assign(n_, 0.0);
   exterior_weight_.assign(n_, 1.0);
+  for (const PreparedItem* p : pieces_) scale_.push_back(std::sqrt(std::sqrt(std::max(p->area_mm2, 1e-12))));
 }
 
 void Separator::set_state(const std::vector<PieceState>& state) {
@@ -41,8 +43,8 @@ double Separator::eps(int a, int b) const {
 double Separator::weighted_cost(int i, const PieceState& candidate, double bound,
                                 const std::vector<char>* active) const {
   const OrientedShape& s = pieces_[i]->orientations[candidate.orientation];
-  double cost = exterior_weight_[i] *
-                container_.exterior_overlap(s, candidate.offset, pieces_[i]->min_quality, eps(i, i));
+  double cost = exterior_weight_[i] * scale_[i] * scale_[i] *
+                std::sqrt(container_.exterior_overlap(s, candidate.offset, pieces_[i]->min_quality, eps(i, i)));
   if (cost > bound) return cost;
   const Box world = s.box.shifted(candidate.offset);
   for (int j = 0; j < n_; ++j) {
@@ -50,8 +52,10 @@ double Separator::weighted_cost(int i, const PieceState& candidate, double bound
     const OrientedShape& t = pieces_[j]->orientations[state_[j].orientation];
     if (!world.overlaps(t.box.shifted(state_[j].offset))) continue;
     if (!rings_collide(placed(s, candidate.offset), placed(t, state_[j].offset))) continue;
-    const double w = weight_[static_cast<size_t>(i) * n_ + j];
-    cost += w * pair_overlap(s, candidate.offset, t, state_[j].offset, eps(i, j), (bound - cost) / w);
+    const double w = weight_[static_cast<size_t>(i) * n_ + j] * scale_[i] * scale_[j];
+    const double room = (bound - cost) / w;
+    cost += w * std::sqrt(pair_overlap(s, candidate.offset, t, state_[j].offset, eps(i, j),
+                                       room < kInfinity ? room * room : kInfinity));
     if (cost > bound) return cost;
   }
   return cost;
@@ -73,7 +77,7 @@ bool Separator::collides_any(int i, const PieceState& candidate, const std::vect
 
 void Separator::update_overlaps(int i) {
   const OrientedShape& s = pieces_[i]->orientations[state_[i].orientation];
-  exterior_[i] = container_.exterior_overlap(s, state_[i].offset, pieces_[i]->min_quality, eps(i, i));
+  exterior_[i] = scale_[i] * scale_[i] * std::sqrt(container_.exterior_overlap(s, state_[i].offset, pieces_[i]->min_quality, eps(i, i)));
   const Box world = s.box.shifted(state_[i].offset);
   for (int j = 0; j < n_; ++j) {
     if (j == i) continue;
@@ -81,7 +85,7 @@ void Separator::update_overlaps(int i) {
     double o = 0;
     if (world.overlaps(t.box.shifted(state_[j].offset)) &&
         rings_collide(placed(s, state_[i].offset), placed(t, state_[j].offset)))
-      o = pair_overlap(s, state_[i].offset, t, state_[j].offset, eps(i, j));
+      o = scale_[i] * scale_[j] * std::sqrt(pair_overlap(s, state_[i].offset, t, state_[j].offset, eps(i, j)));
     overlap_[static_cast<size_t>(i) * n_ + j] = overlap_[static_cast<size_t>(j) * n_ + i] = o;
   }
 }

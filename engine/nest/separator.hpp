@@ -4,6 +4,9 @@
 // coordinate descent) that minimises its weighted overlap; the weights of pairs that keep
 // overlapping grow, so the search leaves local minima. It ends when no overlap is left (a
 // feasible layout) or after max_strikes rounds without progress.
+// A pair's loss is sqrt(pole overlap proxy) x (area_i x area_j)^(1/4), the container's likewise with
+// the piece's own area (sparrow's Algorithm 4: linear in penetration depth, scaled by size), so a few
+// deep overlaps do not drown many shallow ones.
 // Method: sparrow (Gardeyn, Vanden Berghe & Wauters, arXiv:2509.13329, 2025); GLS for nesting:
 // Egeblad, Nielsen & Odgaard 2007; separation by overlap minimisation: Imamichi, Yagiura &
 // Nagamochi 2009; penetration-depth based overlap: Umetani et al. 2009.
@@ -38,7 +41,7 @@ class Separator {
 
   void set_state(const std::vector<PieceState>& state);
   const std::vector<PieceState>& state() const { return state_; }
-  // Sum of all unweighted overlaps (0: feasible).
+  // Sum of all unweighted losses (0: feasible).
   double total_overlap() const;
   // GLS until feasible (true) or out of strikes/time (false; the least-overlapping state is kept).
   bool separate(int max_strikes, int max_stale_iterations, const Deadline& deadline);
@@ -67,6 +70,7 @@ class Separator {
   std::vector<double> overlap_;  // n x n, symmetric, unweighted pair overlap
   std::vector<double> weight_;   // n x n GLS weights (>= 1)
   std::vector<double> exterior_, exterior_weight_;
+  std::vector<double> scale_;    // per piece: area^(1/4), so a pair's loss scales like sparrow's (Algorithm 4)
 };
 
 }  // namespace lastcut::nest_detail
