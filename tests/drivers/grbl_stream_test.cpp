@@ -28,10 +28,7 @@ std::string make_program(int lines) {
   return program;
 }
 
-struct GrblFixture {
-  TempDir dir;
-  std::unique_ptr<SimProcess> sim;
-  CutterConfig config;
+struct GrblFixture : testing::SimulatedCutter {
   explicit GrblFixture(std::vector<std::string> extra = {}, const std::string& time_scale = "0.001") {
     std::vector<std::string> args{"grbl", "--link", dir / "grbl", "--record", dir / "rec", "--time-scale", time_scale};
     args.insert(args.end(), extra.begin(), extra.end());
@@ -40,26 +37,15 @@ struct GrblFixture {
     config.protocol = "grbl";
     config.port = dir / "grbl";
     config.timeout_s = 3;
-  }
-  SendResult send(const std::string& program, const std::atomic<bool>* cancel = nullptr) {
-    static const std::atomic<bool> never{false};
-    return send_job(config, program, nullptr, cancel ? *cancel : never);
-  }
-  // Stops the simulator (so it writes its record) and returns {received program, stats json}.
-  std::pair<std::string, std::string> record() {
-    EXPECT_EQ(sim->stop(), 0) << "lastcut-sim must exit cleanly on SIGTERM";
-    return {read_file(dir.path() / "rec" / "grbl-received.nc"), read_file(dir.path() / "rec" / "grbl-stats.json")};
+    received_file = "grbl-received.nc";
+    stats_file = "grbl-stats.json";
   }
 };
 
 TEST(GrblStream, CharacterCountingDeliversByteExactWithinTheBuffer) {
   GrblFixture f({}, "0.01");  // motion slow enough that the planner fills and the RX buffer backs up
   ASSERT_TRUE(f.sim->ready()) << f.sim->ready_line();
-  const std::string program = make_program(150);
-  const SendResult result = f.send(program);
-  EXPECT_EQ(result.outcome, SendOutcome::Done) << result.reason;
-  const auto [received, stats] = f.record();
-  EXPECT_EQ(received, program);
+  const std::string stats = f.deliver(make_program(150));
   EXPECT_EQ(stat_value(stats, "rx_overflows"), 0);
   EXPECT_LE(stat_value(stats, "rx_high_water_bytes"), 128);
   EXPECT_GT(stat_value(stats, "rx_high_water_bytes"), 100) << "character counting should keep the buffer nearly full";
@@ -70,12 +56,7 @@ TEST(GrblStream, SendAndWaitKeepsOneLineInFlight) {
   GrblFixture f;
   ASSERT_TRUE(f.sim->ready());
   f.config.grbl_streaming = "send-wait";
-  const std::string program = make_program(60);
-  const SendResult result = f.send(program);
-  EXPECT_EQ(result.outcome, SendOutcome::Done) << result.reason;
-  const auto [received, stats] = f.record();
-  EXPECT_EQ(received, program);
-  EXPECT_LE(stat_value(stats, "rx_high_water_bytes"), 24);
+  EXPECT_LE(stat_value(f.deliver(make_program(60)), "rx_high_water_bytes"), 24);
 }
 
 TEST(GrblStream, UsesTheBufferSizeTheMachineReports) {

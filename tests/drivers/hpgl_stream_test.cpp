@@ -29,11 +29,8 @@ std::string make_hpgl(int segments) {
   return program;
 }
 
-struct HpglFixture {
-  TempDir dir;
-  std::unique_ptr<SimProcess> sim;
-  CutterConfig config;
-  HpglFixture(const std::string& handshake, std::vector<std::string> extra = {}) {
+struct HpglFixture : testing::SimulatedCutter {
+  explicit HpglFixture(const std::string& handshake, std::vector<std::string> extra = {}) {
     std::vector<std::string> args{"hpgl", "--link", dir / "plotter", "--record", dir / "rec", "--handshake", handshake,
                                   "--buffer", "256", "--baud", "38400"};
     args.insert(args.end(), extra.begin(), extra.end());
@@ -46,25 +43,15 @@ struct HpglFixture {
     config.flow = handshake == "xonxoff" ? "xonxoff" : "none";
     config.hpgl_handshake = handshake == "escb" ? "escb" : "";
     config.timeout_s = 2;
-  }
-  SendResult send(const std::string& program) {
-    const std::atomic<bool> never{false};
-    return send_job(config, program, nullptr, never);
-  }
-  std::pair<std::string, std::string> record() {
-    EXPECT_EQ(sim->stop(), 0);
-    return {read_file(dir.path() / "rec" / "hpgl-received.hpgl"), read_file(dir.path() / "rec" / "hpgl-stats.json")};
+    received_file = "hpgl-received.hpgl";
+    stats_file = "hpgl-stats.json";
   }
 };
 
 TEST(HpglStream, XonXoffKeepsTheSmallBufferFromOverflowing) {
   HpglFixture f("xonxoff");
   ASSERT_TRUE(f.sim->ready()) << f.sim->ready_line();
-  const std::string program = make_hpgl(150);
-  const SendResult result = f.send(program);
-  EXPECT_EQ(result.outcome, SendOutcome::Done) << result.reason;
-  const auto [received, stats] = f.record();
-  EXPECT_EQ(received, program);
+  const std::string stats = f.deliver(make_hpgl(150));
   EXPECT_EQ(stat_value(stats, "overflows"), 0);
   EXPECT_GT(stat_value(stats, "xoff_sent"), 0) << "the cutter must have been slower than the line for this test to mean anything";
   EXPECT_LE(stat_value(stats, "buffer_high_water_bytes"), 256);
@@ -75,11 +62,7 @@ TEST(HpglStream, XonXoffKeepsTheSmallBufferFromOverflowing) {
 TEST(HpglStream, EscBHandshakeSendsOnlyWhatFits) {
   HpglFixture f("escb");
   ASSERT_TRUE(f.sim->ready());
-  const std::string program = make_hpgl(150);
-  const SendResult result = f.send(program);
-  EXPECT_EQ(result.outcome, SendOutcome::Done) << result.reason;
-  const auto [received, stats] = f.record();
-  EXPECT_EQ(received, program);
+  const std::string stats = f.deliver(make_hpgl(150));
   EXPECT_EQ(stat_value(stats, "overflows"), 0);
   EXPECT_GT(stat_value(stats, "buffer_high_water_bytes"), 128) << "ESC.B should let the buffer fill";
 }

@@ -10,6 +10,24 @@
 
 namespace lastcut::drivers::testing {
 
+SendResult SimulatedCutter::send(const std::string& program, const std::atomic<bool>* cancel) {
+  static const std::atomic<bool> never{false};
+  return send_job(config, program, nullptr, cancel ? *cancel : never);
+}
+
+std::pair<std::string, std::string> SimulatedCutter::record() {
+  EXPECT_EQ(sim->stop(), 0) << "lastcut-sim must exit cleanly on SIGTERM";
+  return {read_file(dir.path() / "rec" / received_file), read_file(dir.path() / "rec" / stats_file)};
+}
+
+std::string SimulatedCutter::deliver(const std::string& program) {
+  const SendResult result = send(program);
+  EXPECT_EQ(result.outcome, SendOutcome::Done) << result.reason;
+  auto [received, stats] = record();
+  EXPECT_EQ(received, program);
+  return stats;
+}
+
 int stat_value(const std::string& stats_json, const std::string& key) {
   std::smatch m;
   if (!std::regex_search(stats_json, m, std::regex("\"" + key + "\": ([0-9]+)"))) return -1;
