@@ -3,7 +3,7 @@
 // validated by the independent Clipper checker (engine/nest/layout_check). Prints two tables:
 //   strips: utilisation, strip length, points below the best-known utilisation (sparrow's records);
 //   hides:  pieces placed / demanded, hides used, utilisation of the used hides.
-// Usage: nest_bench [--data DIR] [--limits 10,60] [--threads 2] [--seed 1] [--only NAME] [--svg-dir DIR]
+// Usage: nest_bench [--data DIR] [--limits 10,60] [--threads 2] [--seed 1] [--only NAME[,NAME...]] [--svg-dir DIR]
 //        nest_bench --limits 20 --svg-dir DIR --instance FILE   (options before --instance)
 #include <algorithm>
 #include <cstdio>
@@ -86,6 +86,14 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  // --only: a comma-separated list of instance names (file stems).
+  auto selected = [&only](const std::filesystem::path& file) {
+    if (only.empty()) return true;
+    std::stringstream list(only);
+    for (std::string name; std::getline(list, name, ',');)
+      if (file.stem() == name) return true;
+    return false;
+  };
   int invalid = 0;
   for (double limit : limits) {
     std::printf("\n## strip packing, %g s, %d threads, seed %llu\n\n", limit, threads, static_cast<unsigned long long>(seed));
@@ -93,7 +101,7 @@ int main(int argc, char** argv) {
     double gap_sum = 0, worst_gap = 0;
     int count = 0;
     for (const auto& file : json_files(data / "esicup")) {
-      if (!only.empty() && file.stem() != only) continue;
+      if (!selected(file)) continue;
       const lastcut::NestInstance instance = lastcut::read_nest_instance(file);
       lastcut::NestOptions options;
       options.time_limit_s = limit;
@@ -117,7 +125,7 @@ int main(int argc, char** argv) {
     std::printf("\n## leather hides, %g s, %d threads, seed %llu\n\n", limit, threads, static_cast<unsigned long long>(seed));
     std::printf("| instance | pieces placed / demanded | hides used / available | utilisation of used hides %% | valid |\n|---|---|---|---|---|\n");
     for (const auto& file : json_files(data / "leather")) {
-      if (!only.empty() && file.stem() != only) continue;
+      if (!selected(file)) continue;
       const lastcut::NestInstance instance = lastcut::read_nest_instance(file);
       lastcut::NestOptions options;
       options.time_limit_s = limit;
