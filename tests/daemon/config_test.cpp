@@ -30,7 +30,9 @@ machine = "grbl-drag-knife"
 }
 
 ConfigLoadResult load_text(const std::string& text) {
-  const auto folder = testing::scratch_folder("config");
+  // One folder per test: CTest runs the tests of this file as parallel processes.
+  const auto folder =
+      testing::scratch_folder(std::string("config-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
   testing::write_text(folder / "lastcut.toml", text);
   return load_daemon_config(folder / "lastcut.toml");
 }
