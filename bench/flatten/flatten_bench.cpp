@@ -54,10 +54,9 @@ Timed timed_flatten(const TriMesh& mesh, const FlattenOptions& options, int repe
 double refactorizing_seconds_per_iteration(const TriMesh& mesh, int iterations) {
   const DiskTopology topology = check_disk(mesh);
   const TriangleFrames frames = compute_triangle_frames(mesh);
-  ReducedLaplacian laplacian = build_reduced_pattern(frames, topology, topology.boundary_loop.front());
-  std::vector<char> fixed(mesh.vertex_count(), 0);
+  ReducedLaplacian laplacian = pinned_cotangent_laplacian(frames, topology);
+  std::vector<char> fixed(mesh.vertex_count(), 0);  // for the re-assembly in every iteration below
   fixed[laplacian.pinned] = 1;
-  assemble_laplacian(frames, frames.half_weight, fixed, laplacian);
   Eigen::MatrixXd UV;
   {
     SparseCholesky start_factor;
@@ -84,10 +83,7 @@ double refactorizing_seconds_per_iteration(const TriMesh& mesh, int iterations) 
 void solver_rows(const BenchHalf& half) {
   const DiskTopology topology = check_disk(half.mesh);
   const TriangleFrames frames = compute_triangle_frames(half.mesh);
-  ReducedLaplacian laplacian = build_reduced_pattern(frames, topology, topology.boundary_loop.front());
-  std::vector<char> fixed(half.mesh.vertex_count(), 0);
-  fixed[laplacian.pinned] = 1;
-  assemble_laplacian(frames, frames.half_weight, fixed, laplacian);
+  ReducedLaplacian laplacian = pinned_cotangent_laplacian(frames, topology);
   const Eigen::MatrixXd rhs = Eigen::MatrixXd::Ones(laplacian.matrix.rows(), 2);
   struct Variant {
     SparseSolver solver;

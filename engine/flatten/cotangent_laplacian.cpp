@@ -131,4 +131,12 @@ void assemble_laplacian(const TriangleFrames& frames, const std::vector<double>&
   }
 }
 
+ReducedLaplacian pinned_cotangent_laplacian(const TriangleFrames& frames, const DiskTopology& topology) {
+  ReducedLaplacian laplacian = build_reduced_pattern(frames, topology, topology.boundary_loop.front());
+  std::vector<char> fixed(laplacian.row_of_vertex.size(), 0);
+  fixed[static_cast<size_t>(laplacian.pinned)] = 1;
+  assemble_laplacian(frames, frames.half_weight, fixed, laplacian);
+  return laplacian;
+}
+
 }  // namespace lastcut

@@ -44,4 +44,8 @@ ReducedLaplacian build_reduced_pattern(const TriangleFrames& frames, const DiskT
 void assemble_laplacian(const TriangleFrames& frames, const std::vector<double>& half_weight,
                         const std::vector<char>& fixed, ReducedLaplacian& laplacian);
 
+// The free-boundary ARAP system: the cotangent Laplacian (frames.half_weight) with the first vertex of the
+// boundary loop pinned, so the system is definite; returns the assembled (#V-1) x (#V-1) matrix.
+ReducedLaplacian pinned_cotangent_laplacian(const TriangleFrames& frames, const DiskTopology& topology);
+
 }  // namespace lastcut

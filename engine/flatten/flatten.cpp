@@ -37,10 +37,7 @@ Eigen::MatrixXd flip_free_start(const TriMesh& disk, const TriangleFrames& frame
 void run_arap(const TriMesh& disk, const TriangleFrames& frames, const DiskTopology& topology,
               const FlattenOptions& options, FlattenResult& result) {
   auto clock = Clock::now();
-  ReducedLaplacian laplacian = build_reduced_pattern(frames, topology, topology.boundary_loop.front());
-  std::vector<char> fixed(disk.vertex_count(), 0);
-  fixed[laplacian.pinned] = 1;
-  assemble_laplacian(frames, frames.half_weight, fixed, laplacian);
+  ReducedLaplacian laplacian = pinned_cotangent_laplacian(frames, topology);
   SparseCholesky factor(options.solver);
   result.seconds_init += seconds_since(clock);
 

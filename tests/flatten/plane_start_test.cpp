@@ -15,10 +15,7 @@ namespace {
 std::optional<Eigen::MatrixXd> start_of(const TriMesh& mesh) {
   const DiskTopology topology = check_disk(mesh);
   const TriangleFrames frames = compute_triangle_frames(mesh);
-  ReducedLaplacian laplacian = build_reduced_pattern(frames, topology, topology.boundary_loop.front());
-  std::vector<char> fixed(mesh.vertex_count(), 0);
-  fixed[laplacian.pinned] = 1;
-  assemble_laplacian(frames, frames.half_weight, fixed, laplacian);
+  ReducedLaplacian laplacian = pinned_cotangent_laplacian(frames, topology);
   SparseCholesky factor;
   factor.analyze_pattern(laplacian.matrix);
   factor.factorize(laplacian.matrix);
