@@ -4,8 +4,11 @@
 //   strips: utilisation, strip length, points below the best-known utilisation (sparrow's records);
 //   hides:  pieces placed / demanded, hides used, utilisation of the used hides.
 // Usage: nest_bench [--data DIR] [--limits 10,60] [--threads 2] [--seed 1] [--only NAME[,NAME...]] [--svg-dir DIR]
+//                   [--rounds N]   (N improvement rounds instead of a time limit: a deterministic run whose
+//                                   wall time compares the speed of two builds)
 //        nest_bench --limits 20 --svg-dir DIR --instance FILE   (options before --instance)
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <functional>
 #include <cstdlib>
@@ -51,6 +54,7 @@ int main(int argc, char** argv) {
   int threads = 2;
   std::uint64_t seed = 1;
   std::string only;
+  long rounds = 0;  // > 0: an iteration limit instead of the time limits
   std::filesystem::path svg_dir;  // when set: a picture of every layout
   for (int a = 1; a + 1 < argc; a += 2) {
     const std::string key = argv[a], value = argv[a + 1];
@@ -58,6 +62,7 @@ int main(int argc, char** argv) {
     else if (key == "--threads") threads = std::atoi(value.c_str());
     else if (key == "--seed") seed = std::strtoull(value.c_str(), nullptr, 10);
     else if (key == "--only") only = value;
+    else if (key == "--rounds") rounds = std::atol(value.c_str());
     else if (key == "--svg-dir") svg_dir = value;
     else if (key == "--instance") {  // one instance file (strip or hides), one run per limit, with its picture
       const lastcut::NestInstance instance = lastcut::read_nest_instance(value);
@@ -108,7 +113,12 @@ int main(int argc, char** argv) {
       options.threads = threads;
       options.seed = seed;
       options.run_parallel = run_threads;
+      if (rounds > 0) options.time_limit_s = 1e9, options.iteration_limit = rounds;
+      const auto start = std::chrono::steady_clock::now();
       const lastcut::Layout layout = lastcut::nest(instance, options);
+      if (rounds > 0)
+        std::printf("%s: %ld rounds in %.2f s\n", instance.name.c_str(), rounds,
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
       const auto problems = lastcut::check_layout(layout, instance);
       invalid += problems.empty() ? 0 : 1;
       if (!svg_dir.empty()) lastcut::write_layout_svg(svg_dir / ("nest-" + instance.name + ".svg"), layout, instance);

@@ -5,18 +5,32 @@
 #include <limits>
 
 #include "engine/nest/overlap_proxy.hpp"
+#include "engine/nest/placement_search.hpp"
 
 namespace lastcut::nest_detail {
 namespace {
 
-constexpr int kGlobalSamples = 50;
-constexpr int kLocalSamples = 25;
-constexpr int kRefineEvaluations = 60;
 constexpr double kWeightGrowthLow = 1.2, kWeightGrowthHigh = 2.0, kWeightDecay = 0.95;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 PlacedRing placed(const OrientedShape& shape, const Point2& offset) {
   return {&shape.outline, shape.box, offset, shape.poles.empty() ? nullptr : &shape.poles.front().center};
+}
+
+// Fail-fast collision test (after jagua-rs): the largest poles of two pieces lie inside their outlines,
+// so when two of them intersect the pieces collide and the exact edge test is not needed.
+bool largest_poles_meet(const OrientedShape& a, const Point2& offset_a, const OrientedShape& b, const Point2& offset_b) {
+  constexpr size_t kFailFastPoles = 2;
+  const Point2 shift = offset_a - offset_b;
+  for (size_t k = 0; k < std::min(kFailFastPoles, a.poles.size()); ++k)
+    for (size_t l = 0; l < std::min(kFailFastPoles, b.poles.size()); ++l) {
+      const Pole& p = a.poles[k];
+      const Pole& q = b.poles[l];
+      // Shrunk by a rounding margin: the radii are distances to the outline, computed in doubles.
+      const double reach = (p.radius_mm + q.radius_mm) * (1 - 1e-9);
+      if ((p.center + shift - q.center).squaredNorm() < reach * reach) return true;
+    }
+  return false;
 }
 
 }  // namespace
@@ -51,9 +65,11 @@ double Separator::weighted_cost(int i, const PieceState& candidate, double bound
     if (j == i || (active && !(*active)[j])) continue;
     const OrientedShape& t = pieces_[j]->orientations[state_[j].orientation];
     if (!world.overlaps(t.box.shifted(state_[j].offset))) continue;
-    if (!rings_collide(placed(s, candidate.offset), placed(t, state_[j].offset))) continue;
     const double w = weight_[static_cast<size_t>(i) * n_ + j] * scale_[i] * scale_[j];
     const double room = (bound - cost) / w;
+    if (!largest_poles_meet(s, candidate.offset, t, state_[j].offset) &&
+        !rings_collide(placed(s, candidate.offset), placed(t, state_[j].offset)))
+      continue;
     cost += w * std::sqrt(pair_overlap(s, candidate.offset, t, state_[j].offset, eps(i, j),
                                        room < kInfinity ? room * room : kInfinity));
     if (cost > bound) return cost;
@@ -84,7 +100,8 @@ void Separator::update_overlaps(int i) {
     const OrientedShape& t = pieces_[j]->orientations[state_[j].orientation];
     double o = 0;
     if (world.overlaps(t.box.shifted(state_[j].offset)) &&
-        rings_collide(placed(s, state_[i].offset), placed(t, state_[j].offset)))
+        (largest_poles_meet(s, state_[i].offset, t, state_[j].offset) ||
+         rings_collide(placed(s, state_[i].offset), placed(t, state_[j].offset))))
       o = scale_[i] * scale_[j] * std::sqrt(pair_overlap(s, state_[i].offset, t, state_[j].offset, eps(i, j)));
     overlap_[static_cast<size_t>(i) * n_ + j] = overlap_[static_cast<size_t>(j) * n_ + i] = o;
   }
@@ -103,68 +120,9 @@ double Separator::total_overlap() const {
   return total;
 }
 
-PieceState Separator::refine(int i, PieceState start, double& cost) {
-  const double diameter = pieces_[i]->diameter_mm;
-  double step = 0.05 * diameter;
-  const double min_step = 1e-4 * diameter;
-  static constexpr double directions[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-  for (int evaluations = 0; step > min_step && evaluations < kRefineEvaluations;) {
-    bool improved = false;
-    for (const auto& d : directions) {
-      PieceState candidate = start;
-      candidate.offset += Point2(d[0], d[1]) * step;
-      const double c = weighted_cost(i, candidate, cost, nullptr);
-      ++evaluations;
-      if (c < cost) {
-        start = candidate, cost = c, improved = true;
-        break;
-      }
-    }
-    step *= improved ? 1.5 : 0.5;
-    if (cost == 0) break;
-  }
-  return start;
-}
-
 void Separator::move_piece(int i) {
-  const PreparedItem& item = *pieces_[i];
-  const int orientations = static_cast<int>(item.orientations.size());
-  const PieceState current = state_[i];
-  double current_cost = weighted_cost(i, current, kInfinity, nullptr);
-  PieceState best_global = current, best_local = current;
-  double global_cost = kInfinity, local_cost = kInfinity;
-  for (int k = 0; k < kGlobalSamples && global_cost > 0; ++k) {
-    PieceState candidate{random_.below(orientations), Point2::Zero()};
-    const Box range = container_.offset_range(item.orientations[candidate.orientation]);
-    if (range.x0 > range.x1 || range.y0 > range.y1) continue;
-    candidate.offset = {random_.uniform(range.x0, range.x1), random_.uniform(range.y0, range.y1)};
-    const double c = weighted_cost(i, candidate, global_cost, nullptr);
-    if (c < global_cost) global_cost = c, best_global = candidate;
-  }
-  const double radius = 0.25 * item.diameter_mm;
-  for (int k = 0; k < kLocalSamples && local_cost > 0 && global_cost > 0; ++k) {
-    PieceState candidate{random_.uniform() < 0.7 ? current.orientation : random_.below(orientations), current.offset};
-    const Box range = container_.offset_range(item.orientations[candidate.orientation]);
-    if (range.x0 > range.x1 || range.y0 > range.y1) continue;
-    candidate.offset += Point2(random_.uniform(-radius, radius), random_.uniform(-radius, radius));
-    candidate.offset = {std::clamp(candidate.offset.x(), range.x0, range.x1), std::clamp(candidate.offset.y(), range.y0, range.y1)};
-    const double c = weighted_cost(i, candidate, local_cost, nullptr);
-    if (c < local_cost) local_cost = c, best_local = candidate;
-  }
-  PieceState best = current;
-  double best_cost = current_cost;
-  if (global_cost < kInfinity) {
-    best_global = refine(i, best_global, global_cost);
-    if (global_cost < best_cost) best = best_global, best_cost = global_cost;
-  }
-  if (local_cost < kInfinity && best_cost > 0) {
-    best_local = refine(i, best_local, local_cost);
-    if (local_cost < best_cost) best = best_local, best_cost = local_cost;
-  }
-  if (best_cost > 0 && best_cost == current_cost) {
-    best = refine(i, current, current_cost);
-  }
-  state_[i] = best;
+  const auto cost = [this, i](const PieceState& candidate, double bound) { return weighted_cost(i, candidate, bound, nullptr); };
+  state_[i] = search_placement(*pieces_[i], state_[i], container_, cost, SearchSettings{}, random_).first;
   update_overlaps(i);
 }
 
@@ -186,46 +144,38 @@ void Separator::update_weights() {
   }
 }
 
-bool Separator::separate(int max_strikes, int max_stale_iterations, const Deadline& deadline) {
+double Separator::total_weighted_overlap() const {
+  double total = 0;
+  for (int i = 0; i < n_; ++i) {
+    total += exterior_weight_[i] * exterior_[i];
+    for (int j = i + 1; j < n_; ++j) total += weight_[static_cast<size_t>(i) * n_ + j] * overlap_[static_cast<size_t>(i) * n_ + j];
+  }
+  return total;
+}
+
+void Separator::reset_weights() {
   std::fill(weight_.begin(), weight_.end(), 1.0);
   std::fill(exterior_weight_.begin(), exterior_weight_.end(), 1.0);
   recompute_all();
-  double best_total = total_overlap();
-  if (best_total == 0) return true;
-  std::vector<PieceState> best_state = state_;
-  std::vector<int> order;
-  // A strike is a run of sweeps that ends without a substantial (2 %) improvement on the overlap it
-  // started from; a substantial improvement also resets the stale counter (sparrow, Algorithm 9).
-  constexpr double kSubstantial = 0.98;
-  for (int strike = 0; strike < max_strikes;) {
-    const double strike_start = total_overlap();
-    for (int stale = 0; stale < max_stale_iterations;) {
-      if (deadline.passed()) {
-        set_state(best_state);
-        return false;
-      }
-      order.clear();
-      for (int i = 0; i < n_; ++i) order.push_back(i);
-      for (int k = n_ - 1; k > 0; --k) std::swap(order[k], order[random_.below(k + 1)]);
-      for (int i : order) {
-        double row = exterior_[i];
-        for (int j = 0; j < n_; ++j) row += overlap_[static_cast<size_t>(i) * n_ + j];
-        if (row > 0) move_piece(i);
-      }
-      const double total = total_overlap();
-      if (total == 0) return true;
-      if (total < best_total) {
-        if (total < kSubstantial * best_total) stale = 0;
-        best_total = total, best_state = state_;
-      } else {
-        ++stale;
-      }
-      update_weights();
-    }
-    strike = best_total < kSubstantial * strike_start ? 0 : strike + 1;
-    set_state(best_state);  // back to the least overlap, keeping the weights learnt so far
+}
+
+void Separator::sweep() {
+  std::vector<int> order(n_);
+  for (int i = 0; i < n_; ++i) order[i] = i;
+  for (int k = n_ - 1; k > 0; --k) std::swap(order[k], order[random_.below(k + 1)]);
+  for (int i : order) {
+    double row = exterior_[i];
+    for (int j = 0; j < n_; ++j) row += overlap_[static_cast<size_t>(i) * n_ + j];
+    if (row > 0) move_piece(i);
   }
-  return false;
+}
+
+void Separator::adopt(const Separator& other) {
+  state_ = other.state_;
+  overlap_ = other.overlap_;
+  weight_ = other.weight_;
+  exterior_ = other.exterior_;
+  exterior_weight_ = other.exterior_weight_;
 }
 
 bool Separator::place_greedy(int i, const Objective& objective, int samples, const std::vector<char>& active) {

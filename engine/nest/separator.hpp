@@ -1,9 +1,9 @@
 #pragma once
-// Overlap minimisation by guided local search: pieces may overlap temporarily; every overlapping
-// piece in turn moves to the position (sampled globally and around itself, then refined by
-// coordinate descent) that minimises its weighted overlap; the weights of pairs that keep
-// overlapping grow, so the search leaves local minima. It ends when no overlap is left (a
-// feasible layout) or after max_strikes rounds without progress.
+// The moves of overlap minimisation by guided local search: pieces may overlap temporarily; every
+// overlapping piece in turn moves to the position (sampled globally and around itself, then refined
+// by coordinate descent) that minimises its weighted overlap; the weights of pairs that keep
+// overlapping grow, so the search leaves local minima. The loop that runs sweeps until no overlap
+// is left is engine/nest/parallel_separation.
 // A pair's loss is sqrt(pole overlap proxy) x (area_i x area_j)^(1/4), the container's likewise with
 // the piece's own area (sparrow's Algorithm 4: linear in penetration depth, scaled by size), so a few
 // deep overlaps do not drown many shallow ones.
@@ -39,12 +39,22 @@ class Separator {
   // pieces: one entry per copy to place (pointers stay valid for the separator's life).
   Separator(std::vector<const PreparedItem*> pieces, const Container& container, std::uint64_t seed);
 
+  // Sets the pieces' poses and offsets, keeping the GLS weights learnt so far.
   void set_state(const std::vector<PieceState>& state);
   const std::vector<PieceState>& state() const { return state_; }
   // Sum of all unweighted losses (0: feasible).
   double total_overlap() const;
-  // GLS until feasible (true) or out of strikes/time (false; the least-overlapping state is kept).
-  bool separate(int max_strikes, int max_stale_iterations, const Deadline& deadline);
+  // Sum of all losses times their GLS weights: what a sweep lowers.
+  double total_weighted_overlap() const;
+  // Back to weight 1 for every pair (the start of a separation).
+  void reset_weights();
+  // One GLS iteration's moves: every overlapping piece, in random order, moves to the best spot
+  // sparrow's sampling search finds for it (engine/nest/placement_search).
+  void sweep();
+  // The GLS weight update after a sweep: weights of overlapping pairs grow with their overlap, the others decay.
+  void update_weights();
+  // Takes over another separator's state and weights (same pieces and container).
+  void adopt(const Separator& other);
   // Greedy placement of pieces `order` one by one at the feasible spot minimising
   // objective(world box) among sampled and refined candidates; pieces not in `order` are ignored.
   // Returns false (piece left where it was) when no sampled spot is feasible.
@@ -59,8 +69,6 @@ class Separator {
   void update_overlaps(int i);
   void recompute_all();
   void move_piece(int i);
-  PieceState refine(int i, PieceState start, double& cost);
-  void update_weights();
 
   std::vector<const PreparedItem*> pieces_;
   const Container& container_;

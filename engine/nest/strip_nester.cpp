@@ -8,6 +8,7 @@
 
 #include "engine/nest/nest_random.hpp"
 #include "engine/nest/overlap_proxy.hpp"
+#include "engine/nest/parallel_separation.hpp"
 #include "engine/nest/separator.hpp"
 #include "engine/nest/strip_moves.hpp"
 
@@ -135,21 +136,6 @@ std::vector<PieceState> construct(const Pieces& pieces, double height, double in
   return separator.state();
 }
 
-// One independent search (sparrow's exploration, then compression) on its own thread. Between
-// rounds the strip nester hands it the best layout of all searches when it has fallen behind.
-struct Worker {
-  std::unique_ptr<StripContainer> container;
-  std::unique_ptr<Separator> separator;
-  Random random{0};
-  std::vector<PieceState> current;  // what the next round separates, at `width`
-  double width = 0;
-  double shrink = kShrinkFirst;     // exploration shrink ratio
-  std::vector<std::pair<double, std::vector<PieceState>>> pool;  // infeasible layouts at `width`, least overlap first
-  std::vector<PieceState> result;   // of the last round
-  double length = 0;
-  bool success = false;
-};
-
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -184,89 +170,68 @@ Layout nest_strip(const NestInstance& instance, const NestOptions& options) {
   Layout layout = to_layout(instance, pieces, best, best_length);
   if (options.on_improvement) options.on_improvement(layout);
 
-  const int threads = std::max(1, options.threads);
-  std::vector<Worker> workers(threads);
-  for (int w = 0; w < threads; ++w) {
-    workers[w].container = std::make_unique<StripContainer>(best_length, height, inset);
-    workers[w].separator = std::make_unique<Separator>(pieces.pieces, *workers[w].container, stream_seed(options.seed, 1, w));
-    workers[w].random = Random(stream_seed(options.seed, 2, w));
-    workers[w].shrink = kShrinkFirst * (1 + w);  // different steps: the searches differ from the start
-  }
-  // Starts worker w from the best layout, shrunk by `ratio` at `split_x` (the middle when negative).
-  auto restart = [&](Worker& worker, double ratio, double split_x) {
-    worker.width = best_length * (1 - ratio);
-    worker.container->set_length(worker.width);
-    worker.current = best;
-    shrink_strip(pieces.pieces, worker.current, split_x < 0 ? 0.5 * best_length : split_x, best_length - worker.width,
-                 *worker.container);
-    worker.pool.clear();
+  // One search: exploration, then compression; the threads share each separation's sweeps.
+  StripContainer container(best_length, height, inset);
+  ParallelSeparation separation(pieces.pieces, container, stream_seed(options.seed, 1, 0), std::max(1, options.threads),
+                                options.run_parallel);
+  Random random(stream_seed(options.seed, 2, 0));
+  double shrink = kShrinkFirst;  // exploration shrink ratio
+  double width = best_length;    // of the strip the next round separates on
+  std::vector<PieceState> current;
+  std::vector<std::pair<double, std::vector<PieceState>>> pool;  // infeasible layouts at `width`, least overlap first
+  // Starts from the best layout, shrunk by `ratio` at `split_x` (the middle when negative).
+  auto restart = [&](double ratio, double split_x) {
+    width = best_length * (1 - ratio);
+    container.set_length(width);
+    current = best;
+    shrink_strip(pieces.pieces, current, split_x < 0 ? 0.5 * best_length : split_x, best_length - width, container);
+    pool.clear();
   };
-  for (Worker& worker : workers) restart(worker, worker.shrink, -1);
+  restart(shrink, -1);
 
   const long rounds = options.iteration_limit.value_or(0);
   for (long round = 0; !options.iteration_limit || round < rounds; ++round) {
     if (deadline.passed()) break;
     const bool compressing = options.iteration_limit ? round >= kExplorationShare * static_cast<double>(rounds)
                                                      : exploration_end.passed();
-    std::vector<std::function<void()>> tasks;
-    for (int w = 0; w < threads; ++w) {
-      tasks.push_back([&, w, compressing] {
-        Worker& worker = workers[w];
-        worker.container->set_length(worker.width);
-        worker.separator->set_state(worker.current);
-        worker.success = compressing ? worker.separator->separate(kCompressionStrikes, kCompressionStale, deadline)
-                                     : worker.separator->separate(kExplorationStrikes, kExplorationStale, deadline);
-        worker.result = worker.separator->state();
-        worker.length = worker.success ? strip_length(pieces.pieces, worker.result, inset) : 0;
-        if (worker.success || compressing) return;
-        if (worker.shrink > kShrinkLeast) {
-          // Too bold a shrink: retry the least overlapping layout on a strip half as much shorter than the best.
-          worker.shrink = std::max(kShrinkLeast, worker.shrink * kShrinkCut);
-          worker.width = std::max(worker.width, best_length * (1 - worker.shrink));
-          worker.current = worker.result;
-          worker.pool.clear();
-          return;
-        }
-        // Keep the failed layout; go on from one of the least overlapping ones, disrupted.
-        auto& pool = worker.pool;
-        const double loss = worker.separator->total_overlap();
-        auto at = std::lower_bound(pool.begin(), pool.end(), loss, [](const auto& e, double l) { return e.first < l; });
-        pool.insert(at, {loss, worker.result});
-        if (pool.size() > kPoolSize) pool.pop_back();
-        worker.current = pool[pick_from_pool(pool.size(), worker.random)].second;
-        disrupt_layout(pieces.pieces, worker.current, *worker.container, worker.random);
-      });
-    }
-    if (options.run_parallel) {
-      options.run_parallel(tasks);
-    } else {
-      for (auto& task : tasks) task();
-    }
+    container.set_length(width);
+    separation.set_state(current);
+    const bool success = compressing ? separation.separate(kCompressionStrikes, kCompressionStale, deadline)
+                                     : separation.separate(kExplorationStrikes, kExplorationStale, deadline);
     if (deadline.passed()) break;  // a round cut short is not deterministic: drop it
-    int winner = -1;
-    for (int w = 0; w < threads; ++w)
-      if (workers[w].success && workers[w].length < best_length && (winner < 0 || workers[w].length < workers[winner].length))
-        winner = w;
-    if (winner >= 0) {
-      best = workers[winner].result;
-      best_length = workers[winner].length;
-      layout = to_layout(instance, pieces, best, best_length);
-      if (options.on_improvement) options.on_improvement(layout);
-    }
-    // Searches that succeeded, or that work on a strip no shorter than the best, go on from the best.
-    for (Worker& worker : workers) {
-      if (!compressing && !worker.success && worker.width < best_length) continue;
-      if (compressing) {
-        const double progress = options.iteration_limit
-                                    ? (round + 1 - kExplorationShare * static_cast<double>(rounds)) /
-                                          ((1 - kExplorationShare) * static_cast<double>(rounds))
-                                    : (seconds_since(start) / options.time_limit_s - kExplorationShare) / (1 - kExplorationShare);
-        const double ratio = kCompressionShrinkFirst + std::clamp(progress, 0.0, 1.0) * (kCompressionShrinkLast - kCompressionShrinkFirst);
-        restart(worker, ratio, worker.random.uniform(0, best_length));
-      } else {
-        if (worker.success && worker.pool.empty()) worker.shrink = std::min(kShrinkMost, worker.shrink * kShrinkGrowth);
-        restart(worker, worker.shrink, -1);
+    if (success) {
+      const double length = strip_length(pieces.pieces, separation.state(), inset);
+      if (length < best_length) {
+        best = separation.state();
+        best_length = length;
+        layout = to_layout(instance, pieces, best, best_length);
+        if (options.on_improvement) options.on_improvement(layout);
       }
+    }
+    if (compressing) {
+      const double progress = options.iteration_limit
+                                  ? (round + 1 - kExplorationShare * static_cast<double>(rounds)) /
+                                        ((1 - kExplorationShare) * static_cast<double>(rounds))
+                                  : (seconds_since(start) / options.time_limit_s - kExplorationShare) / (1 - kExplorationShare);
+      restart(kCompressionShrinkFirst + std::clamp(progress, 0.0, 1.0) * (kCompressionShrinkLast - kCompressionShrinkFirst),
+              random.uniform(0, best_length));
+    } else if (success) {
+      if (pool.empty()) shrink = std::min(kShrinkMost, shrink * kShrinkGrowth);
+      restart(shrink, -1);
+    } else if (shrink > kShrinkLeast) {
+      // Too bold a shrink: retry the least overlapping layout on a strip half as much shorter than the best.
+      shrink = std::max(kShrinkLeast, shrink * kShrinkCut);
+      width = std::max(width, best_length * (1 - shrink));
+      current = separation.state();
+      pool.clear();
+    } else {
+      // Keep the failed layout; go on from one of the least overlapping ones, disrupted.
+      const double loss = separation.total_overlap();
+      auto at = std::lower_bound(pool.begin(), pool.end(), loss, [](const auto& e, double l) { return e.first < l; });
+      pool.insert(at, {loss, separation.state()});
+      if (pool.size() > kPoolSize) pool.pop_back();
+      current = pool[pick_from_pool(pool.size(), random)].second;
+      disrupt_layout(pieces.pieces, current, container, random);
     }
   }
   return layout;

@@ -1,0 +1,43 @@
+#pragma once
+// Separation of an overlapping layout by guided local search with several workers (sparrow: Gardeyn,
+// Vanden Berghe & Wauters, arXiv:2509.13329, 2025, Algorithms 9 and 10). Every iteration each worker
+// starts from the same layout and weights and sweeps it with its own random order and samples; the
+// sweep that leaves the least weighted overlap is kept and the others are dropped. Then the weights
+// are updated. A strike is a run of iterations that ends without a substantial (2 %) improvement on
+// the overlap it started from; a substantial improvement also resets the count of iterations
+// without improvement. It ends when no overlap is left, after max_strikes strikes, or at the deadline.
+// The result depends only on the seeds and the worker count: workers are compared by weighted overlap,
+// ties going to the lowest index.
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "engine/nest/nest_random.hpp"
+#include "engine/nest/separator.hpp"
+
+namespace lastcut::nest_detail {
+
+using RunParallel = std::function<void(std::vector<std::function<void()>>&)>;
+
+class ParallelSeparation {
+ public:
+  // workers >= 1; worker w draws from a stream seeded by stream_seed(seed, 0, w); run_parallel runs the
+  // workers' sweeps (unset or one worker: one after the other on the caller's thread).
+  ParallelSeparation(const std::vector<const PreparedItem*>& pieces, const Container& container, std::uint64_t seed,
+                     int workers, RunParallel run_parallel);
+
+  void set_state(const std::vector<PieceState>& state) { lead().set_state(state); }
+  const std::vector<PieceState>& state() const { return workers_.front()->state(); }
+  double total_overlap() const { return workers_.front()->total_overlap(); }
+  // Until feasible (true) or out of strikes or time (false; the least overlapping state is kept).
+  bool separate(int max_strikes, int max_stale_iterations, const Deadline& deadline);
+
+ private:
+  Separator& lead() { return *workers_.front(); }
+  void sweep_all();
+
+  std::vector<std::unique_ptr<Separator>> workers_;
+  RunParallel run_parallel_;
+};
+
+}  // namespace lastcut::nest_detail
