@@ -193,6 +193,20 @@ std::vector<Pole> compute_poles(const std::vector<Point2>& ring, int max_poles) 
   return poles;
 }
 
+PoleLanes pole_lanes(const std::vector<Pole>& poles) {
+  PoleLanes lanes;
+  const size_t padded = (poles.size() + 3) / 4 * 4;
+  for (size_t k = 0; k < padded; ++k) {
+    // A padding pole: radius 0 adds nothing (its weight is the smaller radius), 1e15 mm away keeps its
+    // penetration depth finite and negative.
+    const bool real = k < poles.size();
+    lanes.x.push_back(real ? static_cast<float>(poles[k].center.x()) : 1e15f);
+    lanes.y.push_back(real ? static_cast<float>(poles[k].center.y()) : 1e15f);
+    lanes.radius.push_back(real ? static_cast<float>(poles[k].radius_mm) : 0.0f);
+  }
+  return lanes;
+}
+
 PreparedItem prepare_item(const NestItem& item, int item_index, double grow_mm, double free_step_deg) {
   PreparedItem prepared;
   prepared.item_index = item_index;
@@ -211,6 +225,7 @@ PreparedItem prepare_item(const NestItem& item, int item_index, double grow_mm, 
     oriented.outline = std::move(ccw.points);
     oriented.box = bounding_box(oriented.outline);
     for (const Pole& pole : poles) oriented.poles.push_back({apply_pose(pole.center, pose), pole.radius_mm});
+    oriented.pole_lanes = pole_lanes(oriented.poles);
     prepared.orientations.push_back(std::move(oriented));
   }
   if (prepared.orientations.empty())

@@ -24,12 +24,20 @@ struct Pole {
   double radius_mm = 0;
 };
 
+// The poles again as single-precision lanes, padded with empty poles (radius 0, far away) to a
+// multiple of 4, so the overlap measure can take four at a time. Floats suffice: the measure only
+// steers the search; collisions are decided exactly on the outlines.
+struct PoleLanes {
+  std::vector<float> x, y, radius;  // mm
+};
+
 // The item in one pose, before translation.
 struct OrientedShape {
   Pose pose;
   std::vector<Point2> outline;  // conservative collision outline #P, counter-clockwise, mm
   Box box;                      // of the outline
   std::vector<Pole> poles;
+  PoleLanes pole_lanes;  // the same poles, for pair_overlap
 };
 
 struct PreparedItem {
@@ -55,6 +63,9 @@ std::vector<Pole> compute_poles(const std::vector<Point2>& ring, int max_poles);
 
 // Everything above for one item. grow_mm = gap / 2.
 PreparedItem prepare_item(const NestItem& item, int item_index, double grow_mm, double free_step_deg);
+
+// The poles as lanes (see PoleLanes).
+PoleLanes pole_lanes(const std::vector<Pole>& poles);
 
 // The pose applied to a point of the own frame (no translation).
 Point2 apply_pose(const Point2& point, const Pose& pose);
