@@ -40,6 +40,30 @@ void run_on_threads(std::vector<std::function<void()>>& tasks) {
   for (auto& t : threads) t.join();
 }
 
+TEST(OverlapProxy, SumsEveryPolePairLikeThePlainFormula) {
+  // Two L-shapes (5 and more poles, so the padded lanes are exercised) overlapping at a corner, and
+  // the same pair far apart but for one pole pair: the four-lane sum must match the plain double sum.
+  const PreparedItem a = prepare_item(test::item(0, test::l_shape(50, 40, 12), 1, {0}), 0, 0.0, 15);
+  const PreparedItem b = prepare_item(test::item(1, test::l_shape(30, 30, 9), 1, {90}), 1, 0.0, 15);
+  const OrientedShape& sa = a.orientations[0];
+  const OrientedShape& sb = b.orientations[0];
+  ASSERT_GE(sb.poles.size(), 2u);
+  ASSERT_EQ(sb.pole_lanes.radius.size() % 4, 0u);
+  for (const Point2& offset_b : {Point2(20, 15), Point2(45, 30), Point2(400, -300)}) {
+    const double eps = 0.5;
+    double plain = eps * eps;
+    for (const Pole& p : sa.poles)
+      for (const Pole& q : sb.poles) {
+        const double pd = p.radius_mm + q.radius_mm - (p.center - q.center - offset_b).norm();
+        plain += smoothed_depth(pd, eps) * std::min(p.radius_mm, q.radius_mm);
+      }
+    const double lanes = pair_overlap(sa, Point2::Zero(), sb, offset_b, eps);
+    EXPECT_NEAR(lanes, plain, 1e-4 * plain) << offset_b.transpose();
+  }
+  // Deeper overlap measures more.
+  EXPECT_GT(pair_overlap(sa, Point2::Zero(), sb, Point2(5, 5), 0.5), pair_overlap(sa, Point2::Zero(), sb, Point2(30, 20), 0.5));
+}
+
 TEST(PlacementSearch, MovesAPieceOffAnotherIntoTheFreeHalfAndNeverDoesWorse) {
   // A 100 x 50 box holding a 40 x 40 square at the left; a second square starts right on top of it.
   const PreparedItem square = prepare_item(test::item(0, test::rectangle(40, 40), 1, {0}), 0, 0.0, 15);
