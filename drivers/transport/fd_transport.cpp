@@ -71,8 +71,11 @@ IoStatus FdTransport::write(std::string_view data, double timeout_s) {
       continue;
     }
     if (put < 0 && errno != EAGAIN && errno != EINTR) {
-      const bool gone = errno == EIO || errno == EPIPE || errno == ECONNRESET || errno == ENXIO;
-      return IoStatus::failure(description_ + ": write failed (" + std::strerror(errno) + ")", gone);
+      // EIO/ENXIO on a tty, EPIPE/ECONNRESET on a socket: the device went away, which the operator reads
+      // as a lost connection whichever side (read or write) noticed it first.
+      if (errno == EIO || errno == EPIPE || errno == ECONNRESET || errno == ENXIO)
+        return IoStatus::failure(description_ + ": connection lost while writing (" + std::strerror(errno) + ")", true);
+      return IoStatus::failure(description_ + ": write failed (" + std::strerror(errno) + ")");
     }
     const double left_s = timeout_s - seconds_since(start);
     if (left_s <= 0) {

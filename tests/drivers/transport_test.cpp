@@ -68,6 +68,19 @@ TEST(Transport, DeviceVanishingIsReportedAsClosed) {
   EXPECT_TRUE(status.error.find("lost") != std::string::npos || status.error.find("closed") != std::string::npos) << status.error;
 }
 
+TEST(Transport, DeviceVanishingWhileWritingIsALostConnection) {
+  // The write side may notice an unplugged adapter before the read side does (EIO on the tty); the
+  // operator must read the same "connection lost" either way (seen once in CI: "write failed").
+  auto pty = std::make_unique<Pty>();
+  OpenResult opened = open_transport(pty->name, {}, 1);
+  ASSERT_TRUE(opened.transport) << opened.error;
+  pty.reset();
+  const IoStatus status = opened.transport->write(std::string(4096, 'x'), 0.5);
+  EXPECT_FALSE(status.ok);
+  EXPECT_TRUE(status.closed) << status.error;
+  EXPECT_NE(status.error.find("connection lost"), std::string::npos) << status.error;
+}
+
 TEST(Transport, TcpLoopbackAndRefusedConnection) {
   const int listener = ::socket(AF_INET, SOCK_STREAM, 0);
   sockaddr_in address{};
