@@ -25,8 +25,11 @@ void ParallelSeparation::sweep_all() {
     for (auto& task : tasks) task();
   }
   size_t winner = 0;
-  for (size_t w = 1; w < workers_.size(); ++w)
-    if (workers_[w]->total_weighted_overlap() < workers_[winner]->total_weighted_overlap()) winner = w;
+  double least = workers_[0]->total_weighted_overlap();
+  for (size_t w = 1; w < workers_.size(); ++w) {
+    const double overlap = workers_[w]->total_weighted_overlap();
+    if (overlap < least) least = overlap, winner = w;
+  }
   if (winner > 0) lead().adopt(*workers_[winner]);
 }
 

@@ -55,7 +55,6 @@ double smaller_side(const PreparedItem& item, const PieceState& state) {
 Sample descend(Sample start, double first_step, double last_step, const Container& container,
                const OrientedShape& shape, const PlacementCost& cost, Random& random) {
   static constexpr double kAxes[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
-  const Box range = container.offset_range(shape);
   double step_x = first_step, step_y = first_step;
   int axis = random.below(4);
   while ((step_x >= last_step || step_y >= last_step) && start.cost > 0) {
@@ -63,9 +62,7 @@ Sample descend(Sample start, double first_step, double last_step, const Containe
     Sample best;
     for (const double sign : {1.0, -1.0}) {
       Sample candidate{start.state, kInfinity};
-      candidate.state.offset += sign * step;
-      candidate.state.offset = {std::clamp(candidate.state.offset.x(), range.x0, range.x1),
-                                std::clamp(candidate.state.offset.y(), range.y0, range.y1)};
+      candidate.state.offset = container.clamp_offset(shape, start.state.offset + sign * step);
       candidate.cost = cost(candidate.state, start.cost);
       if (candidate.cost < best.cost) best = candidate;
     }
@@ -93,8 +90,8 @@ std::pair<PieceState, double> search_placement(const PreparedItem& item, const P
     Sample s{{random.uniform() < 0.7 ? current.orientation : random.below(orientations), current.offset}, kInfinity};
     const Box range = container.offset_range(item.orientations[s.state.orientation]);
     if (range.x0 > range.x1 || range.y0 > range.y1) continue;
-    s.state.offset += Point2(random.uniform(-radius, radius), random.uniform(-radius, radius));
-    s.state.offset = {std::clamp(s.state.offset.x(), range.x0, range.x1), std::clamp(s.state.offset.y(), range.y0, range.y1)};
+    s.state.offset = container.clamp_offset(item.orientations[s.state.orientation],
+                                            s.state.offset + Point2(random.uniform(-radius, radius), random.uniform(-radius, radius)));
     s.cost = cost(s.state, best.bound());
     best.report(s);
   }

@@ -33,6 +33,12 @@ bool largest_poles_meet(const OrientedShape& a, const Point2& offset_a, const Or
   return false;
 }
 
+// Whether the two placed outlines collide: boxes, then the fail-fast poles, then the exact edge test.
+bool shapes_collide(const OrientedShape& a, const Point2& offset_a, const OrientedShape& b, const Point2& offset_b) {
+  return a.box.shifted(offset_a).overlaps(b.box.shifted(offset_b)) &&
+         (largest_poles_meet(a, offset_a, b, offset_b) || rings_collide(placed(a, offset_a), placed(b, offset_b)));
+}
+
 }  // namespace
 
 Separator::Separator(std::vector<const PreparedItem*> pieces, const Container& container, std::uint64_t seed)
@@ -60,16 +66,12 @@ double Separator::weighted_cost(int i, const PieceState& candidate, double bound
   double cost = exterior_weight_[i] * scale_[i] * scale_[i] *
                 std::sqrt(container_.exterior_overlap(s, candidate.offset, pieces_[i]->min_quality, eps(i, i)));
   if (cost > bound) return cost;
-  const Box world = s.box.shifted(candidate.offset);
   for (int j = 0; j < n_; ++j) {
     if (j == i || (active && !(*active)[j])) continue;
     const OrientedShape& t = pieces_[j]->orientations[state_[j].orientation];
-    if (!world.overlaps(t.box.shifted(state_[j].offset))) continue;
+    if (!shapes_collide(s, candidate.offset, t, state_[j].offset)) continue;
     const double w = weight_[static_cast<size_t>(i) * n_ + j] * scale_[i] * scale_[j];
     const double room = (bound - cost) / w;
-    if (!largest_poles_meet(s, candidate.offset, t, state_[j].offset) &&
-        !rings_collide(placed(s, candidate.offset), placed(t, state_[j].offset)))
-      continue;
     cost += w * std::sqrt(pair_overlap(s, candidate.offset, t, state_[j].offset, eps(i, j),
                                        room < kInfinity ? room * room : kInfinity));
     if (cost > bound) return cost;
@@ -80,13 +82,10 @@ double Separator::weighted_cost(int i, const PieceState& candidate, double bound
 bool Separator::collides_any(int i, const PieceState& candidate, const std::vector<char>& active) const {
   const OrientedShape& s = pieces_[i]->orientations[candidate.orientation];
   if (container_.exterior_overlap(s, candidate.offset, pieces_[i]->min_quality, eps(i, i)) > 0) return true;
-  const Box world = s.box.shifted(candidate.offset);
   for (int j = 0; j < n_; ++j) {
     if (j == i || !active[j]) continue;
     const OrientedShape& t = pieces_[j]->orientations[state_[j].orientation];
-    if (world.overlaps(t.box.shifted(state_[j].offset)) &&
-        rings_collide(placed(s, candidate.offset), placed(t, state_[j].offset)))
-      return true;
+    if (shapes_collide(s, candidate.offset, t, state_[j].offset)) return true;
   }
   return false;
 }
@@ -94,14 +93,11 @@ bool Separator::collides_any(int i, const PieceState& candidate, const std::vect
 void Separator::update_overlaps(int i) {
   const OrientedShape& s = pieces_[i]->orientations[state_[i].orientation];
   exterior_[i] = scale_[i] * scale_[i] * std::sqrt(container_.exterior_overlap(s, state_[i].offset, pieces_[i]->min_quality, eps(i, i)));
-  const Box world = s.box.shifted(state_[i].offset);
   for (int j = 0; j < n_; ++j) {
     if (j == i) continue;
     const OrientedShape& t = pieces_[j]->orientations[state_[j].orientation];
     double o = 0;
-    if (world.overlaps(t.box.shifted(state_[j].offset)) &&
-        (largest_poles_meet(s, state_[i].offset, t, state_[j].offset) ||
-         rings_collide(placed(s, state_[i].offset), placed(t, state_[j].offset))))
+    if (shapes_collide(s, state_[i].offset, t, state_[j].offset))
       o = scale_[i] * scale_[j] * std::sqrt(pair_overlap(s, state_[i].offset, t, state_[j].offset, eps(i, j)));
     overlap_[static_cast<size_t>(i) * n_ + j] = overlap_[static_cast<size_t>(j) * n_ + i] = o;
   }

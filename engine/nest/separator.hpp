@@ -10,6 +10,7 @@
 // Method: sparrow (Gardeyn, Vanden Berghe & Wauters, arXiv:2509.13329, 2025); GLS for nesting:
 // Egeblad, Nielsen & Odgaard 2007; separation by overlap minimisation: Imamichi, Yagiura &
 // Nagamochi 2009; penetration-depth based overlap: Umetani et al. 2009.
+#include <algorithm>
 #include <functional>
 #include <vector>
 
@@ -27,6 +28,12 @@ class Container {
   virtual Box offset_range(const OrientedShape& shape) const = 0;
   virtual double exterior_overlap(const OrientedShape& shape, const Point2& offset, int min_quality,
                                   double eps_mm) const = 0;
+  // The nearest offset within offset_range(shape); the range's low end on an axis where it is empty.
+  Point2 clamp_offset(const OrientedShape& shape, const Point2& offset) const {
+    const Box range = offset_range(shape);
+    return {range.x0 <= range.x1 ? std::clamp(offset.x(), range.x0, range.x1) : range.x0,
+            range.y0 <= range.y1 ? std::clamp(offset.y(), range.y0, range.y1) : range.y0};
+  }
 };
 
 struct PieceState {

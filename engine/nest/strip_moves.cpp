@@ -16,12 +16,6 @@ const OrientedShape& shape_of(const std::vector<const PreparedItem*>& pieces, co
   return pieces[i]->orientations[state[i].orientation];
 }
 
-void clamp_into(const Container& container, const OrientedShape& shape, Point2& offset) {
-  const Box range = container.offset_range(shape);
-  offset.x() = range.x0 <= range.x1 ? std::clamp(offset.x(), range.x0, range.x1) : range.x0;
-  offset.y() = range.y0 <= range.y1 ? std::clamp(offset.y(), range.y0, range.y1) : range.y0;
-}
-
 // Pieces (other than a and b) whose largest pole centre lies inside piece `cover` where it stands now.
 std::vector<size_t> covered_by(const std::vector<const PreparedItem*>& pieces, const std::vector<PieceState>& state,
                                size_t cover, size_t a, size_t b) {
@@ -46,7 +40,7 @@ void shrink_strip(const std::vector<const PreparedItem*>& pieces, std::vector<Pi
   for (size_t i = 0; i < pieces.size(); ++i) {
     const OrientedShape& s = shape_of(pieces, state, i);
     if (box_centre(s.box.shifted(state[i].offset)).x() > split_x) state[i].offset.x() -= delta_mm;
-    clamp_into(container, s, state[i].offset);
+    state[i].offset = container.clamp_offset(s, state[i].offset);
   }
 }
 
@@ -84,14 +78,14 @@ void disrupt_layout(const std::vector<const PreparedItem*>& pieces, std::vector<
   const Point2 old_a = state[a].offset, old_b = state[b].offset;
   state[a].offset += centre_b - centre_a;
   state[b].offset += centre_a - centre_b;
-  clamp_into(container, shape_of(pieces, state, a), state[a].offset);
-  clamp_into(container, shape_of(pieces, state, b), state[b].offset);
+  state[a].offset = container.clamp_offset(shape_of(pieces, state, a), state[a].offset);
+  state[b].offset = container.clamp_offset(shape_of(pieces, state, b), state[b].offset);
   // What a swapped piece now covers moves into the room that piece left.
   for (const auto& [mover, old_offset] : {std::pair{a, old_a}, std::pair{b, old_b}}) {
     const Point2 back = old_offset - state[mover].offset;
     for (size_t k : covered_by(pieces, state, mover, a, b)) {
       state[k].offset += back;
-      clamp_into(container, shape_of(pieces, state, k), state[k].offset);
+      state[k].offset = container.clamp_offset(shape_of(pieces, state, k), state[k].offset);
     }
   }
 }

@@ -4,12 +4,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <memory>
 
 #include "engine/nest/nest_random.hpp"
-#include "engine/nest/overlap_proxy.hpp"
 #include "engine/nest/parallel_separation.hpp"
 #include "engine/nest/separator.hpp"
+#include "engine/nest/strip_container.hpp"
 #include "engine/nest/strip_moves.hpp"
 
 namespace lastcut {
@@ -32,23 +31,6 @@ constexpr int kCompressionStrikes = 5, kCompressionStale = 50;
 constexpr double kCompressionShrinkFirst = 0.0005, kCompressionShrinkLast = 0.00001;
 constexpr size_t kPoolSize = 16;
 constexpr double kPoolSpread = 0.25;
-
-class StripContainer : public Container {
- public:
-  StripContainer(double length, double height, double inset) : length_(length), height_(height), inset_(inset) {}
-  void set_length(double length) { length_ = length; }
-  Box inside() const { return {inset_, inset_, length_ - inset_, height_ - inset_}; }
-  Box offset_range(const OrientedShape& s) const override {
-    const Box in = inside();
-    return {in.x0 - s.box.x0, in.y0 - s.box.y0, in.x1 - s.box.x1, in.y1 - s.box.y1};
-  }
-  double exterior_overlap(const OrientedShape& s, const Point2& offset, int, double eps_mm) const override {
-    return rectangle_exterior_overlap(s, offset, inside(), eps_mm);
-  }
-
- private:
-  double length_, height_, inset_;
-};
 
 std::string format_mm(double mm) {
   char text[32];

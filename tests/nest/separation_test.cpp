@@ -8,24 +8,11 @@
 #include "engine/nest/overlap_proxy.hpp"
 #include "engine/nest/parallel_separation.hpp"
 #include "engine/nest/placement_search.hpp"
+#include "engine/nest/strip_container.hpp"
 #include "tests/nest/nest_test_instances.hpp"
 
 namespace lastcut::nest_detail {
 namespace {
-
-class Rectangle : public Container {
- public:
-  Rectangle(double length, double height) : inside_{0, 0, length, height} {}
-  Box offset_range(const OrientedShape& s) const override {
-    return {inside_.x0 - s.box.x0, inside_.y0 - s.box.y0, inside_.x1 - s.box.x1, inside_.y1 - s.box.y1};
-  }
-  double exterior_overlap(const OrientedShape& s, const Point2& offset, int, double eps_mm) const override {
-    return rectangle_exterior_overlap(s, offset, inside_, eps_mm);
-  }
-
- private:
-  Box inside_;
-};
 
 bool collide(const PreparedItem& a, const PieceState& sa, const PreparedItem& b, const PieceState& sb) {
   const OrientedShape& x = a.orientations[sa.orientation];
@@ -67,7 +54,7 @@ TEST(OverlapProxy, SumsEveryPolePairLikeThePlainFormula) {
 TEST(PlacementSearch, MovesAPieceOffAnotherIntoTheFreeHalfAndNeverDoesWorse) {
   // A 100 x 50 box holding a 40 x 40 square at the left; a second square starts right on top of it.
   const PreparedItem square = prepare_item(test::item(0, test::rectangle(40, 40), 1, {0}), 0, 0.0, 15);
-  const Rectangle box(100, 50);
+  const StripContainer box(100, 50, 0);
   const PieceState fixed{0, Point2(5, 5)};
   auto cost = [&](const PieceState& s, double) {
     const OrientedShape& shape = square.orientations[s.orientation];
@@ -90,7 +77,7 @@ TEST(ParallelSeparation, TwoWorkersSeparateAPileAndRepeatThemselves) {
   // Six 30 x 20 rectangles piled at one spot of a 100 x 50 box (area 3600 of 5000: room to spare).
   const PreparedItem piece = prepare_item(test::item(0, test::rectangle(30, 20), 6, {0, 90}), 0, 0.0, 15);
   const std::vector<const PreparedItem*> pieces(6, &piece);
-  const Rectangle box(100, 50);
+  const StripContainer box(100, 50, 0);
   auto separate = [&](std::uint64_t seed, std::vector<PieceState>& result) {
     ParallelSeparation separation(pieces, box, seed, 2, run_on_threads);
     separation.set_state(std::vector<PieceState>(6, PieceState{0, Point2(10, 10)}));
