@@ -24,7 +24,7 @@ function(lastcut_test name)
   target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gtest_main)
   target_compile_definitions(${name} PRIVATE
     LASTCUT_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
-    LASTCUT_SHARED_DATA_DIR="${PROJECT_SOURCE_DIR}/../shared/data"
+    LASTCUT_SHARED_DATA_DIR="${LASTCUT_SHARED_DATA_DIR}"
     LASTCUT_BINARY_DIR="${PROJECT_BINARY_DIR}")
   lastcut_warnings(${name})
   if(LASTCUT_SANITIZE)

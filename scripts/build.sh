@@ -6,5 +6,8 @@ build_dir="${1:-build}"
 # ccache keys on absolute paths; with the base folder set, clones in other folders share the cache.
 export CCACHE_BASEDIR="$(pwd)"
 shift || true
-cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "$@" >/dev/null
+# The shared reference data may live elsewhere than ../shared/data: LASTCUT_SHARED_DATA_DIR=/path.
+data_option=()
+if [ -n "${LASTCUT_SHARED_DATA_DIR:-}" ]; then data_option=(-DLASTCUT_SHARED_DATA_DIR="$LASTCUT_SHARED_DATA_DIR"); fi
+cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "${data_option[@]}" "$@" >/dev/null
 cmake --build "$build_dir" -j "$(nproc)"
