@@ -6,6 +6,7 @@
 // Usage: nest_bench [--data DIR] [--limits 10,60] [--threads 2] [--seed 1] [--only NAME[,NAME...]] [--svg-dir DIR]
 //                   [--rounds N]   (N improvement rounds instead of a time limit: a deterministic run whose
 //                                   wall time compares the speed of two builds)
+//                   [--trace 1]    (every improvement on stderr: seconds since start, strip length)
 //        nest_bench --limits 20 --svg-dir DIR --instance FILE   (options before --instance)
 #include <algorithm>
 #include <chrono>
@@ -55,6 +56,7 @@ int main(int argc, char** argv) {
   std::uint64_t seed = 1;
   std::string only;
   long rounds = 0;  // > 0: an iteration limit instead of the time limits
+  bool trace = false;
   std::filesystem::path svg_dir;  // when set: a picture of every layout
   for (int a = 1; a + 1 < argc; a += 2) {
     const std::string key = argv[a], value = argv[a + 1];
@@ -64,6 +66,7 @@ int main(int argc, char** argv) {
     else if (key == "--only") only = value;
     else if (key == "--rounds") rounds = std::atol(value.c_str());
     else if (key == "--svg-dir") svg_dir = value;
+    else if (key == "--trace") trace = value != "0";
     else if (key == "--instance") {  // one instance file (strip or hides), one run per limit, with its picture
       const lastcut::NestInstance instance = lastcut::read_nest_instance(value);
       for (double limit : limits) {
@@ -115,6 +118,12 @@ int main(int argc, char** argv) {
       options.run_parallel = run_threads;
       if (rounds > 0) options.time_limit_s = 1e9, options.iteration_limit = rounds;
       const auto start = std::chrono::steady_clock::now();
+      if (trace)
+        options.on_improvement = [&start, name = file.stem().string()](const lastcut::Layout& l) {
+          std::fprintf(stderr, "%s %7.2f s  length %.3f  utilisation %.2f %%\n", name.c_str(),
+                       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                       l.strip_length.value_or(0), 100 * l.utilisation);
+        };
       const lastcut::Layout layout = lastcut::nest(instance, options);
       if (rounds > 0)
         std::printf("%s: %ld rounds in %.2f s\n", instance.name.c_str(), rounds,

@@ -2,9 +2,24 @@
 
 #include "engine/core/engine_error.hpp"
 #include "engine/nest/hide_nester.hpp"
+#include "engine/nest/pair_clusters.hpp"
 #include "engine/nest/strip_nester.hpp"
 
 namespace lastcut {
+namespace {
+
+// Strips: complementary pairs are nested as one piece and split again in every layout reported.
+Layout nest_strip_with_pairs(const NestInstance& instance, const NestOptions& options) {
+  const PairClusters clusters = cluster_pairs(instance, options.gap_mm.value_or(instance.gap_mm),
+                                              options.margin_mm.value_or(instance.margin_mm));
+  if (clusters.members.empty()) return nest_strip(instance, options);
+  NestOptions inner = options;
+  if (options.on_improvement)
+    inner.on_improvement = [&](const Layout& layout) { options.on_improvement(expand_clusters(layout, clusters, instance)); };
+  return expand_clusters(nest_strip(clusters.instance, inner), clusters, instance);
+}
+
+}  // namespace
 
 Layout nest(const NestInstance& instance, const NestOptions& options) {
   if (options.time_limit_s < 0) throw EngineError("nest: the time limit must not be negative");
@@ -14,7 +29,7 @@ Layout nest(const NestInstance& instance, const NestOptions& options) {
   if (options.free_rotation_step_deg <= 0 || options.free_rotation_step_deg > 180)
     throw EngineError("nest: the free rotation step must be in (0, 180] deg");
   if (instance.items.empty()) throw EngineError("nest instance " + instance.name + " has no items");
-  if (instance.strip_height) return nest_strip(instance, options);
+  if (instance.strip_height) return nest_strip_with_pairs(instance, options);
   if (instance.bins.empty()) throw EngineError("nest instance " + instance.name + " has neither a strip height nor hides");
   return nest_hides(instance, options);
 }
