@@ -3,7 +3,8 @@
 // validated by the independent Clipper checker (engine/nest/layout_check). Prints two tables:
 //   strips: utilisation, strip length, points below the best-known utilisation (sparrow's records);
 //   hides:  pieces placed / demanded, hides used, utilisation of the used hides.
-// Usage: nest_bench [--data DIR] [--limits 10,60] [--threads 2] [--seed 1] [--only NAME[,NAME...]] [--svg-dir DIR]
+// Usage: nest_bench [--data DIR] [--limits 10,60] [--threads 2] [--workers 4] [--seed 1] [--only NAME[,NAME...]]
+//                   [--svg-dir DIR]
 //                   [--rounds N]   (N improvement rounds instead of a time limit: a deterministic run whose
 //                                   wall time compares the speed of two builds)
 //                   [--trace 1]    (every improvement on stderr: seconds since start, strip length)
@@ -53,15 +54,26 @@ int main(int argc, char** argv) {
   std::filesystem::path data = LASTCUT_SHARED_DATA_DIR "/nesting";
   std::vector<double> limits = {10, 60};
   int threads = 2;
+  int workers = lastcut::NestOptions{}.sweep_workers;  // strips: sweeps compared per separation step
   std::uint64_t seed = 1;
   std::string only;
   long rounds = 0;  // > 0: an iteration limit instead of the time limits
   bool trace = false;
   std::filesystem::path svg_dir;  // when set: a picture of every layout
+  auto options_for = [&](double limit) {  // reads the options as parsed so far
+    lastcut::NestOptions options;
+    options.time_limit_s = limit;
+    options.threads = threads;
+    options.sweep_workers = workers;
+    options.seed = seed;
+    options.run_parallel = run_threads;
+    return options;
+  };
   for (int a = 1; a + 1 < argc; a += 2) {
     const std::string key = argv[a], value = argv[a + 1];
     if (key == "--data") data = value;
     else if (key == "--threads") threads = std::atoi(value.c_str());
+    else if (key == "--workers") workers = std::atoi(value.c_str());
     else if (key == "--seed") seed = std::strtoull(value.c_str(), nullptr, 10);
     else if (key == "--only") only = value;
     else if (key == "--rounds") rounds = std::atol(value.c_str());
@@ -70,11 +82,7 @@ int main(int argc, char** argv) {
     else if (key == "--instance") {  // one instance file (strip or hides), one run per limit, with its picture
       const lastcut::NestInstance instance = lastcut::read_nest_instance(value);
       for (double limit : limits) {
-        lastcut::NestOptions options;
-        options.time_limit_s = limit;
-        options.threads = threads;
-        options.seed = seed;
-        options.run_parallel = run_threads;
+        const lastcut::NestOptions options = options_for(limit);
         const lastcut::Layout layout = lastcut::nest(instance, options);
         const auto problems = lastcut::check_layout(layout, instance);
         std::printf("%s %g s: %zu placed, %zu unplaced entries, %d hides, length %.1f, utilisation %.2f %%, %s\n", instance.name.c_str(), limit,
@@ -104,18 +112,15 @@ int main(int argc, char** argv) {
   };
   int invalid = 0;
   for (double limit : limits) {
-    std::printf("\n## strip packing, %g s, %d threads, seed %llu\n\n", limit, threads, static_cast<unsigned long long>(seed));
+    std::printf("\n## strip packing, %g s, %d threads, %d sweep workers, seed %llu\n\n", limit, threads, workers,
+                static_cast<unsigned long long>(seed));
     std::printf("| instance | pieces | utilisation %% | strip length | best-known %% | gap (points) | valid |\n|---|---|---|---|---|---|---|\n");
     double gap_sum = 0, worst_gap = 0;
     int count = 0;
     for (const auto& file : json_files(data / "esicup")) {
       if (!selected(file)) continue;
       const lastcut::NestInstance instance = lastcut::read_nest_instance(file);
-      lastcut::NestOptions options;
-      options.time_limit_s = limit;
-      options.threads = threads;
-      options.seed = seed;
-      options.run_parallel = run_threads;
+      lastcut::NestOptions options = options_for(limit);
       if (rounds > 0) options.time_limit_s = 1e9, options.iteration_limit = rounds;
       const auto start = std::chrono::steady_clock::now();
       if (trace)
@@ -146,11 +151,7 @@ int main(int argc, char** argv) {
     for (const auto& file : json_files(data / "leather")) {
       if (!selected(file)) continue;
       const lastcut::NestInstance instance = lastcut::read_nest_instance(file);
-      lastcut::NestOptions options;
-      options.time_limit_s = limit;
-      options.threads = threads;
-      options.seed = seed;
-      options.run_parallel = run_threads;
+      const lastcut::NestOptions options = options_for(limit);
       const lastcut::Layout layout = lastcut::nest(instance, options);
       const auto problems = lastcut::check_layout(layout, instance);
       invalid += problems.empty() ? 0 : 1;

@@ -24,6 +24,7 @@ Layout nest_strip_with_pairs(const NestInstance& instance, const NestOptions& op
 Layout nest(const NestInstance& instance, const NestOptions& options) {
   if (options.time_limit_s < 0) throw EngineError("nest: the time limit must not be negative");
   if (options.threads < 1) throw EngineError("nest: at least one thread is needed");
+  if (options.sweep_workers < 1) throw EngineError("nest: at least one sweep worker is needed");
   if (options.gap_mm.value_or(0) < 0 || options.margin_mm.value_or(0) < 0)
     throw EngineError("nest: gap and margin must not be negative");
   if (options.free_rotation_step_deg <= 0 || options.free_rotation_step_deg > 180)

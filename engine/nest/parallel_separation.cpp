@@ -1,10 +1,12 @@
 #include "engine/nest/parallel_separation.hpp"
 
+#include <algorithm>
+
 namespace lastcut::nest_detail {
 
 ParallelSeparation::ParallelSeparation(const std::vector<const PreparedItem*>& pieces, const Container& container,
-                                       std::uint64_t seed, int workers, RunParallel run_parallel)
-    : run_parallel_(std::move(run_parallel)) {
+                                       std::uint64_t seed, int workers, int tasks, RunParallel run_parallel)
+    : tasks_(static_cast<size_t>(std::clamp(tasks, 1, std::max(1, workers)))), run_parallel_(std::move(run_parallel)) {
   for (int w = 0; w < std::max(1, workers); ++w)
     workers_.push_back(std::make_unique<Separator>(pieces, container, stream_seed(seed, 0, w)));
 }
@@ -14,12 +16,13 @@ void ParallelSeparation::sweep_all() {
     lead().sweep();
     return;
   }
+  for (size_t w = 1; w < workers_.size(); ++w) workers_[w]->adopt(lead());
   std::vector<std::function<void()>> tasks;
-  for (size_t w = 0; w < workers_.size(); ++w) {
-    if (w > 0) workers_[w]->adopt(lead());
-    tasks.push_back([this, w] { workers_[w]->sweep(); });
-  }
-  if (run_parallel_) {
+  for (size_t t = 0; t < tasks_; ++t)
+    tasks.push_back([this, t] {
+      for (size_t w = t; w < workers_.size(); w += tasks_) workers_[w]->sweep();
+    });
+  if (run_parallel_ && tasks.size() > 1) {
     run_parallel_(tasks);
   } else {
     for (auto& task : tasks) task();

@@ -6,8 +6,9 @@
 // are updated. A strike is a run of iterations that ends without a substantial (2 %) improvement on
 // the overlap it started from; a substantial improvement also resets the count of iterations
 // without improvement. It ends when no overlap is left, after max_strikes strikes, or at the deadline.
-// The result depends only on the seeds and the worker count: workers are compared by weighted overlap,
-// ties going to the lowest index.
+// The result depends only on the seeds and the worker count, not on how many threads run them: workers
+// are compared by weighted overlap, ties going to the lowest index. More workers than cores still pays
+// off where good moves are rare (docs/benchmarks-nest.md: jakobs2).
 #include <functional>
 #include <memory>
 #include <vector>
@@ -21,10 +22,11 @@ using RunParallel = std::function<void(std::vector<std::function<void()>>&)>;
 
 class ParallelSeparation {
  public:
-  // workers >= 1; worker w draws from a stream seeded by stream_seed(seed, 0, w); run_parallel runs the
-  // workers' sweeps (unset or one worker: one after the other on the caller's thread).
+  // workers >= 1; worker w draws from a stream seeded by stream_seed(seed, 0, w). Each sweep hands
+  // run_parallel min(tasks, workers) tasks, task t sweeping workers t, t + tasks, ... one after the
+  // other (run_parallel unset: every worker on the caller's thread).
   ParallelSeparation(const std::vector<const PreparedItem*>& pieces, const Container& container, std::uint64_t seed,
-                     int workers, RunParallel run_parallel);
+                     int workers, int tasks, RunParallel run_parallel);
 
   void set_state(const std::vector<PieceState>& state) { lead().set_state(state); }
   const std::vector<PieceState>& state() const { return workers_.front()->state(); }
@@ -37,6 +39,7 @@ class ParallelSeparation {
   void sweep_all();
 
   std::vector<std::unique_ptr<Separator>> workers_;
+  size_t tasks_;
   RunParallel run_parallel_;
 };
 

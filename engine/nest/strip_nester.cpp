@@ -154,8 +154,8 @@ Layout nest_strip(const NestInstance& instance, const NestOptions& options) {
 
   // One search: exploration, then compression; the threads share each separation's sweeps.
   StripContainer container(best_length, height, inset);
-  ParallelSeparation separation(pieces.pieces, container, stream_seed(options.seed, 1, 0), std::max(1, options.threads),
-                                options.run_parallel);
+  ParallelSeparation separation(pieces.pieces, container, stream_seed(options.seed, 1, 0), options.sweep_workers,
+                                options.threads, options.run_parallel);
   Random random(stream_seed(options.seed, 2, 0));
   double shrink = kShrinkFirst;  // exploration shrink ratio
   double width = best_length;    // of the strip the next round separates on

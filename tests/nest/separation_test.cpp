@@ -73,26 +73,26 @@ TEST(PlacementSearch, MovesAPieceOffAnotherIntoTheFreeHalfAndNeverDoesWorse) {
   EXPECT_GE(found.offset.x(), 45 - 1e-9);
 }
 
-TEST(ParallelSeparation, TwoWorkersSeparateAPileAndRepeatThemselves) {
+TEST(ParallelSeparation, FourWorkersSeparateAPileAlikeOnOneOrTwoThreads) {
   // Six 30 x 20 rectangles piled at one spot of a 100 x 50 box (area 3600 of 5000: room to spare).
   const PreparedItem piece = prepare_item(test::item(0, test::rectangle(30, 20), 6, {0, 90}), 0, 0.0, 15);
   const std::vector<const PreparedItem*> pieces(6, &piece);
   const StripContainer box(100, 50, 0);
-  auto separate = [&](std::uint64_t seed, std::vector<PieceState>& result) {
-    ParallelSeparation separation(pieces, box, seed, 2, run_on_threads);
+  auto separate = [&](std::uint64_t seed, int threads, std::vector<PieceState>& result) {
+    ParallelSeparation separation(pieces, box, seed, 4, threads, run_on_threads);
     separation.set_state(std::vector<PieceState>(6, PieceState{0, Point2(10, 10)}));
     const bool separated = separation.separate(3, 100, Deadline(60));
     result = separation.state();
     return separated;
   };
   std::vector<PieceState> a, b;
-  ASSERT_TRUE(separate(7, a));
+  ASSERT_TRUE(separate(7, 2, a));
   for (size_t i = 0; i < a.size(); ++i) {
     const Box world = piece.orientations[a[i].orientation].box.shifted(a[i].offset);
     EXPECT_TRUE((Box{0, 0, 100, 50}.contains(world)));
     for (size_t j = i + 1; j < a.size(); ++j) EXPECT_FALSE(collide(piece, a[i], piece, a[j])) << i << " " << j;
   }
-  ASSERT_TRUE(separate(7, b));
+  ASSERT_TRUE(separate(7, 1, b));
   for (size_t i = 0; i < a.size(); ++i) {
     EXPECT_EQ(a[i].orientation, b[i].orientation);
     EXPECT_EQ(a[i].offset, b[i].offset);
