@@ -47,6 +47,16 @@ void run_on_threads(std::vector<std::function<void()>>& tasks) {
   for (auto& t : threads) t.join();
 }
 
+// A mold DXF's label says which half it is ("medial"); the folder `lastcut flatten` wrote it to says
+// whose last it is ("m-42-left"). The cutting room needs both on the piece.
+Mold read_labelled_mold(const std::filesystem::path& file) {
+  Mold mold = read_mold_dxf(file);
+  const std::string folder = std::filesystem::absolute(file).parent_path().filename().string();
+  if (!folder.empty() && mold.name.find(folder) == std::string::npos)
+    mold.name = mold.name.empty() ? folder : folder + " " + mold.name;
+  return mold;
+}
+
 std::vector<Mold> read_molds(const std::vector<std::string>& inputs) {
   std::vector<Mold> molds;
   for (const std::string& input : inputs) {
@@ -57,9 +67,9 @@ std::vector<Mold> read_molds(const std::vector<std::string>& inputs) {
         if (entry.path().extension() == ".dxf") files.push_back(entry.path());
       std::sort(files.begin(), files.end());
       if (files.empty()) throw EngineError("folder " + input + " holds no mold DXF files");
-      for (const auto& file : files) molds.push_back(read_mold_dxf(file));
+      for (const auto& file : files) molds.push_back(read_labelled_mold(file));
     } else {
-      molds.push_back(read_mold_dxf(path));
+      molds.push_back(read_labelled_mold(path));
     }
   }
   return molds;
@@ -78,7 +88,9 @@ NestInstance load_instance(const NestArguments& a) {
   spec.roll_width_mm = a.roll_width_mm > 0 ? a.roll_width_mm : 1;
   spec.copies = a.copies;
   spec.mirrored_twins = a.mirrored_twins;
-  NestInstance instance = instance_from_molds(read_molds(a.inputs), spec, std::filesystem::path(a.inputs[0]).stem().string());
+  // Named after the one input, or after the layout file when there are several (a batch, not one last).
+  const std::filesystem::path name_from = a.inputs.size() == 1 ? a.inputs[0] : a.output_path;
+  NestInstance instance = instance_from_molds(read_molds(a.inputs), spec, name_from.stem().string());
   if (!a.hides_path.empty()) {
     const NestInstance hides = read_nest_instance(a.hides_path);
     if (hides.bins.empty()) throw EngineError(a.hides_path + " has no \"bins\" (hides)");
@@ -118,8 +130,7 @@ int run_nest(const NestArguments& a) {
     else
       std::printf("%s: %zu of %d pieces on %d hide(s), utilisation of the used hides %.2f %%\n", instance.name.c_str(),
                   layout.placements.size(), demanded, used_bin_count(layout), 100 * layout.utilisation);
-    for (const Unplaced& u : layout.unplaced)
-      std::printf("  not placed: item %d x%d: %s\n", u.item, u.count, u.reason.c_str());
+    for (const Unplaced& u : layout.unplaced) std::printf("  not placed: %s\n", unplaced_text(u, instance).c_str());
     return unplaced > 0 ? 3 : 0;
   } catch (const EngineError& error) {
     std::fprintf(stderr, "lastcut nest: error: %s\n", error.what());

@@ -37,6 +37,12 @@ const NestItem& find_item(const NestInstance& instance, int item_id) {
   throw EngineError("layout refers to item " + std::to_string(item_id) + ", which the instance does not have");
 }
 
+std::string unplaced_text(const Unplaced& unplaced, const NestInstance& instance) {
+  const std::string& label = find_item(instance, unplaced.item).label;
+  const std::string item = "item " + std::to_string(unplaced.item);
+  return (label.empty() ? item : label + " (" + item + ")") + " x" + std::to_string(unplaced.count) + ": " + unplaced.reason;
+}
+
 const Bin& find_bin(const NestInstance& instance, int bin_id) {
   for (const Bin& bin : instance.bins)
     if (bin.id == bin_id) return bin;

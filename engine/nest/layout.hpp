@@ -44,6 +44,9 @@ std::optional<double> placed_grain_deg(const NestItem& item, const Placement& pl
 
 // Item by id; throws EngineError when the id is unknown.
 const NestItem& find_item(const NestInstance& instance, int item_id);
+// What an operator reads about pieces left over: "m-38-left lateral (item 0) x1: <reason>", or
+// "item 0 x1: <reason>" when the item has no label.
+std::string unplaced_text(const Unplaced& unplaced, const NestInstance& instance);
 // Bin by id; throws EngineError when the id is unknown.
 const Bin& find_bin(const NestInstance& instance, int bin_id);
 

@@ -1,6 +1,7 @@
 #include "engine/nest/layout_svg.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -26,6 +27,33 @@ std::string points(const Polygon2& polygon, double dx, double dy) {
   out.precision(10);
   for (const Point2& p : polygon.points) out << (p.x() + dx) << ',' << (p.y() + dy) << ' ';
   return out.str();
+}
+
+// A piece's label as drawn: one line when it fits across the piece, else two (split at the space
+// nearest the middle: "m-42-left" over "medial"), the font shrunk until the longer line fits, but not
+// below 40 % of the drawing's text size. Glyphs are taken as 0.6 em wide (sans-serif, generous).
+struct LabelLayout {
+  std::vector<std::string> lines;
+  double font_size = 0;
+};
+
+LabelLayout fit_label(const std::string& label, double piece_width, double text_size) {
+  constexpr double kGlyphEm = 0.6, kUsableWidth = 0.9, kSmallestShare = 0.4;
+  auto fitting_size = [&](const std::vector<std::string>& lines) {
+    size_t longest = 1;
+    for (const std::string& line : lines) longest = std::max(longest, line.size());
+    return std::clamp(kUsableWidth * piece_width / (kGlyphEm * static_cast<double>(longest)), kSmallestShare * text_size, text_size);
+  };
+  LabelLayout one{{label}, fitting_size({label})};
+  const size_t middle = label.size() / 2;
+  size_t split = std::string::npos;
+  for (size_t i = 0; i < label.size(); ++i)
+    if (label[i] == ' ' && (split == std::string::npos || std::abs(static_cast<double>(i) - middle) < std::abs(static_cast<double>(split) - middle)))
+      split = i;
+  if (one.font_size >= text_size || split == std::string::npos) return one;
+  LabelLayout two{{label.substr(0, split), label.substr(split + 1)}, 0};
+  two.font_size = fitting_size(two.lines);
+  return two.font_size > one.font_size ? two : one;
 }
 
 }  // namespace
@@ -109,10 +137,17 @@ std::string layout_svg(const Layout& layout, const NestInstance& instance) {
     for (const Placement& p : layout.placements) {
       if (p.bin != panel.bin || p.copy != panel.copy) continue;
       const NestItem& item = find_item(instance, p.item);
-      const Point2 c = area_centroid(placed_shape(item, p));
-      const std::string label = item.label.empty() ? std::to_string(item.id) : item.label;
-      svg << "<text x=\"" << pad - panel.frame.x0 + c.x() << "\" y=\"" << top + panel.frame.y1 - c.y() << "\" font-size=\"" << text_size
-          << "\" text-anchor=\"middle\" dominant-baseline=\"middle\" fill=\"#17202a\">" << xml_escaped(label) << (p.mirrored ? " (m)" : "") << "</text>\n";
+      const Polygon2 shape = placed_shape(item, p);
+      const Point2 c = area_centroid(shape);
+      Frame box;
+      box.add(shape);
+      const std::string label = (item.label.empty() ? std::to_string(item.id) : item.label) + (p.mirrored ? " (m)" : "");
+      const LabelLayout fitted = fit_label(label, box.x1 - box.x0, text_size);
+      const double first_line_y = top + panel.frame.y1 - c.y() - 0.5 * (fitted.lines.size() - 1) * 1.1 * fitted.font_size;
+      for (size_t k = 0; k < fitted.lines.size(); ++k)
+        svg << "<text x=\"" << pad - panel.frame.x0 + c.x() << "\" y=\"" << first_line_y + k * 1.1 * fitted.font_size
+            << "\" font-size=\"" << fitted.font_size << "\" text-anchor=\"middle\" dominant-baseline=\"middle\" fill=\"#17202a\">"
+            << xml_escaped(fitted.lines[k]) << "</text>\n";
     }
     if (panel.bin >= 0)
       svg << "<text x=\"" << pad << "\" y=\"" << top + text_size << "\" font-size=\"" << text_size << "\" fill=\"#6b4f2a\">hide "
@@ -121,8 +156,8 @@ std::string layout_svg(const Layout& layout, const NestInstance& instance) {
   }
   for (const Unplaced& u : layout.unplaced) {
     top += 1.5 * text_size;
-    svg << "<text x=\"" << pad << "\" y=\"" << top << "\" font-size=\"" << text_size << "\" fill=\"#c0392b\">NOT PLACED: item " << u.item << " x"
-        << u.count << ": " << xml_escaped(u.reason) << "</text>\n";
+    svg << "<text x=\"" << pad << "\" y=\"" << top << "\" font-size=\"" << text_size << "\" fill=\"#c0392b\">NOT PLACED: "
+        << xml_escaped(unplaced_text(u, instance)) << "</text>\n";
   }
   svg << kSvgDocumentEnd;
   return svg.str();

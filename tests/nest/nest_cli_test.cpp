@@ -12,6 +12,7 @@
 #include <fstream>
 #include <string>
 
+#include "engine/mold/mold_dxf.hpp"
 #include "engine/nest/layout_check.hpp"
 #include "engine/nest/nest_json.hpp"
 #include "nest_test_instances.hpp"
@@ -70,6 +71,24 @@ TEST(NestCli, ExitsThreeWhenPiecesAreLeftOver) {
   const CliRun result = run("nest " + (dir / "hide.json").string() + " --time-limit 0.5 --threads 1 -o " + (dir / "layout.json").string());
   EXPECT_EQ(result.exit_code, 3) << result.output;
   EXPECT_NE(result.output.find("not placed: item 5"), std::string::npos) << result.output;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(NestCli, MoldsFromSeveralLastsCarryTheirFolderOnTheLabel) {
+  // What `lastcut flatten` leaves: one folder per last, one DXF per half, labelled by the half only.
+  const auto dir = temp_dir();
+  for (const std::string last : {"m-38-left", "m-40-right"}) {
+    std::filesystem::create_directories(dir / last);
+    write_mold_dxf(dir / last / "medial.dxf", Mold{"medial", test::rectangle(120, 60), {}});
+  }
+  const CliRun result = run("nest " + (dir / "m-38-left").string() + " " + (dir / "m-40-right").string() +
+                            " --roll-width 300 --time-limit 0.5 --threads 1 -o " + (dir / "batch.json").string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const NestInstance embedded = instance_from_layout_json(read_json_file(dir / "batch.json"));
+  EXPECT_EQ(embedded.name, "batch");  // several lasts: named after the layout, not the first last
+  ASSERT_EQ(embedded.items.size(), 2u);
+  EXPECT_EQ(embedded.items[0].label, "m-38-left medial");
+  EXPECT_EQ(embedded.items[1].label, "m-40-right medial");
   std::filesystem::remove_all(dir);
 }
 
