@@ -36,6 +36,21 @@ class GcodeOut {
 
 std::string feed(double speed_mm_s, const GcodeOut& out) { return " F" + out.number(speed_mm_s * 60.0); }
 
+// "; piece 3/20: m-38-left lateral (item 0)": where the operator (and a G-code viewer) sees which
+// piece the next moves cut. Printable ASCII only and at most 72 characters, so that no controller
+// reads part of a label as a command and a character-counting sender never has to fit a long line
+// into grbl's 128-byte receive buffer.
+std::string piece_comment(const CutProgram& program, int piece) {
+  const ProgramPiece& p = program.pieces[static_cast<size_t>(piece)];
+  std::string label;
+  for (const char c : p.label.empty() ? p.marking : p.label) label += (c >= 32 && c < 127) ? c : '?';
+  std::string text = "; piece " + std::to_string(piece + 1) + "/" + std::to_string(program.pieces.size()) + ": " +
+                     (label.empty() ? "" : label + " ") + "(item " + std::to_string(p.item_id) + ")";
+  constexpr size_t kLongestComment = 72;
+  if (text.size() > kLongestComment) text = text.substr(0, kLongestComment - 3) + "...";
+  return text;
+}
+
 }  // namespace
 
 std::string write_gcode(const CutProgram& program, const MachineProfile& profile) {
@@ -49,8 +64,13 @@ std::string write_gcode(const CutProgram& program, const MachineProfile& profile
   if (!options.program_start.empty()) out.line(options.program_start);
   out.line("G0 Z" + out.number(options.z_up_mm));
 
+  int piece = -1;  // whose moves follow
   for (const Stroke& stroke : program.strokes) {
     if (stroke.points_mm.size() < 2) continue;
+    if (stroke.piece >= 0 && stroke.piece != piece && static_cast<size_t>(stroke.piece) < program.pieces.size()) {
+      piece = stroke.piece;
+      out.line(piece_comment(program, piece));
+    }
     const ToolSettings& tool = profile.tool(stroke.tool);
     const bool with_angle = !axis.empty() && stroke.knife_angle_deg.size() == stroke.points_mm.size();
     std::string travel = "G0 " + out.xy(stroke.points_mm.front());

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 
 #include "engine/toolpath/drag_knife.hpp"
 #include "engine/toolpath/gcode_writer.hpp"
@@ -97,6 +98,27 @@ TEST(ToolpathGcodeRoundTrip, RotaryAxisNeverTurnsMoreThanTheThresholdWhileTheKni
   }
   EXPECT_GT(cutting_moves, 100);
   EXPECT_GE(lifts_at_corners, 8) << "rectangles and heel corners need lift-rotate-plunge";
+}
+
+TEST(ToolpathGcodeRoundTrip, EveryPieceIsAnnouncedOnceInCuttingOrder) {
+  // The interpreters above read the file with these comments in it; here: what the operator reads.
+  const GcodeJob job = run_job("grbl-tangential-knife", "piece-comments");
+  std::ifstream file(job.file);
+  std::vector<std::string> comments;
+  for (std::string line; std::getline(file, line);)
+    if (line.rfind("; piece ", 0) == 0) comments.push_back(line);
+  const size_t count = job.program.pieces.size();
+  ASSERT_EQ(comments.size(), count);
+  for (size_t k = 0; k < count; ++k) {
+    const ProgramPiece& piece = job.program.pieces[k];
+    const std::string head = "; piece " + std::to_string(k + 1) + "/" + std::to_string(count) + ": ";
+    EXPECT_EQ(comments[k].rfind(head, 0), 0u) << comments[k];
+    EXPECT_NE(comments[k].find("(item " + std::to_string(piece.item_id) + ")"), std::string::npos) << comments[k];
+    if (!piece.label.empty()) {
+      EXPECT_NE(comments[k].find(piece.label), std::string::npos) << comments[k];
+    }
+    EXPECT_LE(comments[k].size(), 72u);
+  }
 }
 
 TEST(ToolpathGcodeRoundTrip, PenMarksLandWhereTheLayoutPutsThem) {
