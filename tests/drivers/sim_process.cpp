@@ -10,6 +10,7 @@
 #include <netinet/in.h>
 #include <poll.h>
 #include <sstream>
+#include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <thread>
@@ -42,8 +43,13 @@ SimProcess::SimProcess(std::vector<std::string> args) : SimProcess(sim_binary(),
 SimProcess::SimProcess(const std::string& binary, std::vector<std::string> args) {
   int out[2];
   if (::pipe(out) != 0) return;
+  const pid_t test_pid = ::getpid();
   pid_ = ::fork();
   if (pid_ == 0) {
+    // A test killed by CTest's timeout never reaches its destructors: the simulator must not outlive
+    // it, holding its pty link or TCP port for the next run.
+    ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (::getppid() != test_pid) ::_exit(1);  // the test died before prctl took effect
     ::dup2(out[1], STDOUT_FILENO);
     ::close(out[0]);
     ::close(out[1]);

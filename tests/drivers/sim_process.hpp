@@ -1,6 +1,7 @@
 #pragma once
 // SimProcess: runs the real `lastcut-sim` binary (or another real program) for a test, waits for its "ready:" line,
-// and stops it with SIGTERM (checking it exits cleanly). TempDir: a fresh folder per test.
+// and stops it with SIGTERM (checking it exits cleanly); it also gets SIGTERM when the test process dies
+// without stopping it (a CTest timeout). TempDir: a fresh folder per test.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -29,6 +30,7 @@ class SimProcess {
   SimProcess& operator=(const SimProcess&) = delete;
 
   bool ready() const { return ready_; }
+  int pid() const { return pid_; }
   const std::string& ready_line() const { return ready_line_; }
   // SIGTERM, wait; returns the exit status (0 = clean), -1 if it had to be killed.
   int stop();
