@@ -37,8 +37,13 @@ bool allows(const NestItem& item, double deg) {
   return false;
 }
 
+// The vertex-to-vertex search costs #rotations x #P_a x #P_b per pair of items and runs before the
+// time limit starts: pieces with many vertices (molds, free curves) are left to the search itself.
+constexpr size_t kMaxVertices = 64;
+
 bool eligible(const NestItem& item) {
-  return item.demand > 0 && !item.allow_mirror && !item.grain_deg && allows(item, 0) && item.shape.points.size() >= 3;
+  return item.demand > 0 && !item.allow_mirror && !item.grain_deg && allows(item, 0) && item.shape.points.size() >= 3 &&
+         item.shape.points.size() <= kMaxVertices;
 }
 
 struct Clip {

@@ -9,8 +9,9 @@
 // allowed: the pair is cut with zero kerf), their union is one simple polygon, and it fills at least
 // 95 % of its bounding box and 5 points more than either piece fills its own (pair_clusters.cpp).
 // Pairs are merged best fill first; the search still moves and rotates each pair as a whole.
-// Only pieces with an explicit rotation list that includes 0, no mirroring and no grain take part,
-// and only when the gap between pieces is zero (a kerf would have to be opened inside the pair).
+// Only pieces of at most 64 vertices with an explicit rotation list that includes 0, no mirroring
+// and no grain take part, and only when the gap between pieces is zero (a kerf would have to be
+// opened inside the pair).
 #include <map>
 #include <vector>
 

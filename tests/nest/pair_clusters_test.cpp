@@ -69,6 +69,16 @@ TEST(PairClusters, NoPairsWithAKerfOrWhenPiecesMayBeMirrored) {
   EXPECT_EQ(cluster_pairs(mirrored, 0, 0).instance.items.size(), 1u);
 }
 
+TEST(PairClusters, PiecesWithManyVerticesAreLeftToTheSearch) {
+  // The same triangles with their long edge cut into 200 short ones: too many vertices to pair.
+  NestInstance instance = triangle_strip();
+  Polygon2 fine{{{0, 0}, {10, 0}}};
+  for (int k = 1; k < 200; ++k) fine.points.emplace_back(10 - k * 0.05, k * 0.05);
+  fine.points.emplace_back(0, 10);
+  instance.items[0].shape = fine;
+  EXPECT_TRUE(cluster_pairs(instance, 0, 0).members.empty());
+}
+
 TEST(PairClusters, AnUnpairedLeftoverKeepsItsOwnDemand) {
   NestInstance instance = triangle_strip();
   instance.items[0].demand = 3;
