@@ -152,7 +152,7 @@ Layout nest_strip(const NestInstance& instance, const NestOptions& options) {
   Layout layout = to_layout(instance, pieces, best, best_length);
   if (options.on_improvement) options.on_improvement(layout);
 
-  // One search: exploration, then compression; the threads share each separation's sweeps.
+  // One search: exploration, then compression; every separation step keeps the best of the workers' sweeps.
   StripContainer container(best_length, height, inset);
   ParallelSeparation separation(pieces.pieces, container, stream_seed(options.seed, 1, 0), options.sweep_workers,
                                 options.threads, options.run_parallel);
