@@ -33,7 +33,7 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
-# Node.js runs the independent G-code and Modbus interpreters (tests/node). Debian's nodejs
+# Node.js runs the independent G-code, DXF and Modbus readers (tests/node). Debian's nodejs
 # is used only when the machine has no node of its own.
 if ! command -v node >/dev/null 2>&1; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends nodejs npm

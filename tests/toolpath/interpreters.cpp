@@ -117,6 +117,27 @@ std::vector<GcodeMove> gcode_moves_via_node(const std::filesystem::path& gcode_f
   return moves;
 }
 
+ParsedDxf dxf_via_node(const std::filesystem::path& dxf_file) {
+  const std::string script = std::string(LASTCUT_SOURCE_DIR) + "/tests/toolpath/dxf_dump.js";
+  const std::string modules = std::string(LASTCUT_SOURCE_DIR) + "/tests/node/node_modules";
+  const std::string text = run_command("node '" + script + "' '" + dxf_file.string() + "' '" + modules + "'");
+  const nlohmann::json json = nlohmann::json::parse(text.substr(0, text.rfind("\n#STDERR\n")));
+  ParsedDxf dxf;
+  dxf.acadver = json.at("acadver").get<std::string>();
+  dxf.insunits = json.at("insunits").get<int>();
+  dxf.layers = json.at("layers").get<std::vector<std::string>>();
+  for (const auto& item : json.at("entities")) {
+    ParsedDxfEntity entity;
+    entity.type = item.at("type").get<std::string>();
+    entity.layer = item.at("layer").get<std::string>();
+    entity.closed = item.at("closed").get<bool>();
+    for (const auto& point : item.at("points")) entity.points_mm.emplace_back(point.at(0).get<double>(), point.at(1).get<double>());
+    entity.text = item.at("text").get<std::string>();
+    dxf.entities.push_back(std::move(entity));
+  }
+  return dxf;
+}
+
 std::vector<Point2> sample_move(const GcodeMove& move) {
   if (!move.is_arc) return {move.to_mm};
   const Point2 from = move.from_mm - move.center_mm, to = move.to_mm - move.center_mm;

@@ -1,6 +1,7 @@
 #pragma once
 // Running lastcut's cut files through interpreters nobody on the project wrote: hp2xx for HPGL
-// (gnuplot output, true size) and cncjs' gcode-parser + gcode-toolpath under node for G-code.
+// (gnuplot output, true size), cncjs' gcode-parser + gcode-toolpath under node for G-code, and
+// dxf-parser under node for DXF.
 // A missing tool is a test failure (FAIL, never skip): the helpers throw std::runtime_error.
 #include <filesystem>
 #include <string>
@@ -34,6 +35,21 @@ std::vector<GcodeMove> gcode_moves_via_node(const std::filesystem::path& gcode_f
 
 // Points along a move: lines give their end, arcs are sampled every <= 1 degree (end included).
 std::vector<Point2> sample_move(const GcodeMove& move);
+
+// A DXF file as dxf-parser (npm) read it: header, layer table, entities with their points (mm).
+struct ParsedDxfEntity {
+  std::string type, layer;
+  bool closed = false;             // a polyline's closed flag
+  std::vector<Point2> points_mm;   // polyline vertices, LINE start/end, TEXT insertion point
+  std::string text;
+};
+struct ParsedDxf {
+  std::string acadver;
+  int insunits = 0;
+  std::vector<std::string> layers;
+  std::vector<ParsedDxfEntity> entities;
+};
+ParsedDxf dxf_via_node(const std::filesystem::path& dxf_file);
 
 // Runs a shell command, returns stdout; throws with stderr's tail when it exits non-zero.
 std::string run_command(const std::string& command);
