@@ -1,5 +1,7 @@
 #include "engine/nest/hide_container.hpp"
 
+#include "engine/nest/clipper_paths.hpp"
+
 #include <polyclipping/clipper.hpp>
 
 #include <algorithm>
@@ -8,26 +10,20 @@
 namespace lastcut::nest_detail {
 namespace {
 
-using ClipperLib::cInt;
-using ClipperLib::IntPoint;
 using ClipperLib::Path;
 using ClipperLib::Paths;
 
 // Offsets one ring by delta_mm (positive grows it); may split into several rings or vanish.
 std::vector<std::vector<Point2>> offset_ring(const std::vector<Point2>& ring, double delta_mm, double scale) {
   if (delta_mm == 0) return {ring};
-  Path path;
-  for (const Point2& p : ring) path.push_back(IntPoint(static_cast<cInt>(std::llround(p.x() * scale)), static_cast<cInt>(std::llround(p.y() * scale))));
   ClipperLib::ClipperOffset offset(2.0, std::max(1.0, 0.01 * std::abs(delta_mm) * scale));
-  offset.AddPath(path, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+  offset.AddPath(to_path(ring, scale), ClipperLib::jtRound, ClipperLib::etClosedPolygon);
   Paths result;
   offset.Execute(result, delta_mm * scale);
   std::vector<std::vector<Point2>> rings;
   for (const Path& r : result) {
     if (ClipperLib::Area(r) <= 0 || r.size() < 3) continue;  // outer parts only
-    std::vector<Point2> points;
-    for (const IntPoint& p : r) points.emplace_back(static_cast<double>(p.X) / scale, static_cast<double>(p.Y) / scale);
-    rings.push_back(std::move(points));
+    rings.push_back(from_path(r, scale));
   }
   return rings;
 }

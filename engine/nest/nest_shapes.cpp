@@ -1,5 +1,7 @@
 #include "engine/nest/nest_shapes.hpp"
 
+#include "engine/nest/clipper_paths.hpp"
+
 #include <polyclipping/clipper.hpp>
 
 #include <algorithm>
@@ -34,13 +36,6 @@ std::string format_deg(double deg) {
   return text;
 }
 
-double normalise_deg(double a) {
-  a = std::fmod(a, 360.0);
-  if (a < 0) a += 360.0;
-  if (a >= 360.0 - 1e-9) a = 0;
-  return a;
-}
-
 double distance_to_ring(const Point2& p, const std::vector<Point2>& ring) {
   double best = std::numeric_limits<double>::max();
   for (size_t i = 0, n = ring.size(); i < n; ++i) {
@@ -53,22 +48,8 @@ double distance_to_ring(const Point2& p, const std::vector<Point2>& ring) {
   return std::sqrt(best);
 }
 
-using ClipperLib::cInt;
-using ClipperLib::IntPoint;
 using ClipperLib::Path;
 using ClipperLib::Paths;
-
-Path to_path(const std::vector<Point2>& ring, double scale) {
-  Path path;
-  for (const Point2& p : ring) path.push_back(IntPoint(static_cast<cInt>(std::llround(p.x() * scale)), static_cast<cInt>(std::llround(p.y() * scale))));
-  return path;
-}
-
-std::vector<Point2> from_path(const Path& path, double scale) {
-  std::vector<Point2> ring;
-  for (const IntPoint& p : path) ring.emplace_back(static_cast<double>(p.X) / scale, static_cast<double>(p.Y) / scale);
-  return ring;
-}
 
 // Largest-area ring of an offset result.
 Path largest(const Paths& paths) {
@@ -80,6 +61,13 @@ Path largest(const Paths& paths) {
 }
 
 }  // namespace
+
+double normalise_deg(double a) {
+  a = std::fmod(a, 360.0);
+  if (a < 0) a += 360.0;
+  if (a >= 360.0 - 1e-9) a = 0;
+  return a;
+}
 
 Point2 apply_pose(const Point2& point, const Pose& pose) {
   const double angle = pose.rotation_deg * std::numbers::pi / 180.0;

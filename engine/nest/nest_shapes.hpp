@@ -67,6 +67,9 @@ PreparedItem prepare_item(const NestItem& item, int item_index, double grow_mm, 
 // The poles as lanes (see PoleLanes).
 PoleLanes pole_lanes(const std::vector<Pole>& poles);
 
+// An angle in [0, 360) deg (values within 1e-9 of 360 become 0).
+double normalise_deg(double deg);
+
 // The pose applied to a point of the own frame (no translation).
 Point2 apply_pose(const Point2& point, const Pose& pose);
 

@@ -4,36 +4,35 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <optional>
 
+#include "engine/nest/clipper_paths.hpp"
 #include "engine/nest/nest_geometry.hpp"
+#include "engine/nest/nest_shapes.hpp"
 
 namespace lastcut {
 namespace {
 
 using nest_detail::Box;
 using nest_detail::bounding_box;
+using nest_detail::normalise_deg;
 
 // A pair must fill this share of its box: only near-perfect complements are worth fixing for the search.
 constexpr double kMinFill = 0.95;
 // ... and fill it clearly better than the first piece alone.
 constexpr double kMinGain = 0.05;
 
-Point2 rotated(const Point2& p, double deg) {
-  const double a = deg * std::numbers::pi / 180.0;
-  return {std::cos(a) * p.x() - std::sin(a) * p.y(), std::sin(a) * p.x() + std::cos(a) * p.y()};
-}
-
-double normalised_deg(double deg) {
-  double a = std::fmod(deg, 360.0);
-  if (a < 0) a += 360.0;
-  return a >= 360.0 - 1e-9 ? 0.0 : a;
+// The ring turned counter-clockwise by deg about the own origin.
+std::vector<Point2> rotated(const std::vector<Point2>& ring, double deg) {
+  std::vector<Point2> out;
+  out.reserve(ring.size());
+  for (const Point2& p : ring) out.push_back(nest_detail::apply_pose(p, {deg, false}));
+  return out;
 }
 
 bool allows(const NestItem& item, double deg) {
   for (double r : item.allowed_rotations_deg)
-    if (std::abs(normalised_deg(r) - normalised_deg(deg)) < 1e-6) return true;
+    if (std::abs(normalise_deg(r) - normalise_deg(deg)) < 1e-6) return true;
   return false;
 }
 
@@ -46,24 +45,15 @@ bool eligible(const NestItem& item) {
          item.shape.points.size() <= kMaxVertices;
 }
 
-struct Clip {
-  double scale;
-  ClipperLib::Path path(const std::vector<Point2>& ring, const Point2& shift) const {
-    ClipperLib::Path out;
-    for (const Point2& p : ring)
-      out.emplace_back(static_cast<ClipperLib::cInt>(std::llround((p.x() + shift.x()) * scale)),
-                       static_cast<ClipperLib::cInt>(std::llround((p.y() + shift.y()) * scale)));
-    return out;
-  }
-  ClipperLib::Paths run(ClipperLib::ClipType type, const ClipperLib::Path& a, const ClipperLib::Path& b) const {
-    ClipperLib::Clipper clipper;
-    clipper.AddPath(a, ClipperLib::ptSubject, true);
-    clipper.AddPath(b, ClipperLib::ptClip, true);
-    ClipperLib::Paths out;
-    clipper.Execute(type, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-    return out;
-  }
-};
+// Intersection or union of two closed paths.
+ClipperLib::Paths clip(ClipperLib::ClipType type, const ClipperLib::Path& a, const ClipperLib::Path& b) {
+  ClipperLib::Clipper clipper;
+  clipper.AddPath(a, ClipperLib::ptSubject, true);
+  clipper.AddPath(b, ClipperLib::ptClip, true);
+  ClipperLib::Paths out;
+  clipper.Execute(type, out, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  return out;
+}
 
 struct Candidate {
   size_t first = 0, second = 0;  // item indices
@@ -86,13 +76,12 @@ std::optional<Candidate> best_pair(const NestInstance& instance, size_t first, s
   double extent = 1;
   for (const Point2& p : a.shape.points) extent = std::max({extent, std::abs(p.x()), std::abs(p.y())});
   extent += own_b.width() + own_b.height();
-  const Clip clip{1e9 / (extent + box_a.width() + box_a.height())};
-  const ClipperLib::Path path_a = clip.path(a.shape.points, Point2::Zero());
-  const double tolerance = 1e-9 * std::min(area_a, area_b) * clip.scale * clip.scale;
+  const double scale = 1e9 / (extent + box_a.width() + box_a.height());  // Clipper units per mm
+  const ClipperLib::Path path_a = nest_detail::to_path(a.shape.points, scale);
+  const double tolerance = 1e-9 * std::min(area_a, area_b) * scale * scale;
   std::optional<Candidate> best;
   for (double rotation : b.allowed_rotations_deg) {
-    std::vector<Point2> ring;
-    for (const Point2& p : b.shape.points) ring.push_back(rotated(p, rotation));
+    const std::vector<Point2> ring = rotated(b.shape.points, rotation);
     const Box box_b = bounding_box(ring);
     for (const Point2& corner_a : a.shape.points)
       for (const Point2& corner_b : ring) {
@@ -102,19 +91,19 @@ std::optional<Candidate> best_pair(const NestInstance& instance, size_t first, s
                        std::max(box_a.y1, moved.y1)};
         const double fill = (area_a + area_b) / (both.width() * both.height());
         if (fill < std::max(kMinFill, alone + kMinGain) || fill > 1 + 1e-6 || (best && fill <= best->fill)) continue;
-        const ClipperLib::Path path_b = clip.path(ring, offset);
+        const ClipperLib::Path path_b = nest_detail::to_path(ring, scale, offset);
         double overlap = 0;
-        for (const auto& p : clip.run(ClipperLib::ctIntersection, path_a, path_b)) overlap += std::abs(ClipperLib::Area(p));
+        for (const auto& p : clip(ClipperLib::ctIntersection, path_a, path_b)) overlap += std::abs(ClipperLib::Area(p));
         if (overlap > tolerance) continue;
-        ClipperLib::Paths merged = clip.run(ClipperLib::ctUnion, path_a, path_b);
+        ClipperLib::Paths merged = clip(ClipperLib::ctUnion, path_a, path_b);
         ClipperLib::CleanPolygons(merged);
         if (merged.size() != 1) continue;  // touching at a point only, or a hole left between them
-        Candidate c{first, second, fill, {b.id, normalised_deg(rotation), offset}, {}};
+        Candidate c{first, second, fill, {b.id, normalise_deg(rotation), offset}, {}};
         // Clipper rounds to its integer grid: take the exact corner of either piece each point stands for,
         // so that the pair's outline holds both pieces exactly.
         for (const auto& p : merged.front()) {
-          Point2 point(static_cast<double>(p.X) / clip.scale, static_cast<double>(p.Y) / clip.scale);
-          double nearest = 4.0 / clip.scale;
+          Point2 point(static_cast<double>(p.X) / scale, static_cast<double>(p.Y) / scale);
+          double nearest = 4.0 / scale;
           for (const Point2& q : a.shape.points)
             if ((q - point).norm() < nearest) nearest = (q - point).norm(), point = q;
           for (const Point2& q : ring)
@@ -131,11 +120,8 @@ std::optional<Candidate> best_pair(const NestInstance& instance, size_t first, s
 // The pair fits the strip in at least one of its rotations.
 bool fits_strip(const NestInstance& instance, const NestItem& cluster, double margin_mm) {
   if (!instance.strip_height) return true;
-  for (double r : cluster.allowed_rotations_deg) {
-    std::vector<Point2> ring;
-    for (const Point2& p : cluster.shape.points) ring.push_back(rotated(p, r));
-    if (bounding_box(ring).height() <= *instance.strip_height - 2 * margin_mm) return true;
-  }
+  for (double r : cluster.allowed_rotations_deg)
+    if (bounding_box(rotated(cluster.shape.points, r)).height() <= *instance.strip_height - 2 * margin_mm) return true;
   return false;
 }
 
@@ -190,8 +176,8 @@ Layout expand_clusters(const Layout& clustered, const PairClusters& clusters, co
     for (const ClusterMember& m : found->second) {
       Placement q = p;
       q.item = m.item_id;
-      q.rotation_deg = normalised_deg(p.rotation_deg + m.rotation_deg);
-      const Point2 at = rotated(m.offset, p.rotation_deg) + Point2(p.x, p.y);
+      q.rotation_deg = normalise_deg(p.rotation_deg + m.rotation_deg);
+      const Point2 at = place_point(m.offset, p);  // the pair is never mirrored
       q.x = at.x(), q.y = at.y();
       layout.placements.push_back(q);
     }
