@@ -44,8 +44,11 @@ struct MoldOptions {
   double allowance_mm = 0.0;            // outward margin added all around (>= 0)
 };
 
-// Length of a notch line as drawn in DXF and SVG (mm).
+// Length of a notch line as drawn in DXF and SVG and cut by the mark tool (mm).
 inline constexpr double kNotchLength_mm = 2.0;
+
+// The inner end of a notch line: kNotchLength_mm from the outline along the inward direction.
+inline Point2 notch_inner_end(const MoldMark& mark) { return mark.position_mm + kNotchLength_mm * mark.inward_direction; }
 
 // UV #V x 2 flattened positions (mm), F #F x 3 triangles of a disk-shaped patch,
 // landmark_vertices: name -> vertex index, normally on the boundary (an interior landmark is

@@ -110,7 +110,7 @@ void write_mold_dxf(const std::filesystem::path& path, const Mold& mold) {
   DxfDocument dxf(DxfVersion::R12, {{"CUT", 7}, {"MARK", 1}, {"LABEL", 3}});  // white, red, green
   dxf.polyline("CUT", mold.outline.points, true);
   for (const auto& mark : mold.marks) {
-    const Point2 inner = mark.position_mm + kNotchLength_mm * mark.inward_direction;
+    const Point2 inner = notch_inner_end(mark);
     dxf.line("MARK", mark.position_mm, inner);
     dxf.text("MARK", inner, kTextHeight_mm, mark.name);
   }

@@ -95,7 +95,7 @@ void write_mold_svg(const std::filesystem::path& path, const Mold& mold, const E
   svg << "\"/>\n<g id=\"marks\" stroke=\"#0050c8\" stroke-width=\"0.5\" font-family=\"sans-serif\" font-size=\"3\" "
          "fill=\"#0050c8\">\n";
   for (const auto& mark : mold.marks) {
-    const Point2 inner = mark.position_mm + kNotchLength_mm * mark.inward_direction;
+    const Point2 inner = notch_inner_end(mark);
     const Point2 label = mark.position_mm + 3.0 * kNotchLength_mm * mark.inward_direction;
     svg << "<line x1=\"" << frame.x(mark.position_mm.x()) << "\" y1=\"" << frame.y(mark.position_mm.y()) << "\" x2=\""
         << frame.x(inner.x()) << "\" y2=\"" << frame.y(inner.y()) << "\"/>"

@@ -1,7 +1,9 @@
 #pragma once
 // Nest items from the molds `lastcut flatten` writes (engine/mold): one item per mold with its
 // notches as marks, optionally a mirrored twin for the other foot, on a roll of given width.
+#include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "engine/mold/mold.hpp"
@@ -17,9 +19,16 @@ struct MoldNestSpec {
   std::optional<double> grain_tolerance_deg;  // grain along the mold's x axis (heel to toe) within this
   double gap_mm = 0;
   double margin_mm = 0;
+  // The text on the piece; `twin` is the mirrored copy. Empty: the mold's name, "(other foot)" for a twin.
+  std::function<std::string(const Mold& mold, bool twin)> label;
 };
 
-// Throws EngineError when there are no molds or an outline is degenerate.
+// Items numbered 0.. in mold order (each mold, then its twin). The twin is the mold mirrored
+// x -> -x with its notches, outline made counter-clockwise again. Throws EngineError when there
+// are no molds, no copies, or an outline is degenerate.
+std::vector<NestItem> items_from_molds(const std::vector<Mold>& molds, const MoldNestSpec& spec);
+
+// The items on a strip of spec.roll_width_mm. Throws EngineError as items_from_molds, or on a bad width.
 NestInstance instance_from_molds(const std::vector<Mold>& molds, const MoldNestSpec& spec, const std::string& name);
 
 }  // namespace lastcut

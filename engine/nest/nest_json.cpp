@@ -199,9 +199,7 @@ NestInstance instance_from_json(const json& j, const std::string& source) {
     instance.strip_height = number(j["strip_height"], source + " strip_height");
     if (*instance.strip_height <= 0) fail(source, "strip_height must be positive");
   }
-  const json& items = field(j, "items", source);
-  if (!items.is_array()) fail(source, "\"items\" must be a list");
-  for (const json& it : items) instance.items.push_back(item(it, source));
+  instance.items = items_from_json(j, source);
   if (j.contains("bins")) {
     if (!j["bins"].is_array()) fail(source, "\"bins\" must be a list");
     for (const json& b : j["bins"]) instance.bins.push_back(bin(b, source));
@@ -230,11 +228,24 @@ NestInstance read_nest_instance(const std::filesystem::path& path) {
   return instance;
 }
 
+json items_to_json(const std::vector<NestItem>& items) {
+  json list = json::array();
+  for (const NestItem& it : items) list.push_back(item_json(it));
+  return {{"items", list}};
+}
+
+std::vector<NestItem> items_from_json(const json& j, const std::string& source) {
+  if (!j.is_object()) fail(source, "expected a JSON object with \"items\"");
+  const json& list = field(j, "items", source);
+  if (!list.is_array()) fail(source, "\"items\" must be a list");
+  std::vector<NestItem> items;
+  for (const json& it : list) items.push_back(item(it, source));
+  return items;
+}
+
 json instance_to_json(const NestInstance& instance) {
   json j = {{"name", instance.name}, {"gap_mm", instance.gap_mm}, {"margin_mm", instance.margin_mm}};
-  json items = json::array();
-  for (const NestItem& it : instance.items) items.push_back(item_json(it));
-  j["items"] = items;
+  j["items"] = items_to_json(instance.items).at("items");
   if (instance.strip_height) {
     j["strip_height"] = *instance.strip_height;
   } else {

@@ -23,6 +23,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "engine/nest/layout.hpp"
 #include "engine/nest/nest_problem.hpp"
@@ -36,6 +37,11 @@ NestInstance instance_from_json(const nlohmann::json& json, const std::string& s
 NestInstance read_nest_instance(const std::filesystem::path& path);
 // The instance in the same layout instance_from_json reads.
 nlohmann::json instance_to_json(const NestInstance& instance);
+
+// Items alone, {"items": [...]} in the instance's item layout: the pieces of one job waiting for a
+// batch (the daemon keeps them in the job folder). items_from_json throws EngineError on bad input.
+nlohmann::json items_to_json(const std::vector<NestItem>& items);
+std::vector<NestItem> items_from_json(const nlohmann::json& json, const std::string& source);
 
 // The layout with the instance geometry embedded (see above).
 nlohmann::json layout_to_json(const Layout& layout, const NestInstance& instance);

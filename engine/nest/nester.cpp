@@ -2,6 +2,7 @@
 
 #include "engine/core/engine_error.hpp"
 #include "engine/nest/hide_nester.hpp"
+#include "engine/nest/layout_check.hpp"
 #include "engine/nest/pair_clusters.hpp"
 #include "engine/nest/strip_nester.hpp"
 
@@ -30,9 +31,17 @@ Layout nest(const NestInstance& instance, const NestOptions& options) {
   if (options.free_rotation_step_deg <= 0 || options.free_rotation_step_deg > 180)
     throw EngineError("nest: the free rotation step must be in (0, 180] deg");
   if (instance.items.empty()) throw EngineError("nest instance " + instance.name + " has no items");
-  if (instance.strip_height) return nest_strip_with_pairs(instance, options);
-  if (instance.bins.empty()) throw EngineError("nest instance " + instance.name + " has neither a strip height nor hides");
-  return nest_hides(instance, options);
+  if (!instance.strip_height && instance.bins.empty())
+    throw EngineError("nest instance " + instance.name + " has neither a strip height nor hides");
+  Layout layout = instance.strip_height ? nest_strip_with_pairs(instance, options) : nest_hides(instance, options);
+  // Leather is cut from whatever leaves here: a layout the independent checker refuses is a bug,
+  // and no front door may write or cut it.
+  const std::vector<std::string> problems =
+      check_layout(layout, instance, options.gap_mm.value_or(-1), options.margin_mm.value_or(-1));
+  if (!problems.empty())
+    throw EngineError("internal error: the layout of " + instance.name + " failed the independent check: " +
+                      problems.front());
+  return layout;
 }
 
 }  // namespace lastcut

@@ -8,7 +8,10 @@
 
 namespace lastcut {
 
-// Throws EngineError on an instance that cannot be nested at all (no items, negative options).
+// The one entry to nesting for every front door (`lastcut nest`, lastcutd): checks the options,
+// clusters complementary pairs on strips, nests, and runs the independent layout checker
+// (layout_check.hpp) on the result. Throws EngineError on an instance that cannot be nested at all
+// (no items, negative options) and when the checker refuses the layout (a bug, never cut).
 // Pieces that do not fit are never dropped: they are listed in Layout::unplaced with a reason.
 Layout nest(const NestInstance& instance, const NestOptions& options);
 
