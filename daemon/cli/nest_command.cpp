@@ -2,7 +2,7 @@
 //  -o LAYOUT.json [--svg PICTURE.svg]`: nests pieces on a strip or on hides and writes a
 // self-contained layout (engine/nest/nest_json.hpp) that `lastcut toolpath` reads.
 // INPUT is a nest instance (JSON), or mold DXFs / folders written by `lastcut flatten` together
-// with --roll-width MM. Every layout written is first checked by the independent layout checker.
+// with --roll-width MM. nest() checks every layout with the independent layout checker before it is written.
 #include <algorithm>
 #include <cstdio>
 #include <functional>
@@ -16,7 +16,6 @@
 #include "daemon/cli/commands.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/mold/mold_dxf.hpp"
-#include "engine/nest/layout_check.hpp"
 #include "engine/nest/layout_svg.hpp"
 #include "engine/nest/mold_items.hpp"
 #include "engine/nest/nest_json.hpp"
@@ -114,8 +113,6 @@ int run_nest(const NestArguments& a) {
     if (a.margin_mm >= 0) options.margin_mm = a.margin_mm;
     options.run_parallel = run_on_threads;
     const Layout layout = nest(instance, options);
-    const std::vector<std::string> problems = check_layout(layout, instance, options.gap_mm.value_or(-1), options.margin_mm.value_or(-1));
-    if (!problems.empty()) throw EngineError("internal error, layout failed the check: " + problems.front());
     NestInstance written = instance;  // the layout records the gap and margin it was made with
     written.gap_mm = options.gap_mm.value_or(instance.gap_mm);
     written.margin_mm = options.margin_mm.value_or(instance.margin_mm);

@@ -9,10 +9,8 @@
 #include "daemon/cli/commands.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/toolpath/cut_file.hpp"
+#include "engine/toolpath/cut_job.hpp"
 #include "engine/toolpath/cut_time.hpp"
-#include "engine/toolpath/layout_pieces.hpp"
-#include "engine/toolpath/machine_profile.hpp"
-#include "engine/toolpath/plan_cut_program.hpp"
 
 namespace lastcut::cli {
 namespace {
@@ -25,16 +23,6 @@ struct ToolpathArguments {
   std::string sheet;  // "BIN" or "BIN:COPY"
   bool layout_order = false;
 };
-
-std::string default_extension(CutFileFormat format) {
-  switch (format) {
-    case CutFileFormat::Hpgl: return ".plt";
-    case CutFileFormat::Gcode: return ".nc";
-    case CutFileFormat::Dxf: return ".dxf";
-    case CutFileFormat::Svg: return ".svg";
-  }
-  return ".nc";
-}
 
 std::string describe(const SheetRef& sheet) {
   if (sheet.bin < 0) return "strip";
@@ -59,22 +47,22 @@ SheetRef choose_sheet(const Layout& layout, const std::string& wanted) {
 
 int run_toolpath(const ToolpathArguments& arguments) {
   const MachineProfile profile = load_machine_profile(arguments.profile, standard_machine_profile_dirs());
-  const CutFileFormat format =
-      arguments.format.empty() ? profile.native_format : parse_cut_file_format(arguments.format);
   const LayoutFile file = read_layout_file(arguments.layout_path);
-  const SheetRef sheet = choose_sheet(file.layout, arguments.sheet);
-  const std::vector<PlacedPiece> pieces = placed_pieces(file.layout, file.instance, sheet);
-  const CutProgram program =
-      plan_cut_program(pieces, profile, arguments.layout_order ? PieceOrder::AsGiven : PieceOrder::ShortTravel);
+  CutFileRequest request;
+  request.sheet = choose_sheet(file.layout, arguments.sheet);
+  if (!arguments.format.empty()) request.format = parse_cut_file_format(arguments.format);
+  request.order = arguments.layout_order ? PieceOrder::AsGiven : PieceOrder::ShortTravel;
+  const CutFile cut = make_cut_file(file.layout, file.instance, profile, request);
   std::string output = arguments.output_path;
   if (output.empty()) {
     std::filesystem::path path(arguments.layout_path);
-    output = path.replace_extension(default_extension(format)).string();
+    output = path.replace_extension(cut_file_extension(cut.format)).string();
   }
-  save_cut_file(output, write_cut_file(program, profile, format));
-  const CutStats stats = measure_program(program);
+  save_cut_file(output, cut.text);
+  const CutProgram& program = cut.program;
+  const CutStats& stats = cut.stats;
   std::printf("%s: %zu pieces for machine '%s' (%s)\n", output.c_str(), program.pieces.size(), profile.name.c_str(),
-              to_string(format).c_str());
+              to_string(cut.format).c_str());
   std::printf("cut length    %10.1f mm\n", stats.cut_length_mm);
   std::printf("mark length   %10.1f mm\n", stats.mark_length_mm);
   std::printf("travel length %10.1f mm\n", stats.travel_length_mm);

@@ -21,6 +21,16 @@ std::string write_cut_file(const CutProgram& program, const MachineProfile& prof
   throw EngineError("unknown cut file format");
 }
 
+std::string cut_file_extension(CutFileFormat format) {
+  switch (format) {
+    case CutFileFormat::Hpgl: return ".plt";
+    case CutFileFormat::Gcode: return ".nc";
+    case CutFileFormat::Dxf: return ".dxf";
+    case CutFileFormat::Svg: return ".svg";
+  }
+  throw EngineError("unknown cut file format");
+}
+
 void save_cut_file(const std::filesystem::path& path, const std::string& text) {
   const std::filesystem::path temporary = path.string() + ".partial";
   {

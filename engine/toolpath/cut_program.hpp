@@ -44,6 +44,9 @@ struct CutProgram {
   std::vector<Stroke> tip_strokes;   // the same before knife compensation: what the blade tip or
                                      // pen draws on the material (DXF and SVG show these)
   std::vector<ProgramPiece> pieces;  // in cutting order
+  // Lines naming what the program carries ("lastcut batch B", "lastcut job J"), written as comments
+  // at the top where the format has comments (G-code), so the machine's own log shows which jobs it cut.
+  std::vector<std::string> notes;
   double work_area_x_mm = 0.0;       // the machine's table, for writers that draw a frame
   double work_area_y_mm = 0.0;
 };

@@ -36,19 +36,24 @@ class GcodeOut {
 
 std::string feed(double speed_mm_s, const GcodeOut& out) { return " F" + out.number(speed_mm_s * 60.0); }
 
-// "; piece 3/20: m-38-left lateral (item 0)": where the operator (and a G-code viewer) sees which
-// piece the next moves cut. Printable ASCII only and at most 72 characters, so that no controller
+// "; TEXT" with TEXT made printable ASCII and the line cut to 72 characters, so that no controller
 // reads part of a label as a command and a character-counting sender never has to fit a long line
 // into grbl's 128-byte receive buffer.
+std::string comment_line(const std::string& text) {
+  std::string line = "; ";
+  for (const char c : text) line += (c >= 32 && c < 127) ? c : '?';
+  constexpr size_t kLongestComment = 72;
+  if (line.size() > kLongestComment) line = line.substr(0, kLongestComment - 3) + "...";
+  return line;
+}
+
+// "; piece 3/20: m-38-left lateral (item 0)": where the operator (and a G-code viewer) sees which
+// piece the next moves cut.
 std::string piece_comment(const CutProgram& program, int piece) {
   const ProgramPiece& p = program.pieces[static_cast<size_t>(piece)];
-  std::string label;
-  for (const char c : p.label.empty() ? p.marking : p.label) label += (c >= 32 && c < 127) ? c : '?';
-  std::string text = "; piece " + std::to_string(piece + 1) + "/" + std::to_string(program.pieces.size()) + ": " +
-                     (label.empty() ? "" : label + " ") + "(item " + std::to_string(p.item_id) + ")";
-  constexpr size_t kLongestComment = 72;
-  if (text.size() > kLongestComment) text = text.substr(0, kLongestComment - 3) + "...";
-  return text;
+  const std::string& label = p.label.empty() ? p.marking : p.label;
+  return comment_line("piece " + std::to_string(piece + 1) + "/" + std::to_string(program.pieces.size()) + ": " +
+                      (label.empty() ? "" : label + " ") + "(item " + std::to_string(p.item_id) + ")");
 }
 
 }  // namespace
@@ -59,6 +64,7 @@ std::string write_gcode(const CutProgram& program, const MachineProfile& profile
   const std::string& axis = options.rotary_axis;
   out.line("; lastcut cut file for machine '" + profile.name + "': " + std::to_string(program.pieces.size()) +
            " pieces");
+  for (const std::string& note : program.notes) out.line(comment_line(note));
   out.line("G21 G90 G94");
   out.line("G17");
   if (!options.program_start.empty()) out.line(options.program_start);
