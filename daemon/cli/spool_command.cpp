@@ -131,7 +131,7 @@ std::string requeue(const daemon::Spool& spool, const std::string& id, bool agai
     return "job " + id + " was already cut; add --again to cut it once more";
   }
   std::error_code error;
-  const bool has_molds = std::filesystem::exists(spool.job_dir(*folder, id) / daemon::kPiecesFile, error);
+  const bool has_molds = std::filesystem::exists(spool.job_dir(*folder, id) / daemon::kItemsFile, error);
   const bool recompute = *folder == JobFolder::Failed || !has_molds;
   state->batch_id.clear();
   state->reason.clear();

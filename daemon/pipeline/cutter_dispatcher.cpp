@@ -126,17 +126,12 @@ bool CutterDispatcher::cut_batch(const std::string& batch_id) {
   if (!last_problem_.empty()) spdlog::info("cutter {}: ready again ({})", name_, probe.state);
   last_problem_.clear();
 
+  // Exactly the stored cut file: what an operator inspects (or replays with `lastcut send`) is what
+  // the machine got.
   std::ifstream in(spool_.batch_dir(batch_id) / batch->cut_file, std::ios::binary);
   std::ostringstream program;
-  // G-code carries the batch and job ids as a comment, so the machine's own log (and the
-  // simulator's record) shows which jobs a program cut; grbl answers a comment line with ok.
-  if (section.protocol == "grbl") {
-    // One short line each: grbl's line buffer holds 80 characters.
-    program << "(lastcut batch " << batch_id << ")\n";
-    for (const std::string& id : batch->job_ids) program << "(lastcut job " << id << ")\n";
-  }
   program << in.rdbuf();
-  if (!in || batch->cut_file.empty()) {
+  if (!in || batch->cut_file.empty() || program.str().empty()) {
     batch->reason = "the cut file " + batch->cut_file + " is missing or empty";
     mark_batch(spool_, *batch, "held", batch->reason);
     hold_batch_jobs(spool_, *batch, batch->reason);

@@ -1,9 +1,14 @@
 #pragma once
-// The two computing steps of a job, bound to the engine: scan -> molds (engine/scan) and
-// batch of molds -> layout -> cut file (engine/nest, engine/toolpath). Both write only into the
-// folder they are given, under temporary names renamed at the end, so a crash mid-step leaves
-// nothing half-written that a later reader could take for a result. Engine errors come back as
-// one-line reasons; nothing is thrown.
+// The two computing steps of a job, each one call of the engine's own stage entries, the same ones
+// the command line uses:
+//   scan -> molds:         scan_to_molds + write_scan_outputs (engine/scan), then the molds as nest
+//                          items in the engine's JSON (items_from_molds, items_to_json)
+//   items -> layout:       nest() (engine/nest/nester.hpp: option checks, independent layout check)
+//   layout -> cut file:    make_cut_file (engine/toolpath/cut_job.hpp); the batch and job ids go
+//                          into the file as it is written, and the cutter gets exactly these bytes
+// Both write only into the folder they are given, through durable writes, so a crash mid-step
+// leaves nothing half-written that a later reader could take for a result. Engine errors come
+// back as one-line reasons; nothing is thrown.
 #include <filesystem>
 #include <map>
 #include <string>
@@ -18,7 +23,7 @@ namespace lastcut::daemon {
 
 // File names inside a job folder.
 inline constexpr const char* kMoldsFolder = "molds";
-inline constexpr const char* kPiecesFile = "pieces.json";  // mold outlines for nesting (own format)
+inline constexpr const char* kItemsFile = "items.json";  // the job's pieces as nest items (engine/nest/nest_json.hpp)
 inline constexpr const char* kReportFile = "report.json";
 inline constexpr const char* kPreviewFile = "preview.svg";
 inline constexpr const char* kLayoutFile = "layout.json";
@@ -26,18 +31,18 @@ inline constexpr const char* kLayoutFile = "layout.json";
 struct MoldsOutcome {
   std::string error;          // one line in an operator's words; empty on success
   int piece_count = 0;        // molds made (before quantity)
-  nlohmann::json measures;    // the engine's scan report (sizes, distortion, timings)
+  nlohmann::json measures;    // the engine's scan report, as written to molds/report.json
 };
 
-// Computes the molds of the scan into job_dir/molds/ and job_dir/pieces.json.
+// Computes the molds of the scan into job_dir/molds/ and its nest items into job_dir/items.json:
+// `quantity` copies of each half, labelled for the cutting room, with a mirrored twin per half
+// when the ticket asks for a pair.
 MoldsOutcome compute_molds(const std::filesystem::path& scan, const std::filesystem::path& job_dir,
                            const JobTicket& ticket, double default_allowance_mm);
 
 struct BatchJobInput {
   std::string job_id;
-  std::filesystem::path job_dir;  // holds pieces.json
-  JobTicket ticket;
-  std::string scan_name;          // names the pieces of a job without an order number
+  std::filesystem::path job_dir;  // holds items.json
 };
 
 struct BatchOutcome {

@@ -1,33 +1,39 @@
-// Scan -> molds for one job (engine/scan), plus pieces.json: the mold outlines and notches in
-// a small file of our own, so that nesting after a restart needs no recomputation.
-#include <spdlog/spdlog.h>
-
+// Scan -> molds for one job (engine/scan), then the molds as nest items (engine/nest/mold_items)
+// in the engine's JSON, so that nesting after a restart needs no recomputation and reads the same
+// form `lastcut nest` reads.
 #include "daemon/pipeline/engine_steps.hpp"
+#include "daemon/pipeline/piece_label_text.hpp"
 #include "daemon/spool/durable_file.hpp"
 #include "engine/core/engine_error.hpp"
+#include "engine/nest/mold_items.hpp"
+#include "engine/nest/nest_json.hpp"
 #include "engine/scan/scan_outputs.hpp"
 #include "engine/scan/scan_to_molds.hpp"
 
 namespace lastcut::daemon {
 namespace {
 
-nlohmann::json point_json(const Point2& point) { return nlohmann::json::array({point.x(), point.y()}); }
+// The foot is the scan's (the molds are its geometry); the sidecar's only when the scan's is unknown.
+std::string foot_of(const ScanResult& result, const JobTicket& ticket) {
+  if (result.side) return std::string(to_string(*result.side));
+  if (ticket.side == "left" || ticket.side == "right") return ticket.side;
+  return "";
+}
 
-nlohmann::json pieces_json(const ScanResult& result) {
-  nlohmann::json pieces = nlohmann::json::array();
+std::vector<NestItem> job_items(const ScanResult& result, const JobTicket& ticket, const std::string& scan_name) {
+  std::vector<Mold> molds;
   for (const SegmentResult& segment : result.segments) {
-    nlohmann::json outline = nlohmann::json::array();
-    for (const Point2& point : segment.mold.outline.points) outline.push_back(point_json(point));
-    nlohmann::json marks = nlohmann::json::array();
-    for (const MoldMark& mark : segment.mold.marks) {
-      const Point2 end = mark.position_mm + kNotchLength_mm * mark.inward_direction;
-      marks.push_back({{"name", mark.name}, {"from", point_json(mark.position_mm)}, {"to", point_json(end)}});
-    }
-    pieces.push_back({{"name", segment.name}, {"outline", outline}, {"marks", marks}});
+    molds.push_back(segment.mold);
+    molds.back().name = segment.name;
   }
-  nlohmann::json json{{"pieces", pieces}};
-  if (result.side) json["side"] = std::string(to_string(*result.side));
-  return json;
+  const std::string foot = foot_of(result, ticket);
+  MoldNestSpec spec;
+  spec.copies = ticket.quantity;
+  spec.mirrored_twins = ticket.side == "pair";  // the twin is the same half of the other foot
+  spec.label = [&](const Mold& mold, bool twin) {
+    return piece_label_text({ticket.order, scan_name, ticket.size, twin ? opposite_foot(foot) : foot, mold.name});
+  };
+  return items_from_molds(molds, spec);
 }
 
 }  // namespace
@@ -43,14 +49,14 @@ MoldsOutcome compute_molds(const std::filesystem::path& scan, const std::filesys
       outcome.error = "no mold could be made from the scan";
       return outcome;
     }
-    write_scan_outputs(result, job_dir / kMoldsFolder);
-    outcome.measures = scan_report_json(result);
+    outcome.measures = write_scan_outputs(result, job_dir / kMoldsFolder);
     if ((ticket.side == "left" || ticket.side == "right") && result.side &&
         ticket.side != std::string(to_string(*result.side))) {
       outcome.measures["warning"] = "the sidecar says " + ticket.side + ", the scan looks like a " +
                                     std::string(to_string(*result.side)) + " last";
     }
-    if (std::string error = write_file_durably(job_dir / kPiecesFile, pieces_json(result).dump() + "\n");
+    const std::vector<NestItem> items = job_items(result, ticket, scan.filename().string());
+    if (std::string error = write_file_durably(job_dir / kItemsFile, items_to_json(items).dump() + "\n");
         !error.empty()) {
       outcome.error = "molds made but not saved: " + error;
       return outcome;

@@ -80,7 +80,7 @@ void Pipeline::build_batch_task(const std::string& batch_id, const std::string& 
   for (const std::string& id : batch->job_ids) {
     auto state = spool_->read_state(JobFolder::Work, id);
     if (!state || state->batch_id != batch_id) continue;
-    inputs.push_back({id, spool_->job_dir(JobFolder::Work, id), state->ticket, state->scan_name});
+    inputs.push_back({id, spool_->job_dir(JobFolder::Work, id)});
     states.emplace(id, *state);
   }
   const auto material = settings->materials.find(batch->material);

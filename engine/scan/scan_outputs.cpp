@@ -83,7 +83,7 @@ nlohmann::json scan_report_json(const ScanResult& result) {
   return report;
 }
 
-void write_scan_outputs(const ScanResult& result, const fs::path& out_dir) {
+nlohmann::json write_scan_outputs(const ScanResult& result, const fs::path& out_dir) {
   std::error_code error;
   fs::create_directories(out_dir, error);
   if (error) throw EngineError("cannot create output folder " + out_dir.string() + ": " + error.message());
@@ -94,15 +94,17 @@ void write_scan_outputs(const ScanResult& result, const fs::path& out_dir) {
     write_mold_svg(out_dir / (segment.name + ".svg"), segment.mold, segment.UV, segment.mesh3d.F,
                    triangle_strain(segment.measures));
   }
+  const nlohmann::json report_json = scan_report_json(result);
   const fs::path report = out_dir / "report.json";
   const fs::path partial = out_dir / "report.json.partial";
   {
     std::ofstream out(partial, std::ios::binary);
-    out << scan_report_json(result).dump(2) << '\n';
+    out << report_json.dump(2) << '\n';
     if (!out) throw EngineError("cannot write " + partial.string());
   }
   fs::rename(partial, report, error);
   if (error) throw EngineError("cannot write " + report.string() + ": " + error.message());
+  return report_json;
 }
 
 }  // namespace lastcut

@@ -14,8 +14,9 @@
 
 namespace lastcut {
 
-// Creates out_dir if needed. Throws EngineError when a file cannot be written.
-void write_scan_outputs(const ScanResult& result, const std::filesystem::path& out_dir);
+// Creates out_dir if needed and returns the report it wrote (scan_report_json). Throws EngineError
+// when a file cannot be written.
+nlohmann::json write_scan_outputs(const ScanResult& result, const std::filesystem::path& out_dir);
 
 // {"input", "units": "mm", "side", "seconds_total", "intake": {...}, "notes": [...],
 //  "segments": [{"name", "triangles", "vertices", "flipped", "D_angle", "D_area", "area_3d_mm2",

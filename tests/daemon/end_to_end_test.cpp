@@ -96,7 +96,7 @@ TEST(DaemonEndToEnd, TenScansReachTheRightCutterExactlyOnce) {
     ASSERT_FALSE(cut.empty()) << id;
     EXPECT_EQ(count_occurrences(on_cutter_1, cut), 1) << id;
     EXPECT_EQ(count_occurrences(on_cutter_2, cut), 0) << id;
-    EXPECT_EQ(count_occurrences(on_cutter_1, "(lastcut job " + id + ")"), 1) << id;
+    EXPECT_EQ(count_occurrences(on_cutter_1, "; lastcut job " + id + "\n"), 1) << id;
     const auto report = nlohmann::json::parse(read_text(rig.spool() / "done" / id / "report.json"));
     EXPECT_EQ(report.at("batch").value("cutter", ""), "cutter-1");
     EXPECT_GT(report.at("batch").value("utilisation", 0.0), 0.0);
