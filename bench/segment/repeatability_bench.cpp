@@ -1,4 +1,4 @@
-// Repeatability of the molds (issue 2): pairs of scans of one last that differ as two real scans
+// Repeatability of the molds: pairs of scans of one last that differ as two real scans
 // do (another pose, 0.2 mm scanner noise with another seed, another triangle density, 3 holes)
 // go through the whole scan-to-molds pipeline; the molds of each half are aligned rigidly and
 // their outlines compared by the symmetric Hausdorff distance. Prints a table per pair and half,

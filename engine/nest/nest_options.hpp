@@ -18,8 +18,8 @@ struct NestOptions {
   std::uint64_t seed = 1;                // worker w of round r draws from a stream seeded by (seed, r, w)
   int threads = 1;                       // tasks handed to run_parallel at once (hides: attempts per round)
   // Strips: workers that sweep the same layout in every separation step, the best sweep kept
-  // (sparrow's Algorithm 10, which uses 3). Four beat two on two cores at 60 s: jakobs2 5.44 points
-  // below best-known instead of 6.64, the others alike (docs/benchmarks-nest.md).
+  // (sparrow's Algorithm 10, which uses 3). More sweeps per step help where good moves are rare;
+  // the choice of four is measured in docs/benchmarks-nest.md.
   int sweep_workers = 4;
   std::optional<double> gap_mm;          // overrides NestInstance::gap_mm
   std::optional<double> margin_mm;       // overrides NestInstance::margin_mm

@@ -8,7 +8,7 @@
 // without improvement. It ends when no overlap is left, after max_strikes strikes, or at the deadline.
 // The result depends only on the seeds and the worker count, not on how many threads run them: workers
 // are compared by weighted overlap, ties going to the lowest index. More workers than cores still pays
-// off where good moves are rare (docs/benchmarks-nest.md: jakobs2).
+// off where good moves are rare: each step then tries more sweeps of the same layout.
 #include <functional>
 #include <memory>
 #include <vector>

@@ -1,8 +1,8 @@
 #pragma once
 // Scalar fields on the vertices of an oriented last whose zero level sets are the feather line and
-// the top rim, found by geometry instead of by the normal angle alone (issue 2: a threshold on the
-// normal elevation, thesis eqs. 7-9, is reached only gradually where the surface turns slowly, as
-// in the arch, so noise and sampling moved the curve by millimetres).
+// the top rim, found by geometry instead of by the normal angle alone: a threshold on the normal
+// elevation (thesis eqs. 7-9) is reached only gradually where the surface turns slowly, as in the
+// arch, so noise and sampling would move the curve by millimetres.
 //  - Top rim: the top cut is a plane. It is fitted (least squares, then refitted on the faces that
 //    lie close to it) to the V3 top region, and the rim is where the surface has dropped a fixed
 //    depth below that plane.

@@ -79,9 +79,7 @@ TEST(SegmentContours, NoiseAndDensityDoNotMoveTheCurves) {
             << " mm; the top rim " << noise_upper.mean_mm << ", " << noise_upper.max_mm << " mm\n"
             << "4x the triangles: feather line " << dense_lower.mean_mm << ", " << dense_lower.max_mm << " mm; top rim "
             << dense_upper.mean_mm << ", " << dense_upper.max_mm << " mm\n";
-  // With the +-45 degree classification alone (before issue 2) this last gave, mean / max in mm:
-  // noise: feather line 0.17 / 0.90, top rim 0.27 / 1.25; density: 0.19 / 0.77, 0.37 / 1.38.
-  // Now about 0.17 / 1.01, 0.17 / 0.47; 0.16 / 0.65, 0.25 / 0.74.
+  // Bounds with some room above the figures of the geometric fields (docs/benchmarks-segment.md).
   for (const CurveGap* gap : {&noise_lower, &noise_upper, &dense_lower, &dense_upper}) EXPECT_LT(gap->mean_mm, 0.35);
   EXPECT_LT(noise_lower.max_mm, 1.2);
   EXPECT_LT(noise_upper.max_mm, 0.7);
