@@ -1,59 +1,9 @@
-#include "engine/mesh/mesh_edges.hpp"
+#include "engine/mesh/mesh_face_edits.hpp"
 
 #include <algorithm>
 #include <numeric>
 
 namespace lastcut::mesh_detail {
-
-FaceAdjacency face_adjacency(const TriMesh& mesh, const std::vector<char>& removed) {
-  const size_t face_count = static_cast<size_t>(mesh.F.rows());
-  const size_t vertex_count = static_cast<size_t>(mesh.V.rows());
-  auto is_removed = [&removed](size_t f) { return !removed.empty() && removed[f]; };
-  // Vertex stars in compressed rows: star_faces[star_begin[v] .. star_begin[v + 1]).
-  std::vector<int> star_begin(vertex_count + 1, 0);
-  for (size_t f = 0; f < face_count; ++f)
-    if (!is_removed(f))
-      for (int c = 0; c < 3; ++c) ++star_begin[static_cast<size_t>(mesh.F(static_cast<Eigen::Index>(f), c)) + 1];
-  for (size_t v = 0; v < vertex_count; ++v) star_begin[v + 1] += star_begin[v];
-  std::vector<int> fill(star_begin.begin(), star_begin.end() - 1);
-  std::vector<int> star_faces(static_cast<size_t>(star_begin.back()));
-  for (size_t f = 0; f < face_count; ++f)
-    if (!is_removed(f))
-      for (int c = 0; c < 3; ++c) star_faces[static_cast<size_t>(fill[static_cast<size_t>(mesh.F(static_cast<Eigen::Index>(f), c))]++)] = static_cast<int>(f);
-
-  FaceAdjacency adjacency;
-  adjacency.neighbour.assign(3 * face_count, kBoundaryEdge);
-  adjacency.same_direction.assign(3 * face_count, 0);
-  adjacency.neighbour_corner.assign(3 * face_count, -1);
-  for (size_t f = 0; f < face_count; ++f) {
-    if (is_removed(f)) continue;
-    const Eigen::Index row = static_cast<Eigen::Index>(f);
-    for (int c = 0; c < 3; ++c) {
-      const int a = mesh.F(row, c), b = mesh.F(row, (c + 1) % 3);
-      int found = kBoundaryEdge;
-      for (int k = star_begin[static_cast<size_t>(a)]; k < star_begin[static_cast<size_t>(a) + 1]; ++k) {
-        const int g = star_faces[static_cast<size_t>(k)];
-        if (g == static_cast<int>(f)) continue;
-        const Eigen::Index other = static_cast<Eigen::Index>(g);
-        int corner_a = -1, corner_b = -1;
-        for (int d = 0; d < 3; ++d) {
-          if (mesh.F(other, d) == a) corner_a = d;
-          if (mesh.F(other, d) == b) corner_b = d;
-        }
-        if (corner_b < 0) continue;
-        if (found != kBoundaryEdge) {
-          found = kCrowdedEdge;
-          break;
-        }
-        found = g;
-        adjacency.same_direction[3 * f + static_cast<size_t>(c)] = (corner_a + 1) % 3 == corner_b;
-        adjacency.neighbour_corner[3 * f + static_cast<size_t>(c)] = corner_a;
-      }
-      adjacency.neighbour[3 * f + static_cast<size_t>(c)] = found;
-    }
-  }
-  return adjacency;
-}
 
 int drop_faces(TriMesh& mesh, const std::vector<char>& removed) {
   Eigen::Index kept = 0;
