@@ -27,7 +27,7 @@ double max_rim_distance(const test::FlatPatch& patch, const Polygon2& outline) {
 
 TEST(BoundaryLoops, DiskHasOneLoopInFaceOrder) {
   const auto patch = wavy_disk(64, 3);
-  const auto loops = boundary_loops(patch.F);
+  const auto loops = simple_boundary_loops(build_mesh_topology(patch.F, patch.UV.rows()));
   ASSERT_EQ(loops.size(), 1u);
   EXPECT_EQ(static_cast<int>(loops[0].size()), patch.rim_count);
   // Faces are CCW, so the loop runs CCW: rim vertex k is followed by k + 1.
