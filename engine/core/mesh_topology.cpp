@@ -43,45 +43,78 @@ void group_by_start_vertex(const Eigen::MatrixXi& F, Eigen::Index vertex_count, 
   }
 }
 
-// Every half-edge of a kept face looks among the half-edges leaving its two ends for the others on
-// its edge: those leaving `from` towards `to` run the same way, those leaving `to` towards `from`
-// run against it.
-void pair_half_edges(MeshTopology& t) {
+// Per entry of the compressed rows (not per half-edge), read in row order while building.
+struct SlotFlags {
+  std::vector<char> paired;       // the edge of this entry is settled
+  std::vector<char> no_way_back;  // no half-edge runs this entry's edge the other way
+  std::vector<char> boundary;     // the entry's edge has no other face
+  bool repeated_edges = false;    // some edge has more than two half-edges or two the same way
+};
+
+// Every edge is settled once, from its first entry met: the entries leaving `from` towards `to`
+// run the same way, those leaving `to` towards `from` run against it. Each edge thus costs one look
+// at its two vertices' few half-edges.
+SlotFlags pair_half_edges(MeshTopology& t) {
+  const std::size_t slots = t.out_half_edges.size();
+  SlotFlags flags{std::vector<char>(slots, 0), std::vector<char>(slots, 0), std::vector<char>(slots, 0), false};
   const int vertex_count = t.vertex_count();
-  for (int from = 0; from < vertex_count; ++from)
-    for (int i = t.out_offsets[at(from)]; i < t.out_offsets[at(from) + 1]; ++i) {
+  for (int from = 0; from < vertex_count; ++from) {
+    const int row_end = t.out_offsets[at(from) + 1];
+    for (int i = t.out_offsets[at(from)]; i < row_end; ++i) {
+      if (flags.paired[at(i)]) continue;
       const int to = t.out_targets[at(i)];
+      const int back_begin = t.out_offsets[at(to)], back_end = t.out_offsets[at(to) + 1];
+      int same_count = 0, same_slot = -1, back_count = 0, back_slot = -1;
+      for (int j = i + 1; j < row_end; ++j)
+        if (t.out_targets[at(j)] == to) ++same_count, same_slot = j;
+      for (int j = back_begin; j < back_end; ++j)
+        if (t.out_targets[at(j)] == from) ++back_count, back_slot = j;
       const int h = t.out_half_edges[at(i)];
-      int found = kBoundaryEdge;
-      bool same = false;
-      auto meet = [&](int other, bool same_way) {
-        if (found == kBoundaryEdge) {
-          found = other;
-          same = same_way;
-        } else {
-          found = kCrowdedEdge;
-        }
-      };
-      for (int j = t.out_offsets[at(from)]; j < t.out_offsets[at(from) + 1]; ++j)
-        if (j != i && t.out_targets[at(j)] == to) meet(t.out_half_edges[at(j)], true);
-      for (int j = t.out_offsets[at(to)]; j < t.out_offsets[at(to) + 1]; ++j)
-        if (t.out_targets[at(j)] == from) meet(t.out_half_edges[at(j)], false);
-      t.across[at(h)] = found;
-      t.same_direction[at(h)] = found >= 0 && same;
-      if (found == kBoundaryEdge) ++t.boundary_half_edges;
+      flags.paired[at(i)] = 1;
+      if (same_count + back_count == 0) {
+        t.across[at(h)] = kBoundaryEdge;
+        flags.boundary[at(i)] = flags.no_way_back[at(i)] = 1;
+        ++t.boundary_half_edges;
+      } else if (same_count + back_count == 1) {
+        const int other_slot = same_count == 1 ? same_slot : back_slot;
+        const int other = t.out_half_edges[at(other_slot)];
+        t.across[at(h)] = other;
+        t.across[at(other)] = h;
+        t.same_direction[at(h)] = t.same_direction[at(other)] = same_count == 1;
+        flags.paired[at(other_slot)] = 1;
+        flags.no_way_back[at(i)] = flags.no_way_back[at(other_slot)] = same_count == 1;
+        flags.repeated_edges = flags.repeated_edges || same_count == 1;
+      } else {
+        flags.repeated_edges = true;
+        t.across[at(h)] = kCrowdedEdge;
+        flags.no_way_back[at(i)] = back_count == 0;
+        for (int j = i + 1; j < row_end; ++j)
+          if (t.out_targets[at(j)] == to) {
+            t.across[at(t.out_half_edges[at(j)])] = kCrowdedEdge;
+            flags.paired[at(j)] = 1;
+            flags.no_way_back[at(j)] = back_count == 0;
+          }
+        for (int j = back_begin; j < back_end; ++j)
+          if (t.out_targets[at(j)] == from) {
+            t.across[at(t.out_half_edges[at(j)])] = kCrowdedEdge;
+            flags.paired[at(j)] = 1;
+          }
+      }
     }
+  }
+  return flags;
 }
 
 // Neighbours of v: the ends of its half-edges, and the starts of incoming half-edges that have no
 // half-edge back (on a boundary, or against a neighbour of the other orientation).
-void collect_neighbours(MeshTopology& t) {
+void collect_neighbours(const SlotFlags& flags, MeshTopology& t) {
   const Index vertex_count = at(t.vertex_count());
   t.neighbor_offsets.assign(vertex_count + 1, 0);
-  for (Index from = 0; from < vertex_count; ++from)
-    for (int i = t.out_offsets[from]; i < t.out_offsets[from + 1]; ++i) {
-      ++t.neighbor_offsets[from + 1];
-      if (t.find_half_edge(t.out_targets[at(i)], static_cast<int>(from)) < 0) ++t.neighbor_offsets[at(t.out_targets[at(i)]) + 1];
-    }
+  for (Index from = 0; from < vertex_count; ++from) {
+    t.neighbor_offsets[from + 1] += t.out_offsets[from + 1] - t.out_offsets[from];
+    for (int i = t.out_offsets[from]; i < t.out_offsets[from + 1]; ++i)
+      if (flags.no_way_back[at(i)]) ++t.neighbor_offsets[at(t.out_targets[at(i)]) + 1];
+  }
   for (Index v = 0; v < vertex_count; ++v) t.neighbor_offsets[v + 1] += t.neighbor_offsets[v];
   t.neighbors.resize(at(t.neighbor_offsets.back()));
   std::vector<int> fill(t.neighbor_offsets.begin(), t.neighbor_offsets.end() - 1);
@@ -89,35 +122,36 @@ void collect_neighbours(MeshTopology& t) {
     for (int i = t.out_offsets[from]; i < t.out_offsets[from + 1]; ++i) {
       const int to = t.out_targets[at(i)];
       t.neighbors[at(fill[from]++)] = to;
-      if (t.find_half_edge(to, static_cast<int>(from)) < 0) t.neighbors[at(fill[at(to)]++)] = static_cast<int>(from);
+      if (flags.no_way_back[at(i)]) t.neighbors[at(fill[at(to)]++)] = static_cast<int>(from);
     }
-  // Sort each row and drop repeats (a vertex reached by two half-edges), compacting in place.
+  for (Index v = 0; v < vertex_count; ++v)
+    std::sort(t.neighbors.begin() + t.neighbor_offsets[v], t.neighbors.begin() + t.neighbor_offsets[v + 1]);
+  if (!flags.repeated_edges) return;
+  // A vertex reached by two half-edges appears twice: drop repeats, compacting in place.
   int write = 0;
   for (Index v = 0; v < vertex_count; ++v) {
-    const auto begin = t.neighbors.begin() + t.neighbor_offsets[v], end = t.neighbors.begin() + t.neighbor_offsets[v + 1];
-    std::sort(begin, end);
     const int row_start = write;
-    for (auto it = begin; it != end; ++it)
-      if (write == row_start || t.neighbors[at(write - 1)] != *it) t.neighbors[at(write++)] = *it;
+    for (int i = t.neighbor_offsets[v]; i < t.neighbor_offsets[v + 1]; ++i)
+      if (write == row_start || t.neighbors[at(write - 1)] != t.neighbors[at(i)]) t.neighbors[at(write++)] = t.neighbors[at(i)];
     t.neighbor_offsets[v] = row_start;
   }
   t.neighbor_offsets[vertex_count] = write;
   t.neighbors.resize(at(write));
 }
 
-void walk_boundary_loops(MeshTopology& t) {
+void walk_boundary_loops(const SlotFlags& flags, MeshTopology& t) {
+  if (t.boundary_half_edges == 0) return;
   const int vertex_count = t.vertex_count();
-  auto on_boundary = [&t](int slot) { return t.across[at(t.out_half_edges[at(slot)])] == kBoundaryEdge; };
   std::vector<char> used(t.out_half_edges.size(), 0);
   auto unused_boundary_slot_from = [&](int v) {
     for (int i = t.out_offsets[at(v)]; i < t.out_offsets[at(v) + 1]; ++i)
-      if (on_boundary(i) && !used[at(i)]) return i;
+      if (flags.boundary[at(i)] && !used[at(i)]) return i;
     return -1;
   };
   for (int start = 0; start < vertex_count; ++start) {
     int leaving = 0;
     for (int i = t.out_offsets[at(start)]; i < t.out_offsets[at(start) + 1]; ++i) {
-      if (!on_boundary(i)) continue;
+      if (!flags.boundary[at(i)]) continue;
       if (++leaving == 2 && t.first_pinch_vertex < 0) t.first_pinch_vertex = start;
       if (used[at(i)]) continue;
       std::vector<int> loop{start};
@@ -151,9 +185,9 @@ int MeshTopology::find_half_edge(int from, int to) const {
 MeshTopology build_mesh_topology(const Eigen::MatrixXi& F, Eigen::Index vertex_count, const std::vector<char>& ignored_faces) {
   MeshTopology topology;
   group_by_start_vertex(F, vertex_count, ignored_faces, topology);
-  pair_half_edges(topology);
-  collect_neighbours(topology);
-  walk_boundary_loops(topology);
+  const SlotFlags flags = pair_half_edges(topology);
+  collect_neighbours(flags, topology);
+  walk_boundary_loops(flags, topology);
   return topology;
 }
 
