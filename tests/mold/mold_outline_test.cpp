@@ -179,6 +179,23 @@ TEST(MakeMold, RefusesClosedMeshesAndBadInput) {
   EXPECT_THROW(make_mold("x", nan_uv, one, {}), EngineError);
 }
 
+// Two triangles touching at one vertex have no single outline: the boundary walk meets a pinch.
+TEST(MakeMold, RefusesABowTie) {
+  Eigen::MatrixXd UV(5, 2);
+  UV << 0, 0, 1, 0, 0, 1, -1, 0, 0, -1;
+  Eigen::MatrixXi bow_tie(2, 3);
+  bow_tie << 0, 1, 2, 0, 3, 4;
+  try {
+    make_mold("x", UV, bow_tie, {});
+    FAIL() << "a bow tie was accepted";
+  } catch (const EngineError& error) {
+    EXPECT_NE(std::string(error.what()).find("not a simple loop at vertex 0"), std::string::npos) << error.what();
+  }
+  // The topology handed in must be the patch's own.
+  const MeshTopology other = build_mesh_topology(bow_tie.topRows(1), 5);
+  EXPECT_THROW(make_mold("x", UV, bow_tie, {}, {}, other), EngineError);
+}
+
 TEST(OutlineAlignment, RecoversARigidMotionAndMeasuresHausdorff) {
   const auto patch = wavy_disk(720, 6);
   const std::map<std::string, int> landmarks{{"toe", patch.rim_first}, {"heel", patch.rim_first + 360}};
