@@ -52,7 +52,7 @@ Timed timed_flatten(const TriMesh& mesh, const FlattenOptions& options, int repe
 // The same ARAP (same start map, same Laplacian) done plainly: the Laplacian analysed and factored again
 // in every iteration. Returns the seconds per iteration measured over `iterations` iterations.
 double refactorizing_seconds_per_iteration(const TriMesh& mesh, int iterations) {
-  const DiskTopology topology = check_disk(mesh);
+  const MeshTopology topology = check_disk(mesh);
   const TriangleFrames frames = compute_triangle_frames(mesh);
   ReducedLaplacian laplacian = pinned_cotangent_laplacian(frames, topology);
   std::vector<char> fixed(mesh.vertex_count(), 0);  // for the re-assembly in every iteration below
@@ -81,7 +81,7 @@ double refactorizing_seconds_per_iteration(const TriMesh& mesh, int iterations) 
 }
 
 void solver_rows(const BenchHalf& half) {
-  const DiskTopology topology = check_disk(half.mesh);
+  const MeshTopology topology = check_disk(half.mesh);
   const TriangleFrames frames = compute_triangle_frames(half.mesh);
   ReducedLaplacian laplacian = pinned_cotangent_laplacian(frames, topology);
   const Eigen::MatrixXd rhs = Eigen::MatrixXd::Ones(laplacian.matrix.rows(), 2);

@@ -45,7 +45,7 @@ TriangleFrames compute_triangle_frames(const TriMesh& mesh) {
   return frames;
 }
 
-ReducedLaplacian build_reduced_pattern(const TriangleFrames& frames, const DiskTopology& topology, int pinned) {
+ReducedLaplacian build_reduced_pattern(const TriangleFrames& frames, const MeshTopology& topology, int pinned) {
   const int vertex_count = static_cast<int>(topology.neighbor_offsets.size()) - 1;
   ReducedLaplacian lap;
   lap.pinned = pinned;
@@ -131,8 +131,8 @@ void assemble_laplacian(const TriangleFrames& frames, const std::vector<double>&
   }
 }
 
-ReducedLaplacian pinned_cotangent_laplacian(const TriangleFrames& frames, const DiskTopology& topology) {
-  ReducedLaplacian laplacian = build_reduced_pattern(frames, topology, topology.boundary_loop.front());
+ReducedLaplacian pinned_cotangent_laplacian(const TriangleFrames& frames, const MeshTopology& topology) {
+  ReducedLaplacian laplacian = build_reduced_pattern(frames, topology, topology.boundary_loops[0].front());
   std::vector<char> fixed(laplacian.row_of_vertex.size(), 0);
   fixed[static_cast<size_t>(laplacian.pinned)] = 1;
   assemble_laplacian(frames, frames.half_weight, fixed, laplacian);

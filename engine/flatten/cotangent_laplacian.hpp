@@ -36,7 +36,7 @@ struct ReducedLaplacian {
   std::vector<int> slot;
 };
 
-ReducedLaplacian build_reduced_pattern(const TriangleFrames& frames, const DiskTopology& topology, int pinned);
+ReducedLaplacian build_reduced_pattern(const TriangleFrames& frames, const MeshTopology& topology, int pinned);
 
 // Writes sum_edges w (u_i - u_j)^2 into `laplacian.matrix` from per-half-edge weights (3 #F).
 // Rows of vertices with fixed[v] != 0 become identity rows and their couplings are left at zero (the caller
@@ -46,6 +46,6 @@ void assemble_laplacian(const TriangleFrames& frames, const std::vector<double>&
 
 // The free-boundary ARAP system: the cotangent Laplacian (frames.half_weight) with the first vertex of the
 // boundary loop pinned, so the system is definite; returns the assembled (#V-1) x (#V-1) matrix.
-ReducedLaplacian pinned_cotangent_laplacian(const TriangleFrames& frames, const DiskTopology& topology);
+ReducedLaplacian pinned_cotangent_laplacian(const TriangleFrames& frames, const MeshTopology& topology);
 
 }  // namespace lastcut

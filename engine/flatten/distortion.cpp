@@ -25,6 +25,10 @@ int count_flipped_triangles(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV)
 }
 
 DistortionMeasures measure_distortion(const TriMesh& mesh, const Eigen::MatrixXd& UV) {
+  return measure_distortion(mesh, UV, check_disk(mesh));
+}
+
+DistortionMeasures measure_distortion(const TriMesh& mesh, const Eigen::MatrixXd& UV, const MeshTopology& topology) {
   if (UV.rows() != mesh.V.rows() || UV.cols() != 2) {
     throw EngineError("flattening has " + std::to_string(UV.rows()) + " points for a mesh of " +
                       std::to_string(mesh.V.rows()) + " vertices");
@@ -65,8 +69,8 @@ DistortionMeasures measure_distortion(const TriMesh& mesh, const Eigen::MatrixXd
   m.D_area = area_sum / m.area_3d_mm2;
   m.area_error_pct = 100.0 * (m.area_2d_mm2 - m.area_3d_mm2) / m.area_3d_mm2;
 
-  const DiskTopology topology = check_disk(mesh);
-  const auto& loop = topology.boundary_loop;
+  if (topology.boundary_loops.size() != 1) throw EngineError("distortion is measured on a disk with one boundary loop");
+  const auto& loop = topology.boundary_loops[0];
   for (size_t i = 0; i < loop.size(); ++i) {
     const int a = loop[i], b = loop[(i + 1) % loop.size()];
     m.boundary_3d_mm += (mesh.V.row(b) - mesh.V.row(a)).norm();

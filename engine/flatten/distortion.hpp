@@ -7,6 +7,7 @@
 // with S the 3D triangle areas. Both are 2 for an isometry (the ideal) and grow with distortion.
 #include <Eigen/Core>
 
+#include "engine/core/mesh_topology.hpp"
 #include "engine/core/tri_mesh.hpp"
 
 namespace lastcut {
@@ -23,6 +24,8 @@ struct DistortionMeasures {
 // mesh3d: the 3D disk (mm); UV: #V x 2 (mm), same vertex order. Throws EngineError on mismatched sizes.
 // A triangle collapsed to zero area in UV makes D_angle and D_area infinite, as the formulas say.
 DistortionMeasures measure_distortion(const TriMesh& mesh3d, const Eigen::MatrixXd& UV);
+// The same with the disk's topology already checked (check_disk in disk_topology.hpp).
+DistortionMeasures measure_distortion(const TriMesh& mesh3d, const Eigen::MatrixXd& UV, const MeshTopology& topology);
 
 // Number of triangles whose UV image has signed area <= 0 (flipped or collapsed).
 int count_flipped_triangles(const Eigen::MatrixXi& F, const Eigen::MatrixXd& UV);

@@ -24,7 +24,7 @@ double seconds_since(Clock::time_point start) {
 
 // The flip-free Tutte start map (tutte_embedding.hpp), on its own copy of the pattern and its own factor:
 // the ARAP factor stays intact. Costs one more factorization.
-Eigen::MatrixXd flip_free_start(const TriMesh& disk, const TriangleFrames& frames, const DiskTopology& topology,
+Eigen::MatrixXd flip_free_start(const TriMesh& disk, const TriangleFrames& frames, const MeshTopology& topology,
                                 const ReducedLaplacian& arap_laplacian, const FlattenOptions& options,
                                 FlattenResult& result) {
   ReducedLaplacian laplacian = arap_laplacian;
@@ -34,7 +34,7 @@ Eigen::MatrixXd flip_free_start(const TriMesh& disk, const TriangleFrames& frame
   return tutte_embedding(disk, frames, topology, laplacian, factor);
 }
 
-void run_arap(const TriMesh& disk, const TriangleFrames& frames, const DiskTopology& topology,
+void run_arap(const TriMesh& disk, const TriangleFrames& frames, const MeshTopology& topology,
               const FlattenOptions& options, FlattenResult& result) {
   auto clock = Clock::now();
   ReducedLaplacian laplacian = pinned_cotangent_laplacian(frames, topology);
@@ -109,14 +109,15 @@ void run_arap(const TriMesh& disk, const TriangleFrames& frames, const DiskTopol
   result.UV = std::move(UV);
 }
 
-}  // namespace
-
-FlattenResult flatten(const TriMesh& disk, const FlattenOptions& options) {
+void check_options(const FlattenOptions& options) {
   if (options.max_iterations < 0) throw EngineError("flatten: max_iterations must not be negative");
   if (!(options.relative_energy_tolerance >= 0.0)) throw EngineError("flatten: energy tolerance must be >= 0");
-  const auto start = Clock::now();
+}
+
+// disk: checked by check_disk; start: when the caller began (seconds_init includes the check).
+FlattenResult flatten_checked_disk(const TriMesh& disk, const MeshTopology& topology, const FlattenOptions& options,
+                                   Clock::time_point start) {
   FlattenResult result;
-  const DiskTopology topology = check_disk(disk);
   const TriangleFrames frames = compute_triangle_frames(disk);
   result.seconds_init = seconds_since(start);
 
@@ -155,6 +156,22 @@ FlattenResult flatten(const TriMesh& disk, const FlattenOptions& options) {
   }
   result.seconds_total = seconds_since(start);
   return result;
+}
+
+}  // namespace
+
+FlattenResult flatten(const TriMesh& disk, const FlattenOptions& options) {
+  check_options(options);
+  const auto start = Clock::now();
+  const MeshTopology topology = check_disk(disk);
+  return flatten_checked_disk(disk, topology, options, start);
+}
+
+FlattenResult flatten(const TriMesh& disk, const MeshTopology& topology, const FlattenOptions& options) {
+  check_options(options);
+  const auto start = Clock::now();
+  check_disk(disk, topology);
+  return flatten_checked_disk(disk, topology, options, start);
 }
 
 }  // namespace lastcut

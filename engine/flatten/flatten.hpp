@@ -60,5 +60,8 @@ struct FlattenResult {
 // disk: a connected, manifold, oriented triangle mesh with one boundary loop, in mm.
 // Throws EngineError (one line) if it is not a disk or has zero-area triangles.
 FlattenResult flatten(const TriMesh& disk, const FlattenOptions& options = {});
+// The same with the disk's topology already built (build_mesh_topology(disk.F, disk.V.rows()));
+// it is checked here.
+FlattenResult flatten(const TriMesh& disk, const MeshTopology& topology, const FlattenOptions& options = {});
 
 }  // namespace lastcut

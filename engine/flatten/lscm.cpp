@@ -8,10 +8,10 @@
 #include "engine/core/engine_error.hpp"
 
 namespace lastcut {
-LscmResult lscm(const TriMesh& mesh, const TriangleFrames& frames, const DiskTopology& topology, SparseSolver solver) {
+LscmResult lscm(const TriMesh& mesh, const TriangleFrames& frames, const MeshTopology& topology, SparseSolver solver) {
   const int n = mesh.vertex_count();
-  const int pin_a = farthest_vertex_on_loop(mesh, topology.boundary_loop, topology.boundary_loop[0]);
-  const int pin_b = farthest_vertex_on_loop(mesh, topology.boundary_loop, pin_a);
+  const int pin_a = farthest_vertex_on_loop(mesh, topology.boundary_loops[0], topology.boundary_loops[0][0]);
+  const int pin_b = farthest_vertex_on_loop(mesh, topology.boundary_loops[0], pin_a);
   if (pin_a == pin_b) throw EngineError("cannot flatten: all boundary vertices coincide");
   const double pin_distance = (mesh.V.row(pin_b) - mesh.V.row(pin_a)).norm();
 
@@ -27,7 +27,7 @@ LscmResult lscm(const TriMesh& mesh, const TriangleFrames& frames, const DiskTop
 
   // Hessian of E_C over all 2n coordinates as triplets; pinned columns go to the right-hand side.
   std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(frames.triangles.size() * 24 + topology.boundary_loop.size() * 4);
+  triplets.reserve(frames.triangles.size() * 24 + topology.boundary_loops[0].size() * 4);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(unknowns);
   auto add = [&](int row, int col, double value) {
     const int r = unknown_of[row];
@@ -53,7 +53,7 @@ LscmResult lscm(const TriMesh& mesh, const TriangleFrames& frames, const DiskTop
     }
   }
   // -A(u, v) = -1/2 sum over boundary edges i->j of (u_i v_j - u_j v_i).
-  const auto& loop = topology.boundary_loop;
+  const auto& loop = topology.boundary_loops[0];
   for (size_t e = 0; e < loop.size(); ++e) {
     const int i = loop[e], j = loop[(e + 1) % loop.size()];
     add(i, n + j, -0.5);

@@ -19,6 +19,6 @@ struct LscmResult {
   double seconds_factorize = 0;
 };
 
-LscmResult lscm(const TriMesh& mesh, const TriangleFrames& frames, const DiskTopology& topology, SparseSolver solver);
+LscmResult lscm(const TriMesh& mesh, const TriangleFrames& frames, const MeshTopology& topology, SparseSolver solver);
 
 }  // namespace lastcut

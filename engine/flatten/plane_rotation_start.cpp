@@ -18,7 +18,7 @@ constexpr double kMostOpposedCosine = -0.9;
 }  // namespace
 
 std::optional<Eigen::MatrixXd> plane_rotation_start(const TriMesh& mesh, const TriangleFrames& frames,
-                                                    const DiskTopology& topology, const ReducedLaplacian& laplacian,
+                                                    const MeshTopology& topology, const ReducedLaplacian& laplacian,
                                                     const SparseCholesky& factor) {
   const size_t face_count = frames.triangles.size();
   std::vector<Eigen::Vector3d> normals(face_count);
@@ -34,8 +34,8 @@ std::optional<Eigen::MatrixXd> plane_rotation_start(const TriMesh& mesh, const T
   const Eigen::Vector3d N = mean.normalized();
   // Right-handed basis (E1, E2, N) of the plane, E1 along the outline's longest chord (as the Tutte map's
   // long axis): taken from the mesh, not from the coordinate axes, so the mold does not depend on the pose.
-  const int end_a = farthest_vertex_on_loop(mesh, topology.boundary_loop, topology.boundary_loop.front());
-  const int end_b = farthest_vertex_on_loop(mesh, topology.boundary_loop, end_a);
+  const int end_a = farthest_vertex_on_loop(mesh, topology.boundary_loops[0], topology.boundary_loops[0].front());
+  const int end_b = farthest_vertex_on_loop(mesh, topology.boundary_loops[0], end_a);
   Eigen::Vector3d chord = mesh.V.row(end_b) - mesh.V.row(end_a);
   chord -= chord.dot(N) * N;
   const Eigen::Vector3d E1 = chord.norm() > 0.0 ? Eigen::Vector3d(chord.normalized()) : N.unitOrthogonal();

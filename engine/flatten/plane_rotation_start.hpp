@@ -25,7 +25,7 @@ namespace lastcut {
 // weighted normals cancel out, as on a nearly closed surface): the caller then starts from the Tutte
 // embedding. Triangles facing almost straight away from N are turned half a turn and projected.
 std::optional<Eigen::MatrixXd> plane_rotation_start(const TriMesh& mesh, const TriangleFrames& frames,
-                                                    const DiskTopology& topology, const ReducedLaplacian& laplacian,
+                                                    const MeshTopology& topology, const ReducedLaplacian& laplacian,
                                                     const SparseCholesky& factor);
 
 }  // namespace lastcut

@@ -66,7 +66,7 @@ int count_flips(const TriangleFrames& frames, const std::vector<int>& faces, con
 
 }  // namespace
 
-StarUntangleReport star_untangle(const TriangleFrames& frames, const DiskTopology& topology, Eigen::MatrixXd& UV,
+StarUntangleReport star_untangle(const TriangleFrames& frames, const MeshTopology& topology, Eigen::MatrixXd& UV,
                                  int max_rings, int max_sweeps) {
   StarUntangleReport report;
   const int vertex_count = static_cast<int>(UV.rows());

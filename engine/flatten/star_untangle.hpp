@@ -28,7 +28,7 @@ struct StarUntangleReport {
 
 // UV #V x 2, mm, changed in place; on failure (flips left after max_sweeps) it keeps the partly untangled
 // map only if it has fewer flipped triangles than before, else it is restored.
-StarUntangleReport star_untangle(const TriangleFrames& frames, const DiskTopology& topology, Eigen::MatrixXd& UV,
+StarUntangleReport star_untangle(const TriangleFrames& frames, const MeshTopology& topology, Eigen::MatrixXd& UV,
                                  int max_rings = 8, int max_sweeps = 200);
 
 }  // namespace lastcut

@@ -64,15 +64,15 @@ Eigen::MatrixXd boundary_on_ellipse(const TriMesh& mesh, const std::vector<int>&
   return positions;
 }
 
-Eigen::MatrixXd tutte_embedding(const TriMesh& mesh, const TriangleFrames& frames, const DiskTopology& topology,
+Eigen::MatrixXd tutte_embedding(const TriMesh& mesh, const TriangleFrames& frames, const MeshTopology& topology,
                                 ReducedLaplacian& laplacian, SparseCholesky& solver) {
   const int vertex_count = mesh.vertex_count();
   Eigen::MatrixXd UV = Eigen::MatrixXd::Zero(vertex_count, 2);
   std::vector<char> fixed(vertex_count, 0);
-  const Eigen::MatrixXd ring = boundary_on_ellipse(mesh, topology.boundary_loop, frames.area_mm2.sum());
-  for (size_t i = 0; i < topology.boundary_loop.size(); ++i) {
-    UV.row(topology.boundary_loop[i]) = ring.row(static_cast<Eigen::Index>(i));
-    fixed[topology.boundary_loop[i]] = 1;
+  const Eigen::MatrixXd ring = boundary_on_ellipse(mesh, topology.boundary_loops[0], frames.area_mm2.sum());
+  for (size_t i = 0; i < topology.boundary_loops[0].size(); ++i) {
+    UV.row(topology.boundary_loops[0][i]) = ring.row(static_cast<Eigen::Index>(i));
+    fixed[topology.boundary_loops[0][i]] = 1;
   }
 
   // Positive weights: clamp the cotangent weights from below (obtuse angles give zero or negative ones).
@@ -91,7 +91,7 @@ Eigen::MatrixXd tutte_embedding(const TriMesh& mesh, const TriangleFrames& frame
       if (fixed[b] && !fixed[a]) rhs.row(laplacian.row_of_vertex[a]) += w * UV.row(b);
     }
   }
-  for (int v : topology.boundary_loop) {
+  for (int v : topology.boundary_loops[0]) {
     if (laplacian.row_of_vertex[v] >= 0) rhs.row(laplacian.row_of_vertex[v]) = UV.row(v);
   }
   solver.factorize(laplacian.matrix);

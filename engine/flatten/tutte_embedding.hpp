@@ -17,7 +17,7 @@ namespace lastcut {
 
 // UV #V x 2, mm. `laplacian` must be pinned at a boundary vertex; `solver` must have analysed its pattern.
 // The solver is left holding the factor of the embedding's matrix.
-Eigen::MatrixXd tutte_embedding(const TriMesh& mesh, const TriangleFrames& frames, const DiskTopology& topology,
+Eigen::MatrixXd tutte_embedding(const TriMesh& mesh, const TriangleFrames& frames, const MeshTopology& topology,
                                 ReducedLaplacian& laplacian, SparseCholesky& solver);
 
 // Positions of the boundary loop on the ellipse described above (#boundary x 2, mm, counter-clockwise).

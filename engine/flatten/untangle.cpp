@@ -69,13 +69,13 @@ bool place_region(const TriangleFrames& frames, const std::vector<int>& movable,
 
 // Second strategy: Gauss-Seidel sweeps of the same averaging, growing one ring at a time, where mesh
 // boundary vertices may slide to the middle of their two boundary neighbours (for folds that reach the outline).
-UntangleReport relax_with_sliding_outline(const TriangleFrames& frames, const DiskTopology& topology,
+UntangleReport relax_with_sliding_outline(const TriangleFrames& frames, const MeshTopology& topology,
                                           Eigen::MatrixXd& UV, const std::vector<int>& flipped, int max_rings) {
   UntangleReport report;
   report.flipped_before = report.flipped_after = static_cast<int>(flipped.size());
   const int vertex_count = static_cast<int>(UV.rows());
   std::vector<char> on_boundary(vertex_count, 0);
-  for (int v : topology.boundary_loop) on_boundary[v] = 1;
+  for (int v : topology.boundary_loops[0]) on_boundary[v] = 1;
   std::vector<char> in_region(vertex_count, 0);
   std::vector<int> region;
   for (int f : flipped) {
@@ -123,7 +123,7 @@ UntangleReport relax_with_sliding_outline(const TriangleFrames& frames, const Di
   return report;
 }
 
-UntangleReport regional_tutte(const TriangleFrames& frames, const DiskTopology& topology, Eigen::MatrixXd& UV,
+UntangleReport regional_tutte(const TriangleFrames& frames, const MeshTopology& topology, Eigen::MatrixXd& UV,
                               const std::vector<int>& flipped, int max_rings) {
   UntangleReport report;
   report.flipped_before = static_cast<int>(flipped.size());
@@ -131,7 +131,7 @@ UntangleReport regional_tutte(const TriangleFrames& frames, const DiskTopology& 
 
   const int vertex_count = static_cast<int>(UV.rows());
   std::vector<char> on_boundary(vertex_count, 0);
-  for (int v : topology.boundary_loop) on_boundary[v] = 1;
+  for (int v : topology.boundary_loops[0]) on_boundary[v] = 1;
   std::vector<char> in_region(vertex_count, 0);
   std::vector<int> region;  // breadth-first order: ring by ring
   for (int f : flipped) {
@@ -192,7 +192,7 @@ UntangleReport regional_tutte(const TriangleFrames& frames, const DiskTopology& 
 
 }  // namespace
 
-UntangleReport untangle_flips(const TriangleFrames& frames, const DiskTopology& topology, Eigen::MatrixXd& UV,
+UntangleReport untangle_flips(const TriangleFrames& frames, const MeshTopology& topology, Eigen::MatrixXd& UV,
                               int max_rings) {
   const std::vector<int> flipped = flipped_triangles(frames, UV);
   if (flipped.empty()) return {};

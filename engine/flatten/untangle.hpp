@@ -25,7 +25,7 @@ struct UntangleReport {
 
 // UV #V x 2, mm, changed in place (left unchanged if no region up to max_rings removes every flip).
 // The first strategy holds the outline; the second may move outline vertices inside the region.
-UntangleReport untangle_flips(const TriangleFrames& frames, const DiskTopology& topology, Eigen::MatrixXd& UV,
+UntangleReport untangle_flips(const TriangleFrames& frames, const MeshTopology& topology, Eigen::MatrixXd& UV,
                               int max_rings = 64);
 
 }  // namespace lastcut

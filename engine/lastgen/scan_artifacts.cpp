@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "engine/core/engine_error.hpp"
-#include "engine/mesh/mesh_edges.hpp"
+#include "engine/mesh/mesh_face_edits.hpp"
 
 namespace lastcut {
 namespace {

@@ -9,13 +9,10 @@
 #include <vector>
 
 #include "engine/core/engine_error.hpp"
-#include "engine/mesh/mesh_edges.hpp"
+#include "engine/core/mesh_topology.hpp"
+#include "engine/mesh/mesh_face_edits.hpp"
 
 namespace lastcut {
-
-using mesh_detail::face_adjacency;
-using mesh_detail::FaceAdjacency;
-using mesh_detail::UnionFind;
 
 namespace {
 
@@ -37,16 +34,12 @@ double signed_volume_mm3(const TriMesh& mesh) {
 }
 
 void keep_largest_component(TriMesh& mesh, double debris_fraction, IntakeReport& report) {
-  UnionFind pieces(static_cast<size_t>(mesh.F.rows()));
-  const FaceAdjacency adjacency = face_adjacency(mesh, {});
-  for (size_t corner = 0; corner < adjacency.neighbour.size(); ++corner)
-    if (adjacency.neighbour[corner] >= 0) pieces.unite(static_cast<int>(corner / 3), adjacency.neighbour[corner]);
-  const Eigen::VectorXd areas = triangle_areas(mesh);
-  std::vector<double> piece_area(static_cast<size_t>(mesh.F.rows()), 0.0);
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) piece_area[static_cast<size_t>(pieces.find(static_cast<int>(f)))] += areas(f);
+  const MeshTopology topology = build_mesh_topology(mesh.F, mesh.V.rows());
+  int piece_count = 0;
+  const std::vector<int> piece = face_components(topology, {}, piece_count);
+  const std::vector<double> piece_area = component_areas(piece, piece_count, triangle_areas(mesh));
   std::vector<std::pair<double, int>> ranked;
-  for (size_t root = 0; root < piece_area.size(); ++root)
-    if (pieces.find(static_cast<int>(root)) == static_cast<int>(root)) ranked.emplace_back(piece_area[root], static_cast<int>(root));
+  for (int id = 0; id < piece_count; ++id) ranked.emplace_back(piece_area[static_cast<size_t>(id)], id);
   std::sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first != b.first ? a.first > b.first : a.second < b.second; });
   if (ranked.size() <= 1) return;
   const double largest = ranked[0].first;
@@ -64,13 +57,13 @@ void keep_largest_component(TriMesh& mesh, double debris_fraction, IntakeReport&
   if (debris > 0) report.notes.push_back("removed " + std::to_string(debris) + " specks of scanner debris");
   report.loose_components_removed += static_cast<int>(ranked.size()) - 1;
   std::vector<char> removed(static_cast<size_t>(mesh.F.rows()), 0);
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) removed[static_cast<size_t>(f)] = pieces.find(static_cast<int>(f)) != ranked[0].second;
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) removed[static_cast<size_t>(f)] = piece[static_cast<size_t>(f)] != ranked[0].second;
   mesh_detail::drop_faces(mesh, removed);
   mesh_detail::drop_unreferenced_vertices(mesh);
 }
 
 int orient_outward(TriMesh& mesh, IntakeReport& report) {
-  const FaceAdjacency adjacency = face_adjacency(mesh, {});
+  const MeshTopology topology = build_mesh_topology(mesh.F, mesh.V.rows());
   std::vector<signed char> flip(static_cast<size_t>(mesh.F.rows()), -1);  // -1 not yet visited
   bool orientable = true;
   for (Eigen::Index seed = 0; seed < mesh.F.rows(); ++seed) {
@@ -84,9 +77,9 @@ int orient_outward(TriMesh& mesh, IntakeReport& report) {
       queue.pop_front();
       for (int c = 0; c < 3; ++c) {
         const size_t corner = 3 * static_cast<size_t>(face) + static_cast<size_t>(c);
-        const int next = adjacency.neighbour[corner];
+        const int next = topology.face_across(static_cast<int>(corner));
         if (next < 0) continue;
-        const signed char wanted = static_cast<signed char>(flip[static_cast<size_t>(face)] ^ adjacency.same_direction[corner]);
+        const signed char wanted = static_cast<signed char>(flip[static_cast<size_t>(face)] ^ topology.same_direction[corner]);
         if (flip[static_cast<size_t>(next)] < 0) {
           flip[static_cast<size_t>(next)] = wanted;
           queue.push_back(next);
@@ -108,20 +101,8 @@ int orient_outward(TriMesh& mesh, IntakeReport& report) {
 }
 
 int count_boundary_loops(const TriMesh& mesh) {
-  const FaceAdjacency adjacency = face_adjacency(mesh, {});
-  UnionFind chains(static_cast<size_t>(mesh.V.rows()));
-  std::vector<char> on_boundary(static_cast<size_t>(mesh.V.rows()), 0);
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
-    for (int c = 0; c < 3; ++c) {
-      if (adjacency.neighbour[static_cast<size_t>(3 * f + c)] != mesh_detail::kBoundaryEdge) continue;
-      const int a = mesh.F(f, c), b = mesh.F(f, (c + 1) % 3);
-      chains.unite(a, b);
-      on_boundary[static_cast<size_t>(a)] = on_boundary[static_cast<size_t>(b)] = 1;
-    }
-  int loops = 0;
-  for (Eigen::Index v = 0; v < mesh.V.rows(); ++v)
-    if (on_boundary[static_cast<size_t>(v)] && chains.find(static_cast<int>(v)) == static_cast<int>(v)) ++loops;
-  return loops;
+  const MeshTopology topology = build_mesh_topology(mesh.F, mesh.V.rows());
+  return static_cast<int>(topology.boundary_loops.size()) + topology.open_boundary_chains;
 }
 
 }  // namespace lastcut

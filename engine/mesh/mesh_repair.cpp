@@ -7,13 +7,12 @@
 #include <numeric>
 #include <vector>
 
-#include "engine/mesh/mesh_edges.hpp"
+#include "engine/core/mesh_topology.hpp"
+#include "engine/mesh/mesh_face_edits.hpp"
 
 namespace lastcut {
 
 using mesh_detail::drop_faces;
-using mesh_detail::face_adjacency;
-using mesh_detail::FaceAdjacency;
 using mesh_detail::UnionFind;
 
 int merge_duplicate_vertices(TriMesh& mesh) {
@@ -78,12 +77,12 @@ int remove_duplicate_faces(TriMesh& mesh) {
 namespace {
 
 // Flags every face that uses an edge shared by more than two faces.
-int flag_faces_on_crowded_edges(const TriMesh& mesh, const FaceAdjacency& adjacency, std::vector<char>& removed) {
+int flag_faces_on_crowded_edges(const TriMesh& mesh, const MeshTopology& topology, std::vector<char>& removed) {
   int flagged = 0;
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
     if (removed[static_cast<size_t>(f)]) continue;
     for (int c = 0; c < 3; ++c)
-      if (adjacency.neighbour[static_cast<size_t>(3 * f + c)] == mesh_detail::kCrowdedEdge) {
+      if (topology.face_across(f, c) == kCrowdedEdge) {
         removed[static_cast<size_t>(f)] = 1;
         ++flagged;
         break;
@@ -94,18 +93,19 @@ int flag_faces_on_crowded_edges(const TriMesh& mesh, const FaceAdjacency& adjace
 
 // At a vertex where several fans of faces touch only at the vertex (a "bow tie"), flags the faces
 // of all but the largest fan. Fans: corners of one vertex joined across the manifold edges.
-int flag_faces_in_extra_fans(const TriMesh& mesh, const FaceAdjacency& adjacency, std::vector<char>& removed) {
+int flag_faces_in_extra_fans(const TriMesh& mesh, const MeshTopology& topology, std::vector<char>& removed) {
   const Eigen::Index face_count = mesh.F.rows();
   UnionFind corners(static_cast<size_t>(face_count) * 3);
   for (Eigen::Index f = 0; f < face_count; ++f)
     for (int c = 0; c < 3; ++c) {
-      const int g = adjacency.neighbour[static_cast<size_t>(3 * f + c)];
-      if (g < 0) continue;
-      // The edge runs from corner c to c + 1 of f; join each end with the same vertex in g.
-      const int corner_a = adjacency.neighbour_corner[static_cast<size_t>(3 * f + c)];
-      const int b = mesh.F(f, (c + 1) % 3);
-      int corner_b = 0;
-      while (mesh.F(g, corner_b) != b) ++corner_b;
+      const auto h = static_cast<size_t>(3 * f + c);
+      const int other = topology.across[h];
+      if (other < 0) continue;
+      // The edge runs from corner c to c + 1 of f; join each end with the same vertex in g, whose
+      // half-edge on it starts at corner j and runs the same way or against f's.
+      const int g = other / 3, j = other % 3;
+      const int corner_a = topology.same_direction[h] ? j : (j + 1) % 3;
+      const int corner_b = topology.same_direction[h] ? (j + 1) % 3 : j;
       corners.unite(static_cast<int>(3 * f + c), 3 * g + corner_a);
       corners.unite(static_cast<int>(3 * f + (c + 1) % 3), 3 * g + corner_b);
     }
@@ -145,10 +145,10 @@ int remove_non_manifold_faces(TriMesh& mesh) {
   std::vector<char> removed(static_cast<size_t>(mesh.F.rows()), 0);
   // Removing faces can leave a new bow tie behind; a few rounds settle every case seen in scans.
   for (int round = 0; round < 4; ++round) {
-    FaceAdjacency adjacency = face_adjacency(mesh, removed);
-    const int crowded = flag_faces_on_crowded_edges(mesh, adjacency, removed);
-    if (crowded > 0) adjacency = face_adjacency(mesh, removed);
-    const int fans = flag_faces_in_extra_fans(mesh, adjacency, removed);
+    MeshTopology topology = build_mesh_topology(mesh.F, mesh.V.rows(), removed);
+    const int crowded = flag_faces_on_crowded_edges(mesh, topology, removed);
+    if (crowded > 0) topology = build_mesh_topology(mesh.F, mesh.V.rows(), removed);
+    const int fans = flag_faces_in_extra_fans(mesh, topology, removed);
     if (crowded + fans == 0) break;
   }
   const int dropped = drop_faces(mesh, removed);

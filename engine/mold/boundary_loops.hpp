@@ -1,14 +1,16 @@
 #pragma once
-// Boundary loops of a triangle mesh: the closed chains of edges that belong to one triangle only.
-#include <Eigen/Core>
+// The outline loops of a patch: its boundary loops (engine/core/mesh_topology.hpp), refused when
+// they do not form simple closed loops, largest first.
 #include <vector>
+
+#include "engine/core/mesh_topology.hpp"
 
 namespace lastcut {
 
-// F #F x 3. Returns each boundary loop as vertex indices in the order the boundary edges run
-// (the orientation of the faces: for a CCW-in-UV patch the loop is CCW). Loops are sorted by
-// decreasing number of vertices. Throws EngineError when a boundary vertex has more than one
-// outgoing boundary edge (the patch is not a manifold with boundary).
-std::vector<std::vector<int>> boundary_loops(const Eigen::MatrixXi& F);
+// Each boundary loop as vertex indices in the order the boundary edges run (the orientation of
+// the faces: for a CCW-in-UV patch the loop is CCW), sorted by decreasing number of vertices.
+// Throws EngineError when a boundary vertex has more than one outgoing boundary edge or a chain of
+// boundary edges does not close (the patch is not a manifold with boundary).
+std::vector<std::vector<int>> simple_boundary_loops(const MeshTopology& topology);
 
 }  // namespace lastcut

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 #include "engine/core/engine_error.hpp"
 #include "engine/mold/boundary_loops.hpp"
@@ -92,7 +93,16 @@ MoldMark notch_at(const std::string& name, const Polygon2& outline, const Point2
 Mold make_mold(std::string name, const Eigen::MatrixXd& UV, const Eigen::MatrixXi& F,
                const std::map<std::string, int>& landmark_vertices, const MoldOptions& options) {
   check_inputs(name, UV, F, options);
-  const auto loops = boundary_loops(F);
+  return make_mold(std::move(name), UV, F, landmark_vertices, options, build_mesh_topology(F, UV.rows()));
+}
+
+Mold make_mold(std::string name, const Eigen::MatrixXd& UV, const Eigen::MatrixXi& F,
+               const std::map<std::string, int>& landmark_vertices, const MoldOptions& options,
+               const MeshTopology& topology) {
+  check_inputs(name, UV, F, options);
+  if (topology.vertex_count() != UV.rows() || topology.face_count() != F.rows())
+    throw EngineError("mold " + name + ": the mesh topology was built for another patch");
+  const auto loops = simple_boundary_loops(topology);
   if (loops.empty()) throw EngineError("mold " + name + ": the patch is closed; it has no outline to cut");
   const auto longest = std::max_element(loops.begin(), loops.end(), [&](const auto& a, const auto& b) {
     return loop_length(UV, a) < loop_length(UV, b);

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/mesh_topology.hpp"
 #include "engine/core/polygon.hpp"
 
 namespace lastcut {
@@ -56,5 +57,9 @@ inline Point2 notch_inner_end(const MoldMark& mark) { return mark.position_mm + 
 // Throws EngineError when there is no boundary, the outline overlaps itself or options are bad.
 Mold make_mold(std::string name, const Eigen::MatrixXd& UV, const Eigen::MatrixXi& F,
                const std::map<std::string, int>& landmark_vertices, const MoldOptions& options = {});
+// The same with the patch's topology already built (build_mesh_topology(F, UV.rows())).
+Mold make_mold(std::string name, const Eigen::MatrixXd& UV, const Eigen::MatrixXi& F,
+               const std::map<std::string, int>& landmark_vertices, const MoldOptions& options,
+               const MeshTopology& topology);
 
 }  // namespace lastcut

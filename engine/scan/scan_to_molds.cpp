@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "engine/core/engine_error.hpp"
+#include "engine/core/mesh_topology.hpp"
 #include "engine/mold/boundary_loops.hpp"
 #include "engine/orient/orient_last.hpp"
 
@@ -21,7 +22,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 std::vector<double> boundary_loop_lengths_mm(const TriMesh& mesh) {
   std::vector<double> lengths;
-  for (const auto& loop : boundary_loops(mesh.F)) {
+  for (const auto& loop : simple_boundary_loops(build_mesh_topology(mesh.F, mesh.V.rows()))) {
     double length = 0.0;
     for (size_t i = 0; i < loop.size(); ++i) length += (mesh.V.row(loop[(i + 1) % loop.size()]) - mesh.V.row(loop[i])).norm();
     lengths.push_back(length);
@@ -48,8 +49,8 @@ void refuse_open_patch(const TriMesh& mesh, const SegmentOptions& options) {
   throw EngineError(line);
 }
 
-void refuse_closed_patch(const TriMesh& mesh) {
-  if (boundary_loops(mesh.F).empty())
+void refuse_closed_patch(const MeshTopology& topology) {
+  if (simple_boundary_loops(topology).empty())
     throw EngineError("the scan is a closed surface, not an open patch; drop --no-segment to cut a last into halves");
 }
 
@@ -76,19 +77,21 @@ Eigen::MatrixXd place_flattening(const Eigen::MatrixXd& UV, const std::map<std::
   return placed;
 }
 
-SegmentResult flatten_segment(std::string name, TriMesh mesh3d, const std::map<std::string, int>& landmarks,
-                              const ScanOptions& options, std::vector<std::string>& notes) {
+// topology: of mesh3d, built once and used by the disk check, the distortion measures and the mold.
+SegmentResult flatten_segment(std::string name, TriMesh mesh3d, const MeshTopology& topology,
+                              const std::map<std::string, int>& landmarks, const ScanOptions& options,
+                              std::vector<std::string>& notes) {
   SegmentResult result;
   result.name = std::move(name);
   result.mesh3d = std::move(mesh3d);
-  result.flatten = flatten(result.mesh3d, options.flatten);
+  result.flatten = flatten(result.mesh3d, topology, options.flatten);
   result.UV = place_flattening(result.flatten.UV, landmarks);
-  result.measures = measure_distortion(result.mesh3d, result.UV);
+  result.measures = measure_distortion(result.mesh3d, result.UV, topology);
   for (const auto& note : result.flatten.notes) notes.push_back(result.name + ": " + note);
   if (result.measures.flipped_triangles > 0)
     notes.push_back(result.name + ": " + std::to_string(result.measures.flipped_triangles) +
                     " triangles are flipped in the flattening");
-  result.mold = make_mold(result.name, result.UV, result.mesh3d.F, landmarks, options.mold);
+  result.mold = make_mold(result.name, result.UV, result.mesh3d.F, landmarks, options.mold, topology);
   return result;
 }
 
@@ -111,8 +114,9 @@ ScanResult scan_to_molds(const std::filesystem::path& scan, const ScanOptions& o
   result.intake = intake.report;
 
   if (!options.segment) {
-    refuse_closed_patch(intake.mesh);
-    result.segments.push_back(flatten_segment("patch", std::move(intake.mesh), {}, options, result.notes));
+    const MeshTopology topology = build_mesh_topology(intake.mesh.F, intake.mesh.V.rows());
+    refuse_closed_patch(topology);
+    result.segments.push_back(flatten_segment("patch", std::move(intake.mesh), topology, {}, options, result.notes));
     result.seconds_total = seconds_since(start);
     return result;
   }
@@ -126,7 +130,7 @@ ScanResult scan_to_molds(const std::filesystem::path& scan, const ScanOptions& o
   result.notes.insert(result.notes.end(), halves.notes.begin(), halves.notes.end());
   for (Segment* half : {&halves.medial, &halves.lateral})
     result.segments.push_back(
-        flatten_segment(half->name, std::move(half->mesh), half->landmarks, options, result.notes));
+        flatten_segment(half->name, std::move(half->mesh), half->topology, half->landmarks, options, result.notes));
   result.seconds_total = seconds_since(start);
   return result;
 }

@@ -29,7 +29,7 @@ Eigen::VectorXd region_vertex_weights(const TriMesh& mesh, const std::vector<cha
 // region; other positive vertices (a far part of the surface that happens to come close to the
 // fitted shape) are set to -1 mm. Their neighbours outside the kept set are all <= 0 already, so
 // the level set around the kept set does not move.
-void keep_connected_to_region(const MeshGraph& graph, const Eigen::VectorXd& region_weight, Eigen::VectorXd& field) {
+void keep_connected_to_region(const MeshTopology& topology, const Eigen::VectorXd& region_weight, Eigen::VectorXd& field) {
   const auto vertex_count = static_cast<std::size_t>(field.size());
   std::vector<char> kept(vertex_count, 0);
   std::vector<int> stack;
@@ -41,8 +41,8 @@ void keep_connected_to_region(const MeshGraph& graph, const Eigen::VectorXd& reg
   while (!stack.empty()) {
     const auto v = static_cast<std::size_t>(stack.back());
     stack.pop_back();
-    for (int i = graph.neighbor_offsets[v]; i < graph.neighbor_offsets[v + 1]; ++i) {
-      const auto w = static_cast<std::size_t>(graph.neighbors[static_cast<std::size_t>(i)]);
+    for (int i = topology.neighbor_offsets[v]; i < topology.neighbor_offsets[v + 1]; ++i) {
+      const auto w = static_cast<std::size_t>(topology.neighbors[static_cast<std::size_t>(i)]);
       if (kept[w] || !(field(static_cast<Eigen::Index>(w)) > 0.0)) continue;
       kept[w] = 1;
       stack.push_back(static_cast<int>(w));
@@ -158,7 +158,7 @@ Eigen::VectorXd smooth_vertex_field(const TriMesh& mesh, const Eigen::VectorXd& 
   return values;
 }
 
-std::optional<ContourField> top_plane_field(const TriMesh& mesh, const MeshGraph& graph, const std::vector<char>& top,
+std::optional<ContourField> top_plane_field(const TriMesh& mesh, const MeshTopology& topology, const std::vector<char>& top,
                                                const Eigen::VectorXd& areas, double depth_mm, double max_rms_mm) {
   const Eigen::VectorXd region_weight = region_vertex_weights(mesh, top, areas);
   if (!((region_weight.array() > 0.0).count() >= 3)) return std::nullopt;
@@ -176,11 +176,11 @@ std::optional<ContourField> top_plane_field(const TriMesh& mesh, const MeshGraph
   const double rms_mm = weighted_rms(height, weight);
   if (rms_mm > max_rms_mm) return std::nullopt;
   Eigen::VectorXd field = height.array() + depth_mm;
-  keep_connected_to_region(graph, region_weight, field);
+  keep_connected_to_region(topology, region_weight, field);
   return ContourField{std::move(field), rms_mm};
 }
 
-std::optional<ContourField> sole_height_field(const TriMesh& mesh, const MeshGraph& graph,
+std::optional<ContourField> sole_height_field(const TriMesh& mesh, const MeshTopology& topology,
                                                  const std::vector<char>& sole, const Eigen::VectorXd& areas,
                                                  double height_mm, double max_rms_mm) {
   const Eigen::VectorXd region_weight = region_vertex_weights(mesh, sole, areas);
@@ -217,7 +217,7 @@ std::optional<ContourField> sole_height_field(const TriMesh& mesh, const MeshGra
   const double rms_mm = weighted_rms(residual, weight);
   if (rms_mm > max_rms_mm) return std::nullopt;
   Eigen::VectorXd field = height_mm - residual.array();
-  keep_connected_to_region(graph, region_weight, field);
+  keep_connected_to_region(topology, region_weight, field);
   return ContourField{std::move(field), rms_mm};
 }
 

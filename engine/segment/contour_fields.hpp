@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "engine/core/tri_mesh.hpp"
-#include "engine/segment/mesh_graph.hpp"
+#include "engine/core/mesh_topology.hpp"
 
 namespace lastcut {
 
@@ -39,13 +39,13 @@ Eigen::VectorXd smooth_vertex_field(const TriMesh& mesh, const Eigen::VectorXd& 
 // depth_mm below the plane fitted to `top` (#F flags): field = signed height above the plane + depth_mm
 // (mm), #V. Returns nothing when the region is too small or not flat (RMS distance to the plane
 // above max_rms_mm), so the caller keeps the classification.
-std::optional<ContourField> top_plane_field(const TriMesh& mesh, const MeshGraph& graph, const std::vector<char>& top,
+std::optional<ContourField> top_plane_field(const TriMesh& mesh, const MeshTopology& topology, const std::vector<char>& top,
                                                const Eigen::VectorXd& areas, double depth_mm, double max_rms_mm);
 
 // height_mm above the height field fitted to `sole` (#F flags): field = height_mm - (z - s(x, y))
 // (mm), #V. Returns nothing when the fit is poor (RMS residual above max_rms_mm, e.g. the toes of
 // a foot scan), so the caller keeps the classification.
-std::optional<ContourField> sole_height_field(const TriMesh& mesh, const MeshGraph& graph,
+std::optional<ContourField> sole_height_field(const TriMesh& mesh, const MeshTopology& topology,
                                                  const std::vector<char>& sole, const Eigen::VectorXd& areas,
                                                  double height_mm, double max_rms_mm);
 

@@ -10,19 +10,21 @@
 
 namespace lastcut {
 
-std::vector<int> region_boundary_loop(const TriMesh& mesh, const MeshGraph& graph, const std::vector<char>& region) {
-  // Contour graph: edges of region faces whose other face is outside the region (or missing).
-  std::map<int, std::vector<int>> contour;
+std::vector<int> region_boundary_loop(const TriMesh& mesh, const MeshTopology& topology, const std::vector<char>& region) {
+  auto in_region = [&region](int face) { return face >= 0 && region[static_cast<std::size_t>(face)]; };
+  // A contour edge has a region face on one side only (or no face on the other side).
+  auto on_contour = [&](int a, int b) {
+    const int ab = topology.find_half_edge(a, b), ba = topology.find_half_edge(b, a);
+    const bool left = ab >= 0 && in_region(ab / 3), right = ba >= 0 && in_region(ba / 3);
+    return left != right;
+  };
   int cut_from = -1, cut_to = -1;
   double cut_x = std::numeric_limits<double>::infinity();
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
     if (!region[static_cast<std::size_t>(f)]) continue;
     for (int k = 0; k < 3; ++k) {
-      const int g = graph.face_neighbors(f, k);
-      if (g >= 0 && region[static_cast<std::size_t>(g)]) continue;
+      if (in_region(topology.face_across(f, k))) continue;
       const int a = mesh.F(f, k), b = mesh.F(f, (k + 1) % 3);
-      contour[a].push_back(b);
-      contour[b].push_back(a);
       const double x = 0.5 * (mesh.V(a, 0) + mesh.V(b, 0));
       if (x < cut_x) { cut_x = x; cut_from = a; cut_to = b; }
     }
@@ -41,8 +43,9 @@ std::vector<int> region_boundary_loop(const TriMesh& mesh, const MeshGraph& grap
     queue.pop();
     if (d > distance[u]) continue;
     if (u == cut_to) break;
-    for (int w : contour[u]) {
-      if ((u == cut_from && w == cut_to) || (u == cut_to && w == cut_from)) continue;
+    for (int i = topology.neighbor_offsets[static_cast<std::size_t>(u)]; i < topology.neighbor_offsets[static_cast<std::size_t>(u) + 1]; ++i) {
+      const int w = topology.neighbors[static_cast<std::size_t>(i)];
+      if ((u == cut_from && w == cut_to) || (u == cut_to && w == cut_from) || !on_contour(u, w)) continue;
       const double candidate = d + (mesh.V.row(u) - mesh.V.row(w)).norm();
       auto it = distance.find(w);
       if (it == distance.end() || candidate < it->second) {

@@ -9,14 +9,14 @@
 #include <vector>
 
 #include "engine/core/tri_mesh.hpp"
-#include "engine/segment/mesh_graph.hpp"
+#include "engine/core/mesh_topology.hpp"
 
 namespace lastcut {
 
 // region: #F flags. Returns the loop's vertex indices (first vertex not repeated), starting at the
 // contour edge with the smallest x (the heel end) so the result is deterministic.
 // Throws EngineError when the region has no closed boundary.
-std::vector<int> region_boundary_loop(const TriMesh& mesh, const MeshGraph& graph, const std::vector<char>& region);
+std::vector<int> region_boundary_loop(const TriMesh& mesh, const MeshTopology& topology, const std::vector<char>& region);
 
 // Moving average of eq. 22 on a closed polyline, P*_v = P_v / 2 + (P_prev + P_next) / 4, `passes` times,
 // after resampling the loop at equal arc-length steps of about spacing_mm: the passes then smooth

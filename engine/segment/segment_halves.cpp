@@ -4,60 +4,44 @@
 #include <cmath>
 
 #include "engine/core/engine_error.hpp"
-#include "engine/segment/half_edge_index.hpp"
 #include "engine/segment/surface_regions.hpp"
 
 namespace lastcut {
 namespace {
 
-struct BoundaryShape {
-  int loops = 0;
-  bool pinched = false;
-  long long euler_characteristic = 0;  // V - E + F
-  std::vector<int> vertices;           // every boundary vertex
-};
+// Boundary vertices (those with a boundary half-edge leaving them), in increasing order.
+std::vector<int> boundary_vertices(const MeshTopology& topology) {
+  std::vector<int> vertices;
+  for (int v = 0; v < topology.vertex_count(); ++v)
+    for (int i = topology.out_offsets[static_cast<std::size_t>(v)]; i < topology.out_offsets[static_cast<std::size_t>(v) + 1]; ++i)
+      if (topology.across[static_cast<std::size_t>(topology.out_half_edges[static_cast<std::size_t>(i)])] == kBoundaryEdge) {
+        vertices.push_back(v);
+        break;
+      }
+  return vertices;
+}
 
-// Boundary loops and Euler characteristic: a half-edge without a twin is on the boundary, and
-// E = (half-edges + boundary half-edges) / 2 on a manifold.
-BoundaryShape boundary_shape(const TriMesh& mesh) {
-  const HalfEdgeIndex index = build_half_edge_index(mesh.F, mesh.V.rows());
-  BoundaryShape shape;
-  std::vector<int> next(static_cast<std::size_t>(mesh.V.rows()), -1);
-  for (std::size_t from = 0; from + 1 < index.offsets.size(); ++from)
-    for (int i = index.offsets[from]; i < index.offsets[from + 1]; ++i) {
-      const int to = index.target[static_cast<std::size_t>(i)];
-      if (index.find(static_cast<int>(from), to) != i) shape.pinched = true;  // the same edge twice
-      if (index.find(to, static_cast<int>(from)) >= 0) continue;
-      if (next[from] >= 0) shape.pinched = true;
-      next[from] = to;
-      shape.vertices.push_back(static_cast<int>(from));
-    }
-  std::vector<char> visited(next.size(), 0);
-  for (int start : shape.vertices) {
-    if (visited[static_cast<std::size_t>(start)]) continue;
-    ++shape.loops;
-    for (int v = start; v >= 0 && !visited[static_cast<std::size_t>(v)]; v = next[static_cast<std::size_t>(v)])
-      visited[static_cast<std::size_t>(v)] = 1;
-  }
-  const auto edges = static_cast<long long>((index.target.size() + shape.vertices.size()) / 2);
-  shape.euler_characteristic = static_cast<long long>(mesh.V.rows()) - edges + static_cast<long long>(mesh.F.rows());
-  return shape;
+// An edge used twice the same way or by more than two faces: the half folds onto itself.
+bool has_folded_edge(const MeshTopology& topology) {
+  for (std::size_t h = 0; h < topology.across.size(); ++h)
+    if (topology.across[h] == kCrowdedEdge || topology.same_direction[h]) return true;
+  return false;
 }
 
 }  // namespace
 
-Segment extract_half(const TriMesh& cut, const MeshGraph& graph, const std::vector<int>& labels, int label,
+Segment extract_half(const TriMesh& cut, const MeshTopology& topology, const std::vector<int>& labels, int label,
                      const Eigen::MatrixXd& fields, const std::string& name) {
   const Eigen::VectorXd areas = triangle_areas(cut);
   std::vector<char> in_half(labels.size());
   for (std::size_t f = 0; f < labels.size(); ++f) in_half[f] = labels[f] == label;
   int count = 0;
-  const std::vector<int> component = face_components(graph, in_half, count);
+  const std::vector<int> component = face_components(topology, in_half, count);
   if (count == 0) throw EngineError("the " + name + " half is empty: the split plane misses the last");
   const std::vector<double> sums = component_areas(component, count, areas);
   const int keep = static_cast<int>(std::max_element(sums.begin(), sums.end()) - sums.begin());
   for (std::size_t f = 0; f < labels.size(); ++f) in_half[f] = component[f] == keep;
-  fill_region_gaps(graph, areas, in_half);
+  fill_region_gaps(topology, areas, in_half);
 
   Segment segment;
   segment.name = name;
@@ -82,10 +66,12 @@ Segment extract_half(const TriMesh& cut, const MeshGraph& graph, const std::vect
   segment.mesh.V.resize(static_cast<Eigen::Index>(old_index.size()), 3);
   for (std::size_t v = 0; v < old_index.size(); ++v) segment.mesh.V.row(static_cast<Eigen::Index>(v)) = cut.V.row(old_index[v]);
 
-  const BoundaryShape shape = boundary_shape(segment.mesh);
-  const long long euler = shape.euler_characteristic;
-  if (shape.loops != 1 || shape.pinched || euler != 1)
-    throw EngineError("the " + name + " half is not a single sheet (" + std::to_string(shape.loops) +
+  segment.topology = build_mesh_topology(segment.mesh.F, segment.mesh.V.rows());
+  const MeshTopology& half = segment.topology;
+  const auto loops = static_cast<int>(half.boundary_loops.size()) + half.open_boundary_chains;
+  const long long euler = segment.mesh.V.rows() - half.edge_count() + segment.mesh.F.rows();
+  if (loops != 1 || half.first_pinch_vertex >= 0 || has_folded_edge(half) || euler != 1)
+    throw EngineError("the " + name + " half is not a single sheet (" + std::to_string(loops) +
                       " boundary loops, Euler characteristic " + std::to_string(euler) +
                       "): the scan has a hole or a fold on that side");
 
@@ -93,7 +79,7 @@ Segment extract_half(const TriMesh& cut, const MeshGraph& graph, const std::vect
   constexpr double kOnPlaneMm = 1e-6, kOnContour = 1e-9;
   auto corner_pair = [&](int contour_field, const char* front_name, const char* back_name) {
     int front = -1, back = -1;
-    for (int v : shape.vertices) {
+    for (int v : boundary_vertices(half)) {
       const int old = old_index[static_cast<std::size_t>(v)];
       if (std::abs(fields(old, kPlaneField)) > kOnPlaneMm || std::abs(fields(old, contour_field)) > kOnContour) continue;
       if (front < 0 || segment.mesh.V(v, 0) > segment.mesh.V(front, 0)) front = v;

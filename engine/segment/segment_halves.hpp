@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "engine/core/tri_mesh.hpp"
-#include "engine/segment/mesh_graph.hpp"
+#include "engine/core/mesh_topology.hpp"
 #include "engine/segment/segment_last.hpp"
 
 namespace lastcut {
@@ -16,10 +16,10 @@ namespace lastcut {
 // Columns of the vertex field matrix carried through the cuts.
 enum CutField : int { kSoleField = 0, kTopField = 1, kPlaneField = 2 };
 
-// cut: the mesh after all three cuts; graph: its adjacency; labels: #F, equal to `label` for the
+// cut: the mesh after all three cuts; topology: its connectivity; labels: #F, equal to `label` for the
 // faces of this half; fields: #V x 3 (CutField columns, exactly 0 on the cut curves).
 // Throws EngineError, naming the half, when it is not a disk or a corner is missing.
-Segment extract_half(const TriMesh& cut, const MeshGraph& graph, const std::vector<int>& labels, int label,
+Segment extract_half(const TriMesh& cut, const MeshTopology& topology, const std::vector<int>& labels, int label,
                      const Eigen::MatrixXd& fields, const std::string& name);
 
 }  // namespace lastcut

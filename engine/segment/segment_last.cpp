@@ -9,7 +9,7 @@
 #include "engine/mesh/fill_holes.hpp"
 #include "engine/segment/contour_fields.hpp"
 #include "engine/segment/level_set_cut.hpp"
-#include "engine/segment/mesh_graph.hpp"
+#include "engine/core/mesh_topology.hpp"
 #include "engine/segment/region_contour.hpp"
 #include "engine/segment/segment_halves.hpp"
 #include "engine/segment/split_plane.hpp"
@@ -89,13 +89,13 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
                            fixed(options.max_hole_fill_diameter_mm, 0) + " mm across");
 
   // Step 2: sole and top regions, and their contours (Dijkstra, then eq. 22).
-  const MeshGraph graph = build_mesh_graph(mesh);
+  const MeshTopology topology = build_mesh_topology(mesh.F, mesh.V.rows());
   const Eigen::VectorXd areas = triangle_areas(mesh);
   const double edge_mm = mean_edge_length_mm(mesh);
   const Eigen::VectorXd elevation =
-      smoothed_elevation_rad(mesh, graph, kNormalSmoothingPasses * std::pow(kNormalReferenceEdgeMm / edge_mm, 2));
-  const std::vector<char> sole = sole_region(mesh, graph, elevation, areas, options.sole_angle_rad);
-  const std::vector<char> top = top_region(mesh, graph, elevation, areas, options.top_angle_rad);
+      smoothed_elevation_rad(mesh, topology, kNormalSmoothingPasses * std::pow(kNormalReferenceEdgeMm / edge_mm, 2));
+  const std::vector<char> sole = sole_region(mesh, topology, elevation, areas, options.sole_angle_rad);
+  const std::vector<char> top = top_region(mesh, topology, elevation, areas, options.top_angle_rad);
   for (std::size_t f = 0; f < sole.size(); ++f)
     if (sole[f] && top[f]) throw EngineError("the sole and the top cut touch: the last is not standing upright");
   const double total_area = areas.sum();
@@ -112,8 +112,8 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
   // below the top plane), lightly smoothed against scanner noise; else by the classification.
   const double geometric_passes = kGeometricSmoothingPasses * std::pow(kReferenceEdgeMm / edge_mm, 2);
   const std::optional<ContourField> sole_field =
-      sole_height_field(mesh, graph, sole, areas, options.feather_height_mm, kMaxFitRmsMm);
-  const std::optional<ContourField> top_field = top_plane_field(mesh, graph, top, areas, options.rim_depth_mm, kMaxFitRmsMm);
+      sole_height_field(mesh, topology, sole, areas, options.feather_height_mm, kMaxFitRmsMm);
+  const std::optional<ContourField> top_field = top_plane_field(mesh, topology, top, areas, options.rim_depth_mm, kMaxFitRmsMm);
   // Clamped to a ramp symmetric about the curve before the moving average: otherwise the steep
   // drop of the height down the side walls would drag the averaged curve onto the flat part.
   auto ramp = [&](const Eigen::VectorXd& field, double half_width_mm) {
@@ -133,13 +133,13 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
 
   // Step 3: the split plane from those smooth curves (not from the staircase of mesh edges, whose
   // shape follows the triangulation).
-  const MeshGraph level_graph = build_mesh_graph(mesh);
+  const MeshTopology level_topology = build_mesh_topology(mesh.F, mesh.V.rows());
   auto level_loop = [&](int column) {
     std::vector<char> region(static_cast<std::size_t>(mesh.F.rows()));
     for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
       region[static_cast<std::size_t>(f)] =
           fields(mesh.F(f, 0), column) + fields(mesh.F(f, 1), column) + fields(mesh.F(f, 2), column) > 0.0;
-    return smooth_closed_polyline(loop_points(mesh, region_boundary_loop(mesh, level_graph, region)), 0, kReferenceEdgeMm);
+    return smooth_closed_polyline(loop_points(mesh, region_boundary_loop(mesh, level_topology, region)), 0, kReferenceEdgeMm);
   };
   const SplitPlane plane = split_plane(level_loop(kSoleField), level_loop(kTopField), options.plane_t, last.side);
   result.notes.push_back("split plane normal (" + fixed(plane.normal.x(), 3) + ", " + fixed(plane.normal.y(), 3) + ", " +
@@ -159,15 +159,15 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
                                           : mean(kPlaneField) > 0.0 ? kMedial
                                                                      : kLateral;
   }
-  const MeshGraph cut_graph = build_mesh_graph(mesh);
-  result.medial = extract_half(mesh, cut_graph, labels, kMedial, fields, "medial");
-  result.lateral = extract_half(mesh, cut_graph, labels, kLateral, fields, "lateral");
+  const MeshTopology cut_topology = build_mesh_topology(mesh.F, mesh.V.rows());
+  result.medial = extract_half(mesh, cut_topology, labels, kMedial, fields, "medial");
+  result.lateral = extract_half(mesh, cut_topology, labels, kLateral, fields, "lateral");
 
   // The curves the halves were cut along, for previews.
   for (auto [label, contour] : {std::pair{kSole, &result.lower_contour}, std::pair{kTop, &result.upper_contour}}) {
     std::vector<char> region(labels.size());
     for (std::size_t f = 0; f < labels.size(); ++f) region[f] = labels[f] == label;
-    *contour = loop_points(mesh, region_boundary_loop(mesh, cut_graph, region));
+    *contour = loop_points(mesh, region_boundary_loop(mesh, cut_topology, region));
   }
   const double medial_area = surface_area(result.medial.mesh), lateral_area = surface_area(result.lateral.mesh);
   result.notes.push_back("medial half " + fixed(medial_area / 100.0, 0) + " cm^2, lateral half " +

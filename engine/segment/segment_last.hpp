@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/mesh_topology.hpp"
 #include "engine/core/tri_mesh.hpp"
 #include "engine/orient/orient_last.hpp"
 
@@ -43,6 +44,7 @@ struct Segment {
   std::string name;                     // "medial" or "lateral"
   TriMesh mesh;                         // topological disk, canonical frame, mm
   std::map<std::string, int> landmarks; // boundary vertex indices: "toe", "heel", "top_front", "top_back"
+  MeshTopology topology;                // of mesh, handed on to flattening and the mold
 };
 
 struct Segmentation {

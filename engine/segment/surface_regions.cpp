@@ -30,15 +30,15 @@ Eigen::Vector3d face_centroid(const TriMesh& mesh, Eigen::Index f) {
 
 // Faces reachable from seed through faces that pass `accept`.
 template <typename Accept>
-std::vector<char> grow_from(const MeshGraph& graph, int seed, Accept accept) {
-  std::vector<char> region(static_cast<std::size_t>(graph.face_neighbors.rows()), 0);
+std::vector<char> grow_from(const MeshTopology& topology, int seed, Accept accept) {
+  std::vector<char> region(static_cast<std::size_t>(topology.face_count()), 0);
   std::vector<int> stack{seed};
   region[static_cast<std::size_t>(seed)] = 1;
   while (!stack.empty()) {
     const int f = stack.back();
     stack.pop_back();
     for (int k = 0; k < 3; ++k) {
-      const int g = graph.face_neighbors(f, k);
+      const int g = topology.face_across(f, k);
       if (g < 0 || region[static_cast<std::size_t>(g)] || !accept(g)) continue;
       region[static_cast<std::size_t>(g)] = 1;
       stack.push_back(g);
@@ -70,7 +70,7 @@ void close_region(const TriMesh& mesh, std::vector<char>& region, int rings) {
 
 }  // namespace
 
-Eigen::VectorXd smoothed_elevation_rad(const TriMesh& mesh, const MeshGraph& graph, double passes) {
+Eigen::VectorXd smoothed_elevation_rad(const TriMesh& mesh, const MeshTopology& topology, double passes) {
   const Eigen::Index vertex_count = mesh.V.rows();
   Eigen::MatrixXd normals = Eigen::MatrixXd::Zero(vertex_count, 3);
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
@@ -85,8 +85,8 @@ Eigen::VectorXd smoothed_elevation_rad(const TriMesh& mesh, const MeshGraph& gra
     const double share = std::min(1.0, passes - pass);
     for (Eigen::Index v = 0; v < vertex_count; ++v) {
       Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
-      for (int i = graph.neighbor_offsets[static_cast<std::size_t>(v)]; i < graph.neighbor_offsets[static_cast<std::size_t>(v) + 1]; ++i)
-        sum += normals.row(graph.neighbors[static_cast<std::size_t>(i)]);
+      for (int i = topology.neighbor_offsets[static_cast<std::size_t>(v)]; i < topology.neighbor_offsets[static_cast<std::size_t>(v) + 1]; ++i)
+        sum += normals.row(topology.neighbors[static_cast<std::size_t>(i)]);
       next.row(v) = normals.row(v) + share * sum;
     }
     normals.swap(next);
@@ -101,23 +101,23 @@ Eigen::VectorXd smoothed_elevation_rad(const TriMesh& mesh, const MeshGraph& gra
   return elevation;
 }
 
-void fill_region_gaps(const MeshGraph& graph, const Eigen::VectorXd& areas, std::vector<char>& region) {
+void fill_region_gaps(const MeshTopology& topology, const Eigen::VectorXd& areas, std::vector<char>& region) {
   std::vector<char> outside(region.size());
   for (std::size_t f = 0; f < region.size(); ++f) outside[f] = !region[f];
   int count = 0;
-  const std::vector<int> component = face_components(graph, outside, count);
+  const std::vector<int> component = face_components(topology, outside, count);
   if (count <= 1) return;
   const int keep = largest_component(component, count, areas);
   for (std::size_t f = 0; f < region.size(); ++f)
     if (component[f] >= 0 && component[f] != keep) region[f] = 1;
 }
 
-std::vector<char> sole_region(const TriMesh& mesh, const MeshGraph& graph, const Eigen::VectorXd& elevation_rad,
+std::vector<char> sole_region(const TriMesh& mesh, const MeshTopology& topology, const Eigen::VectorXd& elevation_rad,
                               const Eigen::VectorXd& areas, double sole_angle_rad) {
   std::vector<char> facing_down(static_cast<std::size_t>(elevation_rad.size()));
   for (Eigen::Index f = 0; f < elevation_rad.size(); ++f) facing_down[static_cast<std::size_t>(f)] = elevation_rad(f) <= sole_angle_rad;
   int count = 0;
-  const std::vector<int> component = face_components(graph, facing_down, count);
+  const std::vector<int> component = face_components(topology, facing_down, count);
   if (count == 0) throw EngineError("no triangle faces down: the last is not standing on its sole");
   const std::vector<double> sums = component_areas(component, count, areas);
   const int largest = static_cast<int>(std::max_element(sums.begin(), sums.end()) - sums.begin());
@@ -144,16 +144,16 @@ std::vector<char> sole_region(const TriMesh& mesh, const MeshGraph& graph, const
     const int rings = std::clamp(static_cast<int>(std::ceil(kSoleBridgeMm / mean_edge_length_mm(mesh))), 1, 12);
     close_region(mesh, region, rings);
     int pieces = 0;
-    const std::vector<int> joined = face_components(graph, region, pieces);
+    const std::vector<int> joined = face_components(topology, region, pieces);
     const std::vector<double> piece_areas = component_areas(joined, pieces, areas);
     const int main_piece = static_cast<int>(std::max_element(piece_areas.begin(), piece_areas.end()) - piece_areas.begin());
     for (std::size_t f = 0; f < region.size(); ++f) region[f] = joined[f] == main_piece;
   }
-  fill_region_gaps(graph, areas, region);
+  fill_region_gaps(topology, areas, region);
   return region;
 }
 
-std::vector<char> top_region(const TriMesh& mesh, const MeshGraph& graph, const Eigen::VectorXd& elevation_rad,
+std::vector<char> top_region(const TriMesh& mesh, const MeshTopology& topology, const Eigen::VectorXd& elevation_rad,
                              const Eigen::VectorXd& areas, double top_angle_rad) {
   int seed = -1;
   double seed_height = -1e300;
@@ -168,7 +168,7 @@ std::vector<char> top_region(const TriMesh& mesh, const MeshGraph& graph, const 
   // faces found so far. Two rounds let the plane settle away from the rounded rim near the seed.
   const double tolerance_mm = std::max(2.0, 1.5 * mean_edge_length_mm(mesh));
   const Eigen::MatrixXd face_normals = triangle_normals(mesh);
-  std::vector<char> region = grow_from(graph, seed, [&](int f) { return elevation_rad(f) >= top_angle_rad; });
+  std::vector<char> region = grow_from(topology, seed, [&](int f) { return elevation_rad(f) >= top_angle_rad; });
   for (int round = 0; round < 2; ++round) {
     Eigen::Vector3d point = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::Zero();
     double weight = 0.0;
@@ -180,11 +180,11 @@ std::vector<char> top_region(const TriMesh& mesh, const MeshGraph& graph, const 
     }
     point /= weight;
     normal.normalize();
-    region = grow_from(graph, seed, [&](int f) {
+    region = grow_from(topology, seed, [&](int f) {
       return elevation_rad(f) >= top_angle_rad && std::abs((face_centroid(mesh, f) - point).dot(normal)) <= tolerance_mm;
     });
   }
-  fill_region_gaps(graph, areas, region);
+  fill_region_gaps(topology, areas, region);
   return region;
 }
 

@@ -10,27 +10,27 @@
 #include <vector>
 
 #include "engine/core/tri_mesh.hpp"
-#include "engine/segment/mesh_graph.hpp"
+#include "engine/core/mesh_topology.hpp"
 
 namespace lastcut {
 
 // Elevation angle (rad, in [-pi/2, pi/2]) of each face's normal after `passes` rounds of
 // averaging vertex normals with their neighbours. Returns #F.
-Eigen::VectorXd smoothed_elevation_rad(const TriMesh& mesh, const MeshGraph& graph, double passes);
+Eigen::VectorXd smoothed_elevation_rad(const TriMesh& mesh, const MeshTopology& topology, double passes);
 
 // Adds to `region` every connected piece of its complement except the one with the largest area.
-void fill_region_gaps(const MeshGraph& graph, const Eigen::VectorXd& areas, std::vector<char>& region);
+void fill_region_gaps(const MeshTopology& topology, const Eigen::VectorXd& areas, std::vector<char>& region);
 
 // The largest connected set of faces with elevation <= sole_angle_rad, joined (by a closing) with
 // other down-facing pieces that lie in the lowest third of the height and have at least 2 % of
 // its area, gaps filled. #F flags. Throws EngineError when no face faces down.
-std::vector<char> sole_region(const TriMesh& mesh, const MeshGraph& graph, const Eigen::VectorXd& elevation_rad,
+std::vector<char> sole_region(const TriMesh& mesh, const MeshTopology& topology, const Eigen::VectorXd& elevation_rad,
                               const Eigen::VectorXd& areas, double sole_angle_rad);
 
 // The flat top cut: faces with elevation >= top_angle_rad connected to the highest such face and
 // lying within a few millimetres of the plane fitted to them, gaps filled. #F flags.
 // Throws EngineError when no face faces up.
-std::vector<char> top_region(const TriMesh& mesh, const MeshGraph& graph, const Eigen::VectorXd& elevation_rad,
+std::vector<char> top_region(const TriMesh& mesh, const MeshTopology& topology, const Eigen::VectorXd& elevation_rad,
                              const Eigen::VectorXd& areas, double top_angle_rad);
 
 }  // namespace lastcut

@@ -13,7 +13,7 @@ namespace lastcut {
 namespace {
 
 std::optional<Eigen::MatrixXd> start_of(const TriMesh& mesh) {
-  const DiskTopology topology = check_disk(mesh);
+  const MeshTopology topology = check_disk(mesh);
   const TriangleFrames frames = compute_triangle_frames(mesh);
   ReducedLaplacian laplacian = pinned_cotangent_laplacian(frames, topology);
   SparseCholesky factor;

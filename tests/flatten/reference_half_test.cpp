@@ -42,16 +42,16 @@ TEST(ReferenceHalf, FlattensWithoutFlipsAndWithLowDistortion) {
 TEST(ReferenceHalf, StartMapIsFlipFreeOnAConvexOutline) {
   const TriMesh half =
       testing::read_off(std::string(LASTCUT_SHARED_DATA_DIR) + "/meshes/find-template-half-52k.off", 1000.0);
-  const DiskTopology topology = check_disk(half);
-  ASSERT_GT(topology.boundary_loop.size(), 100u);
+  const MeshTopology topology = check_disk(half);
+  ASSERT_GT(topology.boundary_loops[0].size(), 100u);
   const TriangleFrames frames = compute_triangle_frames(half);
-  ReducedLaplacian laplacian = build_reduced_pattern(frames, topology, topology.boundary_loop.front());
+  ReducedLaplacian laplacian = build_reduced_pattern(frames, topology, topology.boundary_loops[0].front());
   SparseCholesky factor;
   factor.analyze_pattern(laplacian.matrix);
   const Eigen::MatrixXd start = tutte_embedding(half, frames, topology, laplacian, factor);
   EXPECT_EQ(count_flipped_triangles(half.F, start), 0);
   // The outline is strictly convex and counter-clockwise: every turn is to the left.
-  const auto& loop = topology.boundary_loop;
+  const auto& loop = topology.boundary_loops[0];
   for (size_t i = 0; i < loop.size(); ++i) {
     const Eigen::RowVector2d a = start.row(loop[i]), b = start.row(loop[(i + 1) % loop.size()]),
                              c = start.row(loop[(i + 2) % loop.size()]);

@@ -18,7 +18,7 @@ namespace {
 
 struct Folded {
   TriMesh mesh;
-  DiskTopology topology;
+  MeshTopology topology;
   TriangleFrames frames;
   Eigen::MatrixXd flat;  // flip-free development
 };
@@ -31,7 +31,7 @@ Folded developed_cylinder() {
 }
 
 // Ring distance of every vertex from the given ones.
-std::vector<int> rings_from(const DiskTopology& topology, const std::vector<int>& seeds, int vertex_count) {
+std::vector<int> rings_from(const MeshTopology& topology, const std::vector<int>& seeds, int vertex_count) {
   std::vector<int> distance(vertex_count, -1);
   std::queue<int> queue;
   for (int v : seeds) {
@@ -54,7 +54,7 @@ std::vector<int> rings_from(const DiskTopology& topology, const std::vector<int>
 
 int interior_vertex_near(const Folded& f, double u, double v) {
   std::vector<char> on_boundary(f.mesh.vertex_count(), 0);
-  for (int b : f.topology.boundary_loop) on_boundary[b] = 1;
+  for (int b : f.topology.boundary_loops[0]) on_boundary[b] = 1;
   int best = -1;
   for (int i = 0; i < f.mesh.vertex_count(); ++i) {
     if (on_boundary[i]) continue;
@@ -102,7 +102,7 @@ TEST(StarUntangle, FoldedBlockAndFoldedOutlineAreUntangled) {
     folded.row(v) += Eigen::RowVector2d(0.0, 8.0);
     moved.push_back(v);
   }
-  const int outline = f.topology.boundary_loop[f.topology.boundary_loop.size() / 3];
+  const int outline = f.topology.boundary_loops[0][f.topology.boundary_loops[0].size() / 3];
   folded.row(outline) = 0.5 * (f.flat.row(outline) + centre) ;
   moved.push_back(outline);
   const int flips = count_flipped_triangles(f.mesh.F, folded);

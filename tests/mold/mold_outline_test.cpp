@@ -27,7 +27,7 @@ double max_rim_distance(const test::FlatPatch& patch, const Polygon2& outline) {
 
 TEST(BoundaryLoops, DiskHasOneLoopInFaceOrder) {
   const auto patch = wavy_disk(64, 3);
-  const auto loops = boundary_loops(patch.F);
+  const auto loops = simple_boundary_loops(build_mesh_topology(patch.F, patch.UV.rows()));
   ASSERT_EQ(loops.size(), 1u);
   EXPECT_EQ(static_cast<int>(loops[0].size()), patch.rim_count);
   // Faces are CCW, so the loop runs CCW: rim vertex k is followed by k + 1.
@@ -177,6 +177,23 @@ TEST(MakeMold, RefusesClosedMeshesAndBadInput) {
   Eigen::MatrixXd nan_uv = UV;
   nan_uv(1, 0) = std::nan("");
   EXPECT_THROW(make_mold("x", nan_uv, one, {}), EngineError);
+}
+
+// Two triangles touching at one vertex have no single outline: the boundary walk meets a pinch.
+TEST(MakeMold, RefusesABowTie) {
+  Eigen::MatrixXd UV(5, 2);
+  UV << 0, 0, 1, 0, 0, 1, -1, 0, 0, -1;
+  Eigen::MatrixXi bow_tie(2, 3);
+  bow_tie << 0, 1, 2, 0, 3, 4;
+  try {
+    make_mold("x", UV, bow_tie, {});
+    FAIL() << "a bow tie was accepted";
+  } catch (const EngineError& error) {
+    EXPECT_NE(std::string(error.what()).find("not a simple loop at vertex 0"), std::string::npos) << error.what();
+  }
+  // The topology handed in must be the patch's own.
+  const MeshTopology other = build_mesh_topology(bow_tie.topRows(1), 5);
+  EXPECT_THROW(make_mold("x", UV, bow_tie, {}, {}, other), EngineError);
 }
 
 TEST(OutlineAlignment, RecoversARigidMotionAndMeasuresHausdorff) {

@@ -137,11 +137,11 @@ TEST(SegmentGeneratedLast, IsDeterministic) {
 // face-region boundary gives, it sees the steps; on the curve the halves were cut along, it does not.
 TEST(SegmentGeneratedLast, CutCurvesAreSmoothWhereTriangleBoundariesAreStairs) {
   const OrientedLast last = scanned_last({42, FootSide::Right, 22}, 12000);
-  const MeshGraph graph = build_mesh_graph(last.mesh);
+  const MeshTopology topology = build_mesh_topology(last.mesh.F, last.mesh.V.rows());
   const std::vector<char> sole =
-      sole_region(last.mesh, graph, smoothed_elevation_rad(last.mesh, graph, 3.0), triangle_areas(last.mesh), -std::numbers::pi / 4);
+      sole_region(last.mesh, topology, smoothed_elevation_rad(last.mesh, topology, 3.0), triangle_areas(last.mesh), -std::numbers::pi / 4);
   const test::BoundarySmoothness stairs =
-      test::boundary_smoothness(last.mesh, region_boundary_loop(last.mesh, graph, sole), {}, 0.0);
+      test::boundary_smoothness(last.mesh, region_boundary_loop(last.mesh, topology, sole), {}, 0.0);
 
   const Segmentation result = segment_last(last);
   TriMesh contour;
