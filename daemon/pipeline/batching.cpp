@@ -48,10 +48,12 @@ void Pipeline::close_batch(const std::string& key, OpenBatch& open) {
   if (batch.job_ids.empty()) return;
   std::error_code error;
   std::filesystem::create_directories(spool_->batch_dir(batch.id), error);
-  Status written = error ? Status::failure("cannot create " + spool_->batch_dir(batch.id).string() + ": " + error.message())
+  Status written = error ? Status::failure("cannot create " + spool_->batch_dir(batch.id).string() + ": " +
+                                          error.message())
                          : spool_->write_batch(batch);
   if (!written) {
-    report_batch_problem(*spool_, batch, "cannot be written (" + written.error() + "); its jobs wait for the next start");
+    report_batch_problem(*spool_, batch,
+                         "cannot be written (" + written.error() + "); its jobs wait for the next start");
     return;
   }
   for (const std::string& id : batch.job_ids) {

@@ -63,7 +63,8 @@ void hold_job(const Spool& spool, JobState state, const std::string& reason) {
   }
 }
 
-Status update_job_report(const Spool& spool, JobFolder folder, const std::string& job_id, const nlohmann::json& fields) {
+Status update_job_report(const Spool& spool, JobFolder folder, const std::string& job_id,
+                         const nlohmann::json& fields) {
   const auto file = spool.job_dir(folder, job_id) / kReportFile;
   nlohmann::json report = read_report(file);
   report.merge_patch(fields);
@@ -102,15 +103,15 @@ void complete_batch_jobs(const Spool& spool, const BatchState& batch) {
       }
     }
     const nlohmann::json fields{{"stage", to_string(JobStage::Cut)},
-                          {"batch", {{"id", batch.id},
-                                     {"material", batch.material},
-                                     {"cutter", batch.cutter},
-                                     {"utilisation", batch.utilisation},
-                                     {"pieces", batch.piece_count},
-                                     {"cut_file", batch.cut_file},
-                                     {"jobs", batch.job_ids}}},
-                          {"cutter_answer", batch.cutter_answer},
-                          {"history", state->history}};
+                                {"batch", {{"id", batch.id},
+                                           {"material", batch.material},
+                                           {"cutter", batch.cutter},
+                                           {"utilisation", batch.utilisation},
+                                           {"pieces", batch.piece_count},
+                                           {"cut_file", batch.cut_file},
+                                           {"jobs", batch.job_ids}}},
+                                {"cutter_answer", batch.cutter_answer},
+                                {"history", state->history}};
     std::string note = "cut on " + batch.cutter + " in batch " + batch.id;
     if (Status reported = update_job_report(spool, JobFolder::Work, id, fields); !reported) {
       spdlog::error("{}: {}", state->label(), reported.error());

@@ -77,7 +77,8 @@ void Pipeline::write_status_file() {
                               {"waiting_for_batch", waiting},
                               {"cutters", cutters}};
   // Not fsync'ed on purpose: it is rewritten every 2 s and worthless after a crash.
-  const Status written = write_file_durably(spool_->root() / "status.json", status.dump(2) + "\n", WriteSync::AtomicOnly);
+  const Status written =
+      write_file_durably(spool_->root() / "status.json", status.dump(2) + "\n", WriteSync::AtomicOnly);
   // Once per change, not every 2 s; `lastcut status` shows the last status written meanwhile.
   if (written.error() != status_file_error_) {
     if (!written) spdlog::error("status.json for `lastcut status` not written: {}", written.error());

@@ -27,7 +27,7 @@ void remove_unfinished_writes(const std::filesystem::path& folder, bool recursiv
   std::vector<std::filesystem::path> unfinished;
   std::error_code error;
   for (std::filesystem::recursive_directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
-    if (it.depth() > 0 && !recursive) it.disable_recursion_pending();
+    if (!recursive) it.disable_recursion_pending();
     if (is_unfinished_write(it->path().filename().string())) {
       unfinished.push_back(it->path());
       it.disable_recursion_pending();
@@ -39,7 +39,9 @@ void remove_unfinished_writes(const std::filesystem::path& folder, bool recursiv
     std::filesystem::remove_all(path, remove_error);
     if (remove_error) spdlog::error("recovery: cannot remove {}: {}", path.string(), remove_error.message());
   }
-  if (!unfinished.empty()) spdlog::info("recovery: {} unfinished write(s) removed under {}", unfinished.size(), folder.string());
+  if (!unfinished.empty()) {
+    spdlog::info("recovery: {} unfinished write(s) removed under {}", unfinished.size(), folder.string());
+  }
 }
 
 }  // namespace
@@ -158,7 +160,8 @@ void Pipeline::route(const std::string& job_id) {
       state->batch_id.clear();
       state->advance(JobStage::Computed, "its batch did not finish; nested again");
       if (Status written = spool_->write_state(JobFolder::Work, *state); !written) {
-        report_job_problem(*spool_, JobFolder::Work, *state, "state not written, nested again anyway: " + written.error());
+        report_job_problem(*spool_, JobFolder::Work, *state,
+                           "state not written, nested again anyway: " + written.error());
       }
       add_to_batcher(*state);
       return;

@@ -41,7 +41,8 @@ void Pipeline::compute_job(const std::string& job_id, const std::string& worker)
   state->advance(JobStage::Claimed, "computing molds, attempt " + std::to_string(state->attempts));
   if (Status written = spool_->write_state(JobFolder::Work, *state); !written) {
     // Without the count on disk a scan that crashes lastcutd would be computed forever.
-    report_job_problem(*spool_, JobFolder::Work, *state, "not computed, its attempt cannot be counted: " + written.error());
+    report_job_problem(*spool_, JobFolder::Work, *state,
+                       "not computed, its attempt cannot be counted: " + written.error());
     return;
   }
   const auto job_dir = spool_->job_dir(JobFolder::Work, job_id);
