@@ -20,13 +20,10 @@ namespace {
 
 using daemon::JobFolder;
 
-std::string spool_from(const std::string& config_file, const std::string& spool_dir, std::string& error) {
+Result<std::string> spool_from(const std::string& config_file, const std::string& spool_dir) {
   if (!spool_dir.empty()) return spool_dir;
   const auto result = daemon::load_daemon_config(config_file);
-  if (!result.config) {
-    error = result.error;
-    return {};
-  }
+  if (!result.config) return Status::failure(result.error);
   return result.config->paths.spool_dir.string();
 }
 
@@ -38,7 +35,7 @@ nlohmann::json read_json(const std::filesystem::path& file) {
 }
 
 nlohmann::json job_summary(const daemon::JobState& state, JobFolder folder) {
-  return {{"id", state.id},         {"folder", daemon::folder_name(folder)}, {"stage", state.stage},
+  return {{"id", state.id},         {"folder", daemon::folder_name(folder)}, {"stage", daemon::to_string(state.stage)},
           {"order", state.ticket.order}, {"scan", state.scan_name},         {"cutter", state.ticket.cutter},
           {"material", state.ticket.material}, {"reason", state.reason},  {"updated_at", state.updated_at}};
 }
@@ -71,9 +68,10 @@ nlohmann::json collect_status(const daemon::Spool& spool, std::size_t recent_cou
   nlohmann::json batches = nlohmann::json::array();
   for (const std::string& id : spool.list_batches()) {
     auto batch = spool.read_batch(id);
-    if (batch && (batch->stage == "queued" || batch->stage == "sending" || batch->stage == "nesting")) {
-      batches.push_back({{"id", batch->id}, {"cutter", batch->cutter}, {"stage", batch->stage},
-                         {"jobs", batch->job_ids}, {"pieces", batch->piece_count}});
+    // A batch.json without a known stage is shown too: it is held until an operator looks.
+    if (batch && (daemon::in_progress(batch->stage) || !batch->stage_problem.empty())) {
+      batches.push_back({{"id", batch->id}, {"cutter", batch->cutter}, {"stage", daemon::to_string(batch->stage)},
+                         {"jobs", batch->job_ids}, {"pieces", batch->piece_count}, {"reason", batch->reason}});
     }
   }
   status["counts"] = counts;
@@ -110,9 +108,10 @@ void print_status(const nlohmann::json& status, const std::string& spool_dir) {
   if (!status["work"].empty()) std::printf("in work:\n");
   for (const auto& job : status["work"]) row(job);
   for (const auto& batch : status["active_batches"]) {
-    std::printf("  batch %s for %s: %s, %zu job(s), %d pieces\n", batch.value("id", "").c_str(),
+    const std::string reason = batch.value("reason", "");
+    std::printf("  batch %s for %s: %s, %zu job(s), %d pieces%s\n", batch.value("id", "").c_str(),
                 batch.value("cutter", "").c_str(), batch.value("stage", "").c_str(), batch["jobs"].size(),
-                batch.value("pieces", 0));
+                batch.value("pieces", 0), reason.empty() ? "" : (" - " + reason).c_str());
   }
   if (!status["held"].empty()) std::printf("held (waiting for an operator: lastcut requeue ID):\n");
   for (const auto& job : status["held"]) row(job);
@@ -120,15 +119,15 @@ void print_status(const nlohmann::json& status, const std::string& spool_dir) {
   for (const auto& job : status["recent"]) row(job);
 }
 
-// Returns "" or the reason the job cannot be requeued.
-std::string requeue(const daemon::Spool& spool, const std::string& id, bool again) {
+// Fails with the reason the job cannot be requeued.
+Status requeue(const daemon::Spool& spool, const std::string& id, bool again) {
   const auto folder = spool.locate(id);
-  if (!folder) return "no job " + id + " in " + spool.root().string();
-  if (*folder == JobFolder::Work) return "job " + id + " is already in work";
+  if (!folder) return Status::failure("no job " + id + " in " + spool.root().string());
+  if (*folder == JobFolder::Work) return Status::failure("job " + id + " is already in work");
   auto state = spool.read_state(*folder, id);
-  if (!state) return "job " + id + ": state.json is unreadable";
-  if (*folder == JobFolder::Done && state->stage != "skipped" && !again) {
-    return "job " + id + " was already cut; add --again to cut it once more";
+  if (!state) return Status::failure("job " + id + ": state.json is unreadable");
+  if (*folder == JobFolder::Done && state->stage != daemon::JobStage::Skipped && !again) {
+    return Status::failure("job " + id + " was already cut; add --again to cut it once more");
   }
   std::error_code error;
   const bool has_molds = std::filesystem::exists(spool.job_dir(*folder, id) / daemon::kItemsFile, error);
@@ -136,10 +135,9 @@ std::string requeue(const daemon::Spool& spool, const std::string& id, bool agai
   state->batch_id.clear();
   state->reason.clear();
   state->attempts = 0;
-  state->advance(recompute ? "claimed" : "computed",
+  state->advance(recompute ? daemon::JobStage::Claimed : daemon::JobStage::Computed,
                  "requeued by an operator from " + daemon::folder_name(*folder) + "/");
-  if (std::string failure = spool.move_job(*folder, JobFolder::Work, *state); !failure.empty()) return failure;
-  return {};
+  return spool.move_job(*folder, JobFolder::Work, *state);
 }
 
 }  // namespace
@@ -155,13 +153,13 @@ void add_spool_commands(CLI::App& app, int& exit_code) {
   status->add_option("--recent", recent_count, "how many recent jobs to list");
   status->add_flag("--json", as_json, "print JSON instead of text");
   status->callback([&exit_code] {
-    std::string error;
-    const std::string root = spool_from(config_file, spool_dir, error);
-    if (root.empty()) {
-      std::fprintf(stderr, "lastcut status: %s\n", error.c_str());
+    const Result<std::string> found = spool_from(config_file, spool_dir);
+    if (!found) {
+      std::fprintf(stderr, "lastcut status: %s\n", found.error().c_str());
       exit_code = 2;
       return;
     }
+    const std::string& root = *found;
     const daemon::Spool spool(root);
     const nlohmann::json result = collect_status(spool, recent_count);
     if (as_json) std::printf("%s\n", result.dump(2).c_str());
@@ -176,16 +174,16 @@ void add_spool_commands(CLI::App& app, int& exit_code) {
   requeue_command->add_option("--spool", spool_dir, "spool folder (instead of reading the configuration)");
   requeue_command->add_flag("--again", again, "also requeue a job that was already cut (cut it once more)");
   requeue_command->callback([&exit_code] {
-    std::string error;
-    const std::string root = spool_from(config_file, spool_dir, error);
-    if (root.empty()) {
-      std::fprintf(stderr, "lastcut requeue: %s\n", error.c_str());
+    const Result<std::string> found = spool_from(config_file, spool_dir);
+    if (!found) {
+      std::fprintf(stderr, "lastcut requeue: %s\n", found.error().c_str());
       exit_code = 2;
       return;
     }
+    const std::string& root = *found;
     const daemon::Spool spool(root);
-    if (std::string failure = requeue(spool, job_id, again); !failure.empty()) {
-      std::fprintf(stderr, "lastcut requeue: %s\n", failure.c_str());
+    if (Status requeued = requeue(spool, job_id, again); !requeued) {
+      std::fprintf(stderr, "lastcut requeue: %s\n", requeued.error().c_str());
       exit_code = 1;
       return;
     }

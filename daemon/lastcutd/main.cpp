@@ -64,8 +64,8 @@ int run(const std::string& file) {
   spdlog::info("lastcutd starting with {}", file);
   lastcut::daemon::SystemdNotifier notifier;
   lastcut::daemon::Pipeline pipeline(std::make_shared<lastcut::daemon::DaemonConfig>(*loaded.config));
-  if (std::string error = pipeline.start(); !error.empty()) {
-    spdlog::critical("lastcutd cannot start: {}", error);
+  if (lastcut::Status started = pipeline.start(); !started) {
+    spdlog::critical("lastcutd cannot start: {}", started.error());
     return 1;
   }
   notifier.ready();

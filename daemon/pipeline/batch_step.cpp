@@ -5,7 +5,7 @@
 #include <set>
 
 #include "daemon/pipeline/engine_steps.hpp"
-#include "daemon/spool/durable_file.hpp"
+#include "engine/core/durable_file.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/nest/nest_json.hpp"
 #include "engine/nest/nester.hpp"
@@ -86,21 +86,21 @@ BatchOutcome build_batch(const std::vector<BatchJobInput>& jobs, const MaterialC
       if (layout.strip_length && *layout.strip_length > material.length_mm) {
         outcome.measures["warning"] = "the layout is longer than the material";
       }
-      if (std::string error = write_file_durably(batch_dir / kLayoutFile, layout_to_json(layout, instance).dump(1));
-          !error.empty()) {
-        outcome.error = error;
+      if (Status written = write_file_durably(batch_dir / kLayoutFile, layout_to_json(layout, instance).dump(1));
+          !written) {
+        outcome.error = written.error();
         return outcome;
       }
       CutFileRequest request;
       request.notes = program_notes(batch_dir.filename().string(), active);
       const CutFile cut = make_cut_file(layout, instance, profile, request);
       outcome.cut_file = "cut" + cut_file_extension(cut.format);
-      if (std::string error = write_file_durably(batch_dir / outcome.cut_file, cut.text); !error.empty()) {
-        outcome.error = error;
+      if (Status written = write_file_durably(batch_dir / outcome.cut_file, cut.text); !written) {
+        outcome.error = written.error();
         return outcome;
       }
-      if (std::string error = write_file_durably(batch_dir / kPreviewFile, write_svg(cut.program)); !error.empty()) {
-        outcome.error = error;
+      if (Status written = write_file_durably(batch_dir / kPreviewFile, write_svg(cut.program)); !written) {
+        outcome.error = written.error();
         return outcome;
       }
       outcome.utilisation = layout.utilisation;

@@ -3,6 +3,7 @@
 // pieces (batch.max_pieces) wait. Nesting several orders on one sheet saves leather.
 #include <spdlog/spdlog.h>
 
+#include "daemon/pipeline/job_outcomes.hpp"
 #include "daemon/pipeline/pipeline.hpp"
 
 namespace lastcut::daemon {
@@ -36,27 +37,35 @@ void Pipeline::close_batch(const std::string& key, OpenBatch& open) {
   const auto bar = key.find('|');
   batch.material = key.substr(0, bar);
   batch.cutter = key.substr(bar + 1);
-  batch.stage = "nesting";
+  batch.stage = BatchStage::Nesting;
   batch.created_at = batch.updated_at = utc_now_iso();
-  std::error_code error;
-  std::filesystem::create_directories(spool_->batch_dir(batch.id), error);
   // Only jobs still waiting in work/ (an operator may have moved one meanwhile).
   for (const std::string& id : open.job_ids) {
     auto state = spool_->read_state(JobFolder::Work, id);
-    if (state && state->stage == "computed") batch.job_ids.push_back(id);
+    if (state && state->stage == JobStage::Computed && state->stage_problem.empty()) batch.job_ids.push_back(id);
   }
   open = OpenBatch{};
   if (batch.job_ids.empty()) return;
-  if (std::string failure = spool_->write_batch(batch); !failure.empty()) {
-    spdlog::error("batch {}: cannot be written ({}); its jobs wait for the next start", batch.id, failure);
+  std::error_code error;
+  std::filesystem::create_directories(spool_->batch_dir(batch.id), error);
+  Status written = error ? Status::failure("cannot create " + spool_->batch_dir(batch.id).string() + ": " +
+                                          error.message())
+                         : spool_->write_batch(batch);
+  if (!written) {
+    report_batch_problem(*spool_, batch,
+                         "cannot be written (" + written.error() + "); its jobs wait for the next start");
     return;
   }
   for (const std::string& id : batch.job_ids) {
     auto state = spool_->read_state(JobFolder::Work, id);
     if (!state) continue;
     state->batch_id = batch.id;
-    state->advance("batched", "nested in batch " + batch.id);
-    spool_->write_state(JobFolder::Work, *state);
+    state->advance(JobStage::Batched, "nested in batch " + batch.id);
+    if (Status state_written = spool_->write_state(JobFolder::Work, *state); !state_written) {
+      // Still "computed" on disk: nesting drops it from this batch, the next start nests it again.
+      report_job_problem(*spool_, JobFolder::Work, *state,
+                         "not part of batch " + batch.id + ": state not written: " + state_written.error());
+    }
   }
   tasks_.push({true, batch.id});
 }

@@ -28,9 +28,9 @@ void Pipeline::take(const ReadyScan& ready) {
   state.sha256 = *hash;
   std::string problem = ready.incompleteness;
   if (!ready.sidecar.empty() && problem.empty()) {
-    const TicketReadResult ticket = read_job_ticket(ready.sidecar);
-    if (ticket.ticket) state.ticket = *ticket.ticket;
-    else problem = ticket.error;
+    const Result<JobTicket> ticket = read_job_ticket(ready.sidecar);
+    if (ticket) state.ticket = *ticket;
+    else problem = ticket.error();
   }
   if (state.ticket.material.empty()) state.ticket.material = settings->jobs.default_material;
   if (state.ticket.cutter.empty()) state.ticket.cutter = settings->jobs.default_cutter;
@@ -44,19 +44,22 @@ void Pipeline::take(const ReadyScan& ready) {
   const bool duplicate = earlier != hash_to_job_.end();
   if (duplicate) state.duplicate_of = earlier->second;
 
-  const ClaimResult claim = spool_->claim(ready.scan, ready.sidecar, state);
+  const Result<std::string> claim = spool_->claim(ready.scan, ready.sidecar, state);
   hot_folder_->forget(name);
   if (!ready.sidecar.empty()) hot_folder_->forget(ready.sidecar.filename().string());
-  if (!claim.error.empty()) {
-    spdlog::error("watch folder: {} could not be taken into the spool: {}", name, claim.error);
+  if (!claim) {
+    // Not in the spool: the scan stays in the watch folder and is offered again.
+    spdlog::error("watch folder: {} could not be taken into the spool: {}", name, claim.error());
     return;
   }
-  auto claimed = spool_->read_state(JobFolder::Work, claim.job_id);
+  const std::string& job_id = *claim;
+  auto claimed = spool_->read_state(JobFolder::Work, job_id);
   if (!claimed) {
-    spdlog::error("job {}: state unreadable right after the claim", claim.job_id);
+    // In the spool without a readable state: recovery hands it back to the watch folder.
+    spdlog::error("job {}: state unreadable right after the claim; left for recovery at the next start", job_id);
     return;
   }
-  known_jobs_.insert(claim.job_id);
+  known_jobs_.insert(job_id);
   spdlog::info("{}: taken from the watch folder{} (material {}, cutter {})", claimed->label(),
                ready.sidecar.empty() ? "" : " with " + ready.sidecar.filename().string(), claimed->ticket.material,
                claimed->ticket.cutter);
@@ -69,8 +72,11 @@ void Pipeline::take(const ReadyScan& ready) {
     switch (settings->jobs.duplicate_policy) {
       case DuplicatePolicy::Skip:
         claimed->reason = reason + " (duplicate, skipped)";
-        claimed->advance("skipped", claimed->reason);
-        spool_->move_job(JobFolder::Work, JobFolder::Done, *claimed);
+        claimed->advance(JobStage::Skipped, claimed->reason);
+        if (Status moved = spool_->move_job(JobFolder::Work, JobFolder::Done, *claimed); !moved) {
+          report_job_problem(*spool_, JobFolder::Work, *claimed, "skipped, but not moved to done/: " + moved.error());
+          return;
+        }
         spdlog::info("{}: {} - not cut again, moved to done/ as skipped", claimed->label(), claimed->reason);
         return;
       case DuplicatePolicy::Hold:
@@ -81,9 +87,9 @@ void Pipeline::take(const ReadyScan& ready) {
         break;
     }
   } else {
-    hash_to_job_[state.sha256] = claim.job_id;
+    hash_to_job_[state.sha256] = job_id;
   }
-  tasks_.push({false, claim.job_id});
+  tasks_.push({false, job_id});
 }
 
 }  // namespace lastcut::daemon

@@ -34,26 +34,43 @@ drivers::CutterConfig driver_config(const std::string& name, const CutterSection
   return config;
 }
 
-// Marks the batch and its jobs with `stage` on disk; false when the batch file cannot be written.
-bool mark_batch(const Spool& spool, BatchState& batch, const std::string& stage, const std::string& note) {
+// Marks the batch and its jobs with `stage` on disk; false when the batch file cannot be written
+// (the failure is logged and noted in its jobs' reports).
+bool mark_batch(const Spool& spool, BatchState& batch, BatchStage stage, const std::string& note) {
   batch.stage = stage;
   batch.updated_at = utc_now_iso();
-  if (std::string error = spool.write_batch(batch); !error.empty()) {
-    spdlog::error("batch {}: state not written: {}", batch.id, error);
+  if (Status written = spool.write_batch(batch); !written) {
+    report_batch_problem(spool, batch, std::string(to_string(stage)) + " (" + note + "), but batch.json not written: " +
+                                           written.error());
     return false;
   }
   // Job states follow only the sending / back-to-queued steps; the ends (cut, held) are written
   // by complete_batch_jobs / hold_batch_jobs together with the move out of work/.
-  if (stage != "sending" && stage != "queued") return true;
+  JobStage job_stage = JobStage::Batched;
+  switch (stage) {
+    case BatchStage::Queued: job_stage = JobStage::Batched; break;
+    case BatchStage::Sending: job_stage = JobStage::Sending; break;
+    case BatchStage::Nesting:
+    case BatchStage::Cut:
+    case BatchStage::Held:
+    case BatchStage::Abandoned:
+    case BatchStage::Empty: return true;
+  }
   for (const std::string& id : batch.job_ids) {
     auto state = spool.read_state(JobFolder::Work, id);
     if (!state || state->batch_id != batch.id) continue;
-    state->advance(stage == "queued" ? "batched" : stage, note);
-    if (std::string error = spool.write_state(JobFolder::Work, *state); !error.empty()) {
-      spdlog::error("{}: state not written: {}", state->label(), error);
+    state->advance(job_stage, note);
+    if (Status written = spool.write_state(JobFolder::Work, *state); !written) {
+      report_job_problem(spool, JobFolder::Work, *state, "state not written: " + written.error());
     }
   }
   return true;
+}
+
+// The batch (with batch.reason) and its jobs go to held.
+void hold_batch(const Spool& spool, BatchState& batch) {
+  mark_batch(spool, batch, BatchStage::Held, batch.reason);
+  hold_batch_jobs(spool, batch, batch.reason);
 }
 
 }  // namespace
@@ -108,7 +125,8 @@ void CutterDispatcher::run() {
 
 bool CutterDispatcher::cut_batch(const std::string& batch_id) {
   auto batch = spool_.read_batch(batch_id);
-  if (!batch || batch->stage != "queued") return true;  // finished or taken back meanwhile
+  // Finished or taken back meanwhile; a batch.json without a known stage is held by recovery.
+  if (!batch || batch->stage != BatchStage::Queued || !batch->stage_problem.empty()) return true;
   const CutterSection section = settings_();
   const drivers::CutterConfig config = driver_config(name_, section, batch_id);
 
@@ -133,13 +151,12 @@ bool CutterDispatcher::cut_batch(const std::string& batch_id) {
   program << in.rdbuf();
   if (!in || batch->cut_file.empty() || program.str().empty()) {
     batch->reason = "the cut file " + batch->cut_file + " is missing or empty";
-    mark_batch(spool_, *batch, "held", batch->reason);
-    hold_batch_jobs(spool_, *batch, batch->reason);
+    hold_batch(spool_, *batch);
     return true;
   }
 
   // The point of no return: from here on a crash or fault means "maybe partly cut".
-  if (!mark_batch(spool_, *batch, "sending", "sending to cutter " + name_)) return false;
+  if (!mark_batch(spool_, *batch, BatchStage::Sending, "sending to cutter " + name_)) return false;
   {
     std::lock_guard lock(mutex_);
     sending_ = true;
@@ -166,13 +183,20 @@ bool CutterDispatcher::cut_batch(const std::string& batch_id) {
   switch (result.outcome) {
     case drivers::SendOutcome::Done:
       batch->reason.clear();
-      mark_batch(spool_, *batch, "cut", "the cutter reported the job finished");
+      // Cut, even if batch.json cannot say so: the jobs must reach done/, never be cut again.
+      mark_batch(spool_, *batch, BatchStage::Cut, "the cutter reported the job finished");
       complete_batch_jobs(spool_, *batch);
       return true;
     case drivers::SendOutcome::Failed:
       // The driver guarantees nothing reached the machine: the batch may wait and go again.
       batch->reason = result.reason;
-      mark_batch(spool_, *batch, "queued", "cutter refused before cutting: " + result.reason);
+      if (!mark_batch(spool_, *batch, BatchStage::Queued, "cutter refused before cutting: " + result.reason)) {
+        // Still "sending" on disk, which recovery would hold: hold it now and say why.
+        batch->reason = "cutter " + name_ + " refused batch " + batch_id + " before cutting (" + result.reason +
+                        "), and its return to the queue could not be written";
+        hold_batch(spool_, *batch);
+        return true;
+      }
       set_condition("waiting: " + result.reason);
       if (result.reason != last_problem_) {
         spdlog::warn("cutter {}: batch {} not started ({}); retrying every {} s", name_, batch_id, result.reason,
@@ -185,8 +209,7 @@ bool CutterDispatcher::cut_batch(const std::string& batch_id) {
   }
   batch->reason = "cutter " + name_ + " stopped while cutting batch " + batch_id + ": " + result.reason +
                   "; pieces may be partly cut";
-  mark_batch(spool_, *batch, "held", batch->reason);
-  hold_batch_jobs(spool_, *batch, batch->reason);
+  hold_batch(spool_, *batch);
   return true;
 }
 

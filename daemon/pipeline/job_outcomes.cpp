@@ -5,42 +5,86 @@
 #include <spdlog/spdlog.h>
 
 #include "daemon/pipeline/engine_steps.hpp"
-#include "daemon/spool/durable_file.hpp"
+#include "engine/core/durable_file.hpp"
 
 namespace lastcut::daemon {
+namespace {
+
+nlohmann::json read_report(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) return nlohmann::json::object();
+  nlohmann::json report = nlohmann::json::parse(in, nullptr, false);
+  return report.is_discarded() || !report.is_object() ? nlohmann::json::object() : report;
+}
+
+Status write_report(const std::filesystem::path& file, const nlohmann::json& report) {
+  return write_file_durably(file, report.dump(2) + "\n").with_context("report.json not written: ");
+}
+
+Status append_problem(const Spool& spool, JobFolder folder, const std::string& job_id, const std::string& problem) {
+  const auto file = spool.job_dir(folder, job_id) / kReportFile;
+  nlohmann::json report = read_report(file);
+  if (!report["problems"].is_array()) report["problems"] = nlohmann::json::array();
+  report["problems"].push_back({{"at", utc_now_iso()}, {"problem", problem}});
+  return write_report(file, report);
+}
+
+// Moves the job to its end folder with `stage` and `reason`; the report says the same.
+// Returns false (after logging) when the job could not be moved.
+bool end_job(const Spool& spool, JobState& state, JobStage stage, JobFolder to, const std::string& reason) {
+  state.reason = reason;
+  if (Status reported = update_job_report(spool, JobFolder::Work, state.id,
+                                          {{"stage", to_string(stage)}, {"reason", reason}});
+      !reported) {
+    spdlog::error("{}: {}", state.label(), reported.error());
+    state.reason += " (" + reported.error() + ")";
+  }
+  state.advance(stage, state.reason);
+  if (Status moved = spool.move_job(JobFolder::Work, to, state); !moved) {
+    report_job_problem(spool, JobFolder::Work, state,
+                       "could not be moved to " + folder_name(to) + "/ (" + state.reason + "): " + moved.error());
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
 
 void fail_job(const Spool& spool, JobState state, const std::string& reason) {
-  state.reason = reason;
-  state.advance("failed", reason);
-  update_job_report(spool, JobFolder::Work, state.id, {{"stage", "failed"}, {"reason", reason}});
-  if (std::string error = spool.move_job(JobFolder::Work, JobFolder::Failed, state); !error.empty()) {
-    spdlog::error("{}: could not be moved to failed/: {}", state.label(), error);
-    return;
+  if (end_job(spool, state, JobStage::Failed, JobFolder::Failed, reason)) {
+    spdlog::error("{}: {} - moved to failed/", state.label(), state.reason);
   }
-  spdlog::error("{}: {} - moved to failed/", state.label(), reason);
 }
 
 void hold_job(const Spool& spool, JobState state, const std::string& reason) {
-  state.reason = reason;
-  state.advance("held", reason);
-  update_job_report(spool, JobFolder::Work, state.id, {{"stage", "held"}, {"reason", reason}});
-  if (std::string error = spool.move_job(JobFolder::Work, JobFolder::Held, state); !error.empty()) {
-    spdlog::error("{}: could not be moved to held/: {}", state.label(), error);
-    return;
+  if (end_job(spool, state, JobStage::Held, JobFolder::Held, reason)) {
+    spdlog::warn("{}: {} - moved to held/ (after checking, `lastcut requeue {}`)", state.label(), state.reason,
+                 state.id);
   }
-  spdlog::warn("{}: {} - moved to held/ (after checking, `lastcut requeue {}`)", state.label(), reason, state.id);
 }
 
-void update_job_report(const Spool& spool, JobFolder folder, const std::string& job_id, const nlohmann::json& fields) {
+Status update_job_report(const Spool& spool, JobFolder folder, const std::string& job_id,
+                         const nlohmann::json& fields) {
   const auto file = spool.job_dir(folder, job_id) / kReportFile;
-  nlohmann::json report = nlohmann::json::object();
-  if (std::ifstream in(file); in) {
-    report = nlohmann::json::parse(in, nullptr, false);
-    if (report.is_discarded() || !report.is_object()) report = nlohmann::json::object();
-  }
+  nlohmann::json report = read_report(file);
   report.merge_patch(fields);
-  if (std::string error = write_file_durably(file, report.dump(2) + "\n"); !error.empty()) {
-    spdlog::error("job {}: report not written: {}", job_id, error);
+  return write_report(file, report);
+}
+
+void report_job_problem(const Spool& spool, JobFolder folder, const JobState& state, const std::string& problem) {
+  spdlog::error("{}: {}", state.label(), problem);
+  if (Status noted = append_problem(spool, folder, state.id, problem); !noted) {
+    spdlog::error("{}: {}", state.label(), noted.error());
+  }
+}
+
+void report_batch_problem(const Spool& spool, const BatchState& batch, const std::string& problem) {
+  spdlog::error("batch {}: {}", batch.id, problem);
+  for (const std::string& id : batch.job_ids) {
+    if (!spool.read_state(JobFolder::Work, id)) continue;  // no longer in work/: not this batch's any more
+    if (Status noted = append_problem(spool, JobFolder::Work, id, "batch " + batch.id + ": " + problem); !noted) {
+      spdlog::error("job {}: {}", id, noted.error());
+    }
   }
 }
 
@@ -54,24 +98,28 @@ void complete_batch_jobs(const Spool& spool, const BatchState& batch) {
     for (const std::string& name : {std::string(kLayoutFile), std::string(kPreviewFile), batch.cut_file}) {
       std::error_code exists_error;
       if (name.empty() || !std::filesystem::exists(batch_dir / name, exists_error)) continue;
-      if (std::string error = copy_file_durably(batch_dir / name, job_dir / name); !error.empty()) {
-        spdlog::warn("{}: {} not copied into the job folder: {}", state->label(), name, error);
+      if (Status copied = copy_file_durably(batch_dir / name, job_dir / name); !copied) {
+        report_job_problem(spool, JobFolder::Work, *state, name + " not copied into the job folder: " + copied.error());
       }
     }
-    update_job_report(spool, JobFolder::Work, id,
-                      {{"stage", "cut"},
-                       {"batch", {{"id", batch.id},
-                                  {"material", batch.material},
-                                  {"cutter", batch.cutter},
-                                  {"utilisation", batch.utilisation},
-                                  {"pieces", batch.piece_count},
-                                  {"cut_file", batch.cut_file},
-                                  {"jobs", batch.job_ids}}},
-                       {"cutter_answer", batch.cutter_answer},
-                       {"history", state->history}});
-    state->advance("cut", "cut on " + batch.cutter + " in batch " + batch.id);
-    if (std::string error = spool.move_job(JobFolder::Work, JobFolder::Done, *state); !error.empty()) {
-      spdlog::error("{}: cut, but could not be moved to done/: {}", state->label(), error);
+    const nlohmann::json fields{{"stage", to_string(JobStage::Cut)},
+                                {"batch", {{"id", batch.id},
+                                           {"material", batch.material},
+                                           {"cutter", batch.cutter},
+                                           {"utilisation", batch.utilisation},
+                                           {"pieces", batch.piece_count},
+                                           {"cut_file", batch.cut_file},
+                                           {"jobs", batch.job_ids}}},
+                                {"cutter_answer", batch.cutter_answer},
+                                {"history", state->history}};
+    std::string note = "cut on " + batch.cutter + " in batch " + batch.id;
+    if (Status reported = update_job_report(spool, JobFolder::Work, id, fields); !reported) {
+      spdlog::error("{}: {}", state->label(), reported.error());
+      note += " (" + reported.error() + ")";
+    }
+    state->advance(JobStage::Cut, note);
+    if (Status moved = spool.move_job(JobFolder::Work, JobFolder::Done, *state); !moved) {
+      report_job_problem(spool, JobFolder::Work, *state, "cut, but could not be moved to done/: " + moved.error());
       continue;
     }
     spdlog::info("{}: cut on {} (batch {}, utilisation {:.1f} %) - moved to done/", state->label(), batch.cutter,
@@ -83,8 +131,12 @@ void hold_batch_jobs(const Spool& spool, const BatchState& batch, const std::str
   for (const std::string& id : batch.job_ids) {
     auto state = spool.read_state(JobFolder::Work, id);
     if (!state || state->batch_id != batch.id) continue;
-    update_job_report(spool, JobFolder::Work, id, {{"cutter_answer", batch.cutter_answer}});
-    hold_job(spool, *state, reason);
+    std::string why = reason;
+    if (Status reported = update_job_report(spool, JobFolder::Work, id, {{"cutter_answer", batch.cutter_answer}});
+        !reported) {
+      why += " (" + reported.error() + ")";
+    }
+    hold_job(spool, *state, why);
   }
 }
 

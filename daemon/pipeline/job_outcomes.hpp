@@ -1,7 +1,8 @@
 #pragma once
 // The ends of a job's road, each one durable state write plus one folder rename, and one
 // operator log line: failed/ (bad input), held/ (an operator must decide), done/ (cut).
-// report.json in the job folder collects the measures, timings, batch and cutter answer.
+// report.json in the job folder collects the measures, timings, batch and cutter answer, and
+// every failure met on the way ("problems"), so no error is only in the log.
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -15,7 +16,12 @@ void fail_job(const Spool& spool, JobState state, const std::string& reason);
 // work/ID -> held/ID with the reason and what the operator can do.
 void hold_job(const Spool& spool, JobState state, const std::string& reason);
 // Merges `fields` into the job's report.json (created when missing), durably.
-void update_job_report(const Spool& spool, JobFolder folder, const std::string& job_id, const nlohmann::json& fields);
+Status update_job_report(const Spool& spool, JobFolder folder, const std::string& job_id, const nlohmann::json& fields);
+// A failure that leaves the job where it is: logged as an error with the job's label and
+// appended to its report.json under "problems".
+void report_job_problem(const Spool& spool, JobFolder folder, const JobState& state, const std::string& problem);
+// The same for a batch: one log line, and the problem in the report of each of its jobs in work/.
+void report_batch_problem(const Spool& spool, const BatchState& batch, const std::string& problem);
 // The batch was cut: its layout, preview and cut file are copied into each job's folder, the
 // report completed, and every job still in work/ moves to done/.
 void complete_batch_jobs(const Spool& spool, const BatchState& batch);

@@ -3,7 +3,7 @@
 // form `lastcut nest` reads.
 #include "daemon/pipeline/engine_steps.hpp"
 #include "daemon/pipeline/piece_label_text.hpp"
-#include "daemon/spool/durable_file.hpp"
+#include "engine/core/durable_file.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/nest/mold_items.hpp"
 #include "engine/nest/nest_json.hpp"
@@ -56,9 +56,8 @@ MoldsOutcome compute_molds(const std::filesystem::path& scan, const std::filesys
                                     std::string(to_string(*result.side)) + " last";
     }
     const std::vector<NestItem> items = job_items(result, ticket, scan.filename().string());
-    if (std::string error = write_file_durably(job_dir / kItemsFile, items_to_json(items).dump() + "\n");
-        !error.empty()) {
-      outcome.error = "molds made but not saved: " + error;
+    if (Status written = write_file_durably(job_dir / kItemsFile, items_to_json(items).dump() + "\n"); !written) {
+      outcome.error = "molds made but not saved: " + written.error();
       return outcome;
     }
     outcome.piece_count = static_cast<int>(result.segments.size());

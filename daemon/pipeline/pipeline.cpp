@@ -2,11 +2,9 @@
 
 #include <unistd.h>
 
-#include <cstdio>
-
 #include <spdlog/spdlog.h>
 
-#include "daemon/spool/durable_file.hpp"
+#include "engine/core/durable_file.hpp"
 
 namespace lastcut::daemon {
 
@@ -19,10 +17,10 @@ std::shared_ptr<const DaemonConfig> Pipeline::config() const {
   return config_;
 }
 
-std::string Pipeline::start() {
+Status Pipeline::start() {
   const auto settings = config();
   spool_ = std::make_unique<Spool>(settings->paths.spool_dir);
-  if (std::string error = spool_->prepare(); !error.empty()) return error;
+  if (Status prepared = spool_->prepare(); !prepared) return prepared;
   for (const auto& [name, section] : settings->cutters) {
     dispatchers_[name] = std::make_unique<CutterDispatcher>(name, *spool_, monitor_, [this, cutter = name] {
       const auto current = config();
@@ -33,13 +31,13 @@ std::string Pipeline::start() {
   index_hashes();
   recover();
   hot_folder_ = std::make_unique<HotFolder>(settings->paths.watch_dir, settings->watch);
-  if (std::string error = hot_folder_->start(); !error.empty()) return error;
+  if (Status watching = hot_folder_->start(); !watching) return watching;
   for (auto& [name, dispatcher] : dispatchers_) dispatcher->start();
   for (int i = 0; i < settings->jobs.compute_workers; ++i) workers_.emplace_back([this, i] { compute_worker(i + 1); });
   spdlog::info("watching {} ({}); spool {}; {} cutter(s); duplicates: {}", settings->paths.watch_dir.string(),
                hot_folder_->mode_description(), settings->paths.spool_dir.string(), dispatchers_.size(),
                to_string(settings->jobs.duplicate_policy));
-  return {};
+  return Status::success();
 }
 
 void Pipeline::tick(Clock::time_point now) {
@@ -50,7 +48,8 @@ void Pipeline::tick(Clock::time_point now) {
     computed.swap(computed_);
   }
   for (const std::string& id : computed) {
-    if (auto state = spool_->read_state(JobFolder::Work, id); state && state->stage == "computed") add_to_batcher(*state);
+    auto state = spool_->read_state(JobFolder::Work, id);
+    if (state && state->stage == JobStage::Computed && state->stage_problem.empty()) add_to_batcher(*state);
   }
   close_due_batches(now, false);
   if (now >= next_work_scan_) {
@@ -63,7 +62,7 @@ void Pipeline::tick(Clock::time_point now) {
   }
 }
 
-void Pipeline::write_status_file() const {
+void Pipeline::write_status_file() {
   nlohmann::json cutters = nlohmann::json::object();
   for (const auto& [name, dispatcher] : dispatchers_) {
     cutters[name] = {{"condition", dispatcher->condition()}, {"queued_batches", dispatcher->queued()}};
@@ -78,13 +77,13 @@ void Pipeline::write_status_file() const {
                               {"waiting_for_batch", waiting},
                               {"cutters", cutters}};
   // Not fsync'ed on purpose: it is rewritten every 2 s and worthless after a crash.
-  const auto file = spool_->root() / "status.json";
-  const auto temporary = spool_->root() / ".status.json.tmp";
-  if (FILE* out = std::fopen(temporary.c_str(), "w")) {
-    const std::string text = status.dump(2) + "\n";
-    std::fwrite(text.data(), 1, text.size(), out);
-    std::fclose(out);
-    std::rename(temporary.c_str(), file.c_str());
+  const Status written =
+      write_file_durably(spool_->root() / "status.json", status.dump(2) + "\n", WriteSync::AtomicOnly);
+  // Once per change, not every 2 s; `lastcut status` shows the last status written meanwhile.
+  if (written.error() != status_file_error_) {
+    if (!written) spdlog::error("status.json for `lastcut status` not written: {}", written.error());
+    else spdlog::info("status.json for `lastcut status` written again");
+    status_file_error_ = written.error();
   }
 }
 

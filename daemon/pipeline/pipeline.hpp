@@ -36,8 +36,8 @@ class Pipeline {
   Pipeline(const Pipeline&) = delete;
   Pipeline& operator=(const Pipeline&) = delete;
 
-  // Prepares the spool, recovers it, starts watching and the worker threads. Error line or "".
-  std::string start();
+  // Prepares the spool, recovers it, starts watching and the worker threads.
+  Status start();
   // One turn of the main loop: new files, requeued jobs, finished computations, due batches.
   void tick(Clock::time_point now);
   // inotify descriptor to wait on (-1 when polling).
@@ -71,6 +71,7 @@ class Pipeline {
   // recovery.cpp
   void recover();
   void recover_batch(const std::string& batch_id);
+  void hold_recovered_batch(BatchState& batch, const std::string& reason);
   void route(const std::string& job_id);
   void undo_unfinished_claim(const std::string& job_id);
   // claims.cpp
@@ -87,7 +88,7 @@ class Pipeline {
   void enqueue_batch(const BatchState& batch);
   void scan_work_folder();
   // spool/status.json for `lastcut status`: cutters' conditions, queue sizes, pid, time.
-  void write_status_file() const;
+  void write_status_file();
 
   mutable std::mutex config_mutex_;
   std::shared_ptr<const DaemonConfig> config_;
@@ -104,6 +105,7 @@ class Pipeline {
   std::map<std::string, OpenBatch> open_batches_;     // "material|cutter" -> collecting
   Clock::time_point next_work_scan_{};
   Clock::time_point next_status_file_{};
+  std::string status_file_error_;  // last failure writing status.json, "" when it worked
 
   // Filled by workers, drained by the main thread.
   std::mutex computed_mutex_;

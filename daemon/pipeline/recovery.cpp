@@ -1,69 +1,103 @@
 // Start-up recovery of the spool: whatever a crash or power cut left in work/ and batches/ is
 // brought to a consistent state before any new file is taken.
-//   batch "nesting"  -> abandoned; its jobs are nested again (computing is at-least-once)
-//   batch "queued"   -> back in its cutter's queue (nothing was sent yet)
-//   batch "sending"  -> held with its jobs: the cutter may have cut part of it (at-most-once)
-//   batch "cut"      -> its jobs still in work/ are moved to done/
-//   job "claimed"    -> computed again (attempts counted: a scan that crashes the daemon every
+//   batch nesting    -> abandoned; its jobs are nested again (computing is at-least-once)
+//   batch queued     -> back in its cutter's queue (nothing was sent yet)
+//   batch sending    -> held with its jobs: the cutter may have cut part of it (at-most-once)
+//   batch cut        -> its jobs still in work/ are moved to done/
+//   batch.json without a (known) stage -> held with its jobs: nothing is sent on a guess
+//   job claimed      -> computed again (attempts counted: a scan that crashes the daemon every
 //                       time ends in failed/ after jobs.max_attempts)
+//   state.json without a (known) stage -> the job is held with the reason
 //   job folder without state or scan -> an unfinished claim: its files go back to the watch folder
+//   unfinished durable writes (temporary files) anywhere lastcutd writes -> removed
 #include <spdlog/spdlog.h>
 
 #include "daemon/pipeline/engine_steps.hpp"
 #include "daemon/pipeline/job_outcomes.hpp"
 #include "daemon/pipeline/pipeline.hpp"
-#include "daemon/spool/durable_file.hpp"
+#include "engine/core/durable_file.hpp"
 
 namespace lastcut::daemon {
 
 namespace {
 
-// Temporary files of writes a crash cut short: never read by anyone, removed at start.
-void remove_temporaries(const std::filesystem::path& parent) {
+// Temporary files of durable writes a crash cut short, at any depth under `folder` (job
+// folders, their molds/, batch folders): never read by anyone, removed before anything runs.
+void remove_unfinished_writes(const std::filesystem::path& folder, bool recursive) {
+  std::vector<std::filesystem::path> unfinished;
   std::error_code error;
-  for (std::filesystem::directory_iterator it(parent, error), end; !error && it != end; it.increment(error)) {
-    if (!it->is_directory(error)) continue;
-    for (std::filesystem::directory_iterator file(it->path(), error), last; !error && file != last; file.increment(error)) {
-      if (file->path().filename().string().rfind(kTemporaryPrefix, 0) == 0) {
-        std::error_code remove_error;
-        std::filesystem::remove_all(file->path(), remove_error);
-      }
+  for (std::filesystem::recursive_directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
+    if (!recursive) it.disable_recursion_pending();
+    if (is_unfinished_write(it->path().filename().string())) {
+      unfinished.push_back(it->path());
+      it.disable_recursion_pending();
     }
+  }
+  if (error) spdlog::error("recovery: {} cannot be listed: {}", folder.string(), error.message());
+  for (const auto& path : unfinished) {
+    std::error_code remove_error;
+    std::filesystem::remove_all(path, remove_error);
+    if (remove_error) spdlog::error("recovery: cannot remove {}: {}", path.string(), remove_error.message());
+  }
+  if (!unfinished.empty()) {
+    spdlog::info("recovery: {} unfinished write(s) removed under {}", unfinished.size(), folder.string());
   }
 }
 
 }  // namespace
 
 void Pipeline::recover() {
-  remove_temporaries(spool_->root() / "work");
-  remove_temporaries(spool_->root() / "batches");
+  remove_unfinished_writes(spool_->root(), false);  // status.json
+  for (JobFolder folder : {JobFolder::Work, JobFolder::Held}) {
+    remove_unfinished_writes(spool_->root() / folder_name(folder), true);
+  }
+  remove_unfinished_writes(spool_->root() / "batches", true);
   for (const std::string& batch_id : spool_->list_batches()) recover_batch(batch_id);
   const auto ids = spool_->list(JobFolder::Work);
   for (const std::string& id : ids) route(id);
   if (!ids.empty()) spdlog::info("recovery: {} job(s) found in work/, resumed", ids.size());
 }
 
+void Pipeline::hold_recovered_batch(BatchState& batch, const std::string& reason) {
+  batch.stage = BatchStage::Held;
+  batch.reason = reason;
+  batch.updated_at = utc_now_iso();
+  if (Status written = spool_->write_batch(batch); !written) {
+    report_batch_problem(*spool_, batch, "held, but batch.json not written: " + written.error());
+  }
+  spdlog::warn("recovery: {}; its jobs are held", reason);
+  hold_batch_jobs(*spool_, batch, reason);
+}
+
 void Pipeline::recover_batch(const std::string& batch_id) {
   auto batch = spool_->read_batch(batch_id);
-  if (!batch) return;
-  if (batch->stage == "nesting") {
-    batch->stage = "abandoned";
-    batch->reason = "lastcutd stopped while nesting; the jobs are nested again";
-    spool_->write_batch(*batch);
-  } else if (batch->stage == "queued") {
-    enqueue_batch(*batch);
-  } else if (batch->stage == "sending") {
-    batch->stage = "held";
-    batch->reason = "lastcutd stopped (crash or power cut) while batch " + batch_id + " was being sent to cutter " +
-                    batch->cutter + "; pieces may be partly cut";
-    spool_->write_batch(*batch);
-    spdlog::warn("recovery: batch {} was being cut on {} when lastcutd stopped: its jobs are held", batch_id,
-                 batch->cutter);
-    hold_batch_jobs(*spool_, *batch, batch->reason);
-  } else if (batch->stage == "cut") {
-    complete_batch_jobs(*spool_, *batch);
-  } else if (batch->stage == "held") {
-    hold_batch_jobs(*spool_, *batch, batch->reason);
+  if (!batch) {
+    // Its jobs follow their own stage (route): nested again, or held if it was being sent.
+    spdlog::warn("recovery: batch {} has no readable batch.json; left as it is", batch_id);
+    return;
+  }
+  if (!batch->stage_problem.empty()) {
+    hold_recovered_batch(*batch, "batch " + batch_id + ": " + batch->stage_problem +
+                                     "; not sent, an operator must check it");
+    return;
+  }
+  switch (batch->stage) {
+    case BatchStage::Nesting:
+      batch->stage = BatchStage::Abandoned;
+      batch->reason = "lastcutd stopped while nesting; the jobs are nested again";
+      if (Status written = spool_->write_batch(*batch); !written) {
+        report_batch_problem(*spool_, *batch, "abandoned, but batch.json not written: " + written.error());
+      }
+      return;
+    case BatchStage::Queued: enqueue_batch(*batch); return;
+    case BatchStage::Sending:
+      hold_recovered_batch(*batch, "lastcutd stopped (crash or power cut) while batch " + batch_id +
+                                       " was being sent to cutter " + batch->cutter + "; pieces may be partly cut");
+      return;
+    case BatchStage::Cut: complete_batch_jobs(*spool_, *batch); return;
+    case BatchStage::Held: hold_batch_jobs(*spool_, *batch, batch->reason); return;
+    case BatchStage::Abandoned:
+    case BatchStage::Empty: return;
   }
 }
 
@@ -73,14 +107,21 @@ void Pipeline::undo_unfinished_claim(const std::string& job_id) {
   std::error_code error;
   for (std::filesystem::directory_iterator it(dir, error), end; !error && it != end; it.increment(error)) {
     const std::string name = it->path().filename().string();
-    if (name == "state.json" || name.rfind(kTemporaryPrefix, 0) == 0) continue;
-    if (std::string failure = move_durably(it->path(), watch_dir / name); !failure.empty()) {
-      spdlog::error("recovery: unfinished claim {}: {}", job_id, failure);
+    if (name == "state.json" || is_unfinished_write(name)) continue;
+    if (Status moved = move_durably(it->path(), watch_dir / name); !moved) {
+      spdlog::error("recovery: unfinished claim {}: {}", job_id, moved.error());
       return;  // keep the folder: nothing may be lost
     }
   }
   std::filesystem::remove_all(dir, error);
-  fsync_folder(dir.parent_path());
+  if (error) {
+    spdlog::error("recovery: unfinished claim {}: its files are back in the watch folder, but {} stays: {}", job_id,
+                  dir.string(), error.message());
+    return;
+  }
+  if (Status synced = fsync_folder(dir.parent_path()); !synced) {
+    spdlog::error("recovery: unfinished claim {}: {}", job_id, synced.error());
+  }
   spdlog::info("recovery: claim {} was unfinished; its files are back in the watch folder", job_id);
 }
 
@@ -93,28 +134,42 @@ void Pipeline::route(const std::string& job_id) {
   }
   known_jobs_.insert(job_id);
   if (!state->sha256.empty() && !hash_to_job_.count(state->sha256)) hash_to_job_[state->sha256] = job_id;
-  const std::string& stage = state->stage;
-  if (stage == "claimed") {
-    tasks_.push({false, job_id});
-  } else if (stage == "computed") {
-    add_to_batcher(*state);
-  } else if (stage == "batched" || stage == "sending") {
-    auto batch = spool_->read_batch(state->batch_id);
-    if (batch && (batch->stage == "queued" || batch->stage == "sending" || batch->stage == "nesting")) {
-      return;  // the batch carries it on (or was just recovered)
+  if (!state->stage_problem.empty()) {
+    hold_job(*spool_, *state, state->stage_problem + "; an operator must check the job");
+    return;
+  }
+  const auto move_to = [&](JobFolder folder) {
+    if (Status moved = spool_->move_job(JobFolder::Work, folder, *state); !moved) {
+      report_job_problem(*spool_, JobFolder::Work, *state,
+                         "recovery: could not be moved to " + folder_name(folder) + "/: " + moved.error());
     }
-    state->batch_id.clear();
-    state->advance("computed", "its batch did not finish; nested again");
-    spool_->write_state(JobFolder::Work, *state);
-    add_to_batcher(*state);
-  } else if (stage == "cut" || stage == "skipped") {
-    spool_->move_job(JobFolder::Work, JobFolder::Done, *state);
-  } else if (stage == "failed") {
-    spool_->move_job(JobFolder::Work, JobFolder::Failed, *state);
-  } else if (stage == "held") {
-    spool_->move_job(JobFolder::Work, JobFolder::Held, *state);
-  } else {
-    fail_job(*spool_, *state, "unknown stage \"" + stage + "\" in state.json");
+  };
+  switch (state->stage) {
+    case JobStage::Claimed: tasks_.push({false, job_id}); return;
+    case JobStage::Computed: add_to_batcher(*state); return;
+    case JobStage::Batched:
+    case JobStage::Sending: {
+      const auto batch = spool_->read_batch(state->batch_id);
+      if (batch && batch->stage_problem.empty() && in_progress(batch->stage)) return;
+      if (state->stage == JobStage::Sending) {
+        // Bytes may have reached the cutter: never cut it again unasked.
+        hold_job(*spool_, *state, "was being sent in batch " + state->batch_id +
+                                      ", which did not finish; pieces may be partly cut");
+        return;
+      }
+      state->batch_id.clear();
+      state->advance(JobStage::Computed, "its batch did not finish; nested again");
+      if (Status written = spool_->write_state(JobFolder::Work, *state); !written) {
+        report_job_problem(*spool_, JobFolder::Work, *state,
+                           "state not written, nested again anyway: " + written.error());
+      }
+      add_to_batcher(*state);
+      return;
+    }
+    case JobStage::Cut:
+    case JobStage::Skipped: move_to(JobFolder::Done); return;
+    case JobStage::Failed: move_to(JobFolder::Failed); return;
+    case JobStage::Held: move_to(JobFolder::Held); return;
   }
 }
 

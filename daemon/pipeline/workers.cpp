@@ -29,7 +29,7 @@ void Pipeline::compute_worker(int index) {
 void Pipeline::compute_job(const std::string& job_id, const std::string& worker) {
   const auto settings = config();
   auto state = spool_->read_state(JobFolder::Work, job_id);
-  if (!state || state->stage != "claimed") return;
+  if (!state || state->stage != JobStage::Claimed || !state->stage_problem.empty()) return;
   if (state->attempts >= settings->jobs.max_attempts) {
     fail_job(*spool_, *state,
              "computing the molds stopped lastcutd " + std::to_string(state->attempts) +
@@ -38,8 +38,13 @@ void Pipeline::compute_job(const std::string& job_id, const std::string& worker)
   }
   // Counted before the work: if this scan crashes the daemon, the next start knows.
   ++state->attempts;
-  state->advance("claimed", "computing molds, attempt " + std::to_string(state->attempts));
-  spool_->write_state(JobFolder::Work, *state);
+  state->advance(JobStage::Claimed, "computing molds, attempt " + std::to_string(state->attempts));
+  if (Status written = spool_->write_state(JobFolder::Work, *state); !written) {
+    // Without the count on disk a scan that crashes lastcutd would be computed forever.
+    report_job_problem(*spool_, JobFolder::Work, *state,
+                       "not computed, its attempt cannot be counted: " + written.error());
+    return;
+  }
   const auto job_dir = spool_->job_dir(JobFolder::Work, job_id);
   const auto start = std::chrono::steady_clock::now();
   monitor_.begin(worker, "molds of job " + job_id, settings->jobs.compute_timeout_s);
@@ -52,7 +57,7 @@ void Pipeline::compute_job(const std::string& job_id, const std::string& worker)
     return;
   }
   state->piece_count = outcome.piece_count * state->ticket.quantity;
-  update_job_report(*spool_, JobFolder::Work, job_id,
+  const Status reported = update_job_report(*spool_, JobFolder::Work, job_id,
                     {{"job", job_id},
                      {"scan", state->scan_name},
                      {"sha256", state->sha256},
@@ -61,9 +66,15 @@ void Pipeline::compute_job(const std::string& job_id, const std::string& worker)
                      {"pieces", state->piece_count},
                      {"measures", outcome.measures},
                      {"timings_s", {{"molds", took_s}}}});
-  state->advance("computed", std::to_string(outcome.piece_count) + " molds");
-  if (std::string error = spool_->write_state(JobFolder::Work, *state); !error.empty()) {
-    spdlog::error("{}: state not written: {}", state->label(), error);
+  if (!reported) {
+    fail_job(*spool_, *state, "molds made but " + reported.error());
+    return;
+  }
+  state->advance(JobStage::Computed, std::to_string(outcome.piece_count) + " molds");
+  if (Status written = spool_->write_state(JobFolder::Work, *state); !written) {
+    report_job_problem(*spool_, JobFolder::Work, *state,
+                       "molds made, but the state is not written (computed again at the next start): " +
+                           written.error());
     return;
   }
   spdlog::info("{}: {} molds ready in {:.1f} s", state->label(), outcome.piece_count, took_s);
@@ -74,7 +85,7 @@ void Pipeline::compute_job(const std::string& job_id, const std::string& worker)
 void Pipeline::build_batch_task(const std::string& batch_id, const std::string& worker) {
   const auto settings = config();
   auto batch = spool_->read_batch(batch_id);
-  if (!batch || batch->stage != "nesting") return;
+  if (!batch || batch->stage != BatchStage::Nesting || !batch->stage_problem.empty()) return;
   std::vector<BatchJobInput> inputs;
   std::map<std::string, JobState> states;
   for (const std::string& id : batch->job_ids) {
@@ -104,23 +115,31 @@ void Pipeline::build_batch_task(const std::string& batch_id, const std::string& 
       fail_job(*spool_, state, rejected->second);
     } else {
       kept.push_back(id);
-      update_job_report(*spool_, JobFolder::Work, id, {{"timings_s", {{"nesting_and_cut_file", took_s}}}});
+      if (Status reported =
+              update_job_report(*spool_, JobFolder::Work, id, {{"timings_s", {{"nesting_and_cut_file", took_s}}}});
+          !reported) {
+        report_job_problem(*spool_, JobFolder::Work, state, reported.error());
+      }
     }
   }
   batch->job_ids = kept;
   batch->updated_at = utc_now_iso();
   if (!outcome.error.empty() || kept.empty()) {
-    batch->stage = "empty";
+    batch->stage = BatchStage::Empty;
     batch->reason = outcome.error.empty() ? "no job left in the batch" : outcome.error;
-    spool_->write_batch(*batch);
+    if (Status written = spool_->write_batch(*batch); !written) {
+      // Its jobs have left work/ already; recovery abandons the batch at the next start.
+      spdlog::error("batch {}: {}, but batch.json not written: {}", batch_id, batch->reason, written.error());
+    }
     return;
   }
-  batch->stage = "queued";
+  batch->stage = BatchStage::Queued;
   batch->cut_file = outcome.cut_file;
   batch->utilisation = outcome.utilisation;
   batch->piece_count = outcome.piece_count;
-  if (std::string error = spool_->write_batch(*batch); !error.empty()) {
-    spdlog::error("batch {}: state not written: {}", batch_id, error);
+  if (Status written = spool_->write_batch(*batch); !written) {
+    // Still "nesting" on disk: the next start abandons it and nests its jobs again.
+    report_batch_problem(*spool_, *batch, "nested, but not queued: batch.json not written: " + written.error());
     return;
   }
   spdlog::info("batch {}: {} job(s), {} pieces nested on {} (utilisation {:.1f} %) in {:.1f} s; queued for {}",

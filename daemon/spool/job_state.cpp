@@ -5,6 +5,29 @@
 #include <ctime>
 
 namespace lastcut::daemon {
+namespace {
+
+// Sets `stage` from json["stage"]; a missing or unknown value gives `held` with the problem as
+// `problem` and `reason`, never a guess.
+template <typename Stage, typename Parse>
+void read_stage(const nlohmann::json& json, std::string_view file_name, Parse parse, Stage held, Stage& stage,
+                std::string& problem, std::string& reason) {
+  const auto stored = json.find("stage");
+  if (stored == json.end()) {
+    problem = missing_stage_reason(file_name);
+  } else {
+    const std::string text = stored->is_string() ? stored->template get<std::string>() : stored->dump();
+    if (const auto parsed = parse(text)) {
+      stage = *parsed;
+      return;
+    }
+    problem = unknown_stage_reason(file_name, text);
+  }
+  stage = held;
+  reason = problem;
+}
+
+}  // namespace
 
 std::string utc_now_iso() {
   const auto now = std::chrono::system_clock::now();
@@ -19,10 +42,10 @@ std::string utc_now_iso() {
   return text;
 }
 
-void JobState::advance(const std::string& new_stage, const std::string& note) {
+void JobState::advance(JobStage new_stage, const std::string& note) {
   stage = new_stage;
   updated_at = utc_now_iso();
-  nlohmann::json entry{{"at", updated_at}, {"stage", new_stage}};
+  nlohmann::json entry{{"at", updated_at}, {"stage", to_string(new_stage)}};
   if (!note.empty()) entry["note"] = note;
   history.push_back(entry);
 }
@@ -37,7 +60,7 @@ nlohmann::json to_json(const JobState& state) {
                         {"scan", state.scan_name},
                         {"sidecar", state.sidecar_name},
                         {"sha256", state.sha256},
-                        {"stage", state.stage},
+                        {"stage", to_string(state.stage)},
                         {"reason", state.reason},
                         {"attempts", state.attempts},
                         {"pieces", state.piece_count},
@@ -55,8 +78,8 @@ JobState job_state_from_json(const nlohmann::json& json) {
   state.scan_name = json.value("scan", "");
   state.sidecar_name = json.value("sidecar", "");
   state.sha256 = json.value("sha256", "");
-  state.stage = json.value("stage", "claimed");
   state.reason = json.value("reason", "");
+  read_stage(json, "state.json", parse_job_stage, JobStage::Held, state.stage, state.stage_problem, state.reason);
   state.attempts = json.value("attempts", 0);
   state.piece_count = json.value("pieces", 0);
   if (json.contains("ticket")) state.ticket = ticket_from_json(json.at("ticket"));
@@ -73,7 +96,7 @@ nlohmann::json to_json(const BatchState& state) {
                         {"material", state.material},
                         {"cutter", state.cutter},
                         {"jobs", state.job_ids},
-                        {"stage", state.stage},
+                        {"stage", to_string(state.stage)},
                         {"reason", state.reason},
                         {"cut_file", state.cut_file},
                         {"utilisation", state.utilisation},
@@ -89,8 +112,8 @@ BatchState batch_state_from_json(const nlohmann::json& json) {
   state.material = json.value("material", "");
   state.cutter = json.value("cutter", "");
   if (json.contains("jobs")) state.job_ids = json.at("jobs").get<std::vector<std::string>>();
-  state.stage = json.value("stage", "queued");
   state.reason = json.value("reason", "");
+  read_stage(json, "batch.json", parse_batch_stage, BatchStage::Held, state.stage, state.stage_problem, state.reason);
   state.cut_file = json.value("cut_file", "");
   state.utilisation = json.value("utilisation", 0.0);
   state.piece_count = json.value("pieces", 0);

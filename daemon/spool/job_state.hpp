@@ -1,18 +1,18 @@
 #pragma once
 // The per-job state file (state.json in the job's folder) and the per-batch state file
-// (batch.json). Both are replaced atomically (durable_file.hpp), so after any crash they hold
+// (batch.json). Both are replaced atomically (engine/core/durable_file.hpp), so after any crash they hold
 // a complete earlier or later version.
+// The stages are in stages.hpp; the folder (work/done/failed/held) follows the job's stage.
 //
-// Job stages, in order: claimed (scan in the spool, molds not yet made) -> computed (molds
-// written) -> batched (part of batch B, cut file made) -> sending (bytes may have reached the
-// cutter) -> cut. Side exits: failed (bad input, reason), held (needs an operator), skipped
-// (duplicate under the skip policy). The folder (work/done/failed/held) follows the stage.
+// A file whose stage is missing or unknown reads as Held with `stage_problem` set (and as the
+// reason): whoever finds it holds the job or batch for an operator and says why.
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "daemon/spool/job_ticket.hpp"
+#include "daemon/spool/stages.hpp"
 
 namespace lastcut::daemon {
 
@@ -21,8 +21,9 @@ struct JobState {
   std::string scan_name;     // original file name, kept in the job folder
   std::string sidecar_name;  // "" when the scan came without a sidecar
   std::string sha256;        // of the scan bytes
-  std::string stage = "claimed";
+  JobStage stage = JobStage::Claimed;
   std::string reason;        // why failed, held or skipped (operator's words)
+  std::string stage_problem; // not stored: set when state.json's stage was missing or unknown
   int attempts = 0;          // computations started (a crash or hang counts)
   int piece_count = 0;       // molds made x quantity (set once computed)
   JobTicket ticket;          // material and cutter already resolved to configured names
@@ -33,7 +34,7 @@ struct JobState {
   nlohmann::json history = nlohmann::json::array();  // [{at, stage, note}]
 
   // Moves to `new_stage`, stamping the time and appending to the history.
-  void advance(const std::string& new_stage, const std::string& note = "");
+  void advance(JobStage new_stage, const std::string& note = "");
   // "order 4711 (scan last.stl, job 20261121-235000-001)": how log lines name a job.
   std::string label() const;
 };
@@ -46,8 +47,9 @@ struct BatchState {
   std::string material;
   std::string cutter;
   std::vector<std::string> job_ids;
-  std::string stage = "queued";  // queued -> sending -> cut | held
+  BatchStage stage = BatchStage::Queued;
   std::string reason;
+  std::string stage_problem;     // not stored: set when batch.json's stage was missing or unknown
   std::string cut_file;          // file name inside the batch folder
   double utilisation = 0;        // piece area / used material area (0..1)
   int piece_count = 0;

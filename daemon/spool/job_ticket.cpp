@@ -31,12 +31,13 @@ std::optional<nlohmann::json> toml_to_json(const std::filesystem::path& file, st
   return std::nullopt;
 }
 
-std::string check_ticket(const nlohmann::json& json, JobTicket& ticket) {
-  if (!json.is_object()) return "the sidecar must be a table of keys";
+Result<JobTicket> check_ticket(const nlohmann::json& json) {
+  JobTicket ticket;
+  if (!json.is_object()) return Status::failure("the sidecar must be a table of keys");
   const std::set<std::string> known{"order", "customer", "size", "side", "quantity", "material",
                                     "cutter", "allowance_mm", "priority"};
   for (auto it = json.begin(); it != json.end(); ++it) {
-    if (!known.count(it.key())) return "unknown key \"" + it.key() + "\"";
+    if (!known.count(it.key())) return Status::failure("unknown key \"" + it.key() + "\"");
   }
   auto text = [&](const char* key, std::string& value) -> std::string {
     if (!json.contains(key)) return {};
@@ -49,31 +50,31 @@ std::string check_ticket(const nlohmann::json& json, JobTicket& ticket) {
   for (auto [key, target] : {std::pair{"order", &ticket.order}, std::pair{"customer", &ticket.customer},
                              std::pair{"size", &ticket.size}, std::pair{"side", &ticket.side},
                              std::pair{"material", &ticket.material}, std::pair{"cutter", &ticket.cutter}}) {
-    if (std::string error = text(key, *target); !error.empty()) return error;
+    if (std::string error = text(key, *target); !error.empty()) return Status::failure(error);
   }
   if (!ticket.side.empty() && ticket.side != "left" && ticket.side != "right" && ticket.side != "pair") {
-    return "side \"" + ticket.side + "\" is not one of left, right, pair";
+    return Status::failure("side \"" + ticket.side + "\" is not one of left, right, pair");
   }
   if (json.contains("quantity")) {
     const auto& node = json.at("quantity");
     if (!node.is_number_integer() || node.get<long long>() < 1 || node.get<long long>() > 100) {
-      return "quantity must be a whole number from 1 to 100";
+      return Status::failure("quantity must be a whole number from 1 to 100");
     }
     ticket.quantity = node.get<int>();
   }
   if (json.contains("priority")) {
     const auto& node = json.at("priority");
-    if (!node.is_number_integer()) return "priority must be a whole number";
+    if (!node.is_number_integer()) return Status::failure("priority must be a whole number");
     ticket.priority = node.get<int>();
   }
   if (json.contains("allowance_mm")) {
     const auto& node = json.at("allowance_mm");
     if (!node.is_number() || node.get<double>() < 0 || node.get<double>() > 50) {
-      return "allowance_mm must be a number from 0 to 50";
+      return Status::failure("allowance_mm must be a number from 0 to 50");
     }
     ticket.allowance_mm = node.get<double>();
   }
-  return {};
+  return ticket;
 }
 
 }  // namespace
@@ -91,8 +92,7 @@ std::filesystem::path find_sidecar(const std::filesystem::path& scan) {
   return {};
 }
 
-TicketReadResult read_job_ticket(const std::filesystem::path& sidecar) {
-  TicketReadResult result;
+Result<JobTicket> read_job_ticket(const std::filesystem::path& sidecar) {
   std::optional<nlohmann::json> json;
   std::string error;
   if (ends_with(sidecar.filename().string(), ".toml")) {
@@ -109,14 +109,11 @@ TicketReadResult read_job_ticket(const std::filesystem::path& sidecar) {
       }
     }
   }
-  JobTicket ticket;
-  if (json) error = check_ticket(*json, ticket);
-  if (!error.empty()) {
-    result.error = "sidecar " + sidecar.filename().string() + ": " + error;
-    return result;
-  }
-  result.ticket = ticket;
-  return result;
+  const std::string context = "sidecar " + sidecar.filename().string() + ": ";
+  if (!json) return Status::failure(context + error);
+  Result<JobTicket> ticket = check_ticket(*json);
+  if (!ticket) return ticket.status().with_context(context);
+  return ticket;
 }
 
 nlohmann::json ticket_to_json(const JobTicket& ticket) {

@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/core/status.hpp"
+
 namespace lastcut::daemon {
 
 struct JobTicket {
@@ -22,12 +24,8 @@ struct JobTicket {
   int priority = 0;      // higher is cut first within a batch
 };
 
-struct TicketReadResult {
-  std::optional<JobTicket> ticket;
-  std::string error;  // one line when the sidecar is unusable
-};
-
-TicketReadResult read_job_ticket(const std::filesystem::path& sidecar);
+// The sidecar's ticket, or one line saying why it is unusable.
+Result<JobTicket> read_job_ticket(const std::filesystem::path& sidecar);
 // Sidecar of a scan: NAME.job.toml or NAME.job.json beside NAME.stl; empty path when none exists.
 std::filesystem::path find_sidecar(const std::filesystem::path& scan);
 // True for names that are sidecars (*.job.toml, *.job.json).

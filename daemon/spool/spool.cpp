@@ -4,7 +4,7 @@
 #include <ctime>
 #include <fstream>
 
-#include "daemon/spool/durable_file.hpp"
+#include "engine/core/durable_file.hpp"
 
 namespace lastcut::daemon {
 namespace {
@@ -55,11 +55,11 @@ std::string folder_name(JobFolder folder) {
 
 Spool::Spool(std::filesystem::path root) : root_(std::move(root)) {}
 
-std::string Spool::prepare() const {
+Status Spool::prepare() const {
   for (const char* name : {"work", "done", "failed", "held", "batches"}) {
     std::error_code error;
     std::filesystem::create_directories(root_ / name, error);
-    if (error) return "cannot create spool folder " + (root_ / name).string() + ": " + error.message();
+    if (error) return Status::failure("cannot create spool folder " + (root_ / name).string() + ": " + error.message());
   }
   return fsync_folder(root_);
 }
@@ -88,8 +88,8 @@ std::string Spool::new_job_id() {
 
 std::string Spool::new_batch_id() { return "B" + new_job_id(); }
 
-ClaimResult Spool::claim(const std::filesystem::path& scan, const std::filesystem::path& sidecar, JobState state) {
-  ClaimResult result;
+Result<std::string> Spool::claim(const std::filesystem::path& scan, const std::filesystem::path& sidecar,
+                                 JobState state) {
   state.id = new_job_id();
   state.scan_name = scan.filename().string();
   state.sidecar_name = sidecar.empty() ? "" : sidecar.filename().string();
@@ -98,32 +98,29 @@ ClaimResult Spool::claim(const std::filesystem::path& scan, const std::filesyste
   const std::filesystem::path dir = job_dir(JobFolder::Work, state.id);
   std::error_code error;
   std::filesystem::create_directory(dir, error);
-  if (error) {
-    result.error = "cannot create " + dir.string() + ": " + error.message();
-    return result;
-  }
-  if (std::string failure = write_state(JobFolder::Work, state); !failure.empty()) {
+  if (error) return Status::failure("cannot create " + dir.string() + ": " + error.message());
+  // Undoes the claim so far; a folder that cannot be removed is an unfinished claim for recovery.
+  const auto undo = [&](const Status& failure) -> Status {
     std::filesystem::remove_all(dir, error);
-    result.error = failure;
-    return result;
-  }
+    if (error) return Status::failure(failure.error() + "; " + dir.string() + " left for recovery: " + error.message());
+    return failure;
+  };
+  if (Status written = write_state(JobFolder::Work, state); !written) return undo(written);
   // Sidecar first: once the scan is moved the job counts as claimed, and recovery finds the
   // sidecar either still beside the scan's old place or already in the job folder.
   if (!sidecar.empty()) {
-    if (std::string failure = move_durably(sidecar, dir / sidecar.filename()); !failure.empty()) {
-      std::filesystem::remove_all(dir, error);
-      result.error = failure;
-      return result;
+    if (Status moved = move_durably(sidecar, dir / sidecar.filename()); !moved) return undo(moved);
+  }
+  if (Status moved = move_durably(scan, dir / scan.filename()); !moved) {
+    if (!sidecar.empty()) {
+      // The sidecar stays in the job folder: keep the folder, recovery hands it back.
+      if (Status back = move_durably(dir / sidecar.filename(), sidecar); !back) {
+        return Status::failure(moved.error() + "; the sidecar stays in " + dir.string() + " for recovery: " + back.error());
+      }
     }
+    return undo(moved);
   }
-  if (std::string failure = move_durably(scan, dir / scan.filename()); !failure.empty()) {
-    if (!sidecar.empty()) move_durably(dir / sidecar.filename(), sidecar);
-    std::filesystem::remove_all(dir, error);
-    result.error = failure;
-    return result;
-  }
-  result.job_id = state.id;
-  return result;
+  return state.id;
 }
 
 std::optional<JobState> Spool::read_state(JobFolder folder, const std::string& id) const {
@@ -132,13 +129,13 @@ std::optional<JobState> Spool::read_state(JobFolder folder, const std::string& i
   return job_state_from_json(*json);
 }
 
-std::string Spool::write_state(JobFolder folder, const JobState& state) const {
+Status Spool::write_state(JobFolder folder, const JobState& state) const {
   return write_file_durably(job_dir(folder, state.id) / kStateFile, to_json(state).dump(2) + "\n");
 }
 
-std::string Spool::move_job(JobFolder from, JobFolder to, const JobState& state) const {
-  if (std::string error = write_state(from, state); !error.empty()) return error;
-  if (from == to) return {};
+Status Spool::move_job(JobFolder from, JobFolder to, const JobState& state) const {
+  if (Status written = write_state(from, state); !written) return written;
+  if (from == to) return Status::success();
   return move_durably(job_dir(from, state.id), job_dir(to, state.id));
 }
 
@@ -158,7 +155,7 @@ std::optional<BatchState> Spool::read_batch(const std::string& batch_id) const {
   return batch_state_from_json(*json);
 }
 
-std::string Spool::write_batch(const BatchState& batch) const {
+Status Spool::write_batch(const BatchState& batch) const {
   return write_file_durably(batch_dir(batch.id) / kBatchFile, to_json(batch).dump(2) + "\n");
 }
 

@@ -16,36 +16,33 @@
 #include <vector>
 
 #include "daemon/spool/job_state.hpp"
+#include "engine/core/status.hpp"
 
 namespace lastcut::daemon {
 
 enum class JobFolder { Work, Done, Failed, Held };
 std::string folder_name(JobFolder folder);
 
-struct ClaimResult {
-  std::string job_id;  // set on success
-  std::string error;   // one line otherwise (the scan stays where it was)
-};
-
 class Spool {
  public:
   explicit Spool(std::filesystem::path root);
 
-  // Creates the folders; returns an error line when the spool cannot be used.
-  std::string prepare() const;
+  // Creates the folders; fails when the spool cannot be used.
+  Status prepare() const;
 
   const std::filesystem::path& root() const { return root_; }
   std::filesystem::path job_dir(JobFolder folder, const std::string& id) const;
   std::filesystem::path batch_dir(const std::string& batch_id) const;
 
   // Moves the scan (and its sidecar, when given) into a new work/ID folder whose state.json is
-  // `state` with a fresh id. Crash-safe: a work folder without its scan is undone at recovery.
-  ClaimResult claim(const std::filesystem::path& scan, const std::filesystem::path& sidecar, JobState state);
+  // `state` with a fresh id; returns that id. On failure the scan stays where it was.
+  // Crash-safe: a work folder without its scan is undone at recovery.
+  Result<std::string> claim(const std::filesystem::path& scan, const std::filesystem::path& sidecar, JobState state);
 
   std::optional<JobState> read_state(JobFolder folder, const std::string& id) const;
-  std::string write_state(JobFolder folder, const JobState& state) const;
+  Status write_state(JobFolder folder, const JobState& state) const;
   // Writes the state in its current folder, then renames the job folder to `to`.
-  std::string move_job(JobFolder from, JobFolder to, const JobState& state) const;
+  Status move_job(JobFolder from, JobFolder to, const JobState& state) const;
   // Where a job is now, if anywhere.
   std::optional<JobFolder> locate(const std::string& id) const;
   // Ids in a folder, oldest first (ids sort by claim time).
@@ -53,7 +50,7 @@ class Spool {
 
   std::string new_batch_id();
   std::optional<BatchState> read_batch(const std::string& batch_id) const;
-  std::string write_batch(const BatchState& batch) const;
+  Status write_batch(const BatchState& batch) const;
   std::vector<std::string> list_batches() const;
 
  private:

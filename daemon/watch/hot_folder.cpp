@@ -43,24 +43,24 @@ HotFolder::~HotFolder() {
   if (inotify_fd_ >= 0) ::close(inotify_fd_);
 }
 
-std::string HotFolder::start() {
+Status HotFolder::start() {
   std::error_code error;
   std::filesystem::create_directories(folder_, error);
-  if (error) return "cannot create watch folder " + folder_.string() + ": " + error.message();
+  if (error) return Status::failure("cannot create watch folder " + folder_.string() + ": " + error.message());
   const std::string network = network_file_system(folder_);
   polling_ = config_.mode == WatchMode::Poll || (config_.mode == WatchMode::Auto && !network.empty());
   if (polling_) {
     mode_description_ = "polling every " + std::to_string(config_.poll_interval_s) + " s" +
                         (network.empty() ? "" : " (network share: " + network + ")");
-    return {};
+    return Status::success();
   }
   inotify_fd_ = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
-  if (inotify_fd_ < 0) return std::string("cannot start inotify: ") + std::strerror(errno);
+  if (inotify_fd_ < 0) return Status::failure(std::string("cannot start inotify: ") + std::strerror(errno));
   if (::inotify_add_watch(inotify_fd_, folder_.c_str(), IN_CLOSE_WRITE | IN_MOVED_TO | IN_CREATE | IN_MODIFY) < 0) {
-    return "cannot watch " + folder_.string() + ": " + std::strerror(errno);
+    return Status::failure("cannot watch " + folder_.string() + ": " + std::strerror(errno));
   }
   mode_description_ = "inotify, full rescan every " + std::to_string(config_.rescan_interval_s) + " s";
-  return {};
+  return Status::success();
 }
 
 void HotFolder::read_events() {

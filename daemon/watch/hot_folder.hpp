@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "daemon/config/daemon_config.hpp"
+#include "engine/core/status.hpp"
 
 namespace lastcut::daemon {
 
@@ -33,8 +34,8 @@ class HotFolder {
   HotFolder(const HotFolder&) = delete;
   HotFolder& operator=(const HotFolder&) = delete;
 
-  // Creates the folder if needed and starts watching; returns an error line or "".
-  std::string start();
+  // Creates the folder if needed and starts watching.
+  Status start();
   // "inotify" or "polling (nfs)"...: for the start-up log line.
   const std::string& mode_description() const { return mode_description_; }
   // The inotify descriptor to wait on, or -1 when polling.

@@ -2,7 +2,8 @@
 // Transport: one byte link to a cutter (serial port, pseudo-terminal or TCP socket).
 // Protocols (grbl, HPGL) talk through this interface only, so they run unchanged over a
 // USB serial adapter, a simulator's pty or a network plotter. No exceptions: every call
-// returns an IoStatus whose `error` is one line an operator can read.
+// returns an IoStatus whose `error` is one line an operator can read ([[nodiscard]]: ignoring one
+// is a compile warning).
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -25,7 +26,7 @@ struct SerialSettings {
 bool parse_flow_control(std::string_view text, FlowControl& flow);
 std::string to_string(FlowControl flow);
 
-struct IoStatus {
+struct [[nodiscard]] IoStatus {
   bool ok = true;
   bool closed = false;    // the other side went away (cable pulled, socket closed, pty gone)
   std::string error;      // empty when ok

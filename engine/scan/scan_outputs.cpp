@@ -1,9 +1,9 @@
 #include "engine/scan/scan_outputs.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <system_error>
 
+#include "engine/core/durable_file.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/mold/mold_dxf.hpp"
 #include "engine/mold/mold_svg.hpp"
@@ -95,15 +95,8 @@ nlohmann::json write_scan_outputs(const ScanResult& result, const fs::path& out_
                    triangle_strain(segment.measures));
   }
   const nlohmann::json report_json = scan_report_json(result);
-  const fs::path report = out_dir / "report.json";
-  const fs::path partial = out_dir / "report.json.partial";
-  {
-    std::ofstream out(partial, std::ios::binary);
-    out << report_json.dump(2) << '\n';
-    if (!out) throw EngineError("cannot write " + partial.string());
-  }
-  fs::rename(partial, report, error);
-  if (error) throw EngineError("cannot write " + report.string() + ": " + error.message());
+  const Status written = write_file_durably(out_dir / "report.json", report_json.dump(2) + "\n");
+  if (!written) throw EngineError(written.error());
   return report_json;
 }
 

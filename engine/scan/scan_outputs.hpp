@@ -4,7 +4,7 @@
 //   OUT/NAME-flat.obj  the same vertices in the same order as "v u v 0", the same faces
 //   OUT/NAME.dxf       the mold: outline on layer CUT, notches on layer MARK (engine/mold/mold_dxf.hpp)
 //   OUT/NAME.svg       the mold over a stretch heat map with a legend (engine/mold/mold_svg.hpp)
-//   OUT/report.json    see scan_report_json; written last (through a temporary file and a rename),
+//   OUT/report.json    see scan_report_json; written last (durably, engine/core/durable_file.hpp),
 //                      so its presence means every other file is complete
 // for every segment NAME (medial and lateral, or patch).
 #include <filesystem>

@@ -1,8 +1,6 @@
 #include "engine/toolpath/cut_file.hpp"
 
-#include <fstream>
-#include <system_error>
-
+#include "engine/core/durable_file.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/toolpath/dxf_writer.hpp"
 #include "engine/toolpath/gcode_writer.hpp"
@@ -32,20 +30,7 @@ std::string cut_file_extension(CutFileFormat format) {
 }
 
 void save_cut_file(const std::filesystem::path& path, const std::string& text) {
-  const std::filesystem::path temporary = path.string() + ".partial";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw EngineError("cannot write " + temporary.string());
-    out << text;
-    out.flush();
-    if (!out) throw EngineError("cannot write " + temporary.string() + " (disk full?)");
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    std::filesystem::remove(temporary, error);
-    throw EngineError("cannot write " + path.string() + ": " + error.message());
-  }
+  if (Status written = write_file_durably(path, text); !written) throw EngineError(written.error());
 }
 
 }  // namespace lastcut

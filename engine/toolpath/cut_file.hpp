@@ -14,7 +14,7 @@ std::string write_cut_file(const CutProgram& program, const MachineProfile& prof
 // ".plt", ".nc", ".dxf" or ".svg".
 std::string cut_file_extension(CutFileFormat format);
 
-// Writes `text` to `path` through a temporary file and a rename, so a cutter's spool never sees
+// Writes `text` to `path` durably (engine/core/durable_file.hpp), so a cutter's spool never sees
 // half a file. Throws EngineError when the file cannot be written.
 void save_cut_file(const std::filesystem::path& path, const std::string& text);
 

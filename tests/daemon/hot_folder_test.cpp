@@ -80,7 +80,7 @@ TEST_P(HotFolderModes, OnlyCompleteRegularScansAreHandedOver) {
   const auto folder = testing::scratch_folder(GetParam() == WatchMode::Poll ? "hot-poll" : "hot-inotify");
   const auto watch = folder / "in";
   HotFolder hot(watch, fast_watch(GetParam()));
-  ASSERT_EQ(hot.start(), "");
+  ASSERT_EQ(hot.start().error(), "");
   EXPECT_EQ(hot.event_fd() >= 0, GetParam() != WatchMode::Poll);
   write_text(watch / "a.stl", binary_stl(3, 3));
   write_text(watch / "a.job.toml", "order = \"1\"\n");
@@ -104,7 +104,7 @@ TEST_P(HotFolderModes, AGrowingFileWaitsUntilItIsStable) {
   const auto folder = testing::scratch_folder(GetParam() == WatchMode::Poll ? "grow-poll" : "grow-inotify");
   const auto watch = folder / "in";
   HotFolder hot(watch, fast_watch(GetParam()));
-  ASSERT_EQ(hot.start(), "");
+  ASSERT_EQ(hot.start().error(), "");
   // Written in pieces like a slow upload: announced 400 triangles, growing.
   std::string bytes = binary_stl(400, 0);
   write_text(watch / "slow.stl", bytes);
@@ -124,7 +124,7 @@ TEST_P(HotFolderModes, ACutOffFileIsHandedOverAfterTheGraceTimeWithTheReason) {
   const auto folder = testing::scratch_folder(GetParam() == WatchMode::Poll ? "cut-poll" : "cut-inotify");
   const auto watch = folder / "in";
   HotFolder hot(watch, fast_watch(GetParam()));
-  ASSERT_EQ(hot.start(), "");
+  ASSERT_EQ(hot.start().error(), "");
   write_text(watch / "cut.stl", binary_stl(5000, 120));
   const auto start = std::chrono::steady_clock::now();
   const auto ready = collect(hot, 1);
@@ -139,7 +139,7 @@ TEST_P(HotFolderModes, FilesPresentAtStartAreFound) {
   std::filesystem::create_directories(watch);
   for (int i = 0; i < 20; ++i) write_text(watch / ("s" + std::to_string(i) + ".stl"), binary_stl(1, 1));
   HotFolder hot(watch, fast_watch(GetParam()));
-  ASSERT_EQ(hot.start(), "");
+  ASSERT_EQ(hot.start().error(), "");
   EXPECT_EQ(collect(hot, 20).size(), 20u);
 }
 

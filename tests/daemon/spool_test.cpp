@@ -2,7 +2,7 @@
 // writes, claims that move scan and sidecar together, folder moves, sidecar validation.
 #include <gtest/gtest.h>
 
-#include "daemon/spool/durable_file.hpp"
+#include "engine/core/durable_file.hpp"
 #include "daemon/spool/job_ticket.hpp"
 #include "daemon/spool/sha256.hpp"
 #include "daemon/spool/spool.hpp"
@@ -34,65 +34,66 @@ TEST(Sha256, FileHashEqualsMemoryHash) {
 
 TEST(DurableFile, ReplacesContentAndLeavesNoTemporary) {
   const auto folder = testing::scratch_folder("durable");
-  ASSERT_EQ(write_file_durably(folder / "state.json", "one"), "");
-  ASSERT_EQ(write_file_durably(folder / "state.json", "two"), "");
+  ASSERT_EQ(write_file_durably(folder / "state.json", "one").error(), "");
+  ASSERT_EQ(write_file_durably(folder / "state.json", "two").error(), "");
   EXPECT_EQ(read_text(folder / "state.json"), "two");
   EXPECT_EQ(testing::count_entries(folder), 1);
   for (const auto& entry : std::filesystem::directory_iterator(folder)) {
     EXPECT_EQ(entry.path().filename(), "state.json");
   }
-  EXPECT_NE(write_file_durably(folder / "no-such-folder" / "x", "y"), "");
+  EXPECT_NE(write_file_durably(folder / "no-such-folder" / "x", "y").error(), "");
 }
 
 TEST(DurableFile, MoveAndCopy) {
   const auto folder = testing::scratch_folder("move");
   write_text(folder / "a", "payload");
-  ASSERT_EQ(copy_file_durably(folder / "a", folder / "b"), "");
-  ASSERT_EQ(move_durably(folder / "a", folder / "c"), "");
+  ASSERT_EQ(copy_file_durably(folder / "a", folder / "b").error(), "");
+  ASSERT_EQ(move_durably(folder / "a", folder / "c").error(), "");
   EXPECT_FALSE(std::filesystem::exists(folder / "a"));
   EXPECT_EQ(read_text(folder / "b"), "payload");
   EXPECT_EQ(read_text(folder / "c"), "payload");
-  EXPECT_NE(move_durably(folder / "a", folder / "d"), "");
+  EXPECT_NE(move_durably(folder / "a", folder / "d").error(), "");
 }
 
 TEST(Spool, ClaimMovesScanAndSidecarIntoAWorkFolder) {
   const auto folder = testing::scratch_folder("claim");
   Spool spool(folder / "spool");
-  ASSERT_EQ(spool.prepare(), "");
+  ASSERT_EQ(spool.prepare().error(), "");
   std::filesystem::create_directories(folder / "in");
   write_text(folder / "in" / "last.stl", "solid x\nendsolid x\n");
   write_text(folder / "in" / "last.job.toml", "order = \"4711\"\n");
   JobState state;
   state.sha256 = "abc";
   state.ticket.order = "4711";
-  const ClaimResult claim = spool.claim(folder / "in" / "last.stl", folder / "in" / "last.job.toml", state);
-  ASSERT_EQ(claim.error, "");
+  const Result<std::string> claim = spool.claim(folder / "in" / "last.stl", folder / "in" / "last.job.toml", state);
+  ASSERT_EQ(claim.error(), "");
+  const std::string& job_id = *claim;
   EXPECT_EQ(testing::count_entries(folder / "in"), 0);
-  const auto dir = spool.job_dir(JobFolder::Work, claim.job_id);
+  const auto dir = spool.job_dir(JobFolder::Work, job_id);
   EXPECT_TRUE(std::filesystem::exists(dir / "last.stl"));
   EXPECT_TRUE(std::filesystem::exists(dir / "last.job.toml"));
-  const auto read = spool.read_state(JobFolder::Work, claim.job_id);
+  const auto read = spool.read_state(JobFolder::Work, job_id);
   ASSERT_TRUE(read);
   EXPECT_EQ(read->scan_name, "last.stl");
   EXPECT_EQ(read->sidecar_name, "last.job.toml");
   EXPECT_EQ(read->ticket.order, "4711");
-  EXPECT_EQ(read->stage, "claimed");
-  EXPECT_EQ(spool.locate(claim.job_id), JobFolder::Work);
+  EXPECT_EQ(read->stage, JobStage::Claimed);
+  EXPECT_EQ(spool.locate(job_id), JobFolder::Work);
 }
 
 TEST(Spool, IdsAreUniqueAndSortByTime) {
   const auto folder = testing::scratch_folder("ids");
   Spool spool(folder);
-  ASSERT_EQ(spool.prepare(), "");
+  ASSERT_EQ(spool.prepare().error(), "");
   std::set<std::string> ids;
   std::string previous;
   for (int i = 0; i < 30; ++i) {
     write_text(folder / ("s" + std::to_string(i) + ".stl"), "x\n");
     const auto claim = spool.claim(folder / ("s" + std::to_string(i) + ".stl"), {}, JobState{});
-    ASSERT_EQ(claim.error, "");
-    EXPECT_GT(claim.job_id, previous);
-    previous = claim.job_id;
-    ids.insert(claim.job_id);
+    ASSERT_EQ(claim.error(), "");
+    EXPECT_GT(*claim, previous);
+    previous = *claim;
+    ids.insert(*claim);
   }
   EXPECT_EQ(ids.size(), 30u);
   EXPECT_EQ(spool.list(JobFolder::Work).size(), 30u);
@@ -101,18 +102,20 @@ TEST(Spool, IdsAreUniqueAndSortByTime) {
 TEST(Spool, MoveJobWritesStateThenRenames) {
   const auto folder = testing::scratch_folder("movejob");
   Spool spool(folder);
-  ASSERT_EQ(spool.prepare(), "");
+  ASSERT_EQ(spool.prepare().error(), "");
   write_text(folder / "s.stl", "x\n");
   const auto claim = spool.claim(folder / "s.stl", {}, JobState{});
-  auto state = spool.read_state(JobFolder::Work, claim.job_id).value();
+  ASSERT_EQ(claim.error(), "");
+  const std::string& job_id = *claim;
+  auto state = spool.read_state(JobFolder::Work, job_id).value();
   state.reason = "the file is cut off";
-  state.advance("failed", state.reason);
-  ASSERT_EQ(spool.move_job(JobFolder::Work, JobFolder::Failed, state), "");
-  EXPECT_EQ(spool.locate(claim.job_id), JobFolder::Failed);
-  const auto failed = spool.read_state(JobFolder::Failed, claim.job_id).value();
-  EXPECT_EQ(failed.stage, "failed");
+  state.advance(JobStage::Failed, state.reason);
+  ASSERT_EQ(spool.move_job(JobFolder::Work, JobFolder::Failed, state).error(), "");
+  EXPECT_EQ(spool.locate(job_id), JobFolder::Failed);
+  const auto failed = spool.read_state(JobFolder::Failed, job_id).value();
+  EXPECT_EQ(failed.stage, JobStage::Failed);
   EXPECT_EQ(failed.reason, "the file is cut off");
-  EXPECT_TRUE(std::filesystem::exists(spool.job_dir(JobFolder::Failed, claim.job_id) / "s.stl"));
+  EXPECT_TRUE(std::filesystem::exists(spool.job_dir(JobFolder::Failed, job_id) / "s.stl"));
   EXPECT_GE(failed.history.size(), 2u);
 }
 
@@ -126,12 +129,12 @@ TEST(JobTicket, TomlAndJsonSidecarsAreReadAlike) {
                  "material": "calf", "cutter": "b", "allowance_mm": 8, "priority": 3})");
   for (const char* name : {"a.job.toml", "b.job.json"}) {
     const auto result = read_job_ticket(folder / name);
-    ASSERT_TRUE(result.ticket) << result.error;
-    EXPECT_EQ(result.ticket->order, "4711");
-    EXPECT_EQ(result.ticket->side, "pair");
-    EXPECT_EQ(result.ticket->quantity, 2);
-    EXPECT_EQ(result.ticket->cutter, "b");
-    EXPECT_DOUBLE_EQ(result.ticket->allowance_mm.value(), 8.0);
+    ASSERT_TRUE(result) << result.error();
+    EXPECT_EQ(result->order, "4711");
+    EXPECT_EQ(result->side, "pair");
+    EXPECT_EQ(result->quantity, 2);
+    EXPECT_EQ(result->cutter, "b");
+    EXPECT_DOUBLE_EQ(result->allowance_mm.value(), 8.0);
   }
 }
 
@@ -147,12 +150,12 @@ TEST(JobTicket, BadSidecarsAreRefusedWithTheReason) {
   for (const auto& [text, expected] : cases) {
     write_text(folder / "x.job.toml", text);
     const auto result = read_job_ticket(folder / "x.job.toml");
-    EXPECT_FALSE(result.ticket) << text;
-    EXPECT_NE(result.error.find(expected), std::string::npos) << result.error;
-    EXPECT_EQ(result.error.find('\n'), std::string::npos) << "one line: " << result.error;
+    EXPECT_FALSE(result) << text;
+    EXPECT_NE(result.error().find(expected), std::string::npos) << result.error();
+    EXPECT_EQ(result.error().find('\n'), std::string::npos) << "one line: " << result.error();
   }
   write_text(folder / "y.job.json", "{\"order\": ");
-  EXPECT_NE(read_job_ticket(folder / "y.job.json").error.find("not valid JSON"), std::string::npos);
+  EXPECT_NE(read_job_ticket(folder / "y.job.json").error().find("not valid JSON"), std::string::npos);
 }
 
 TEST(JobTicket, SidecarIsFoundBesideTheScan) {
