@@ -49,7 +49,7 @@ TEST(DaemonConfig, DemoConfigurationIsValidWithPathsFromItsFolder) {
   const auto result = load_daemon_config(kSource / "config/demo/lastcut.toml");
   ASSERT_TRUE(result.config) << result.error;
   EXPECT_EQ(result.config->paths.watch_dir, (kSource / "demo/incoming").lexically_normal());
-  EXPECT_EQ(result.config->cutters.at("cutter-1").port, (kSource / "demo/cutter-1.tty").lexically_normal().string());
+  EXPECT_EQ(result.config->cutters.at("cutter-1").link.port, (kSource / "demo/cutter-1.tty").lexically_normal().string());
 }
 
 TEST(DaemonConfig, RelativePathsAreTakenFromTheFilesFolder) {
@@ -100,15 +100,15 @@ TEST(DaemonConfig, DriverSettingsAreReadAndChecked) {
                                   "hpgl_status_queries = false\nmodbus_map = \"map.toml\"\nmodbus_unit_id = 3\n"));
   ASSERT_TRUE(result.config) << result.error;
   const CutterSection& cutter = result.config->cutters.at("a");
-  EXPECT_EQ(cutter.data_bits, 7);
-  EXPECT_EQ(cutter.stop_bits, 2);
-  EXPECT_EQ(cutter.harmless_grbl_errors, (std::vector<int>{20, 22}));
-  EXPECT_EQ(cutter.grbl_settings, (std::vector<std::string>{"$110=5000", "$32=0"}));
-  EXPECT_EQ(cutter.hpgl_handshake, "escb");
-  EXPECT_FALSE(cutter.hpgl_status_queries);
-  EXPECT_EQ(std::filesystem::path(cutter.modbus_map).filename(), "map.toml");
-  EXPECT_TRUE(std::filesystem::path(cutter.modbus_map).is_absolute()) << "taken from the file's folder";
-  EXPECT_EQ(cutter.modbus_unit_id, 3);
+  EXPECT_EQ(cutter.link.data_bits, 7);
+  EXPECT_EQ(cutter.link.stop_bits, 2);
+  EXPECT_EQ(cutter.link.harmless_grbl_errors, (std::vector<int>{20, 22}));
+  EXPECT_EQ(cutter.link.grbl_settings, (std::vector<std::string>{"$110=5000", "$32=0"}));
+  EXPECT_EQ(cutter.link.hpgl_handshake, "escb");
+  EXPECT_FALSE(cutter.link.hpgl_status_queries);
+  EXPECT_EQ(std::filesystem::path(cutter.link.modbus_map).filename(), "map.toml");
+  EXPECT_TRUE(std::filesystem::path(cutter.link.modbus_map).is_absolute()) << "taken from the file's folder";
+  EXPECT_EQ(cutter.link.modbus_unit_id, 3);
 
   result = load_text(minimal("stop_bits = 3\n"));
   ASSERT_FALSE(result.config);
