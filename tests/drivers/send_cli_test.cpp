@@ -42,14 +42,19 @@ TEST(SendCli, DoneExitsZeroWithPlainProgressLines) {
   EXPECT_EQ(testing::read_file(dir.path() / "rec" / "grbl-received.nc"), testing::read_file(dir / "job.nc"));
 }
 
+// `lastcut send` of a `lines`-line program with `flags` to a simulated grbl that answers error:22 at line 10.
+int send_to_grbl_failing_at_line_10(const TempDir& dir, int lines, const std::string& flags, std::string& out) {
+  SimProcess sim({"grbl", "--link", dir / "grbl", "--time-scale", "0", "--fault", "error-at-line=10:22"});
+  EXPECT_TRUE(sim.ready()) << sim.ready_line();
+  return run_command(lastcut_binary() + " send " + write_program(dir, lines) + " --port " + (dir / "grbl") +
+                         " --protocol grbl --timeout 3 " + flags,
+                     out);
+}
+
 TEST(SendCli, InterruptedExitsThreeAndSaysNothingIsResent) {
   TempDir dir;
-  SimProcess sim({"grbl", "--link", dir / "grbl", "--time-scale", "0", "--fault", "error-at-line=10:22"});
-  ASSERT_TRUE(sim.ready());
   std::string out;
-  const int rc = run_command(lastcut_binary() + " send " + write_program(dir, 100) + " --port " + (dir / "grbl") +
-                                 " --protocol grbl --timeout 3",
-                             out);
+  const int rc = send_to_grbl_failing_at_line_10(dir, 100, "", out);
   EXPECT_EQ(rc, 3) << out;
   EXPECT_NE(out.find("INTERRUPTED"), std::string::npos) << out;
   EXPECT_NE(out.find("error:22"), std::string::npos) << out;
@@ -69,14 +74,12 @@ TEST(SendCli, FailedAndUsageErrorsHaveTheirOwnExitCodes) {
 
 TEST(SendCli, SerialFramingAndGrblOptionsReachTheLink) {
   TempDir dir;
-  SimProcess sim({"grbl", "--link", dir / "grbl", "--time-scale", "0", "--fault", "error-at-line=10:22"});
-  ASSERT_TRUE(sim.ready());
   std::string out;
   // The interrupted job prints the device log, which names the link's framing as opened.
-  const int rc = run_command(lastcut_binary() + " send " + write_program(dir, 50) + " --port " + (dir / "grbl") +
-                                 " --protocol grbl --timeout 3 --parity E --data-bits 7 --stop-bits 2"
-                                 " --streaming send-wait --rx-buffer 128 --status-poll 0.1 --grbl-setting '$110=5000'",
-                             out);
+  const int rc = send_to_grbl_failing_at_line_10(dir, 50,
+                                                 "--parity E --data-bits 7 --stop-bits 2 --streaming send-wait "
+                                                 "--rx-buffer 128 --status-poll 0.1 --grbl-setting '$110=5000'",
+                                                 out);
   EXPECT_EQ(rc, 3) << out;
   EXPECT_NE(out.find(" 115200 7E2 none"), std::string::npos) << out;
   EXPECT_NE(out.find("$110=5000"), std::string::npos) << out;
