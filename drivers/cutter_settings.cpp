@@ -76,7 +76,6 @@ const std::vector<CutterOption>& cutter_options() {
 }
 
 std::string set_cutter_option(CutterSettings& settings, const CutterOption& option, const OptionValue& value) {
-  std::string problem;
   switch (option.kind) {
     case OptionKind::Text:
     case OptionKind::Choice: {
@@ -121,8 +120,7 @@ std::string set_cutter_option(CutterSettings& settings, const CutterOption& opti
     case OptionKind::Texts: {
       const auto& texts = std::get<std::vector<std::string>>(value);
       for (const std::string& text : texts) {
-        if (option.check_entry) problem = option.check_entry(text);
-        if (!problem.empty()) return problem;
+        if (std::string problem = option.check_entry ? option.check_entry(text) : ""; !problem.empty()) return problem;
       }
       settings.*std::get<std::vector<std::string> S::*>(option.field) = texts;
       return "";

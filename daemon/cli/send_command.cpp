@@ -198,6 +198,8 @@ void add_send_command(CLI::App& app, int& exit_code) {
       case drivers::OptionKind::Texts: input.cli = send->add_option(flag, input.texts, help)->delimiter(','); break;
       default: input.cli = send->add_option(flag, input.text, help); break;
     }
+    if (option.kind == drivers::OptionKind::Integer || option.kind == drivers::OptionKind::Integers) input.cli->type_name("INT");
+    if (option.kind == drivers::OptionKind::Number) input.cli->type_name("NUMBER");
     if (const std::string shown = drivers::option_text(defaults, option); !shown.empty()) input.cli->default_str(shown);
   }
   const auto cli_option = [&](const std::string& key) {
