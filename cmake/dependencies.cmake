@@ -24,10 +24,3 @@ add_library(lastcut_cholmod INTERFACE)
 target_include_directories(lastcut_cholmod SYSTEM INTERFACE ${CHOLMOD_INCLUDE_DIR})
 target_link_libraries(lastcut_cholmod INTERFACE ${CHOLMOD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY})
 
-# OpenMesh's imported targets do not carry their include directory on every version.
-if(TARGET OpenMeshCore)
-  get_target_property(_om_inc OpenMeshCore INTERFACE_INCLUDE_DIRECTORIES)
-  if(NOT _om_inc)
-    set_target_properties(OpenMeshCore PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "/usr/include")
-  endif()
-endif()

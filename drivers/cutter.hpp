@@ -12,33 +12,14 @@
 #include <string>
 #include <vector>
 
+#include "drivers/cutter_settings.hpp"
+
 namespace lastcut::drivers {
 
-struct CutterConfig {
-  std::string name;              // for messages: "cutter 'bench-1'"
-  std::string protocol;          // "grbl" | "hpgl" | "modbus"
-  std::string port;              // /dev/ttyUSB0, /dev/serial/by-id/..., usb:VID:PID[:SERIAL], tcp://host:port, a pty path
-  std::string modbus;            // tcp://127.0.0.1:1502 or rtu:/dev/ttyUSB1[,19200[,8N1]]
-  int baud = 115200;
-  int data_bits = 8;
-  char parity = 'N';             // 'N' | 'E' | 'O'
-  int stop_bits = 1;
-  std::string flow = "none";     // "none" | "xonxoff" | "rtscts"
-  double timeout_s = 10;         // longest silence from the device before the job is declared lost
-  // grbl
-  std::vector<int> harmless_grbl_errors;  // error:N codes that do not stop the job (default: none)
-  std::string grbl_streaming = "counting";  // "counting" (character counting) | "send-wait" (one line at a time)
-  std::string grbl_unlock = "never";        // "never": refuse a machine in alarm | "unlock": send $X first
-  int grbl_rx_buffer_bytes = 0;             // 0: ask the machine ($I [OPT:...]), else force this size
-  std::vector<std::string> grbl_settings;   // "$110=5000" lines sent one at a time before the job
-  double status_poll_s = 0.2;               // '?' status query period while streaming
-  // hpgl
-  std::string hpgl_handshake = "";          // "" = follow `flow`; "escb" = ESC.B buffer-space handshake
-  bool hpgl_status_queries = true;          // the device answers ESC.O / ESC.E / OA (most HP-compatible cutters do)
-  // modbus
-  std::string modbus_map;                   // register map TOML; empty = built-in default (config/modbus-register-map.toml)
-  int modbus_unit_id = 1;
-  std::string job_id;                       // written to the PLC's job-identity registers (<= 16 ASCII chars)
+// One job's view of a cutter: its settings plus the names that belong to this use of it.
+struct CutterConfig : CutterSettings {
+  std::string name;    // for messages: "cutter 'bench-1'"
+  std::string job_id;  // written to the PLC's job-identity registers (<= 16 ASCII chars)
 };
 
 struct SendProgress {

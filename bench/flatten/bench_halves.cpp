@@ -15,11 +15,9 @@
 #include "engine/mesh/openmesh_types.hpp"
 #include "tests/flatten/flatten_fixtures.hpp"
 
-#ifdef LASTCUT_BENCH_HAS_SEGMENT
 #include "engine/lastgen/generate_last.hpp"
 #include "engine/orient/orient_last.hpp"
 #include "engine/segment/segment_last.hpp"
-#endif
 
 namespace lastcut::bench {
 namespace {
@@ -58,7 +56,6 @@ std::vector<BenchHalf> reference_halves(bool largest) {
   return halves;
 }
 
-#ifdef LASTCUT_BENCH_HAS_SEGMENT
 namespace {
 
 TriMesh generated_last(int last_triangles) {
@@ -74,11 +71,9 @@ Segmentation segment_generated(const TriMesh& last) {
 }
 
 }  // namespace
-#endif
 
 std::vector<BenchHalf> generated_halves(const std::vector<int>& half_triangles) {
   std::vector<BenchHalf> halves;
-#ifdef LASTCUT_BENCH_HAS_SEGMENT
   for (int target : half_triangles) {
     // The medial half is ~37 % of an EU 42 last; correct the last's size by the half it gave.
     double half_fraction = 0.368;
@@ -101,14 +96,10 @@ std::vector<BenchHalf> generated_halves(const std::vector<int>& half_triangles) 
       std::printf("(generated half of %dk skipped: %s)\n", target / 1000, e.what());
     }
   }
-#else
-  (void)half_triangles;
-#endif
   return halves;
 }
 
 double segmentation_seconds(int last_triangles, int repeats) {
-#ifdef LASTCUT_BENCH_HAS_SEGMENT
   const TriMesh last = generated_last(last_triangles);
   double best = 1e30;
   for (int r = 0; r < repeats; ++r) {
@@ -118,11 +109,6 @@ double segmentation_seconds(int last_triangles, int repeats) {
     if (halves.medial.mesh.triangle_count() == 0) return -1.0;
   }
   return best;
-#else
-  (void)last_triangles;
-  (void)repeats;
-  return -1.0;
-#endif
 }
 
 }  // namespace lastcut::bench

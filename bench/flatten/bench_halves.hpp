@@ -21,11 +21,10 @@ std::vector<BenchHalf> reference_halves(bool largest);
 // Medial halves of generated EU 42 lasts (lastgen + segment) with half_triangles[i] triangles +/- 2 %
 // (the last's triangle count is corrected from the half it gave until the half is within 2 %), and the
 // lateral half too for the 100,000 target.
-// Empty when the segmentation module is not built.
 std::vector<BenchHalf> generated_halves(const std::vector<int>& half_triangles);
 
 // Wall seconds of segment_last on a generated EU 42 last of `last_triangles` triangles (best of
-// `repeats`), or a negative value when the segmentation module is not built.
+// `repeats`), or a negative value when the segmentation gives an empty half.
 double segmentation_seconds(int last_triangles, int repeats);
 
 }  // namespace lastcut::bench

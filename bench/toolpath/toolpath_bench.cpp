@@ -19,9 +19,7 @@
 #include "engine/toolpath/cut_file.hpp"
 #include "engine/toolpath/layout_pieces.hpp"
 #include "engine/toolpath/plan_cut_program.hpp"
-#ifdef LASTCUT_BENCH_HAS_NESTER
 #include "engine/nest/nester.hpp"
-#endif
 
 namespace {
 
@@ -40,42 +38,6 @@ std::string cpu_model() {
   return "unknown CPU";
 }
 
-#ifndef LASTCUT_BENCH_HAS_NESTER
-// Stand-in while the nester is not built: every copy of every item, in file order, at its first
-// allowed rotation, stacked by bounding box in columns up the strip. A valid layout (no
-// overlaps) whose own order is the file order.
-lastcut::Layout column_layout(const lastcut::NestInstance& instance) {
-  lastcut::Layout layout;
-  layout.instance = instance.name;
-  const double height = instance.strip_height.value_or(1000.0);
-  double column_x = 0, column_width = 0, y = 0;
-  for (const auto& item : instance.items) {
-    lastcut::Placement placement;
-    placement.item = item.id;
-    placement.rotation_deg = item.allowed_rotations_deg.empty() ? 0.0 : item.allowed_rotations_deg.front();
-    const lastcut::Polygon2 at_origin = lastcut::placed_shape(item, placement);
-    lastcut::Point2 low = at_origin.points.front(), high = low;
-    for (const auto& point : at_origin.points) {
-      low = low.cwiseMin(point);
-      high = high.cwiseMax(point);
-    }
-    for (int copy = 0; copy < item.demand; ++copy) {
-      if (y > 0 && y + (high.y() - low.y()) > height) {
-        column_x += column_width;
-        column_width = 0;
-        y = 0;
-      }
-      placement.x = column_x - low.x();
-      placement.y = y - low.y();
-      layout.placements.push_back(placement);
-      y += high.y() - low.y();
-      column_width = std::max(column_width, high.x() - low.x());
-    }
-  }
-  layout.strip_length = column_x + column_width;
-  return layout;
-}
-#endif
 
 double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
@@ -110,12 +72,7 @@ int main(int argc, char** argv) {
       lastcut::load_machine_profile("hpgl-knife-cutter", lastcut::standard_machine_profile_dirs());
   std::printf("machine: %s, %u hardware threads; profile hpgl-knife-cutter (drag knife 0.3 mm, pen labels)\n",
               cpu_model().c_str(), std::thread::hardware_concurrency());
-#ifdef LASTCUT_BENCH_HAS_NESTER
   const std::string made_by = "lastcut's nester, time limit " + std::to_string(time_limit_s) + " s";
-#else
-  const std::string made_by = "column stacking in file order (the nester is not built)";
-  (void)time_limit_s;
-#endif
   std::printf("layouts: %s\n\n", layouts_dir.empty() ? made_by.c_str() : layouts_dir.c_str());
   std::printf("| instance | pieces | travel, layout order (mm) | travel, nearest neighbour (mm) | travel, ours (mm) | ratio ours/layout | ratio ours/NN | cut length (mm) | plan (ms) | HPGL (ms) | G-code (ms) |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
@@ -131,15 +88,10 @@ int main(int argc, char** argv) {
         instance = file.instance;
         layout = file.layout;
       } else {
-#ifdef LASTCUT_BENCH_HAS_NESTER
         instance = lastcut::read_nest_instance(path);
         lastcut::NestOptions options;
         options.time_limit_s = time_limit_s;
         layout = lastcut::nest(instance, options);
-#else
-        instance = lastcut::read_nest_instance(path);
-        layout = column_layout(instance);
-#endif
       }
       if (!save_dir.empty()) {
         std::filesystem::create_directories(save_dir);

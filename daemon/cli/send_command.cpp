@@ -3,9 +3,13 @@
 // Exit codes of `send`: 0 done, 1 failed (nothing cut, safe to retry), 3 interrupted (the
 // machine may have cut part of the job: check it; lastcut never resends on its own), 2 usage.
 #include <atomic>
+#include <charconv>
 #include <csignal>
+#include <cstdlib>
 #include <cstdio>
+#include <deque>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <unistd.h>
 
@@ -21,13 +25,82 @@ std::atomic<bool> g_cancel{false};
 
 void on_interrupt(int) { g_cancel.store(true); }
 
-struct SendOptions {
-  std::string file, port, modbus, protocol, flow = "none", handshake, map, job_id, streaming = "counting", unlock = "never";
-  int baud = 115200;
-  double timeout_s = 10;
-  std::vector<int> harmless;
-  bool no_queries = false;
+// What was typed for one option of drivers::CutterSettings (the table gives the flags).
+struct FlagInput {
+  const drivers::CutterOption* option = nullptr;
+  CLI::Option* cli = nullptr;
+  std::string text;                // one value
+  std::vector<std::string> texts;  // list options: repeated or comma-separated
+  bool on = false;                 // switches
 };
+
+struct SendOptions {
+  std::string file, job_id;
+  std::deque<FlagInput> flags;  // a deque: CLI11 keeps pointers into the entries
+};
+
+std::string flag_name(const drivers::CutterOption& option) {
+  const std::string_view flag = option.flag;
+  return std::string(flag.substr(0, flag.find(',')));
+}
+
+// The typed value of one flag; nothing, with `problem` set, when the text is not of its kind.
+std::optional<drivers::OptionValue> flag_value(const FlagInput& input, std::string& problem) {
+  const auto whole = [](const std::string& text) -> std::optional<long long> {
+    long long v = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
+    return v;
+  };
+  using drivers::OptionKind;
+  switch (input.option->kind) {
+    case OptionKind::Text:
+    case OptionKind::Choice: return input.text;
+    case OptionKind::Switch: return input.on;
+    case OptionKind::Texts: return input.texts;
+    case OptionKind::Integer:
+      if (auto v = whole(input.text)) return *v;
+      problem = "must be a whole number";
+      return std::nullopt;
+    case OptionKind::Number: {
+      char* end = nullptr;
+      const double v = std::strtod(input.text.c_str(), &end);
+      if (!input.text.empty() && end == input.text.c_str() + input.text.size()) return v;
+      problem = "must be a number";
+      return std::nullopt;
+    }
+    case OptionKind::Integers: {
+      std::vector<long long> values;
+      for (const std::string& text : input.texts) {
+        auto v = whole(text);
+        if (!v) {
+          problem = "each entry must be a whole number";
+          return std::nullopt;
+        }
+        values.push_back(*v);
+      }
+      return values;
+    }
+  }
+  return std::nullopt;
+}
+
+// The settings from the flags given (defaults for the others); "" or one line naming the flag.
+std::string settings_from_flags(const SendOptions& options, drivers::CutterSettings& settings) {
+  for (const FlagInput& input : options.flags) {
+    if (input.cli->count() == 0) continue;
+    std::string problem;
+    if (auto value = flag_value(input, problem)) problem = drivers::set_cutter_option(settings, *input.option, *value);
+    if (!problem.empty()) return flag_name(*input.option) + ": " + problem;
+  }
+  if (!settings.modbus.empty() && settings.protocol.empty()) settings.protocol = "modbus";
+  if (settings.port.empty() == settings.modbus.empty()) return "give --port (with --protocol) or --modbus";
+  if (!settings.port.empty() && (settings.protocol.empty() || settings.protocol == "modbus")) {
+    return "--port needs --protocol grbl or hpgl";
+  }
+  if (!settings.modbus.empty() && settings.protocol != "modbus") return "--modbus is for --protocol modbus";
+  return "";
+}
 
 std::string bar(const drivers::SendProgress& p) {
   const double fraction = p.bytes_total == 0 ? 0.0 : static_cast<double>(p.bytes_sent) / static_cast<double>(p.bytes_total);
@@ -42,7 +115,7 @@ std::string bar(const drivers::SendProgress& p) {
   return text;
 }
 
-int run_send(const SendOptions& options) {
+int run_send(const SendOptions& options, const drivers::CutterSettings& settings) {
   std::ifstream in(options.file, std::ios::binary);
   if (!in) {
     std::fprintf(stderr, "lastcut: error: cannot read %s\n", options.file.c_str());
@@ -52,21 +125,9 @@ int run_send(const SendOptions& options) {
   buffer << in.rdbuf();
   const std::string program = buffer.str();
 
-  drivers::CutterConfig config;
-  config.name = options.modbus.empty() ? options.port : options.modbus;
-  config.protocol = options.modbus.empty() ? options.protocol : "modbus";
-  config.port = options.port;
-  config.modbus = options.modbus;
-  config.baud = options.baud;
-  config.flow = options.flow;
-  config.timeout_s = options.timeout_s;
-  config.harmless_grbl_errors = options.harmless;
-  config.grbl_streaming = options.streaming;
-  config.grbl_unlock = options.unlock;
-  config.hpgl_handshake = options.handshake;
-  config.hpgl_status_queries = !options.no_queries;
-  config.modbus_map = options.map;
-  config.job_id = options.job_id.empty() ? options.file.substr(options.file.find_last_of('/') + 1).substr(0, 16) : options.job_id;
+  const std::string file_name = options.file.substr(options.file.find_last_of('/') + 1);
+  const drivers::CutterConfig config{settings, settings.modbus.empty() ? settings.port : settings.modbus,
+                                     options.job_id.empty() ? file_name.substr(0, 16) : options.job_id};
 
   const bool terminal = ::isatty(STDERR_FILENO) != 0;
   double last_plain_fraction = -1;
@@ -126,32 +187,38 @@ void add_send_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<SendOptions>();
   auto* send = app.add_subcommand("send", "send a cut file to a cutter and wait until it has finished");
   send->add_option("file", options->file, "HPGL or G-code file (any file for Modbus cutters)")->required()->check(CLI::ExistingFile);
-  auto* port = send->add_option("--port", options->port, "serial port, usb:VID:PID[:SERIAL], /dev/serial/by-id/..., tcp://HOST:PORT or a pty");
-  auto* modbus = send->add_option("--modbus", options->modbus, "PLC-driven cutter: tcp://HOST:PORT or rtu:DEVICE[,BAUD[,8N1]]");
-  port->excludes(modbus);
-  send->add_option("--protocol", options->protocol, "grbl or hpgl (with --port)")->check(CLI::IsMember({"grbl", "hpgl"}));
-  send->add_option("--baud", options->baud, "serial speed")->capture_default_str();
-  send->add_option("--flow", options->flow, "flow control")->check(CLI::IsMember({"none", "xonxoff", "rtscts"}))->capture_default_str();
-  send->add_option("--timeout", options->timeout_s, "seconds of silence before the job is declared lost")->capture_default_str();
-  send->add_option("--harmless-errors", options->harmless, "grbl error:N codes that do not stop the job")->delimiter(',');
-  send->add_option("--streaming", options->streaming, "grbl: counting or send-wait")->check(CLI::IsMember({"counting", "send-wait"}));
-  send->add_option("--unlock", options->unlock, "grbl in alarm: never (refuse) or unlock ($X)")->check(CLI::IsMember({"never", "unlock"}));
-  send->add_option("--handshake", options->handshake, "hpgl: escb for the ESC.B buffer handshake")->check(CLI::IsMember({"escb"}));
-  send->add_flag("--no-status-queries", options->no_queries, "hpgl: the device never answers ESC.O/ESC.E/OA");
-  send->add_option("--map", options->map, "Modbus register map TOML (default: built-in map)")->check(CLI::ExistingFile);
+  const drivers::CutterSettings defaults;
+  for (const drivers::CutterOption& option : drivers::cutter_options()) {
+    FlagInput& input = options->flags.emplace_back();
+    input.option = &option;
+    const std::string flag(option.flag), help(option.help);
+    switch (option.kind) {
+      case drivers::OptionKind::Switch: input.cli = send->add_flag(flag, input.on, help); break;
+      case drivers::OptionKind::Integers:
+      case drivers::OptionKind::Texts: input.cli = send->add_option(flag, input.texts, help)->delimiter(','); break;
+      default: input.cli = send->add_option(flag, input.text, help); break;
+    }
+    if (option.kind == drivers::OptionKind::Integer || option.kind == drivers::OptionKind::Integers) input.cli->type_name("INT");
+    if (option.kind == drivers::OptionKind::Number) input.cli->type_name("NUMBER");
+    if (const std::string shown = drivers::option_text(defaults, option); !shown.empty()) input.cli->default_str(shown);
+  }
+  const auto cli_option = [&](const std::string& key) {
+    for (const FlagInput& input : options->flags) {
+      if (input.option->key == key) return input.cli;
+    }
+    return static_cast<CLI::Option*>(nullptr);
+  };
+  cli_option("port")->excludes(cli_option("modbus"));
+  cli_option("modbus_map")->check(CLI::ExistingFile);
   send->add_option("--job-id", options->job_id, "job identity written to the PLC (default: file name)");
   send->callback([options, &exit_code] {
-    if (options->port.empty() == options->modbus.empty()) {
-      std::fprintf(stderr, "lastcut: error: give --port (with --protocol) or --modbus\n");
+    drivers::CutterSettings settings;
+    if (std::string problem = settings_from_flags(*options, settings); !problem.empty()) {
+      std::fprintf(stderr, "lastcut: error: %s\n", problem.c_str());
       exit_code = 2;
       return;
     }
-    if (!options->port.empty() && options->protocol.empty()) {
-      std::fprintf(stderr, "lastcut: error: --port needs --protocol grbl or hpgl\n");
-      exit_code = 2;
-      return;
-    }
-    exit_code = run_send(*options);
+    exit_code = run_send(*options, settings);
   });
 
   auto* ports = app.add_subcommand("ports", "list serial ports with their USB ids (for stable port names in the configuration)");

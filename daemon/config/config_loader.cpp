@@ -3,6 +3,7 @@
 // with its path and line (a typo must not silently fall back to a default).
 #include "daemon/config/config_loader.hpp"
 
+#include <optional>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -86,60 +87,6 @@ class TableReader {
       return;
     }
     value = static_cast<int>(v);
-  }
-
-  void flag(const std::string& key, bool& value) {
-    const toml::node* found = node(key);
-    if (!found) return;
-    if (!found->is_boolean()) {
-      errors_.push_back(where(key_path(key), *found) + ": must be true or false");
-      return;
-    }
-    value = *found->value<bool>();
-  }
-
-  // A list of whole numbers each within min_value .. max_value, e.g. [20, 22].
-  void integers(const std::string& key, std::vector<int>& values, int min_value, int max_value) {
-    const toml::node* found = node(key);
-    if (!found) return;
-    const toml::array* list = found->as_array();
-    if (!list) {
-      errors_.push_back(where(key_path(key), *found) + ": must be a list of whole numbers, e.g. [20, 22]");
-      return;
-    }
-    std::vector<int> read;
-    for (const toml::node& item : *list) {
-      const auto v = item.value<int64_t>();
-      if (!item.is_integer() || *v < min_value || *v > max_value) {
-        std::ostringstream out;
-        out << where(key_path(key), item) << ": each entry must be a whole number in " << min_value << " .. "
-            << max_value;
-        errors_.push_back(out.str());
-        return;
-      }
-      read.push_back(static_cast<int>(*v));
-    }
-    values = std::move(read);
-  }
-
-  // A list of texts in quotes, e.g. ["$110=5000", "$111=5000"].
-  void texts(const std::string& key, std::vector<std::string>& values) {
-    const toml::node* found = node(key);
-    if (!found) return;
-    const toml::array* list = found->as_array();
-    if (!list) {
-      errors_.push_back(where(key_path(key), *found) + ": must be a list of texts in quotes");
-      return;
-    }
-    std::vector<std::string> read;
-    for (const toml::node& item : *list) {
-      if (!item.is_string()) {
-        errors_.push_back(where(key_path(key), item) + ": each entry must be a text in quotes");
-        return;
-      }
-      read.push_back(*item.value<std::string>());
-    }
-    values = std::move(read);
   }
 
   const toml::table* subtable(const std::string& key, bool required) {
@@ -261,6 +208,53 @@ void read_materials(TableReader& root, DaemonConfig& config, std::vector<std::st
   if (config.materials.empty()) errors.push_back("materials: at least one material is needed");
 }
 
+// The TOML value of a cutter option, converted to the option's kind; type mistakes are reported
+// here, value mistakes by drivers::set_cutter_option (the same words `lastcut send` uses).
+std::optional<drivers::OptionValue> option_value(const drivers::CutterOption& option, const toml::node& node,
+                                                 const std::string& key_path, std::vector<std::string>& errors) {
+  using drivers::OptionKind;
+  const auto refuse = [&](const toml::node& at, const std::string& why) {
+    errors.push_back(where(key_path, at) + ": " + why);
+    return std::nullopt;
+  };
+  switch (option.kind) {
+    case OptionKind::Text:
+    case OptionKind::Choice:
+      if (!node.is_string()) return refuse(node, "must be a text in quotes");
+      return *node.value<std::string>();
+    case OptionKind::Integer:
+      if (!node.is_integer()) return refuse(node, "must be a whole number");
+      return static_cast<long long>(*node.value<int64_t>());
+    case OptionKind::Number:
+      if (!node.is_number()) return refuse(node, "must be a number");
+      return *node.value<double>();
+    case OptionKind::Switch:
+      if (!node.is_boolean()) return refuse(node, "must be true or false");
+      return *node.value<bool>();
+    case OptionKind::Integers: {
+      const toml::array* list = node.as_array();
+      if (!list) return refuse(node, "must be a list of whole numbers, e.g. [20, 22]");
+      std::vector<long long> values;
+      for (const toml::node& item : *list) {
+        if (!item.is_integer()) return refuse(item, "each entry must be a whole number");
+        values.push_back(*item.value<int64_t>());
+      }
+      return values;
+    }
+    case OptionKind::Texts: {
+      const toml::array* list = node.as_array();
+      if (!list) return refuse(node, "must be a list of texts in quotes");
+      std::vector<std::string> values;
+      for (const toml::node& item : *list) {
+        if (!item.is_string()) return refuse(item, "each entry must be a text in quotes");
+        values.push_back(*item.value<std::string>());
+      }
+      return values;
+    }
+  }
+  return std::nullopt;
+}
+
 void read_cutters(TableReader& root, const std::filesystem::path& base, DaemonConfig& config,
                   std::vector<std::string>& errors) {
   const toml::table* table = root.subtable("cutters", true);
@@ -274,60 +268,36 @@ void read_cutters(TableReader& root, const std::filesystem::path& base, DaemonCo
     }
     TableReader reader(*value.as_table(), path, errors);
     CutterSection cutter;
-    reader.text("protocol", cutter.protocol, true);
-    reader.text("port", cutter.port, cutter.protocol != "modbus");
-    reader.text("modbus", cutter.modbus, cutter.protocol == "modbus");
-    reader.integer("baud", cutter.baud, 300, 4000000);
-    reader.text("parity", cutter.parity);
-    reader.text("flow", cutter.flow);
-    reader.number("timeout_s", cutter.timeout_s, 0.1, 3600);
-    reader.text("grbl_unlock", cutter.grbl_unlock);
-    reader.integer("data_bits", cutter.data_bits, 5, 8);
-    reader.integer("stop_bits", cutter.stop_bits, 1, 2);
-    reader.integers("harmless_grbl_errors", cutter.harmless_grbl_errors, 1, 255);
-    reader.texts("grbl_settings", cutter.grbl_settings);
-    reader.text("hpgl_handshake", cutter.hpgl_handshake);
-    reader.flag("hpgl_status_queries", cutter.hpgl_status_queries);
-    reader.text("modbus_map", cutter.modbus_map);
-    reader.integer("modbus_unit_id", cutter.modbus_unit_id, 0, 247);
+    drivers::CutterSettings& link = cutter.link;
+    for (const drivers::CutterOption& option : drivers::cutter_options()) {
+      const std::string option_key(option.key);
+      const toml::node* found = reader.node(option_key);
+      if (!found) continue;
+      if (auto read = option_value(option, *found, reader.key_path(option_key), errors)) {
+        if (std::string problem = drivers::set_cutter_option(link, option, *read); !problem.empty()) {
+          errors.push_back(where(reader.key_path(option_key), *found) + ": " + problem);
+        }
+      }
+    }
     reader.text("machine", cutter.machine, true);
     reader.number("retry_interval_s", cutter.retry_interval_s, 0.1, 86400);
     reader.reject_unknown();
-    if (!cutter.protocol.empty() && cutter.protocol != "grbl" && cutter.protocol != "hpgl" &&
-        cutter.protocol != "modbus") {
-      errors.push_back(path + ".protocol: \"" + cutter.protocol + "\" is not one of grbl, hpgl, modbus");
+    if (link.protocol.empty()) errors.push_back(path + ".protocol: missing (required)");
+    if (link.protocol == "modbus" && link.modbus.empty()) errors.push_back(path + ".modbus: missing (required)");
+    if (!link.protocol.empty() && link.protocol != "modbus" && link.port.empty()) {
+      errors.push_back(path + ".port: missing (required)");
     }
-    if (cutter.parity != "N" && cutter.parity != "E" && cutter.parity != "O") {
-      errors.push_back(path + ".parity: \"" + cutter.parity + "\" is not one of N, E, O");
-    }
-    if (cutter.flow != "none" && cutter.flow != "xonxoff" && cutter.flow != "rtscts") {
-      errors.push_back(path + ".flow: \"" + cutter.flow + "\" is not one of none, xonxoff, rtscts");
-    }
-    if (cutter.grbl_unlock != "never" && cutter.grbl_unlock != "unlock") {
-      errors.push_back(path + ".grbl_unlock: \"" + cutter.grbl_unlock + "\" is not one of never, unlock");
-    }
-    if (!cutter.hpgl_handshake.empty() && cutter.hpgl_handshake != "escb") {
-      errors.push_back(path + ".hpgl_handshake: \"" + cutter.hpgl_handshake + "\" is not one of \"\" (follow flow), escb");
-    }
-    for (const std::string& setting : cutter.grbl_settings) {
-      // One "$N=value" line each: anything else would be streamed to the machine as a command.
-      const auto equals = setting.find('=');
-      if (setting.size() < 4 || setting[0] != '$' || equals == std::string::npos || equals < 2 ||
-          setting.find_first_not_of("0123456789", 1) != equals || equals + 1 == setting.size()) {
-        errors.push_back(path + ".grbl_settings: \"" + setting + "\" is not a grbl setting line like \"$110=5000\"");
-      }
-    }
-    if (!cutter.modbus_map.empty()) cutter.modbus_map = resolve(base, cutter.modbus_map).string();
-    for (const std::string* address : {&cutter.port, &cutter.modbus}) {
+    if (!link.modbus_map.empty()) link.modbus_map = resolve(base, link.modbus_map).string();
+    for (const std::string* address : {&link.port, &link.modbus}) {
       const bool tcp = address->rfind("tcp://", 0) == 0;
       if (tcp && address->rfind("tcp://127.0.0.1:", 0) != 0 && address->rfind("tcp://localhost:", 0) != 0) {
         errors.push_back(path + ": \"" + *address + "\": network cutters are reached through a gateway on 127.0.0.1");
       }
     }
     // A relative device path (a simulator's pty link) is relative to this file, like the folders.
-    const bool device_path = !cutter.port.empty() && cutter.port.find("://") == std::string::npos &&
-                             cutter.port.rfind("usb:", 0) != 0;
-    if (device_path) cutter.port = resolve(base, cutter.port).string();
+    const bool device_path = !link.port.empty() && link.port.find("://") == std::string::npos &&
+                             link.port.rfind("usb:", 0) != 0;
+    if (device_path) link.port = resolve(base, link.port).string();
     config.cutters[name] = cutter;
   }
   if (config.cutters.empty()) errors.push_back("cutters: at least one cutter is needed");

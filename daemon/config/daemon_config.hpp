@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "drivers/cutter_settings.hpp"
+
 namespace lastcut::daemon {
 
 enum class WatchMode { Auto, Inotify, Poll };
@@ -52,24 +54,10 @@ struct MaterialConfig {
   int rotation_step_deg = 90;  // allowed rotations: multiples of this (360: none)
 };
 
-// One cutter: how to reach it (the keys of drivers/cutter.hpp CutterConfig) and its profile.
+// One cutter: how to reach it and talk to it (the driver's own settings type, read key for key
+// from the table) and what the daemon adds around it.
 struct CutterSection {
-  std::string protocol;          // grbl | hpgl | modbus
-  std::string port;              // /dev/ttyUSB0, /dev/serial/by-id/..., a pty path, tcp://127.0.0.1:PORT
-  std::string modbus;            // modbus only: tcp://127.0.0.1:1502 or rtu:/dev/ttyUSB1
-  int baud = 115200;
-  std::string parity = "N";      // N | E | O
-  std::string flow = "none";     // none | xonxoff | rtscts
-  double timeout_s = 10;         // longest silence from the device before the job is declared lost
-  int data_bits = 8;             // 5 .. 8
-  int stop_bits = 1;             // 1 | 2
-  std::string grbl_unlock = "never";  // never | unlock
-  std::vector<int> harmless_grbl_errors;  // grbl error:N codes that do not stop the job
-  std::vector<std::string> grbl_settings; // "$110=5000" lines sent before each job
-  std::string hpgl_handshake;    // "" = follow flow | "escb" = ESC.B buffer-space handshake
-  bool hpgl_status_queries = true;  // the plotter answers ESC.O / ESC.E / OA
-  std::string modbus_map;        // register map TOML (relative to this file); empty = built-in default
-  int modbus_unit_id = 1;        // 0 .. 247
+  drivers::CutterSettings link;
   std::string machine;           // machine profile name (paths.machines/<machine>.toml) or path
   double retry_interval_s = 30;  // cutter unreachable: wait this long before trying again
 };

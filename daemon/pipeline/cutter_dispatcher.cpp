@@ -11,29 +11,6 @@
 namespace lastcut::daemon {
 namespace {
 
-drivers::CutterConfig driver_config(const std::string& name, const CutterSection& section, const std::string& job) {
-  drivers::CutterConfig config;
-  config.name = name;
-  config.protocol = section.protocol;
-  config.port = section.port;
-  config.modbus = section.modbus;
-  config.baud = section.baud;
-  config.parity = section.parity.empty() ? 'N' : section.parity[0];
-  config.flow = section.flow;
-  config.timeout_s = section.timeout_s;
-  config.data_bits = section.data_bits;
-  config.stop_bits = section.stop_bits;
-  config.grbl_unlock = section.grbl_unlock;
-  config.harmless_grbl_errors = section.harmless_grbl_errors;
-  config.grbl_settings = section.grbl_settings;
-  config.hpgl_handshake = section.hpgl_handshake;
-  config.hpgl_status_queries = section.hpgl_status_queries;
-  config.modbus_map = section.modbus_map;
-  config.modbus_unit_id = section.modbus_unit_id;
-  config.job_id = job.substr(0, 16);
-  return config;
-}
-
 // Marks the batch and its jobs with `stage` on disk; false when the batch file cannot be written
 // (the failure is logged and noted in its jobs' reports).
 bool mark_batch(const Spool& spool, BatchState& batch, BatchStage stage, const std::string& note) {
@@ -128,7 +105,7 @@ bool CutterDispatcher::cut_batch(const std::string& batch_id) {
   // Finished or taken back meanwhile; a batch.json without a known stage is held by recovery.
   if (!batch || batch->stage != BatchStage::Queued || !batch->stage_problem.empty()) return true;
   const CutterSection section = settings_();
-  const drivers::CutterConfig config = driver_config(name_, section, batch_id);
+  const drivers::CutterConfig config{section.link, name_, batch_id.substr(0, 16)};
 
   const drivers::ProbeResult probe = drivers::probe_cutter(config);
   if (!probe.ready) {
@@ -165,7 +142,7 @@ bool CutterDispatcher::cut_batch(const std::string& batch_id) {
   spdlog::info("cutter {}: cutting batch {} ({} jobs, {} pieces)", name_, batch_id, batch->job_ids.size(),
                batch->piece_count);
   const std::string worker = "cutter " + name_;
-  monitor_.begin(worker, "batch " + batch_id, section.timeout_s + 30);
+  monitor_.begin(worker, "batch " + batch_id, section.link.timeout_s + 30);
   const auto progress = [&](const drivers::SendProgress& step) {
     monitor_.beat(worker);
     if (step.bytes_total > 0) {

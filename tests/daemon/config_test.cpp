@@ -4,6 +4,7 @@
 
 #include "daemon/config/config_loader.hpp"
 #include "daemon_harness.hpp"
+#include "drivers/cutter.hpp"
 
 namespace lastcut::daemon {
 namespace {
@@ -49,7 +50,7 @@ TEST(DaemonConfig, DemoConfigurationIsValidWithPathsFromItsFolder) {
   const auto result = load_daemon_config(kSource / "config/demo/lastcut.toml");
   ASSERT_TRUE(result.config) << result.error;
   EXPECT_EQ(result.config->paths.watch_dir, (kSource / "demo/incoming").lexically_normal());
-  EXPECT_EQ(result.config->cutters.at("cutter-1").port, (kSource / "demo/cutter-1.tty").lexically_normal().string());
+  EXPECT_EQ(result.config->cutters.at("cutter-1").link.port, (kSource / "demo/cutter-1.tty").lexically_normal().string());
 }
 
 TEST(DaemonConfig, RelativePathsAreTakenFromTheFilesFolder) {
@@ -100,15 +101,15 @@ TEST(DaemonConfig, DriverSettingsAreReadAndChecked) {
                                   "hpgl_status_queries = false\nmodbus_map = \"map.toml\"\nmodbus_unit_id = 3\n"));
   ASSERT_TRUE(result.config) << result.error;
   const CutterSection& cutter = result.config->cutters.at("a");
-  EXPECT_EQ(cutter.data_bits, 7);
-  EXPECT_EQ(cutter.stop_bits, 2);
-  EXPECT_EQ(cutter.harmless_grbl_errors, (std::vector<int>{20, 22}));
-  EXPECT_EQ(cutter.grbl_settings, (std::vector<std::string>{"$110=5000", "$32=0"}));
-  EXPECT_EQ(cutter.hpgl_handshake, "escb");
-  EXPECT_FALSE(cutter.hpgl_status_queries);
-  EXPECT_EQ(std::filesystem::path(cutter.modbus_map).filename(), "map.toml");
-  EXPECT_TRUE(std::filesystem::path(cutter.modbus_map).is_absolute()) << "taken from the file's folder";
-  EXPECT_EQ(cutter.modbus_unit_id, 3);
+  EXPECT_EQ(cutter.link.data_bits, 7);
+  EXPECT_EQ(cutter.link.stop_bits, 2);
+  EXPECT_EQ(cutter.link.harmless_grbl_errors, (std::vector<int>{20, 22}));
+  EXPECT_EQ(cutter.link.grbl_settings, (std::vector<std::string>{"$110=5000", "$32=0"}));
+  EXPECT_EQ(cutter.link.hpgl_handshake, "escb");
+  EXPECT_FALSE(cutter.link.hpgl_status_queries);
+  EXPECT_EQ(std::filesystem::path(cutter.link.modbus_map).filename(), "map.toml");
+  EXPECT_TRUE(std::filesystem::path(cutter.link.modbus_map).is_absolute()) << "taken from the file's folder";
+  EXPECT_EQ(cutter.link.modbus_unit_id, 3);
 
   result = load_text(minimal("stop_bits = 3\n"));
   ASSERT_FALSE(result.config);
@@ -125,6 +126,46 @@ TEST(DaemonConfig, DriverSettingsAreReadAndChecked) {
   result = load_text(minimal("hpgl_status_queries = \"yes\"\n"));
   ASSERT_FALSE(result.config);
   EXPECT_NE(result.error.find("must be true or false"), std::string::npos) << result.error;
+}
+
+TEST(DaemonConfig, GrblStreamingKeysReachTheDriver) {
+  auto result = load_text(minimal("grbl_streaming = \"send-wait\"\ngrbl_rx_buffer_bytes = 1024\nstatus_poll_s = 0.5\n"
+                                  "parity = \"E\"\n"));
+  ASSERT_TRUE(result.config) << result.error;
+  // What the dispatcher hands to the driver: the section's settings plus the job's name and id.
+  const drivers::CutterConfig driver{result.config->cutters.at("a").link, "a", "B1"};
+  EXPECT_EQ(driver.grbl_streaming, "send-wait");
+  EXPECT_EQ(driver.grbl_rx_buffer_bytes, 1024);
+  EXPECT_EQ(driver.status_poll_s, 0.5);
+  EXPECT_EQ(driver.parity, 'E');
+
+  result = load_text(minimal("grbl_streaming = \"fast\"\n"));
+  ASSERT_FALSE(result.config);
+  EXPECT_NE(result.error.find("cutters.a.grbl_streaming (line 16): \"fast\" is not one of counting, send-wait"),
+            std::string::npos)
+      << result.error;
+  result = load_text(minimal("grbl_rx_buffer_bytes = -1\n"));
+  ASSERT_FALSE(result.config);
+  EXPECT_NE(result.error.find("cutters.a.grbl_rx_buffer_bytes (line 16): -1 is outside 0 .. 65536"), std::string::npos)
+      << result.error;
+  result = load_text(minimal("status_poll_s = 0\n"));
+  ASSERT_FALSE(result.config);
+  EXPECT_NE(result.error.find("cutters.a.status_poll_s (line 16): 0 is outside 0.01 .. 60"), std::string::npos)
+      << result.error;
+  result = load_text(minimal("parity = \"X\"\n"));
+  EXPECT_NE(result.error.find("cutters.a.parity (line 16): \"X\" is not one of N, E, O"), std::string::npos)
+      << result.error;
+}
+
+TEST(DaemonConfig, ShippedExampleListsEveryCutterKey) {
+  // config/lastcut.toml documents every key; the option table is what the reader accepts.
+  const std::string text = testing::read_text(kSource / "config/lastcut.toml");
+  const std::string guide = testing::read_text(kSource / "docs/daemon.md");
+  for (const drivers::CutterOption& option : drivers::cutter_options()) {
+    const std::string key(option.key);
+    EXPECT_NE(text.find("\n" + key + " = "), std::string::npos) << key << " missing from config/lastcut.toml";
+    EXPECT_NE(guide.find("`" + key + "`"), std::string::npos) << key << " missing from docs/daemon.md";
+  }
 }
 
 TEST(DaemonConfig, OnlyLoopbackNetworkCuttersAreAccepted) {
