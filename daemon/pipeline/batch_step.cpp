@@ -39,10 +39,10 @@ std::vector<std::string> program_notes(const std::string& batch_id, const std::s
 
 }  // namespace
 
-BatchOutcome build_batch(const std::vector<BatchJobInput>& jobs, const MaterialConfig& material,
-                         const CutterSection& cutter, const std::filesystem::path& machines_dir,
-                         double nest_time_s, const std::filesystem::path& batch_dir) {
-  BatchOutcome outcome;
+Result<BatchMade> build_batch(const std::vector<BatchJobInput>& jobs, const MaterialConfig& material,
+                              const CutterSection& cutter, const std::filesystem::path& machines_dir,
+                              double nest_time_s, const std::filesystem::path& batch_dir) {
+  BatchMade outcome;
   try {
     std::vector<std::filesystem::path> search = {machines_dir};
     for (const auto& dir : standard_machine_profile_dirs()) search.push_back(dir);
@@ -88,20 +88,17 @@ BatchOutcome build_batch(const std::vector<BatchJobInput>& jobs, const MaterialC
       }
       if (Status written = write_file_durably(batch_dir / kLayoutFile, layout_to_json(layout, instance).dump(1));
           !written) {
-        outcome.error = written.error();
-        return outcome;
+        return written;
       }
       CutFileRequest request;
       request.notes = program_notes(batch_dir.filename().string(), active);
       const CutFile cut = make_cut_file(layout, instance, profile, request);
       outcome.cut_file = "cut" + cut_file_extension(cut.format);
       if (Status written = write_file_durably(batch_dir / outcome.cut_file, cut.text); !written) {
-        outcome.error = written.error();
-        return outcome;
+        return written;
       }
       if (Status written = write_file_durably(batch_dir / kPreviewFile, write_svg(cut.program)); !written) {
-        outcome.error = written.error();
-        return outcome;
+        return written;
       }
       outcome.utilisation = layout.utilisation;
       outcome.piece_count = static_cast<int>(layout.placements.size());
@@ -112,9 +109,8 @@ BatchOutcome build_batch(const std::vector<BatchJobInput>& jobs, const MaterialC
       return outcome;
     }
   } catch (const EngineError& error) {
-    outcome.error = error.what();
+    return Status::failure(error.what());
   }
-  return outcome;
 }
 
 }  // namespace lastcut::daemon

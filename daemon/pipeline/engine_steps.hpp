@@ -18,6 +18,7 @@
 
 #include "daemon/config/daemon_config.hpp"
 #include "daemon/spool/job_ticket.hpp"
+#include "engine/core/status.hpp"
 
 namespace lastcut::daemon {
 
@@ -28,36 +29,35 @@ inline constexpr const char* kReportFile = "report.json";
 inline constexpr const char* kPreviewFile = "preview.svg";
 inline constexpr const char* kLayoutFile = "layout.json";
 
-struct MoldsOutcome {
-  std::string error;          // one line in an operator's words; empty on success
+struct MoldsMade {
   int piece_count = 0;        // molds made (before quantity)
   nlohmann::json measures;    // the engine's scan report, as written to molds/report.json
 };
 
 // Computes the molds of the scan into job_dir/molds/ and its nest items into job_dir/items.json:
 // `quantity` copies of each half, labelled for the cutting room, with a mirrored twin per half
-// when the ticket asks for a pair.
-MoldsOutcome compute_molds(const std::filesystem::path& scan, const std::filesystem::path& job_dir,
-                           const JobTicket& ticket, double default_allowance_mm);
+// when the ticket asks for a pair. A failure is one line in an operator's words.
+Result<MoldsMade> compute_molds(const std::filesystem::path& scan, const std::filesystem::path& job_dir,
+                                const JobTicket& ticket, double default_allowance_mm);
 
 struct BatchJobInput {
   std::string job_id;
   std::filesystem::path job_dir;  // holds items.json
 };
 
-struct BatchOutcome {
-  std::string error;                           // the whole batch failed (e.g. no machine profile)
+struct BatchMade {
   std::map<std::string, std::string> rejected;  // job id -> why its molds could not be placed
-  std::string cut_file;                        // file name in batch_dir
+  std::string cut_file;                        // file name in batch_dir; empty when every job was rejected
   double utilisation = 0;                      // 0..1
   int piece_count = 0;                         // pieces placed
   nlohmann::json measures;                     // nesting and toolpath figures
 };
 
 // Nests the pieces of `jobs` on `material`, writes layout.json, preview.svg and the cut file
-// for `cutter` into batch_dir.
-BatchOutcome build_batch(const std::vector<BatchJobInput>& jobs, const MaterialConfig& material,
-                         const CutterSection& cutter, const std::filesystem::path& machines_dir,
-                         double nest_time_s, const std::filesystem::path& batch_dir);
+// for `cutter` into batch_dir. Fails as a whole only when no cut file can be made for any job
+// (no machine profile, a file not written); a job whose pieces cannot be placed is rejected alone.
+Result<BatchMade> build_batch(const std::vector<BatchJobInput>& jobs, const MaterialConfig& material,
+                              const CutterSection& cutter, const std::filesystem::path& machines_dir,
+                              double nest_time_s, const std::filesystem::path& batch_dir);
 
 }  // namespace lastcut::daemon

@@ -38,35 +38,30 @@ std::vector<NestItem> job_items(const ScanResult& result, const JobTicket& ticke
 
 }  // namespace
 
-MoldsOutcome compute_molds(const std::filesystem::path& scan, const std::filesystem::path& job_dir,
-                           const JobTicket& ticket, double default_allowance_mm) {
-  MoldsOutcome outcome;
+Result<MoldsMade> compute_molds(const std::filesystem::path& scan, const std::filesystem::path& job_dir,
+                                const JobTicket& ticket, double default_allowance_mm) {
   try {
     ScanOptions options;
     options.mold.allowance_mm = ticket.allowance_mm.value_or(default_allowance_mm);
     const ScanResult result = scan_to_molds(scan, options);
-    if (result.segments.empty()) {
-      outcome.error = "no mold could be made from the scan";
-      return outcome;
-    }
-    outcome.measures = write_scan_outputs(result, job_dir / kMoldsFolder);
+    if (result.segments.empty()) return Status::failure("no mold could be made from the scan");
+    MoldsMade made;
+    made.measures = write_scan_outputs(result, job_dir / kMoldsFolder);
     if ((ticket.side == "left" || ticket.side == "right") && result.side &&
         ticket.side != std::string(to_string(*result.side))) {
-      outcome.measures["warning"] = "the sidecar says " + ticket.side + ", the scan looks like a " +
-                                    std::string(to_string(*result.side)) + " last";
+      made.measures["warning"] = "the sidecar says " + ticket.side + ", the scan looks like a " +
+                                 std::string(to_string(*result.side)) + " last";
     }
     const std::vector<NestItem> items = job_items(result, ticket, scan.filename().string());
-    if (Status written = write_file_durably(job_dir / kItemsFile, items_to_json(items).dump() + "\n"); !written) {
-      outcome.error = "molds made but not saved: " + written.error();
-      return outcome;
-    }
-    outcome.piece_count = static_cast<int>(result.segments.size());
+    if (Status written = write_file_durably(job_dir / kItemsFile, items_to_json(items).dump() + "\n"); !written)
+      return written.with_context("molds made but not saved: ");
+    made.piece_count = static_cast<int>(result.segments.size());
+    return made;
   } catch (const EngineError& error) {
-    outcome.error = error.what();
+    return Status::failure(error.what());
   } catch (const std::bad_alloc&) {
-    outcome.error = "the scan is too large for this machine's memory";
+    return Status::failure("the scan is too large for this machine's memory");
   }
-  return outcome;
 }
 
 }  // namespace lastcut::daemon

@@ -48,36 +48,36 @@ void Pipeline::compute_job(const std::string& job_id, const std::string& worker)
   const auto job_dir = spool_->job_dir(JobFolder::Work, job_id);
   const auto start = std::chrono::steady_clock::now();
   monitor_.begin(worker, "molds of job " + job_id, settings->jobs.compute_timeout_s);
-  const MoldsOutcome outcome =
+  const Result<MoldsMade> outcome =
       compute_molds(job_dir / state->scan_name, job_dir, state->ticket, settings->jobs.default_allowance_mm);
   monitor_.end(worker);
   const double took_s = seconds_since(start);
-  if (!outcome.error.empty()) {
-    fail_job(*spool_, *state, outcome.error);
+  if (!outcome) {
+    fail_job(*spool_, *state, outcome.error());
     return;
   }
-  state->piece_count = outcome.piece_count * state->ticket.quantity;
+  state->piece_count = outcome->piece_count * state->ticket.quantity;
   const Status reported = update_job_report(*spool_, JobFolder::Work, job_id,
                     {{"job", job_id},
                      {"scan", state->scan_name},
                      {"sha256", state->sha256},
                      {"ticket", ticket_to_json(state->ticket)},
-                     {"molds", outcome.piece_count},
+                     {"molds", outcome->piece_count},
                      {"pieces", state->piece_count},
-                     {"measures", outcome.measures},
+                     {"measures", outcome->measures},
                      {"timings_s", {{"molds", took_s}}}});
   if (!reported) {
     fail_job(*spool_, *state, "molds made but " + reported.error());
     return;
   }
-  state->advance(JobStage::Computed, std::to_string(outcome.piece_count) + " molds");
+  state->advance(JobStage::Computed, std::to_string(outcome->piece_count) + " molds");
   if (Status written = spool_->write_state(JobFolder::Work, *state); !written) {
     report_job_problem(*spool_, JobFolder::Work, *state,
                        "molds made, but the state is not written (computed again at the next start): " +
                            written.error());
     return;
   }
-  spdlog::info("{}: {} molds ready in {:.1f} s", state->label(), outcome.piece_count, took_s);
+  spdlog::info("{}: {} molds ready in {:.1f} s", state->label(), outcome->piece_count, took_s);
   std::lock_guard lock(computed_mutex_);
   computed_.push_back(job_id);
 }
@@ -97,21 +97,23 @@ void Pipeline::build_batch_task(const std::string& batch_id, const std::string& 
   const auto material = settings->materials.find(batch->material);
   const auto cutter = settings->cutters.find(batch->cutter);
   const auto start = std::chrono::steady_clock::now();
-  BatchOutcome outcome;
-  if (material == settings->materials.end()) outcome.error = "material " + batch->material + " is no longer configured";
-  else if (cutter == settings->cutters.end()) outcome.error = "cutter " + batch->cutter + " is no longer configured";
-  else {
+  const auto nest_batch = [&]() -> Result<BatchMade> {
+    if (material == settings->materials.end())
+      return Status::failure("material " + batch->material + " is no longer configured");
+    if (cutter == settings->cutters.end()) return Status::failure("cutter " + batch->cutter + " is no longer configured");
     monitor_.begin(worker, "nesting batch " + batch_id, settings->jobs.compute_timeout_s);
-    outcome = build_batch(inputs, material->second, cutter->second, settings->paths.machines_dir,
-                          settings->batch.nest_time_s, spool_->batch_dir(batch_id));
+    Result<BatchMade> made = build_batch(inputs, material->second, cutter->second, settings->paths.machines_dir,
+                                         settings->batch.nest_time_s, spool_->batch_dir(batch_id));
     monitor_.end(worker);
-  }
+    return made;
+  };
+  const Result<BatchMade> outcome = nest_batch();
   const double took_s = seconds_since(start);
   std::vector<std::string> kept;
   for (auto& [id, state] : states) {
-    if (!outcome.error.empty()) {
-      hold_job(*spool_, state, "batch " + batch_id + " could not be made: " + outcome.error);
-    } else if (auto rejected = outcome.rejected.find(id); rejected != outcome.rejected.end()) {
+    if (!outcome) {
+      hold_job(*spool_, state, "batch " + batch_id + " could not be made: " + outcome.error());
+    } else if (auto rejected = outcome->rejected.find(id); rejected != outcome->rejected.end()) {
       fail_job(*spool_, state, rejected->second);
     } else {
       kept.push_back(id);
@@ -124,9 +126,9 @@ void Pipeline::build_batch_task(const std::string& batch_id, const std::string& 
   }
   batch->job_ids = kept;
   batch->updated_at = utc_now_iso();
-  if (!outcome.error.empty() || kept.empty()) {
+  if (!outcome || kept.empty()) {
     batch->stage = BatchStage::Empty;
-    batch->reason = outcome.error.empty() ? "no job left in the batch" : outcome.error;
+    batch->reason = outcome ? "no job left in the batch" : outcome.error();
     if (Status written = spool_->write_batch(*batch); !written) {
       // Its jobs have left work/ already; recovery abandons the batch at the next start.
       spdlog::error("batch {}: {}, but batch.json not written: {}", batch_id, batch->reason, written.error());
@@ -134,9 +136,9 @@ void Pipeline::build_batch_task(const std::string& batch_id, const std::string& 
     return;
   }
   batch->stage = BatchStage::Queued;
-  batch->cut_file = outcome.cut_file;
-  batch->utilisation = outcome.utilisation;
-  batch->piece_count = outcome.piece_count;
+  batch->cut_file = outcome->cut_file;
+  batch->utilisation = outcome->utilisation;
+  batch->piece_count = outcome->piece_count;
   if (Status written = spool_->write_batch(*batch); !written) {
     // Still "nesting" on disk: the next start abandons it and nests its jobs again.
     report_batch_problem(*spool_, *batch, "nested, but not queued: batch.json not written: " + written.error());
