@@ -3,8 +3,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir="${1:-build}"
-# ccache keys on absolute paths; with the base folder set, clones in other folders share the cache.
+# ccache keys on absolute paths and, for builds with debug info, on the working folder; with the
+# base folder set and the folder left out of the key, clones in other folders share the cache.
 export CCACHE_BASEDIR="$(pwd)"
+export CCACHE_NOHASHDIR=true
 shift || true
 # The shared reference data may live elsewhere than ../shared/data: LASTCUT_SHARED_DATA_DIR=/path.
 data_option=()
