@@ -64,6 +64,10 @@ const std::vector<CutterOption>& cutter_options() {
        K::Texts, &S::grbl_settings, 0, 0, {}, check_grbl_setting},
       {"status_poll_s", "--status-poll", "grbl: seconds between '?' status queries while streaming", K::Number,
        &S::status_poll_s, 0.01, 60},
+      {"grbl_stall_s", "--stall-timeout",
+       "grbl: seconds the machine may answer without moving or acknowledging a line before the job is stopped as "
+       "stalled (0: never)",
+       K::Number, &S::grbl_stall_s, 0, 86400},
       {"hpgl_handshake", "--handshake", "hpgl: \"\" follows --flow | escb (ESC.B buffer-space handshake)", K::Choice,
        &S::hpgl_handshake, 0, 0, {"", "escb"}},
       {"hpgl_status_queries", "--status-queries,!--no-status-queries",

@@ -26,6 +26,7 @@ struct CutterSettings {
   int grbl_rx_buffer_bytes = 0;             // 0: ask the machine ($I [OPT:...]), else force this size
   std::vector<std::string> grbl_settings;   // "$110=5000" lines sent one at a time before the job
   double status_poll_s = 0.2;               // '?' status query period while streaming
+  double grbl_stall_s = 60;                 // Run/Idle without moving or acknowledging a line this long: stalled (0: off)
   // hpgl
   std::string hpgl_handshake = "";          // "" = follow `flow`; "escb" = ESC.B buffer-space handshake
   bool hpgl_status_queries = true;          // the device answers ESC.O / ESC.E / OA (most HP-compatible cutters do)

@@ -2,10 +2,12 @@
 #include "drivers/grbl/grbl_job.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <deque>
 
 #include "drivers/grbl/grbl_codes.hpp"
 #include "drivers/grbl/grbl_session.hpp"
+#include "drivers/grbl/motion_watch.hpp"
 
 namespace lastcut::drivers::grbl {
 
@@ -29,7 +31,11 @@ class Streamer {
  public:
   Streamer(GrblSession& session, const std::vector<std::string>& lines, const ProgressCallback& progress,
            const std::atomic<bool>& cancel)
-      : session_(session), lines_(lines), progress_(progress), cancel_(cancel) {
+      : session_(session),
+        lines_(lines),
+        progress_(progress),
+        cancel_(cancel),
+        motion_(session.config().grbl_stall_s, monotonic_s()) {
     for (const auto& line : lines_) bytes_total_ += line.size() + 1;
   }
 
@@ -55,6 +61,7 @@ class Streamer {
   std::deque<size_t> in_flight_;  // line indices sent and not yet acknowledged
   size_t in_flight_bytes_ = 0;
   double last_report_s_ = 0;
+  MotionWatch motion_;
 };
 
 void Streamer::report(bool force) {
@@ -121,6 +128,14 @@ SendResult Streamer::run() {
       return interrupted("no reply from the machine for " + std::to_string(static_cast<int>(config.timeout_s)) + " s", false);
     }
 
+    if (motion_.stalled(monotonic_s())) {
+      char seconds[32];
+      std::snprintf(seconds, sizeof seconds, "%g", config.grbl_stall_s);
+      return interrupted("the machine answers but has neither moved nor taken a line for " + std::string(seconds) +
+                             " s (last seen " + motion_.last_seen() + ")",
+                         true);
+    }
+
     Reply reply;
     bool got = false;
     if (auto r = session_.next_reply(reply, got, std::max(0.0, next_poll_s - monotonic_s())); !r.ok) {
@@ -136,6 +151,7 @@ SendResult Streamer::run() {
         in_flight_.pop_front();
         in_flight_bytes_ -= lines_[index].size() + 1;
         ++acked_;
+        motion_.on_acknowledged(monotonic_s());
         if (reply.kind == ReplyKind::Error) {
           const std::string what = "grbl " + reply.text + " at line " + std::to_string(index + 1) + " '" +
                                    lines_[index].substr(0, 40) + "': " + error_meaning(reply.code);
@@ -152,6 +168,7 @@ SendResult Streamer::run() {
       case ReplyKind::Garbage:
         return interrupted("unintelligible reply '" + reply.text.substr(0, 40) + "' (link corrupt?)", true);
       case ReplyKind::Status:
+        motion_.on_status(reply.state, reply.position, monotonic_s());
         if (all_acked && session_.status_count() > status_count_at_finish) {
           idle_reports_after_finish = reply.state == "Idle" ? idle_reports_after_finish + 1 : 0;
           if (idle_reports_after_finish >= 2) {

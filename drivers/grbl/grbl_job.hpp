@@ -4,7 +4,9 @@
 // unacknowledged lines (each with its '\n') at or below the controller's RX buffer, pop one
 // line per `ok` / `error:N`. The job is Done only when every line is acknowledged AND two
 // consecutive status reports after the last acknowledgement say Idle (one report can race
-// grbl's automatic cycle start of the last planner block).
+// grbl's automatic cycle start of the last planner block). A machine that keeps answering but
+// neither moves nor takes a line for `grbl_stall_s` is stopped (feed hold, soft reset) and the job
+// reported Interrupted, never resent (motion_watch.hpp).
 #include <atomic>
 #include <string>
 #include <vector>

@@ -21,6 +21,19 @@ bool printable(std::string_view line) {
   return true;
 }
 
+// The MPos: or WPos: field of a status body ("Run|MPos:1.000,2.000,0.000|FS:..."), or "".
+std::string_view position_field(std::string_view body) {
+  size_t start = 0;
+  while (start < body.size()) {
+    size_t end = body.find('|', start);
+    if (end == std::string_view::npos) end = body.size();
+    const std::string_view field = body.substr(start, end - start);
+    if (field.starts_with("MPos:") || field.starts_with("WPos:")) return field;
+    start = end + 1;
+  }
+  return {};
+}
+
 constexpr std::array<std::string_view, 9> kStates{"Idle", "Run", "Hold", "Jog", "Alarm", "Door", "Check", "Home", "Sleep"};
 
 }  // namespace
@@ -55,6 +68,7 @@ Reply classify_reply(std::string_view line) {
         reply.kind = ReplyKind::Status;
         reply.state = std::string(state);
         if (colon != std::string_view::npos && !parse_int(head.substr(colon + 1), reply.substate)) reply.substate = -1;
+        reply.position = std::string(position_field(body));
         return reply;
       }
     }

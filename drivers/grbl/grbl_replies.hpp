@@ -14,6 +14,7 @@ struct Reply {
   int code = 0;                 // error:N / ALARM:N
   std::string state;            // Status: "Idle", "Run", "Hold", "Jog", "Alarm", "Door", "Check", "Home", "Sleep"
   int substate = -1;            // Status: Hold:0 -> 0, Hold:1 -> 1; -1 when absent
+  std::string position;         // Status: the "MPos:x,y,z" or "WPos:x,y,z" field as sent; empty when absent
   int rx_buffer_bytes = -1;     // Options: the serial RX buffer size from [OPT:flags,blocks,rx]; -1 when absent
   std::string text;             // the raw line
 };

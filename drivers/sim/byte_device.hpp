@@ -14,6 +14,7 @@ namespace lastcut::drivers::sim {
 struct Faults {
   size_t drop_at_line = 0;      // close the link after this many lines arrived (cable pulled)
   size_t stall_at_line = 0;     // stop reading and answering after this many lines (frozen controller)
+  size_t freeze_at_line = 0;    // grbl: motion stops for good after this line, status queries still answered
   size_t garbage_at_line = 0;   // answer this line with line noise instead of the normal reply
   size_t error_at_line = 0;     // answer this line with an error (grbl error:CODE, HPGL device error)
   int error_code = 22;

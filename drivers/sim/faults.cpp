@@ -39,6 +39,7 @@ bool parse_fault(const std::string& text, Faults& faults, std::string& error) {
   }
   if (kind == "drop-at-line") faults.drop_at_line = line;
   else if (kind == "stall-at-line") faults.stall_at_line = line;
+  else if (kind == "freeze-at-line") faults.freeze_at_line = line;
   else if (kind == "garbage-at-line") faults.garbage_at_line = line;
   else if (kind == "error-at-line") {
     faults.error_at_line = line;
@@ -47,7 +48,7 @@ bool parse_fault(const std::string& text, Faults& faults, std::string& error) {
     faults.alarm_at_line = line;
     if (code >= 0) faults.alarm_code = code;
   } else {
-    error = "unknown fault '" + kind + "' (drop-at-line, stall-at-line, garbage-at-line, error-at-line, alarm-at-line)";
+    error = "unknown fault '" + kind + "' (drop-at-line, stall-at-line, freeze-at-line, garbage-at-line, error-at-line, alarm-at-line)";
     return false;
   }
   return true;

@@ -143,7 +143,7 @@ void GrblMachine::status_report() {
 
 double GrblMachine::next_event_s() const {
   if (state_ == State::Hold1) return hold_done_s_;
-  if (state_ == State::Run && !planner_.empty()) return block_end_s_;
+  if (state_ == State::Run && !planner_.empty() && !motion_frozen_) return block_end_s_;
   if (rx_.find('\n') != std::string::npos && static_cast<int>(planner_.size()) < options_.planner_blocks) return now_s_;
   return ByteDevice::next_event_s();
 }
@@ -162,7 +162,7 @@ void GrblMachine::advance(double now_s) {
       block_end_s_ = now_s + planner_.front().duration_s;
       changed = true;
     }
-    while (state_ == State::Run && !planner_.empty() && now_s >= block_end_s_) {
+    while (state_ == State::Run && !planner_.empty() && now_s >= block_end_s_ && !motion_frozen_) {
       x_ = planner_.front().x, y_ = planner_.front().y, z_ = planner_.front().z;
       const double finished_at = block_end_s_;
       planner_.pop_front();
@@ -201,6 +201,7 @@ void GrblMachine::process_line(const std::string& line) {
     output_ += std::string("\xff\xfe\x01\x7fok\x93\x02") + "\r\n";
     return;
   }
+  if (f.freeze_at_line == lines_received_) motion_frozen_ = true;
   if (f.error_at_line == lines_received_) {
     ++errors_sent_;
     reply("error:" + std::to_string(f.error_code));

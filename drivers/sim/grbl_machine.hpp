@@ -6,6 +6,8 @@
 // 15-block planner with simulated motion time (x time_scale; 0 = instant), `error:N` for bad
 // lines, alarms that lock G-code out (error:9), feed hold with a deceleration phase
 // (Hold:1 -> Hold:0), cycle start, soft reset (ALARM:3 when reset in motion) and `$` commands.
+// The freeze-at-line fault copies what the grbl 1.1h host simulator does when its stepper
+// interrupt dies: "Run" forever at one position, the planner full, status still answered.
 // Behaviour follows the grbl 1.1 interface documentation (gnea/grbl wiki).
 #include <deque>
 #include <map>
@@ -73,6 +75,7 @@ class GrblMachine : public ByteDevice {
   std::string received_program_;  // program lines (not '$' commands), as received, '\n'-terminated
   size_t lines_received_ = 0;
   size_t errors_sent_ = 0, alarms_raised_ = 0;
+  bool motion_frozen_ = false;    // freeze-at-line: the steppers stopped, the serial side lives on
 };
 
 }  // namespace lastcut::drivers::sim

@@ -43,7 +43,7 @@ void add_common(CLI::App* command, CommonOptions& options, int default_baud) {
                       "client sets (as a real device must match its sender); over TCP unlimited");
   command->add_option("--record", options.record, "folder where what was received is recorded");
   command->add_option("--fault", options.faults,
-                      "inject a fault: drop-at-line=N, stall-at-line=N, garbage-at-line=N, error-at-line=N[:CODE], "
+                      "inject a fault: drop-at-line=N, stall-at-line=N, freeze-at-line=N, garbage-at-line=N, error-at-line=N[:CODE], "
                       "alarm-at-line=N[:CODE]");
 }
 

@@ -72,7 +72,9 @@ bool is_unfinished_write(std::string_view file_name) {
   return file_name.substr(0, kTemporaryPrefix.size()) == kTemporaryPrefix;
 }
 
-Status fsync_folder(const std::filesystem::path& folder) {
+Status fsync_folder(const std::filesystem::path& folder_or_empty) {
+  // A bare file name ("cut.nc") has an empty parent: that is the working folder.
+  const std::filesystem::path folder = folder_or_empty.empty() ? std::filesystem::path(".") : folder_or_empty;
   const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (fd < 0) return errno_failure("cannot open folder", folder);
   Status status = ::fsync(fd) == 0 ? Status::success() : errno_failure("cannot fsync folder", folder);

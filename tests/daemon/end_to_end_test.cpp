@@ -191,6 +191,34 @@ TEST(DaemonEndToEnd, ACutterFaultHoldsItsJobWhileTheOtherCutterKeepsWorking) {
   cutter_1.wait(10);
 }
 
+// A grbl table that still answers but no longer moves (its status says Run at one position for
+// good) must not keep `lastcut status` at "cutting (n %)" forever: after grbl_stall_s the cut is
+// stopped (feed hold, reset), the job held with the reason, and nothing is resent on its own.
+TEST(DaemonEndToEnd, AGrblThatAnswersButNoLongerMovesIsHeldAndNotResent) {
+  RigOptions options;
+  options.grbl_cutters = {"cutter-1"};
+  options.sim_faults = {{"cutter-1", "freeze-at-line=30"}};
+  options.extra_config = "grbl_stall_s = 2.0\n";  // lands in [cutters.cutter-1], the last table
+  DaemonRig rig("e2e-frozen", options);
+  rig.start_cutters();
+  rig.start_daemon();
+  write_variant(small_last(43, "left", 3), rig.root() / "frozen.stl", "frozen");
+  drop(rig.root() / "frozen.stl", rig.watch(), "frozen.stl");
+  ASSERT_TRUE(wait_until([&] { return rig.settled(1); }, 120)) << read_text(rig.daemon_log());
+
+  std::string folder;
+  const std::string frozen = job_of(rig, "frozen.stl", &folder);
+  EXPECT_EQ(folder, "held");
+  const std::string reason = rig.jobs("held").at(frozen).value("reason", "");
+  EXPECT_NE(reason.find("answers but has neither moved nor taken a line for 2 s"), std::string::npos) << reason;
+  std::this_thread::sleep_for(std::chrono::seconds(2));
+  EXPECT_EQ(rig.jobs("held").size(), 1u) << "a stalled cut is never resent on its own";
+  const auto status_log = rig.root() / "status.txt";
+  EXPECT_EQ(run_command({binary("lastcut").string(), "status", "--config", rig.config_file().string()}, status_log), 0);
+  EXPECT_NE(read_text(status_log).find("neither moved"), std::string::npos) << read_text(status_log);
+  EXPECT_EQ(rig.stop_daemon(), 0);
+}
+
 TEST(DaemonEndToEnd, RefusedConfigurationExitsWithConfigStatus) {
   DaemonRig rig("e2e-config", RigOptions{});
   write_text(rig.config_file(), read_text(rig.config_file()) + "[cutters.cutter-1.extra]\n");

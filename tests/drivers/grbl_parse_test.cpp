@@ -4,6 +4,7 @@
 #include "drivers/grbl/grbl_codes.hpp"
 #include "drivers/grbl/grbl_job.hpp"
 #include "drivers/grbl/grbl_replies.hpp"
+#include "drivers/grbl/motion_watch.hpp"
 
 namespace lastcut::drivers::grbl {
 namespace {
@@ -28,6 +29,39 @@ TEST(GrblReplies, ClassifiesEveryKindOfLine) {
   EXPECT_EQ(classify_reply("[MSG:Caution: Unlocked]").kind, ReplyKind::Feedback);
   EXPECT_EQ(classify_reply("$110=5000.000").kind, ReplyKind::Setting);
   EXPECT_EQ(classify_reply("").kind, ReplyKind::Empty);
+}
+
+TEST(GrblReplies, KeepsThePositionFieldOfAStatusReport) {
+  EXPECT_EQ(classify_reply("<Run|MPos:34.980,103.300,1.108|FS:600,0|Pn:PXYZRHS>").position, "MPos:34.980,103.300,1.108");
+  EXPECT_EQ(classify_reply("<Idle|WPos:1.000,2.000,0.000|Bf:15,128>").position, "WPos:1.000,2.000,0.000");
+  EXPECT_EQ(classify_reply("<Idle|Bf:15,128|FS:0,0>").position, "");
+}
+
+// The watch that turns "answers but no longer moves" into a stopped job (the grbl simulator's
+// stepper interrupt died that way: Run for minutes at one position).
+TEST(GrblMotionWatch, OnlyTimeWithoutAnySignOfProgressIsAStall) {
+  MotionWatch watch(10, 0);
+  watch.on_status("Run", "MPos:1.000,0.000,0.000", 1);
+  EXPECT_FALSE(watch.stalled(10.5));
+  EXPECT_TRUE(watch.stalled(11.5)) << "Run at one position for 10.5 s";
+  EXPECT_EQ(watch.last_seen(), "Run at MPos:1.000,0.000,0.000");
+
+  watch.on_status("Run", "MPos:1.001,0.000,0.000", 12);  // it moved
+  EXPECT_FALSE(watch.stalled(21.5));
+  watch.on_acknowledged(21);  // a line taken
+  EXPECT_FALSE(watch.stalled(30.5));
+  watch.on_status("Idle", "MPos:1.001,0.000,0.000", 31);  // a state change
+  EXPECT_FALSE(watch.stalled(40.5));
+  EXPECT_TRUE(watch.stalled(41.5));
+}
+
+TEST(GrblMotionWatch, AnOperatorHoldIsNotAStallAndZeroTurnsTheWatchOff) {
+  MotionWatch watch(10, 0);
+  for (int t = 0; t <= 100; t += 5) watch.on_status("Hold", "MPos:1.000,0.000,0.000", t);
+  EXPECT_FALSE(watch.stalled(101));
+  MotionWatch off(0, 0);
+  off.on_status("Run", "MPos:1.000,0.000,0.000", 0);
+  EXPECT_FALSE(off.stalled(1e6));
 }
 
 TEST(GrblReplies, ReadsTheReceiveBufferFromTheOptionsLine) {

@@ -143,6 +143,17 @@ TEST(GrblStream, StalledControllerEndsInInterruptedWithinTheTimeout) {
   EXPECT_LT(elapsed_s, 1.5 + 3 * 1.5 + 1) << "feed hold and reset attempts are bounded by the timeout too";
 }
 
+TEST(GrblStream, MachineThatAnswersButNoLongerMovesIsStoppedAndNotResent) {
+  GrblFixture f({"--fault", "freeze-at-line=40"}, "0.01");
+  ASSERT_TRUE(f.sim->ready());
+  f.config.grbl_stall_s = 1.5;
+  const auto [result, elapsed_s] = timed_send(f.config, make_program(300));
+  expect_interrupted(result, {"answers but has neither moved nor taken a line for 1.5 s", "last seen Run at MPos:",
+                              "machine held and reset"});
+  EXPECT_GE(elapsed_s, 1.5);
+  EXPECT_LT(elapsed_s, 1.5 + 3 * f.config.timeout_s + 1);
+}
+
 TEST(GrblStream, GarbageReplyStopsTheJob) {
   GrblFixture f({"--fault", "garbage-at-line=40"});
   ASSERT_TRUE(f.sim->ready());
