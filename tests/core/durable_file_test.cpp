@@ -1,0 +1,44 @@
+// Durable writes of a bare file name (as `lastcut toolpath -o cut.nc` passes it) go into the
+// working folder (the other durable-write tests are in tests/daemon/spool_test.cpp).
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "engine/core/durable_file.hpp"
+
+namespace lastcut {
+namespace {
+
+std::string read_all(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+struct ScratchFolder {
+  ScratchFolder() {
+    path = std::filesystem::temp_directory_path() / ("lastcut-durable-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(path);
+    std::filesystem::create_directories(path);
+  }
+  ~ScratchFolder() { std::filesystem::remove_all(path); }
+  std::filesystem::path path;
+};
+
+TEST(DurableFile, ABareFileNameIsWrittenIntoTheWorkingFolder) {
+  ScratchFolder scratch;
+  const auto previous = std::filesystem::current_path();
+  std::filesystem::current_path(scratch.path);
+  const Status status = write_file_durably("cut.nc", "G0 X2\n");
+  std::filesystem::current_path(previous);
+  ASSERT_TRUE(status) << status.error();
+  EXPECT_EQ(read_all(scratch.path / "cut.nc"), "G0 X2\n");
+}
+
+}  // namespace
+}  // namespace lastcut
