@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <deque>
 
+#include "drivers/grbl/axis_words.hpp"
 #include "drivers/grbl/grbl_codes.hpp"
 #include "drivers/grbl/grbl_session.hpp"
 #include "drivers/grbl/motion_watch.hpp"
@@ -200,6 +201,12 @@ SendResult run_grbl_job(Transport& link, const CutterConfig& config, const std::
       return {SendOutcome::Failed,
               "line " + std::to_string(i + 1) + " is " + std::to_string(lines[i].size()) + " characters; the machine's " +
                   std::to_string(rx_bytes) + "-byte buffer cannot hold it",
+              log};
+    }
+  }
+  if (session.axis_count() > 0) {
+    if (const std::string refused = check_axis_words(lines, session.axis_count()); !refused.empty()) {
+      return {SendOutcome::Failed, refused + "; nothing was sent (a rotary-axis profile needs a controller with that axis)",
               log};
     }
   }

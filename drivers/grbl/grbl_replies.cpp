@@ -90,6 +90,12 @@ Reply classify_reply(std::string_view line) {
       if (parse_int(fields.substr(second + 1, third == std::string_view::npos ? third : third - second - 1), rx) && rx > 0) {
         reply.rx_buffer_bytes = rx;
       }
+      if (third != std::string_view::npos) {
+        const auto fourth = fields.find(',', third + 1);
+        int axes = -1;
+        const auto axes_text = fields.substr(third + 1, fourth == std::string_view::npos ? fourth : fourth - third - 1);
+        if (parse_int(axes_text, axes) && axes >= 1 && axes <= 9) reply.axis_count = axes;
+      }
     }
     return reply;
   }

@@ -16,6 +16,7 @@ struct Reply {
   int substate = -1;            // Status: Hold:0 -> 0, Hold:1 -> 1; -1 when absent
   std::string position;         // Status: the "MPos:x,y,z" or "WPos:x,y,z" field as sent; empty when absent
   int rx_buffer_bytes = -1;     // Options: the serial RX buffer size from [OPT:flags,blocks,rx]; -1 when absent
+  int axis_count = -1;          // Options: grblHAL's 4th field [OPT:flags,blocks,rx,axes,...]; -1 when absent (grbl 1.1: X Y Z)
   std::string text;             // the raw line
 };
 

@@ -154,7 +154,10 @@ StepResult GrblSession::connect() {
     }
     for (const auto& line : info) {
       const Reply reply = classify_reply(line);
-      if (reply.kind == ReplyKind::Options && reply.rx_buffer_bytes > 0) rx_buffer_bytes_ = reply.rx_buffer_bytes;
+      if (reply.kind != ReplyKind::Options) continue;
+      if (reply.rx_buffer_bytes > 0) rx_buffer_bytes_ = reply.rx_buffer_bytes;
+      // grbl 1.1's [OPT:...] has no axis field: it always has X, Y and Z.
+      axis_count_ = reply.axis_count > 0 ? reply.axis_count : 3;
     }
   }
   log_.push_back("receive buffer " + std::to_string(rx_buffer_bytes_) + " bytes");

@@ -50,6 +50,7 @@ class GrblSession {
   void note(const Reply& reply);
 
   int rx_buffer_bytes() const { return rx_buffer_bytes_; }
+  int axis_count() const { return axis_count_; }  // from $I; -1 when the machine did not say
   const std::string& state() const { return state_; }   // "Idle", "Run", "Hold:0", ...
   long status_count() const { return status_count_; }   // status reports seen so far
   double seconds_since_last_byte() const;
@@ -64,6 +65,7 @@ class GrblSession {
   std::string state_ = "unknown";
   long status_count_ = 0;
   int rx_buffer_bytes_ = kDefaultRxBufferBytes;
+  int axis_count_ = -1;
   double last_byte_time_s_;
 };
 

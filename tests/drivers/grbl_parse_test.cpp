@@ -1,6 +1,7 @@
 // grbl reply parsing, code tables and program splitting: the pure parts of the grbl driver.
 #include <gtest/gtest.h>
 
+#include "drivers/grbl/axis_words.hpp"
 #include "drivers/grbl/grbl_codes.hpp"
 #include "drivers/grbl/grbl_job.hpp"
 #include "drivers/grbl/grbl_replies.hpp"
@@ -66,7 +67,9 @@ TEST(GrblMotionWatch, AnOperatorHoldIsNotAStallAndZeroTurnsTheWatchOff) {
 
 TEST(GrblReplies, ReadsTheReceiveBufferFromTheOptionsLine) {
   EXPECT_EQ(classify_reply("[OPT:V,15,128]").rx_buffer_bytes, 128);
+  EXPECT_EQ(classify_reply("[OPT:V,15,128]").axis_count, -1);  // grbl 1.1: no axis field
   EXPECT_EQ(classify_reply("[OPT:VNMHSL,35,1024,3,0]").rx_buffer_bytes, 1024);  // grblHAL
+  EXPECT_EQ(classify_reply("[OPT:VNMHSL,35,1024,4,0]").axis_count, 4);
   EXPECT_EQ(classify_reply("[OPT:V,15]").rx_buffer_bytes, -1);
   EXPECT_EQ(classify_reply("[OPT:V,15,abc]").rx_buffer_bytes, -1);
 }
@@ -78,6 +81,17 @@ TEST(GrblReplies, RejectsMalformedAndBinaryLines) {
   EXPECT_EQ(classify_reply("okay").kind, ReplyKind::Garbage);
   EXPECT_EQ(classify_reply("<Dancing|MPos:0,0,0>").kind, ReplyKind::Garbage);
   EXPECT_EQ(classify_reply(std::string("\xff\xfe\x01ok", 5)).kind, ReplyKind::Garbage);
+}
+
+// A tangential-knife file (A axis) on grbl 1.1 (X Y Z) is refused before the first line; the
+// words of comments and of arcs (I J K) and feeds are not axes.
+TEST(GrblAxisWords, RefusesAnAxisTheControllerDoesNotHave) {
+  const std::vector<std::string> tangential = {"G21 G90", "(knife A angle)", "G0 X1 Y2 ; A is the knife", "G1 X3 A45.5 F600"};
+  EXPECT_EQ(check_axis_words(tangential, 3), "line 4 moves the A axis, but the controller has 3 axes (X Y Z)");
+  EXPECT_EQ(check_axis_words(tangential, 4), "");
+  EXPECT_EQ(check_axis_words({"G2 X1 Y1 I0.5 J0 F300", "M8", "$110=5000"}, 3), "");
+  EXPECT_EQ(check_axis_words({"g1 x1 c -90"}, 4), "line 1 moves the C axis, but the controller has 4 axes (X Y Z A)");
+  EXPECT_EQ(axis_letters(5), "XYZAB");
 }
 
 TEST(GrblCodes, ExplainsErrorsAndAlarms) {
