@@ -16,6 +16,12 @@ DEBIAN_PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # independent interpreters and tools the tests run against our output
   hp2xx mbpoll socat systemd procps python3
+  # the real grbl 1.1h firmware simulator (tests/peers) and the load it is tested under
+  make gcc
+  # fuzzing the parsers (clang's libFuzzer, tests/fuzz)
+  clang libclang-rt-14-dev llvm
+  # the Debian package and its check in a fresh bookworm root (scripts/package.sh, check_package.sh)
+  debhelper dpkg-dev fakeroot lintian help2man debootstrap
 )
 
 SUDO=""
