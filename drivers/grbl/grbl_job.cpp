@@ -44,6 +44,7 @@ class Streamer {
 
  private:
   SendResult interrupted(const std::string& why, bool stop_machine);
+  SendResult alarmed(const std::string& why);
   bool harmless(int code) const {
     const auto& list = session_.config().harmless_grbl_errors;
     return std::find(list.begin(), list.end(), code) != list.end();
@@ -89,6 +90,31 @@ SendResult Streamer::interrupted(const std::string& why, bool stop_machine) {
   }
   report(true);
   return {SendOutcome::Interrupted, reason, log};
+}
+
+// grbl in alarm goes on reading the lines already in its receive buffer and refuses each with
+// error:9 (G-code locked out): collect those answers now, so none is left on the line for the
+// next job to take as the answer to its own first command, and say that none of them ran.
+SendResult Streamer::alarmed(const std::string& why) {
+  const size_t outstanding = in_flight_.size();
+  size_t locked_out = 0, other = 0;
+  const double deadline = monotonic_s() + session_.config().timeout_s;
+  while (!in_flight_.empty() && monotonic_s() < deadline) {
+    Reply reply;
+    bool got = false;
+    if (auto r = session_.next_reply(reply, got, deadline - monotonic_s()); !r.ok) break;
+    if (!got || (reply.kind != ReplyKind::Ok && reply.kind != ReplyKind::Error)) continue;
+    in_flight_bytes_ -= lines_[in_flight_.front()].size() + 1;
+    in_flight_.pop_front();
+    (reply.kind == ReplyKind::Error && reply.code == 9 ? locked_out : other) += 1;
+  }
+  if (outstanding > 0) {
+    session_.log().push_back("of the " + std::to_string(outstanding) + " lines already in the machine's buffer, " +
+                             std::to_string(locked_out) + " were refused by the alarm lock (error:9)" +
+                             (other ? ", " + std::to_string(other) + " answered otherwise" : "") +
+                             (in_flight_.empty() ? "" : ", " + std::to_string(in_flight_.size()) + " not answered"));
+  }
+  return interrupted(why, false);
 }
 
 SendResult Streamer::run() {
@@ -163,7 +189,7 @@ SendResult Streamer::run() {
       }
       case ReplyKind::Alarm:
         // grbl has already halted and locked itself; a reset here would only lose the position.
-        return interrupted("grbl " + reply.text + ": " + alarm_meaning(reply.code), false);
+        return alarmed("grbl " + reply.text + ": " + alarm_meaning(reply.code));
       case ReplyKind::Banner:
         return interrupted("the machine restarted during the job (banner '" + reply.text + "')", false);
       case ReplyKind::Garbage:
@@ -178,7 +204,7 @@ SendResult Streamer::run() {
             return {SendOutcome::Done, "job finished: " + where() + ", machine Idle", session_.log()};
           }
         }
-        if (reply.state == "Alarm") return interrupted("machine went into alarm", false);
+        if (reply.state == "Alarm") return alarmed("machine went into alarm");
         break;
       default:
         break;

@@ -132,6 +132,19 @@ StepResult GrblSession::send_and_wait(const std::string& line, std::vector<std::
 }
 
 StepResult GrblSession::connect() {
+  // Answers still on the line from an earlier session (a job cut short, a daemon killed) would
+  // be taken for the answers to our first commands: read them away first.
+  std::vector<std::string> stale;
+  for (const double deadline = monotonic_s() + 1.0; monotonic_s() < deadline;) {
+    Reply reply;
+    bool got = false;
+    if (auto r = next_reply(reply, got, 0.05); !r.ok) return r;
+    if (!got) break;
+    stale.push_back(reply.text);
+  }
+  if (!stale.empty()) {
+    log_.push_back("discarded " + std::to_string(stale.size()) + " replies left from before (first '" + stale.front() + "')");
+  }
   Reply status;
   if (auto r = query_status(status, config_.timeout_s); !r.ok) return r;
   log_.push_back("grbl state " + state_ + " on " + link_.describe());
@@ -171,10 +184,15 @@ StepResult GrblSession::feed_hold() {
   if (auto w = write(std::string(1, kFeedHold)); !w.ok) return w;
   log_.push_back("> ! (feed hold)");
   const double deadline = monotonic_s() + config_.timeout_s;
+  // The first report may answer a '?' sent before the '!': an Idle in it can be a planner that ran
+  // dry for a moment under load and is about to start the next block. Idle counts only when two
+  // reports in a row say so; Hold:0 can only come after the hold.
+  int idle_reports = 0;
   while (monotonic_s() < deadline) {
     Reply status;
     if (auto r = query_status(status, deadline - monotonic_s()); !r.ok) return r;
-    if (state_ == "Hold:0" || status.state == "Idle" || status.state == "Alarm") return {};
+    idle_reports = status.state == "Idle" ? idle_reports + 1 : 0;
+    if (state_ == "Hold:0" || idle_reports >= 2 || status.state == "Alarm") return {};
   }
   return {false, false, "machine did not come to a stop (Hold:0) within " + std::to_string(static_cast<int>(config_.timeout_s)) + " s"};
 }
