@@ -3,6 +3,7 @@
 #include <csignal>
 #include <cstdint>
 #include <fstream>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -23,7 +24,7 @@ DaemonRig::DaemonRig(const std::string& name, RigOptions options)
   for (const std::string& cutter : options_.cutters) {
     // Both simulators record the exact bytes they were sent, so a cut file can be found in them.
     if (is_grbl(cutter)) {
-      toml += "[cutters." + cutter + "]\nprotocol = \"grbl\"\nport = \"" + cutter + ".tty\"\n"
+      toml += "[cutters." + cutter + "]\nprotocol = \"grbl\"\nport = \"" + port_of(cutter) + "\"\n"
               "timeout_s = 5\nmachine = \"grbl-drag-knife\"\nretry_interval_s = 0.5\n";
     } else {
       toml += "[cutters." + cutter + "]\nprotocol = \"hpgl\"\nport = \"" + cutter + ".tty\"\nflow = \"xonxoff\"\n"
@@ -41,6 +42,16 @@ DaemonRig::~DaemonRig() {
 
 void DaemonRig::start_cutters() {
   for (const std::string& cutter : options_.cutters) {
+    if (is_firmware(cutter)) {
+      const auto log = root_ / ("firmware-" + cutter + ".log");
+      cutters_[cutter] = std::make_unique<Process>(
+          std::vector<std::string>{"/bin/bash", (std::filesystem::path(LASTCUT_SOURCE_DIR) / "tests/peers/run_grbl_firmware.sh").string(),
+                                   options_.grbl_firmware, (root_ / ("firmware-" + cutter)).string()},
+          log);
+      ASSERT_TRUE(wait_until([&] { return read_text(log).find("ready:") != std::string::npos; }, 20))
+          << "the grbl firmware for " << cutter << " did not start: " << read_text(log);
+      continue;
+    }
     std::vector<std::string> argv = {binary("lastcut-sim").string(), is_grbl(cutter) ? "grbl" : "hpgl", "--link", (root_ / (cutter + ".tty")).string(),
                                      "--record", (root_ / ("record-" + cutter)).string(), "--time-scale", "0"};
     if (auto fault = options_.sim_faults.find(cutter); fault != options_.sim_faults.end()) {
@@ -82,6 +93,13 @@ void DaemonRig::kill_daemon() {
 
 std::string DaemonRig::received(const std::string& cutter) const {
   return read_text(root_ / ("record-" + cutter) / (is_grbl(cutter) ? "grbl-received.nc" : "hpgl-received.hpgl"));
+}
+
+std::vector<std::string> DaemonRig::firmware_blocks(const std::string& cutter) const {
+  std::vector<std::string> lines;
+  std::istringstream log(read_text(root_ / ("firmware-" + cutter) / "blocks.txt"));
+  for (std::string line; std::getline(log, line);) lines.push_back(line);
+  return lines;
 }
 
 std::map<std::string, nlohmann::json> DaemonRig::jobs(const std::string& folder) const {

@@ -22,6 +22,9 @@ struct RigOptions {
   std::string duplicate_policy = "skip";
   double batch_window_s = 0;
   std::string extra_config;                       // appended to the generated TOML
+  // When set (the built grbl_sim.exe), the grbl cutters are the real grbl 1.1h firmware behind a
+  // pty (tests/peers/run_grbl_firmware.sh) instead of lastcut-sim; they keep a block log, no record.
+  std::string grbl_firmware;
 };
 
 class DaemonRig {
@@ -45,6 +48,13 @@ class DaemonRig {
 
   // What cutter `name` received (the simulator's record), after stop_cutters().
   std::string received(const std::string& cutter) const;
+  // The firmware's block log of a grbl cutter run as the real firmware: one line per planner block.
+  std::vector<std::string> firmware_blocks(const std::string& cutter) const;
+  bool is_firmware(const std::string& cutter) const { return is_grbl(cutter) && !options_.grbl_firmware.empty(); }
+  // The cutter's port, relative to the configuration's folder.
+  std::string port_of(const std::string& cutter) const {
+    return is_firmware(cutter) ? "firmware-" + cutter + "/tty" : cutter + ".tty";
+  }
   bool is_grbl(const std::string& cutter) const { return options_.grbl_cutters.count(cutter) > 0; }
   // The cut file a job of `cutter` keeps in its spool folder: cut.nc (grbl) or cut.plt (HPGL).
   std::string cut_file_name(const std::string& cutter) const { return is_grbl(cutter) ? "cut.nc" : "cut.plt"; }
