@@ -34,18 +34,18 @@ require "$sim/platform_LINUX.c" 'read(0, &c, 1)' "serial input"
 
 # 2. Interrupts closer to the AVR. grbl-sim runs the firmware's main loop and its simulated
 #    interrupts on two threads at once; on the AVR an interrupt runs between two main-loop
-#    instructions and the main loop waits for it. Two consequences stopped the firmware here,
-#    in Run at one position for ever with a feed hold never completing (docs/grbl-firmware.md):
+#    instructions and the main loop waits for it. This stopped the firmware here, in Run at
+#    one position for ever with a feed hold never completing (docs/grbl-firmware.md):
 #    a. Both threads read-modify-write the one emulated status register: an interrupt
 #       restoring a stale SREG cleared the interrupt-enable bit for good (gdb on a stalled
 #       simulator: io.sreg == 0, TIFR1 pending, master clock running). The interrupt thread
 #       gets its own SREG (the AVR saves it around an interrupt), and every emulated register
 #       update is an atomic read-modify-write (st_wake_up sets TIMSK1 while an interrupt may
 #       change it).
-#    b. A stepper interrupt already running when the main loop starts the steppers again
-#       (st_wake_up after a buffer sync such as M8/M9 emptied the planner) could finish with
-#       st_go_idle and switch them off behind it. The timer interrupts and the main loop's
-#       st_wake_up / st_go_idle / st_reset take one lock, so they never overlap.
+#    What is left: an interrupt can still run in the middle of a main-loop statement, which the
+#    AVR never allows. A stall in Run is rarer now but still seen (about one in three runs of a
+#    1,400-line drag-knife file whose pen moves are M8/M9 buffer syncs); a lock between the
+#    timer interrupts and the main loop's stepper calls made it garble serial output instead.
 #    (The sources have CRLF line ends, hence \r\?.)
 sed -i 's/^#define SREG io\.sreg\r\?$/volatile uint8_t* sim_sreg(void);\n#define SREG (*sim_sreg())/' "$sim/avr/io.h"
 require "$sim/avr/io.h" 'define SREG (\*sim_sreg())' "SREG"
@@ -54,30 +54,15 @@ require "$sim/avr/io.h" '_Atomic uint8_t timsk' "atomic registers"
 sed -i 's/^void sei() {io\.sreg|=SEI;}/void sei() {SREG|=SEI;}/; s/^void cli() {io\.sreg&=~SEI;}/void cli() {SREG\&=~SEI;}/' "$sim/avr/interrupt.c"
 require "$sim/avr/interrupt.c" 'void sei() {SREG|=SEI;}' "sei"
 require "$sim/avr/interrupt.c" 'void cli() {SREG&=~SEI;}' "cli"
-sed -i '0,/^#include/ s/^#include/void sim_stepper_lock(void);\nvoid sim_stepper_unlock(void);\n#include/' "$sim/avr/interrupt.c"
 cat >>"$sim/avr/interrupt.c" <<'EOF'
 
-/* lastcut test harness (build_grbl_sim.sh, fix 2). */
-#include <pthread.h>
+/* lastcut test harness (build_grbl_sim.sh, fix 2): the interrupt thread's own SREG. */
 __thread int sim_in_hardware_thread;
 volatile uint8_t* sim_sreg(void) {
   static __thread uint8_t interrupt_context_sreg = 0;
   return sim_in_hardware_thread ? &interrupt_context_sreg : (volatile uint8_t*)&io.sreg;
 }
-static pthread_mutex_t sim_stepper_mutex = PTHREAD_MUTEX_INITIALIZER;
-static __thread int sim_stepper_depth;
-void sim_stepper_lock(void) { if (sim_stepper_depth++ == 0) pthread_mutex_lock(&sim_stepper_mutex); }
-void sim_stepper_unlock(void) { if (--sim_stepper_depth == 0) pthread_mutex_unlock(&sim_stepper_mutex); }
 EOF
-sed -i 's/^\( *\)\(compa_vect\[i\]\|compb_vect\[i\]\|ovf_vect\[i\]\)();/\1sim_stepper_lock(); \2(); sim_stepper_unlock();/' "$sim/avr/interrupt.c"
-[ "$(grep -c 'sim_stepper_lock(); [a-z]*_vect\[i\](); sim_stepper_unlock();' "$sim/avr/interrupt.c")" = 3 ] ||
-  { echo "build_grbl_sim: could not put the 3 timer interrupt calls under the stepper lock" >&2; exit 1; }
-for function in st_wake_up st_go_idle st_reset; do
-  sed -i "s/^void $function()\$/void ${function}_unguarded()/" "$grbl/stepper.c"
-  require "$grbl/stepper.c" "^void ${function}_unguarded()" "$function"
-  printf '\nvoid sim_stepper_lock(void);\nvoid sim_stepper_unlock(void);\nvoid %s() { sim_stepper_lock(); %s_unguarded(); sim_stepper_unlock(); }\n' \
-    "$function" "$function" >>"$grbl/stepper.c"
-done
 sed -i 's/^void sim_loop(){\r\?$/extern __thread int sim_in_hardware_thread;\nvoid sim_loop(){ sim_in_hardware_thread = 1;/' "$sim/simulator.c"
 require "$sim/simulator.c" 'sim_in_hardware_thread = 1' "the hardware thread"
 
@@ -104,5 +89,5 @@ EOF
 cd "$sim"
 make clean >/dev/null
 make main FLAGS="-g -fcommon" >"$work/make.log" 2>&1 || { tail -20 "$work/make.log"; exit 1; }
-cp grbl_sim.exe "$out/"
+cp grbl_sim.exe "$out/.grbl_sim.exe.new" && mv -f "$out/.grbl_sim.exe.new" "$out/grbl_sim.exe"  # a running copy keeps its file
 echo "built $out/grbl_sim.exe"
