@@ -1,0 +1,21 @@
+// Fuzz target: the job sidecar reader (daemon/spool/job_ticket.hpp), read_job_ticket on a
+// NAME.job.toml file. Sidecars are written by the workshop's order system or by hand and dropped
+// in the watch folder next to a scan: outside input the daemon reads unattended.
+//
+// What counts as fine: read_job_ticket returns Result<JobTicket>; a bad sidecar is a failed
+// Status with one line ("unknown key ...", "line 3: ..."). It documents no exception, and the
+// daemon does not expect one from it, so no exception is caught here: any throw (a toml++ or
+// nlohmann exception that slipped through, std::bad_alloc) is reported by libFuzzer as a crash.
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+
+#include "daemon/spool/job_ticket.hpp"
+#include "fuzz_input_file.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  static lastcut::fuzz::FuzzInputFile file("scan.job.toml");
+  const lastcut::Result<lastcut::daemon::JobTicket> ticket = lastcut::daemon::read_job_ticket(file.write(data, size));
+  if (!ticket.ok() && ticket.error().empty()) std::abort();  // a refusal must say why
+  return 0;
+}
