@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <system_error>
 #include <vector>
@@ -148,14 +149,33 @@ MeshFileFacts check_stl(const std::filesystem::path& path, std::uintmax_t size, 
   return facts;
 }
 
+// True for a face record ("f ...", leading blanks allowed) with a corner whose vertex number is
+// missing ("/2", "//3"). The OBJ format requires it; OpenMesh's reader asserts on it and aborts
+// the whole process (found by tests/fuzz/obj_fuzz.cpp), so it never gets such a line.
+bool face_corner_without_vertex(const std::string& line) {
+  auto blank = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+  size_t at = 0;
+  while (at < line.size() && blank(line[at])) ++at;
+  if (at + 1 >= line.size() || line[at] != 'f' || !blank(line[at + 1])) return false;
+  for (at += 1; at < line.size(); ++at) {
+    if (!blank(line[at - 1]) || blank(line[at])) continue;  // not the start of a corner
+    if (line[at] == '/') return true;
+  }
+  return false;
+}
+
 MeshFileFacts check_obj(const std::filesystem::path& path, int max_triangles) {
   MeshFileFacts facts = facts_of(MeshFileFormat::Obj);
   std::ifstream in(path, std::ios::binary);
   std::string line;
-  long long faces = 0, vertices = 0;
+  long long faces = 0, vertices = 0, line_number = 0;
   while (std::getline(in, line)) {
+    ++line_number;
     if (line.size() >= 2 && line[0] == 'f' && std::isspace(static_cast<unsigned char>(line[1]))) ++faces;
     if (line.size() >= 2 && line[0] == 'v' && std::isspace(static_cast<unsigned char>(line[1]))) ++vertices;
+    if (face_corner_without_vertex(line))
+      throw EngineError("a face on line " + std::to_string(line_number) + " of OBJ " + path.filename().string() +
+                        " has a corner without a vertex number (like '/1')");
   }
   check_cap(faces, max_triangles, path);
   if (faces == 0) throw EngineError("no faces in OBJ " + path.filename().string());
@@ -190,8 +210,9 @@ MeshFileFacts check_ply(const std::filesystem::path& path, int max_triangles) {
 void check_off_records(const std::filesystem::path& path, const MeshFileFacts& facts) {
   const std::string text = read_all(path);
   TextTokens tokens(text, true);
-  // Keyword and the three counts.
-  for (int k = 0; k < 4; ++k) tokens.next();
+  // The header line, then the three counts.
+  tokens.skip_line();
+  for (int k = 0; k < 3; ++k) tokens.next();
   const long long values_needed = 3 * facts.declared_vertices;
   long long values = 0;
   while (values < values_needed && !tokens.next().empty()) ++values;
@@ -212,9 +233,16 @@ void check_off_records(const std::filesystem::path& path, const MeshFileFacts& f
 MeshFileFacts check_off(const std::filesystem::path& path, int max_triangles) {
   MeshFileFacts facts = facts_of(MeshFileFormat::Off);
   std::ifstream in(path, std::ios::binary);
-  std::string keyword;
-  if (!(in >> keyword) || keyword.find("OFF") == std::string::npos)
+  // OpenMesh takes the whole first line as the header and reads the counts after it, as unsigned
+  // ints: a count on the header line is never read, and "-3" becomes 4294967293 vertices to reserve
+  // (found by tests/fuzz/off_fuzz.cpp). So the counts are taken from the same place here.
+  std::string header_line, keyword;
+  std::getline(in, header_line);
+  std::istringstream header_words(header_line);
+  if (!(header_words >> keyword) || keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0)
     throw EngineError("not an OFF file: " + path.filename().string() + " does not start with 'OFF'");
+  if (header_line.find("BINARY") != std::string::npos)
+    throw EngineError("binary OFF is not read (" + path.filename().string() + "): export ASCII OFF, PLY or STL");
   std::vector<long long> counts;
   std::string token;
   while (counts.size() < 3 && in >> token) {
@@ -222,11 +250,16 @@ MeshFileFacts check_off(const std::filesystem::path& path, int max_triangles) {
       std::getline(in, token);
       continue;
     }
+    size_t used = 0;
+    long long count = -1;
     try {
-      counts.push_back(std::stoll(token));
+      count = std::stoll(token, &used);
     } catch (const std::exception&) {
-      throw EngineError("unreadable OFF header in " + path.filename().string() + ": '" + token + "' is not a count");
+      used = 0;
     }
+    if (used != token.size() || count < 0 || count > std::numeric_limits<int>::max())
+      throw EngineError("unreadable OFF header in " + path.filename().string() + ": '" + token + "' is not a count");
+    counts.push_back(count);
   }
   if (counts.size() < 2) throw EngineError("unreadable OFF header in " + path.filename().string());
   facts.declared_vertices = counts[0];
@@ -234,7 +267,7 @@ MeshFileFacts check_off(const std::filesystem::path& path, int max_triangles) {
   if (facts.declared_faces <= 0) throw EngineError("no faces in OFF " + path.filename().string());
   check_cap(facts.declared_faces, max_triangles, path);
   // OpenMesh pads a short OFF with made-up faces: check every record is there.
-  if (keyword.find("BINARY") == std::string::npos) check_off_records(path, facts);
+  check_off_records(path, facts);
   return facts;
 }
 

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cstdint>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "engine/core/engine_error.hpp"
@@ -104,9 +105,17 @@ PlyHeader read_ply_header(const std::filesystem::path& path) {
       header.body_offset = static_cast<size_t>(in.tellg());
       return header;
     }
+    // OpenMesh reads the header as a stream of words and loops for ever once one of them fails to
+    // read (a version or count that is not a number, a word missing at the end): found by
+    // tests/fuzz/ply_fuzz.cpp. So the format line comes first, and every line has all its words.
+    if (lines == 0 && keyword != "format")
+      throw EngineError("unreadable PLY header in " + name + ": the line after 'ply' must be the format line");
     if (keyword == "format") {
       std::string format;
+      float version = 0;
       words >> format;
+      if (!(words >> version))
+        throw EngineError("unreadable PLY header in " + name + ": the format line has no version number");
       if (format == "ascii") header.encoding = PlyEncoding::Ascii;
       else if (format == "binary_little_endian") header.encoding = PlyEncoding::BinaryLittleEndian;
       else if (format == "binary_big_endian") header.encoding = PlyEncoding::BinaryBigEndian;
@@ -116,14 +125,19 @@ PlyHeader read_ply_header(const std::filesystem::path& path) {
       PlyElement element;
       if (!(words >> element.name >> element.declared_count) || element.declared_count < 0)
         throw EngineError("unreadable PLY header in " + name + ": element without a count");
+      if (element.declared_count > std::numeric_limits<int>::max())
+        throw EngineError("unreadable PLY header in " + name + ": element count " + std::to_string(element.declared_count) +
+                          " is too large");
       header.elements.push_back(std::move(element));
     } else if (keyword == "property") {
       if (header.elements.empty()) throw EngineError("unreadable PLY header in " + name + ": property before any element");
       PlyProperty property;
-      std::string type, count_type, item_type;
+      std::string type, count_type, item_type, property_name;
       words >> type;
+      if (type == "list") words >> count_type >> item_type;
+      if (!(words >> property_name))
+        throw EngineError("unreadable PLY header in " + name + ": a property line without a name");
       if (type == "list") {
-        words >> count_type >> item_type;
         property.is_list = true;
         property.count_size_bytes = scalar_size(count_type);
         property.size_bytes = scalar_size(item_type);

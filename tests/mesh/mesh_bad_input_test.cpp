@@ -156,6 +156,43 @@ TEST(MeshBadInput, PlyHeaderWithUnknownTypeOrFormat) {
   expect_refusal([&] { read_mesh(dir / "format.ply"); }, "unknown format 'binary_middle_endian'");
 }
 
+// Found by tests/fuzz/obj_fuzz.cpp: OpenMesh's OBJ reader asserts (and aborts the daemon) on a
+// face corner with a texture or normal number but no vertex number.
+TEST(MeshBadInput, ObjFaceCornerWithoutVertexNumber) {
+  test::TempDir dir("obj-corner");
+  test::write_text(dir / "corner.obj", "v 0 0 0\nv 250 0 0\nv 0 90 0\nvt 0 0\nvn 0 0 1\n  f /1 2/1 3/1\n");
+  expect_refusal([&] { read_mesh(dir / "corner.obj"); }, "a face on line 6 of OBJ corner.obj has a corner without a vertex number");
+  test::write_text(dir / "normal.obj", "v 0 0 0\nv 250 0 0\nv 0 90 0\nvn 0 0 1\nf 1//1 2//1 //1\n");
+  expect_refusal([&] { read_mesh(dir / "normal.obj"); }, "line 5 of OBJ normal.obj");
+}
+
+// Found by tests/fuzz/ply_fuzz.cpp: OpenMesh's PLY header reader loops for ever when a version or
+// count is not a number it can read or a line lacks its last word, so the header check refuses them.
+TEST(MeshBadInput, PlyHeadersThatWouldHangOpenMesh) {
+  test::TempDir dir("ply-hang");
+  const std::string body = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
+  test::write_text(dir / "version.ply", "ply\nformat ascii form\n" + body);
+  expect_refusal([&] { read_mesh(dir / "version.ply"); }, "the format line has no version number");
+  test::write_text(dir / "first.ply", "ply\ncomment scanner\nformat ascii 1.0\n" + body);
+  expect_refusal([&] { read_mesh(dir / "first.ply"); }, "the line after 'ply' must be the format line");
+  test::write_text(dir / "count.ply", "ply\nformat ascii 1.0\nelement vertex 5000000000\nproperty float x\nend_header\n");
+  expect_refusal([&] { read_mesh(dir / "count.ply"); }, "element count 5000000000 is too large");
+  test::write_text(dir / "name.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float\nend_header\n0\n");
+  expect_refusal([&] { read_mesh(dir / "name.ply"); }, "a property line without a name");
+}
+
+// Found by tests/fuzz/off_fuzz.cpp: OpenMesh reads the counts after the header line as unsigned
+// ints, so "-3" made it reserve room for 4294967293 vertices (out of memory).
+TEST(MeshBadInput, OffCountsThatAreNoCounts) {
+  test::TempDir dir("off-counts");
+  test::write_text(dir / "negative.off", "OFF\n-3 1 0\n0 0 0\n");
+  expect_refusal([&] { read_mesh(dir / "negative.off"); }, "'-3' is not a count");
+  test::write_text(dir / "header.off", "OFF 3 1 0\n-3 1 0\n0 0 0\n");
+  expect_refusal([&] { read_mesh(dir / "header.off"); }, "'-3' is not a count");
+  test::write_text(dir / "binary.off", "OFF BINARY\n");
+  expect_refusal([&] { read_mesh(dir / "binary.off"); }, "binary OFF is not read");
+}
+
 TEST(MeshBadInput, NonManifoldMessIsRefused) {
   // Triangles fanned around shared edges: every edge carries three or more faces.
   test::TempDir dir("mess");
