@@ -29,7 +29,8 @@ max_len_of() {
   case "$1" in
     stl | obj | ply | off) echo 65536 ;;
     nest_instance | layout) echo 32768 ;;
-    grbl_reply | hpgl_reply) echo 4096 ;;
+    grbl_reply) echo 4096 ;;
+    hpgl_reply) echo 512 ;;  # a full ESC.B buffer ("0") makes the driver sleep 20 ms: keep runs short
     *) echo 16384 ;;
   esac
 }
@@ -80,13 +81,13 @@ crashed=0
 printf '%-16s %8s %12s %8s %8s %8s %12s %8s\n' target seconds executions exec/s cov ft corpus crashes
 for target in "${targets[@]}"; do
   log="$build/logs/$target.log"
-  final_stat() { sed -n "s/^stat::$1: *//p" "$log" | tail -1; }
-  last_status="$(grep -E '(cov|ft): [0-9]+' "$log" | tail -1 || true)"
+  final_stat() { sed -n "s/^stat::$1: *//p" "$log" | tail -1; }  # sed reads binary logs too
+  last_status="$(grep -aE '(cov|ft): [0-9]+' "$log" | tail -1 || true)"
   cov="$(sed -n 's/.*cov: \([0-9]*\).*/\1/p' <<<"$last_status")"
   ft="$(sed -n 's/.*ft: \([0-9]*\).*/\1/p' <<<"$last_status")"
   corpus="$(sed -n 's/.*corp: \([0-9]*\/[0-9]*[a-zA-Z]*\).*/\1/p' <<<"$last_status")"
   crashes="$(find "$build/artifacts/$target" -type f -newer "$stamp" | wc -l)"
-  if [ "$crashes" -gt 0 ] || grep -qE '^==[0-9]+==ERROR|^SUMMARY: (Address|Undefined)|deadly signal' "$log"; then
+  if [ "$crashes" -gt 0 ] || grep -aqE '^==[0-9]+==ERROR|^SUMMARY: (Address|Undefined)|deadly signal' "$log"; then
     crashed=1
     [ "$crashes" -gt 0 ] || crashes="see log"
   fi

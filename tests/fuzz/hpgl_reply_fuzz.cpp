@@ -4,7 +4,7 @@
 // the real run_hpgl_job against a scripted link (ScriptedLink) whose device side is the fuzz
 // input. Byte 0 picks the handshake (status queries, ESC.B or XON/XOFF); the rest is what the
 // device sends, delivered a few bytes per read; when it runs out the link reports "closed", so
-// no run waits on a clock. A cutter on a wrong baud rate or a noisy cable sends anything at all.
+// no run waits for a timeout. A cutter on a wrong baud rate or a noisy cable sends anything at all.
 //
 // What counts as fine: run_hpgl_job returns a SendResult (Done, Failed or Interrupted, with a
 // reason) for any reply. It documents no exception, so none is caught: any throw, crash, hang or
@@ -50,7 +50,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size == 0) return 0;
   lastcut::drivers::CutterConfig config;
   config.name = "fuzz";
-  config.timeout_s = 0;  // never wait for the clock: the script decides
+  // Answers are waited for up to timeout_s, but the scripted link never makes anyone wait: when its
+  // bytes run out it reports the link closed. Only a full ESC.B buffer ("0") sleeps, 20 ms a time,
+  // which the short -max_len of this target (scripts/fuzz.sh) keeps to a few seconds.
+  config.timeout_s = 1;
   switch (data[0] % 3) {
     case 0: config.hpgl_status_queries = true; break;
     case 1: config.hpgl_handshake = "escb"; break;
