@@ -69,7 +69,8 @@ bool load_register_map(const std::string& path, RegisterMap& map, std::string& e
   auto get = [&](const char* table, const char* key, int& field) {
     const auto node = root[table][key];
     if (!node) return;
-    const std::optional<int64_t> v = node.value<int64_t>();
+    // Only integer nodes: toml++ converts a float like 1e78 to int64_t with undefined behaviour.
+    const std::optional<int64_t> v = node.is_integer() ? node.value<int64_t>() : std::nullopt;
     if (!v || *v < 0 || *v > 65535) {
       if (bad_key.empty()) bad_key = std::string(table) + "." + key;
       return;
