@@ -193,7 +193,12 @@ MeshFileFacts check_ply(const std::filesystem::path& path, int max_triangles) {
   }
   if (facts.declared_faces <= 0) throw EngineError("no faces in PLY " + path.filename().string());
   check_cap(facts.declared_faces, max_triangles, path);
-  const std::vector<long long> records = count_ply_records(read_all(path), header);
+  std::vector<long long> records;
+  try {
+    records = count_ply_records(read_all(path), header);
+  } catch (const EngineError& error) {
+    throw EngineError("unreadable PLY " + path.filename().string() + ": " + error.what());
+  }
   long long vertices = 0, faces = 0;
   bool complete = true;
   for (size_t e = 0; e < header.elements.size(); ++e) {
@@ -208,23 +213,40 @@ MeshFileFacts check_ply(const std::filesystem::path& path, int max_triangles) {
 // Counts the vertex and face records after the OFF header (numbers only, no conversion to
 // coordinates), reading the whole file at once: line-by-line streams are far too slow here.
 void check_off_records(const std::filesystem::path& path, const MeshFileFacts& facts) {
+  const std::string name = path.filename().string();
   const std::string text = read_all(path);
   TextTokens tokens(text, true);
   // The header line, then the three counts.
   tokens.skip_line();
   for (int k = 0; k < 3; ++k) tokens.next();
+  // OpenMesh reads the rest as one stream of numbers, with no per-line structure: a value it reads
+  // only in part ("7-4") shifts everything after it, and a face size read as an unsigned int from
+  // "-4" (or anything from the colour values OpenMesh does not expect on a plain OFF face line) is
+  // 4 billion corners to store: found by tests/fuzz/off_fuzz.cpp. So every vertex value must be a
+  // number as a whole, every face a plain corner count (at most the vertex count) and as many
+  // plain vertex numbers, and nothing else on its line.
   const long long values_needed = 3 * facts.declared_vertices;
   long long values = 0;
-  while (values < values_needed && !tokens.next().empty()) ++values;
+  for (std::string_view value; values < values_needed && !(value = tokens.next()).empty(); ++values)
+    if (!TextTokens::is_number(value))
+      throw EngineError("unreadable OFF " + name + ": vertex value '" + std::string(value.substr(0, 20)) + "' is not a number");
   long long faces = 0;
   for (; faces < facts.declared_faces; ++faces) {
     const std::string_view corners_text = tokens.next();
     if (corners_text.empty()) break;
+    const std::string face = "unreadable OFF " + name + ": face " + std::to_string(faces + 1);
+    if (!TextTokens::is_count(corners_text, facts.declared_vertices))
+      throw EngineError(face + " has '" + std::string(corners_text.substr(0, 20)) + "' for its number of corners");
     const long long corners = std::strtoll(std::string(corners_text).c_str(), nullptr, 10);
     long long read = 0;
-    while (read < corners && !tokens.next().empty()) ++read;
+    for (std::string_view corner; read < corners && !(corner = tokens.next()).empty(); ++read)
+      if (!TextTokens::is_count(corner, std::numeric_limits<int>::max()))
+        throw EngineError(face + " has '" + std::string(corner.substr(0, 20)) + "' for a vertex number");
     if (read < corners) break;
-    tokens.skip_line();  // optional per-face colour values
+    const std::string_view rest = tokens.rest_of_line();
+    const size_t used = rest.find_first_not_of(" \t\r\v\f");
+    if (used != std::string_view::npos && rest[used] != '#')
+      throw EngineError(face + " has more values than its corners (face colours are not read)");
   }
   if (values < values_needed || faces < facts.declared_faces)
     throw truncated_error("OFF", path, facts, values / 3, faces);
@@ -243,6 +265,11 @@ MeshFileFacts check_off(const std::filesystem::path& path, int max_triangles) {
     throw EngineError("not an OFF file: " + path.filename().string() + " does not start with 'OFF'");
   if (header_line.find("BINARY") != std::string::npos)
     throw EngineError("binary OFF is not read (" + path.filename().string() + "): export ASCII OFF, PLY or STL");
+  // Variants (COFF, NOFF, STOFF, ...) carry more values per vertex, which the record check below
+  // does not count.
+  if (keyword != "OFF")
+    throw EngineError("OFF variant '" + keyword.substr(0, 20) + "' is not read (" + path.filename().string() +
+                      "): export plain OFF, PLY or STL");
   std::vector<long long> counts;
   std::string token;
   while (counts.size() < 3 && in >> token) {

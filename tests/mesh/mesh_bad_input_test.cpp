@@ -179,6 +179,14 @@ TEST(MeshBadInput, PlyHeadersThatWouldHangOpenMesh) {
   expect_refusal([&] { read_mesh(dir / "count.ply"); }, "element count 5000000000 is too large");
   test::write_text(dir / "name.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float\nend_header\n0\n");
   expect_refusal([&] { read_mesh(dir / "name.ply"); }, "a property line without a name");
+  test::write_text(dir / "unknown.ply", "ply\nformat ascii 1.0\npristoperty list uchar int vertex_indices\n" + body);
+  expect_refusal([&] { read_mesh(dir / "unknown.ply"); }, "unknown header line 'pristoperty'");
+  test::write_text(dir / "extra.ply", "ply\nformat ascii 1.0\nelement vertex 3 element\n" + body);
+  expect_refusal([&] { read_mesh(dir / "extra.ply"); }, "'element' too many on a element line");
+  test::write_text(dir / "value.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                       "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                       "end_header\n0 0 0\n1 0 0-4\n0 1 0\n3 0 1 2\n");
+  expect_refusal([&] { read_mesh(dir / "value.ply"); }, "a value that is not a number: '0-4'");
 }
 
 // Found by tests/fuzz/off_fuzz.cpp: OpenMesh reads the counts after the header line as unsigned
@@ -191,6 +199,16 @@ TEST(MeshBadInput, OffCountsThatAreNoCounts) {
   expect_refusal([&] { read_mesh(dir / "header.off"); }, "'-3' is not a count");
   test::write_text(dir / "binary.off", "OFF BINARY\n");
   expect_refusal([&] { read_mesh(dir / "binary.off"); }, "binary OFF is not read");
+  // A value OpenMesh would read in part ("7-4") shifts the stream: "-4" became a face of 4 billion corners.
+  const std::string vertices = "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  test::write_text(dir / "shifted.off", vertices + "3 0 1 2\n3 0 1 3-4 0 1 2\n");
+  expect_refusal([&] { read_mesh(dir / "shifted.off"); }, "face 2 has '3-4' for a vertex number");
+  test::write_text(dir / "value.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1-2 0\n0 0 1\n3 0 1 2\n");
+  expect_refusal([&] { read_mesh(dir / "value.off"); }, "vertex value '1-2' is not a number");
+  test::write_text(dir / "colour.off", vertices + "3 0 1 2 255 0 0\n3 0 1 3\n");
+  expect_refusal([&] { read_mesh(dir / "colour.off"); }, "face 1 has more values than its corners");
+  test::write_text(dir / "corners.off", vertices + "5000000000 0 1 2\n3 0 1 3\n");
+  expect_refusal([&] { read_mesh(dir / "corners.off"); }, "face 1 has '5000000000' for its number of corners");
 }
 
 TEST(MeshBadInput, NonManifoldMessIsRefused) {
