@@ -223,13 +223,16 @@ void check_off_records(const std::filesystem::path& path, const MeshFileFacts& f
   // only in part ("7-4") shifts everything after it, and a face size read as an unsigned int from
   // "-4" (or anything from the colour values OpenMesh does not expect on a plain OFF face line) is
   // 4 billion corners to store: found by tests/fuzz/off_fuzz.cpp. So every vertex value must be a
-  // number as a whole, every face a plain corner count (at most the vertex count) and as many
-  // plain vertex numbers, and nothing else on its line.
+  // number as a whole, the rest of a vertex line is skipped as OpenMesh skips it, every face is a
+  // plain corner count (at most the vertex count), as many plain vertex numbers and nothing else.
+  // A vertex is x y z; OpenMesh drops the rest of its line (a colour), so the check does too.
   const long long values_needed = 3 * facts.declared_vertices;
   long long values = 0;
-  for (std::string_view value; values < values_needed && !(value = tokens.next()).empty(); ++values)
+  for (std::string_view value; values < values_needed && !(value = tokens.next()).empty();) {
     if (!TextTokens::is_number(value))
       throw EngineError("unreadable OFF " + name + ": vertex value '" + std::string(value.substr(0, 20)) + "' is not a number");
+    if (++values % 3 == 0) tokens.skip_line();
+  }
   long long faces = 0;
   for (; faces < facts.declared_faces; ++faces) {
     const std::string_view corners_text = tokens.next();

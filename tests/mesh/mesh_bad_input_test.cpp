@@ -207,6 +207,9 @@ TEST(MeshBadInput, OffCountsThatAreNoCounts) {
   expect_refusal([&] { read_mesh(dir / "value.off"); }, "vertex value '1-2' is not a number");
   test::write_text(dir / "colour.off", vertices + "3 0 1 2 255 0 0\n3 0 1 3\n");
   expect_refusal([&] { read_mesh(dir / "colour.off"); }, "face 1 has more values than its corners");
+  // OpenMesh drops what follows x y z on a vertex line; counting it as a face shifted the faces.
+  test::write_text(dir / "rest.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1 3\n3 0 1 2\n5000000000 0 1 3\n");
+  expect_refusal([&] { read_mesh(dir / "rest.off"); }, "face 2 has '5000000000' for its number of corners");
   test::write_text(dir / "corners.off", vertices + "5000000000 0 1 2\n3 0 1 3\n");
   expect_refusal([&] { read_mesh(dir / "corners.off"); }, "face 1 has '5000000000' for its number of corners");
 }
