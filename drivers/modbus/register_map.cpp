@@ -2,6 +2,8 @@
 #include "drivers/modbus/register_map.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <toml++/toml.h>
 #include <utility>
 #include <vector>
@@ -29,11 +31,14 @@ bool validate_register_map(const RegisterMap& map, std::string& error) {
   std::vector<std::pair<int, int>> ranges{{map.status, 1}, {map.error_code, 1}, {map.progress_permille, 1},
                                           {map.block_ack, 1}, {map.command, 1}, {map.job_id, map.job_id_words},
                                           {map.program_bytes, 2}, {map.block_number, 2}, {map.window, map.window_words}};
-  for (size_t i = 0; i < ranges.size(); ++i) {
-    if (ranges[i].first < 0 || ranges[i].first + ranges[i].second > 65536) {
+  // Every range inside the 16-bit address space first: then the sums below cannot overflow.
+  for (const auto& [first, count] : ranges) {
+    if (first < 0 || first > 65536 - count) {
       error = "register map: address out of range 0..65535";
       return false;
     }
+  }
+  for (size_t i = 0; i < ranges.size(); ++i) {
     for (size_t j = i + 1; j < ranges.size(); ++j) {
       const bool overlap = ranges[i].first < ranges[j].first + ranges[j].second && ranges[j].first < ranges[i].first + ranges[i].second;
       if (overlap) {
@@ -42,8 +47,8 @@ bool validate_register_map(const RegisterMap& map, std::string& error) {
       }
     }
   }
-  if (map.poll_s <= 0) {
-    error = "register map: poll_s must be positive";
+  if (!(map.poll_s > 0) || !std::isfinite(map.poll_s)) {  // NaN fails the first test
+    error = "register map: poll_s must be a positive number";
     return false;
   }
   return true;
@@ -58,8 +63,19 @@ bool load_register_map(const std::string& path, RegisterMap& map, std::string& e
             std::to_string(e.source().begin.line);
     return false;
   }
+  // Addresses and codes are 16-bit register values: anything else is refused here, before a
+  // larger number could be cut down to an int (4294967296 would have become register 0).
+  std::string bad_key;
   auto get = [&](const char* table, const char* key, int& field) {
-    if (auto v = root[table][key].value<int64_t>()) field = static_cast<int>(*v);
+    const auto node = root[table][key];
+    if (!node) return;
+    // Only integer nodes: toml++ converts a float like 1e78 to int64_t with undefined behaviour.
+    const std::optional<int64_t> v = node.is_integer() ? node.value<int64_t>() : std::nullopt;
+    if (!v || *v < 0 || *v > 65535) {
+      if (bad_key.empty()) bad_key = std::string(table) + "." + key;
+      return;
+    }
+    field = static_cast<int>(*v);
   };
   get("registers", "status", map.status);
   get("registers", "error_code", map.error_code);
@@ -85,6 +101,10 @@ bool load_register_map(const std::string& path, RegisterMap& map, std::string& e
   get("command", "abort", map.command_codes.abort);
   get("command", "clear_error", map.command_codes.clear_error);
   if (auto v = root["timing"]["poll_s"].value<double>()) map.poll_s = *v;
+  if (!bad_key.empty()) {
+    error = "register map " + path + ": " + bad_key + " must be an integer 0..65535";
+    return false;
+  }
   return validate_register_map(map, error);
 }
 

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <system_error>
 #include <vector>
@@ -148,14 +149,33 @@ MeshFileFacts check_stl(const std::filesystem::path& path, std::uintmax_t size, 
   return facts;
 }
 
+// True for a face record ("f ...", leading blanks allowed) with a corner whose vertex number is
+// missing ("/2", "//3"). The OBJ format requires it; OpenMesh's reader asserts on it and aborts
+// the whole process (found by tests/fuzz/obj_fuzz.cpp), so it never gets such a line.
+bool face_corner_without_vertex(const std::string& line) {
+  auto blank = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+  size_t at = 0;
+  while (at < line.size() && blank(line[at])) ++at;
+  if (at + 1 >= line.size() || line[at] != 'f' || !blank(line[at + 1])) return false;
+  for (at += 1; at < line.size(); ++at) {
+    if (!blank(line[at - 1]) || blank(line[at])) continue;  // not the start of a corner
+    if (line[at] == '/') return true;
+  }
+  return false;
+}
+
 MeshFileFacts check_obj(const std::filesystem::path& path, int max_triangles) {
   MeshFileFacts facts = facts_of(MeshFileFormat::Obj);
   std::ifstream in(path, std::ios::binary);
   std::string line;
-  long long faces = 0, vertices = 0;
+  long long faces = 0, vertices = 0, line_number = 0;
   while (std::getline(in, line)) {
+    ++line_number;
     if (line.size() >= 2 && line[0] == 'f' && std::isspace(static_cast<unsigned char>(line[1]))) ++faces;
     if (line.size() >= 2 && line[0] == 'v' && std::isspace(static_cast<unsigned char>(line[1]))) ++vertices;
+    if (face_corner_without_vertex(line))
+      throw EngineError("a face on line " + std::to_string(line_number) + " of OBJ " + path.filename().string() +
+                        " has a corner without a vertex number (like '/1')");
   }
   check_cap(faces, max_triangles, path);
   if (faces == 0) throw EngineError("no faces in OBJ " + path.filename().string());
@@ -173,7 +193,12 @@ MeshFileFacts check_ply(const std::filesystem::path& path, int max_triangles) {
   }
   if (facts.declared_faces <= 0) throw EngineError("no faces in PLY " + path.filename().string());
   check_cap(facts.declared_faces, max_triangles, path);
-  const std::vector<long long> records = count_ply_records(read_all(path), header);
+  std::vector<long long> records;
+  try {
+    records = count_ply_records(read_all(path), header);
+  } catch (const EngineError& error) {
+    throw EngineError("unreadable PLY " + path.filename().string() + ": " + error.what());
+  }
   long long vertices = 0, faces = 0;
   bool complete = true;
   for (size_t e = 0; e < header.elements.size(); ++e) {
@@ -188,22 +213,43 @@ MeshFileFacts check_ply(const std::filesystem::path& path, int max_triangles) {
 // Counts the vertex and face records after the OFF header (numbers only, no conversion to
 // coordinates), reading the whole file at once: line-by-line streams are far too slow here.
 void check_off_records(const std::filesystem::path& path, const MeshFileFacts& facts) {
+  const std::string name = path.filename().string();
   const std::string text = read_all(path);
   TextTokens tokens(text, true);
-  // Keyword and the three counts.
-  for (int k = 0; k < 4; ++k) tokens.next();
+  // The header line, then the three counts.
+  tokens.skip_line();
+  for (int k = 0; k < 3; ++k) tokens.next();
+  // OpenMesh reads the rest as one stream of numbers, with no per-line structure: a value it reads
+  // only in part ("7-4") shifts everything after it, and a face size read as an unsigned int from
+  // "-4" (or anything from the colour values OpenMesh does not expect on a plain OFF face line) is
+  // 4 billion corners to store: found by tests/fuzz/off_fuzz.cpp. So every vertex value must be a
+  // number as a whole, the rest of a vertex line is skipped as OpenMesh skips it, every face is a
+  // plain corner count (at most the vertex count), as many plain vertex numbers and nothing else.
+  // A vertex is x y z; OpenMesh drops the rest of its line (a colour), so the check does too.
   const long long values_needed = 3 * facts.declared_vertices;
   long long values = 0;
-  while (values < values_needed && !tokens.next().empty()) ++values;
+  for (std::string_view value; values < values_needed && !(value = tokens.next()).empty();) {
+    if (!TextTokens::is_number(value))
+      throw EngineError("unreadable OFF " + name + ": vertex value '" + std::string(value.substr(0, 20)) + "' is not a number");
+    if (++values % 3 == 0) tokens.skip_line();
+  }
   long long faces = 0;
   for (; faces < facts.declared_faces; ++faces) {
     const std::string_view corners_text = tokens.next();
     if (corners_text.empty()) break;
+    const std::string face = "unreadable OFF " + name + ": face " + std::to_string(faces + 1);
+    if (!TextTokens::is_count(corners_text, facts.declared_vertices))
+      throw EngineError(face + " has '" + std::string(corners_text.substr(0, 20)) + "' for its number of corners");
     const long long corners = std::strtoll(std::string(corners_text).c_str(), nullptr, 10);
     long long read = 0;
-    while (read < corners && !tokens.next().empty()) ++read;
+    for (std::string_view corner; read < corners && !(corner = tokens.next()).empty(); ++read)
+      if (!TextTokens::is_count(corner, std::numeric_limits<int>::max()))
+        throw EngineError(face + " has '" + std::string(corner.substr(0, 20)) + "' for a vertex number");
     if (read < corners) break;
-    tokens.skip_line();  // optional per-face colour values
+    const std::string_view rest = tokens.rest_of_line();
+    const size_t used = rest.find_first_not_of(" \t\r\v\f");
+    if (used != std::string_view::npos && rest[used] != '#')
+      throw EngineError(face + " has more values than its corners (face colours are not read)");
   }
   if (values < values_needed || faces < facts.declared_faces)
     throw truncated_error("OFF", path, facts, values / 3, faces);
@@ -212,9 +258,21 @@ void check_off_records(const std::filesystem::path& path, const MeshFileFacts& f
 MeshFileFacts check_off(const std::filesystem::path& path, int max_triangles) {
   MeshFileFacts facts = facts_of(MeshFileFormat::Off);
   std::ifstream in(path, std::ios::binary);
-  std::string keyword;
-  if (!(in >> keyword) || keyword.find("OFF") == std::string::npos)
+  // OpenMesh takes the whole first line as the header and reads the counts after it, as unsigned
+  // ints: a count on the header line is never read, and "-3" becomes 4294967293 vertices to reserve
+  // (found by tests/fuzz/off_fuzz.cpp). So the counts are taken from the same place here.
+  std::string header_line, keyword;
+  std::getline(in, header_line);
+  std::istringstream header_words(header_line);
+  if (!(header_words >> keyword) || keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0)
     throw EngineError("not an OFF file: " + path.filename().string() + " does not start with 'OFF'");
+  if (header_line.find("BINARY") != std::string::npos)
+    throw EngineError("binary OFF is not read (" + path.filename().string() + "): export ASCII OFF, PLY or STL");
+  // Variants (COFF, NOFF, STOFF, ...) carry more values per vertex, which the record check below
+  // does not count.
+  if (keyword != "OFF")
+    throw EngineError("OFF variant '" + keyword.substr(0, 20) + "' is not read (" + path.filename().string() +
+                      "): export plain OFF, PLY or STL");
   std::vector<long long> counts;
   std::string token;
   while (counts.size() < 3 && in >> token) {
@@ -222,11 +280,16 @@ MeshFileFacts check_off(const std::filesystem::path& path, int max_triangles) {
       std::getline(in, token);
       continue;
     }
+    size_t used = 0;
+    long long count = -1;
     try {
-      counts.push_back(std::stoll(token));
+      count = std::stoll(token, &used);
     } catch (const std::exception&) {
-      throw EngineError("unreadable OFF header in " + path.filename().string() + ": '" + token + "' is not a count");
+      used = 0;
     }
+    if (used != token.size() || count < 0 || count > std::numeric_limits<int>::max())
+      throw EngineError("unreadable OFF header in " + path.filename().string() + ": '" + token + "' is not a count");
+    counts.push_back(count);
   }
   if (counts.size() < 2) throw EngineError("unreadable OFF header in " + path.filename().string());
   facts.declared_vertices = counts[0];
@@ -234,7 +297,7 @@ MeshFileFacts check_off(const std::filesystem::path& path, int max_triangles) {
   if (facts.declared_faces <= 0) throw EngineError("no faces in OFF " + path.filename().string());
   check_cap(facts.declared_faces, max_triangles, path);
   // OpenMesh pads a short OFF with made-up faces: check every record is there.
-  if (keyword.find("BINARY") == std::string::npos) check_off_records(path, facts);
+  check_off_records(path, facts);
   return facts;
 }
 

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cstdint>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "engine/core/engine_error.hpp"
@@ -72,14 +73,23 @@ long long count_binary(const std::string& bytes, const PlyElement& element, bool
 long long count_ascii(TextTokens& tokens, const PlyElement& element) {
   for (long long record = 0; record < element.declared_count; ++record) {
     for (const PlyProperty& property : element.properties) {
+      // OpenMesh reads the body as a stream of numbers: a token it reads only in part ("7-4") would
+      // shift every later value, and a shifted "-4" read as a list length is 4 billion items. So
+      // every value must be a number as a whole, every list length a plain count (found by the fuzzers).
       const std::string_view token = tokens.next();
       if (token.empty()) return record;
-      if (!property.is_list) continue;
+      if (!property.is_list) {
+        if (!TextTokens::is_number(token)) throw EngineError("a value that is not a number: '" + std::string(token.substr(0, 20)) + "'");
+        continue;
+      }
       long long items = 0;
       const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), items);
-      if (error != std::errc() || items < 0) return record;
-      for (long long item = 0; item < items; ++item)
-        if (tokens.next().empty()) return record;
+      if (error != std::errc() || end != token.data() + token.size() || items < 0) return record;
+      for (long long item = 0; item < items; ++item) {
+        const std::string_view value = tokens.next();
+        if (value.empty()) return record;
+        if (!TextTokens::is_number(value)) throw EngineError("a value that is not a number: '" + std::string(value.substr(0, 20)) + "'");
+      }
     }
   }
   return element.declared_count;
@@ -104,9 +114,19 @@ PlyHeader read_ply_header(const std::filesystem::path& path) {
       header.body_offset = static_cast<size_t>(in.tellg());
       return header;
     }
+    // OpenMesh reads the header as a stream of words, not lines, and loops for ever once one of them
+    // fails to read (a version or count that is not a number, a word missing, a line with a word
+    // too many that shifts the rest): found by tests/fuzz/ply_fuzz.cpp. So the format line comes
+    // first, every line has exactly its words, and only the header keywords are accepted.
+    if (lines == 0 && keyword != "format")
+      throw EngineError("unreadable PLY header in " + name + ": the line after 'ply' must be the format line");
+    if (keyword.empty() || keyword == "comment") continue;
     if (keyword == "format") {
       std::string format;
+      float version = 0;
       words >> format;
+      if (!(words >> version))
+        throw EngineError("unreadable PLY header in " + name + ": the format line has no version number");
       if (format == "ascii") header.encoding = PlyEncoding::Ascii;
       else if (format == "binary_little_endian") header.encoding = PlyEncoding::BinaryLittleEndian;
       else if (format == "binary_big_endian") header.encoding = PlyEncoding::BinaryBigEndian;
@@ -116,14 +136,19 @@ PlyHeader read_ply_header(const std::filesystem::path& path) {
       PlyElement element;
       if (!(words >> element.name >> element.declared_count) || element.declared_count < 0)
         throw EngineError("unreadable PLY header in " + name + ": element without a count");
+      if (element.declared_count > std::numeric_limits<int>::max())
+        throw EngineError("unreadable PLY header in " + name + ": element count " + std::to_string(element.declared_count) +
+                          " is too large");
       header.elements.push_back(std::move(element));
     } else if (keyword == "property") {
       if (header.elements.empty()) throw EngineError("unreadable PLY header in " + name + ": property before any element");
       PlyProperty property;
-      std::string type, count_type, item_type;
+      std::string type, count_type, item_type, property_name;
       words >> type;
+      if (type == "list") words >> count_type >> item_type;
+      if (!(words >> property_name))
+        throw EngineError("unreadable PLY header in " + name + ": a property line without a name");
       if (type == "list") {
-        words >> count_type >> item_type;
         property.is_list = true;
         property.count_size_bytes = scalar_size(count_type);
         property.size_bytes = scalar_size(item_type);
@@ -135,7 +160,16 @@ PlyHeader read_ply_header(const std::filesystem::path& path) {
       if (property.size_bytes == 0 || property.count_size_bytes == 8 || (property.is_list && property.count_size_bytes == 0))
         throw EngineError("unreadable PLY header in " + name + ": unknown property type '" + type + "'");
       header.elements.back().properties.push_back(property);
+    } else if (keyword == "obj_info") {
+      // Free text, but OpenMesh reads each of its words as a keyword.
+      for (std::string word; words >> word;)
+        if (word == "format" || word == "element" || word == "property" || word == "comment" || word == "end_header")
+          throw EngineError("unreadable PLY header in " + name + ": '" + word + "' inside an obj_info line");
+    } else {
+      throw EngineError("unreadable PLY header in " + name + ": unknown header line '" + keyword.substr(0, 20) + "'");
     }
+    if (std::string extra; words >> extra)
+      throw EngineError("unreadable PLY header in " + name + ": '" + extra.substr(0, 20) + "' too many on a " + keyword + " line");
   }
   throw EngineError("unreadable PLY header in " + name + " (no end_header)");
 }

@@ -35,7 +35,8 @@ struct PlyHeader {
 PlyHeader read_ply_header(const std::filesystem::path& path);
 
 // Complete records of each element (header order) in the file's bytes; an element after a short
-// one counts 0. Never more than its declared count.
+// one counts 0. Never more than its declared count. Throws EngineError for an ASCII value that is
+// not a number as a whole ("7-4"): OpenMesh would read it in part and shift the rest.
 std::vector<long long> count_ply_records(const std::string& file_bytes, const PlyHeader& header);
 
 }  // namespace lastcut

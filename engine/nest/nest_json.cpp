@@ -220,6 +220,9 @@ json read_json_file(const std::filesystem::path& path) {
     return json::parse(in);
   } catch (const json::parse_error& error) {
     throw EngineError(path.string() + " is not valid JSON (byte " + std::to_string(error.byte) + ")");
+  } catch (const json::out_of_range&) {
+    // nlohmann's parser refuses a number too large for a double (1e400) with out_of_range, not parse_error.
+    throw EngineError(path.string() + " holds a number too large to be read");
   }
 }
 

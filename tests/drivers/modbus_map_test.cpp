@@ -75,6 +75,29 @@ TEST(RegisterMap, RefusesBrokenMapsWithAReason) {
   EXPECT_FALSE(load_register_map(dir / "missing.toml", map, error));
 }
 
+// Found by the register_map fuzz target: an address near INT_MAX overflowed the overlap check
+// (UBSan), and one beyond int was silently cut down (4294967296 became register 0).
+TEST(RegisterMap, RefusesAddressesOutsideSixteenBits) {
+  testing::TempDir dir;
+  RegisterMap map;
+  std::string error;
+  EXPECT_FALSE(load_register_map(write_map(dir, "[registers]\nwindow = 2147483600\n"), map, error));
+  EXPECT_NE(error.find("registers.window must be an integer 0..65535"), std::string::npos) << error;
+  map = {};
+  EXPECT_FALSE(load_register_map(write_map(dir, "[registers]\nstatus = 4294967296\n"), map, error));
+  EXPECT_NE(error.find("registers.status"), std::string::npos) << error;
+  map = {};
+  EXPECT_FALSE(load_register_map(write_map(dir, "[command]\nabort = -1\n"), map, error));
+  EXPECT_NE(error.find("command.abort"), std::string::npos) << error;
+  map = {};
+  EXPECT_FALSE(load_register_map(write_map(dir, "[timing]\npoll_s = nan\n"), map, error));
+  EXPECT_NE(error.find("poll_s"), std::string::npos) << error;
+  map = {};
+  map.window = 2147483600;
+  EXPECT_FALSE(validate_register_map(map, error));
+  EXPECT_NE(error.find("out of range"), std::string::npos) << error;
+}
+
 TEST(ModbusEndpoint, ParsesTcpAndRtu) {
   ModbusEndpoint e;
   std::string error;

@@ -156,6 +156,64 @@ TEST(MeshBadInput, PlyHeaderWithUnknownTypeOrFormat) {
   expect_refusal([&] { read_mesh(dir / "format.ply"); }, "unknown format 'binary_middle_endian'");
 }
 
+// Found by tests/fuzz/obj_fuzz.cpp: OpenMesh's OBJ reader asserts (and aborts the daemon) on a
+// face corner with a texture or normal number but no vertex number.
+TEST(MeshBadInput, ObjFaceCornerWithoutVertexNumber) {
+  test::TempDir dir("obj-corner");
+  test::write_text(dir / "corner.obj", "v 0 0 0\nv 250 0 0\nv 0 90 0\nvt 0 0\nvn 0 0 1\n  f /1 2/1 3/1\n");
+  expect_refusal([&] { read_mesh(dir / "corner.obj"); }, "a face on line 6 of OBJ corner.obj has a corner without a vertex number");
+  test::write_text(dir / "normal.obj", "v 0 0 0\nv 250 0 0\nv 0 90 0\nvn 0 0 1\nf 1//1 2//1 //1\n");
+  expect_refusal([&] { read_mesh(dir / "normal.obj"); }, "line 5 of OBJ normal.obj");
+}
+
+// Found by tests/fuzz/ply_fuzz.cpp: OpenMesh's PLY header reader loops for ever when a version or
+// count is not a number it can read or a line lacks its last word, so the header check refuses them.
+TEST(MeshBadInput, PlyHeadersThatWouldHangOpenMesh) {
+  test::TempDir dir("ply-hang");
+  const std::string body = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\nend_header\n";
+  test::write_text(dir / "version.ply", "ply\nformat ascii form\n" + body);
+  expect_refusal([&] { read_mesh(dir / "version.ply"); }, "the format line has no version number");
+  test::write_text(dir / "first.ply", "ply\ncomment scanner\nformat ascii 1.0\n" + body);
+  expect_refusal([&] { read_mesh(dir / "first.ply"); }, "the line after 'ply' must be the format line");
+  test::write_text(dir / "count.ply", "ply\nformat ascii 1.0\nelement vertex 5000000000\nproperty float x\nend_header\n");
+  expect_refusal([&] { read_mesh(dir / "count.ply"); }, "element count 5000000000 is too large");
+  test::write_text(dir / "name.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float\nend_header\n0\n");
+  expect_refusal([&] { read_mesh(dir / "name.ply"); }, "a property line without a name");
+  test::write_text(dir / "unknown.ply", "ply\nformat ascii 1.0\npristoperty list uchar int vertex_indices\n" + body);
+  expect_refusal([&] { read_mesh(dir / "unknown.ply"); }, "unknown header line 'pristoperty'");
+  test::write_text(dir / "extra.ply", "ply\nformat ascii 1.0\nelement vertex 3 element\n" + body);
+  expect_refusal([&] { read_mesh(dir / "extra.ply"); }, "'element' too many on a element line");
+  test::write_text(dir / "value.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                       "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                       "end_header\n0 0 0\n1 0 0-4\n0 1 0\n3 0 1 2\n");
+  expect_refusal([&] { read_mesh(dir / "value.ply"); }, "a value that is not a number: '0-4'");
+}
+
+// Found by tests/fuzz/off_fuzz.cpp: OpenMesh reads the counts after the header line as unsigned
+// ints, so "-3" made it reserve room for 4294967293 vertices (out of memory).
+TEST(MeshBadInput, OffCountsThatAreNoCounts) {
+  test::TempDir dir("off-counts");
+  test::write_text(dir / "negative.off", "OFF\n-3 1 0\n0 0 0\n");
+  expect_refusal([&] { read_mesh(dir / "negative.off"); }, "'-3' is not a count");
+  test::write_text(dir / "header.off", "OFF 3 1 0\n-3 1 0\n0 0 0\n");
+  expect_refusal([&] { read_mesh(dir / "header.off"); }, "'-3' is not a count");
+  test::write_text(dir / "binary.off", "OFF BINARY\n");
+  expect_refusal([&] { read_mesh(dir / "binary.off"); }, "binary OFF is not read");
+  // A value OpenMesh would read in part ("7-4") shifts the stream: "-4" became a face of 4 billion corners.
+  const std::string vertices = "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  test::write_text(dir / "shifted.off", vertices + "3 0 1 2\n3 0 1 3-4 0 1 2\n");
+  expect_refusal([&] { read_mesh(dir / "shifted.off"); }, "face 2 has '3-4' for a vertex number");
+  test::write_text(dir / "value.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1-2 0\n0 0 1\n3 0 1 2\n");
+  expect_refusal([&] { read_mesh(dir / "value.off"); }, "vertex value '1-2' is not a number");
+  test::write_text(dir / "colour.off", vertices + "3 0 1 2 255 0 0\n3 0 1 3\n");
+  expect_refusal([&] { read_mesh(dir / "colour.off"); }, "face 1 has more values than its corners");
+  // OpenMesh drops what follows x y z on a vertex line; counting it as a face shifted the faces.
+  test::write_text(dir / "rest.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1 3\n3 0 1 2\n5000000000 0 1 3\n");
+  expect_refusal([&] { read_mesh(dir / "rest.off"); }, "face 2 has '5000000000' for its number of corners");
+  test::write_text(dir / "corners.off", vertices + "5000000000 0 1 2\n3 0 1 3\n");
+  expect_refusal([&] { read_mesh(dir / "corners.off"); }, "face 1 has '5000000000' for its number of corners");
+}
+
 TEST(MeshBadInput, NonManifoldMessIsRefused) {
   // Triangles fanned around shared edges: every edge carries three or more faces.
   test::TempDir dir("mess");

@@ -122,5 +122,19 @@ TEST(NestJson, RefusesFilesThatAreNotJson) {
   std::filesystem::remove(path);
 }
 
+// Found by the nest_instance fuzz target: nlohmann's parser throws out_of_range, not parse_error,
+// for a number no double holds; it escaped the reader instead of being refused.
+TEST(NestJson, RefusesNumbersTooLargeForADouble) {
+  const auto path = std::filesystem::temp_directory_path() / "lastcut-nest-huge-number.json";
+  std::ofstream(path) << R"({"strip_height": 1e400, "items": []})";
+  try {
+    read_nest_instance(path);
+    ADD_FAILURE() << "accepted";
+  } catch (const EngineError& error) {
+    EXPECT_NE(std::string(error.what()).find("number too large"), std::string::npos) << error.what();
+  }
+  std::filesystem::remove(path);
+}
+
 }  // namespace
 }  // namespace lastcut

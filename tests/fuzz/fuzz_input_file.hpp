@@ -1,0 +1,47 @@
+#pragma once
+// FuzzInputFile: hands one fuzz input to a loader that only reads from a path (mesh readers,
+// the TOML and JSON loaders). The bytes are written to a file with the extension the loader
+// needs, in a folder of this process (fuzz targets may run side by side), so the real entry
+// point is fuzzed and no parsing code is duplicated for the fuzzer. The folder is removed at exit.
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+namespace lastcut::fuzz {
+
+class FuzzInputFile {
+ public:
+  // `file_name` decides the format the loader sees, e.g. "scan.stl" or "order.job.toml".
+  explicit FuzzInputFile(const std::string& file_name)
+      : folder_(std::filesystem::temp_directory_path() / ("lastcut-fuzz-" + std::to_string(::getpid()))),
+        path_(folder_ / file_name) {
+    std::filesystem::create_directories(folder_);
+  }
+  ~FuzzInputFile() {
+    std::error_code ignored;
+    std::filesystem::remove_all(folder_, ignored);
+  }
+  FuzzInputFile(const FuzzInputFile&) = delete;
+  FuzzInputFile& operator=(const FuzzInputFile&) = delete;
+
+  // Replaces the file's content with the input; returns its path.
+  const std::filesystem::path& write(const uint8_t* data, size_t size) {
+    std::ofstream out(path_, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+    out.close();
+    // A full /tmp would make every input look empty: stop rather than fuzz nothing.
+    if (!out) throw std::runtime_error("cannot write fuzz input " + path_.string());
+    return path_;
+  }
+
+ private:
+  std::filesystem::path folder_;
+  std::filesystem::path path_;
+};
+
+}  // namespace lastcut::fuzz
