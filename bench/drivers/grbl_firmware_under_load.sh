@@ -38,7 +38,7 @@ for ((run = 1; run <= runs; run++)); do
        --grbl-setting '$110=60000,$111=60000,$112=60000,$120=500000,$121=500000,$122=500000' >"$dir/send.log" 2>&1; then
     sent=ok
   else
-    sent="send failed: $(tail -1 "$dir/send.log")"
+    sent="send failed: $(grep -m1 '^lastcut:' "$dir/send.log" | cut -c1-160)"
   fi
   seconds=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "%.1f", e - s }')
   kill "$runner_pid"; wait "$runner_pid" 2>/dev/null || true
