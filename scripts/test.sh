@@ -11,9 +11,11 @@ bash scripts/setup.sh
 echo "== build (RelWithDebInfo)"
 bash scripts/build.sh build
 echo "== tests"
-# firmware-slow: every shipped profile's whole cut file on the real grbl firmware (minutes; see
-# docs/grbl-firmware.md), run on its own with `ctest --test-dir build -L firmware-slow`.
-ctest --test-dir build --output-on-failure -j "$jobs" --timeout 600 -LE firmware-slow
+# The tests on the real grbl firmware (labels firmware, firmware-slow) run on their own:
+# `ctest --test-dir build -L firmware`. Its simulator (grbl-sim, not ours) still stalls now and
+# then under load (docs/grbl-firmware.md), and a stall must not make this run a lottery. The
+# firmware itself is still built here (target grbl_firmware), so its build is checked.
+ctest --test-dir build --output-on-failure -j "$jobs" --timeout 600 -LE firmware
 
 echo "== build (ASan + UBSan)"
 bash scripts/build.sh build-asan -DLASTCUT_SANITIZE=ON -DLASTCUT_BUILD_BENCH=OFF
