@@ -28,7 +28,7 @@ echo "deb http://deb.debian.org/debian bookworm main" >"$root/etc/apt/sources.li
 chroot "$root" apt-get update -q >/dev/null
 # systemd in the root: the unit's checks run with the root's own systemd-analyze.
 chroot "$root" env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends systemd >/dev/null
-snapshot() { (cd "$root" && find . -xdev \( -path ./proc -o -path ./var/cache/apt -o -path ./var/lib/apt/lists -o -path ./tmp \) -prune -o -print | sort) >"$1"; }
+snapshot() { (cd "$root" && find . -xdev \( -path ./proc -o -path ./run -o -path ./var/cache/apt -o -path ./var/lib/apt/lists -o -path ./tmp \) -prune -o -print | sort) >"$1"; }
 snapshot "$root.files-before"
 
 cp "$deb" "$root/tmp/"
@@ -40,7 +40,7 @@ check "user lastcut is in dialout" sh -c "chroot '$root' id -nG lastcut | tr ' '
 check "spool folders exist, owned by lastcut" sh -c "chroot '$root' stat -c '%U %n' /var/spool/lastcut /var/spool/lastcut/incoming | grep -c '^lastcut ' | grep -qx 2"
 check "conffile /etc/lastcut/lastcut.toml" sh -c "chroot '$root' dpkg-query -W -f='\${Conffiles}' lastcut | grep -q /etc/lastcut/lastcut.toml"
 check "man pages" chroot "$root" test -f /usr/share/man/man1/lastcut.1.gz -a -f /usr/share/man/man8/lastcutd.8.gz -a -f /usr/share/man/man5/lastcut.toml.5.gz
-check "systemd-analyze verify lastcutd.service" chroot "$root" systemd-analyze verify /lib/systemd/system/lastcutd.service
+check "systemd-analyze verify lastcutd.service" chroot "$root" systemd-analyze verify --man=no /lib/systemd/system/lastcutd.service
 exposure() {
   local level
   level="$(chroot "$root" systemd-analyze security --offline=true /lib/systemd/system/lastcutd.service 2>&1 |

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The systemd unit passes `systemd-analyze verify` and `systemd-analyze security --offline=true`
-# rates it at most 3.0 (printed). The unit is checked as shipped, except that ExecStart points
+# rates it at most 2.0 (printed). The unit is checked as shipped, except that ExecStart points
 # at the lastcutd just built (verify insists that the program exists).
 # Usage: check_systemd_unit.sh SYSTEMD_FOLDER LASTCUTD_BINARY
 set -euo pipefail
@@ -23,8 +23,8 @@ systemd-analyze security --offline=true "$work/lastcutd.service" > "$work/securi
 grep -E "^✗" "$work/security.txt" || true
 score="$(grep -oE 'Overall exposure level for lastcutd.service: [0-9]+\.[0-9]+' "$work/security.txt" | grep -oE '[0-9]+\.[0-9]+$')"
 [ -n "$score" ] || { echo "FAIL: no exposure level in:"; cat "$work/security.txt"; exit 1; }
-echo "exposure level: $score (must be <= 3.0)"
-awk -v s="$score" 'BEGIN { exit !(s <= 3.0) }' || { echo "FAIL: exposure $score > 3.0"; exit 1; }
+echo "exposure level: $score (must be <= 2.0)"
+awk -v s="$score" 'BEGIN { exit !(s <= 2.0) }' || { echo "FAIL: exposure $score > 2.0"; exit 1; }
 
 echo "== required settings"
 for setting in "Type=notify" "WatchdogSec=" "Restart=on-failure" "SupplementaryGroups=dialout" \
