@@ -1,6 +1,7 @@
 // lastcutd end to end with the REAL grbl 1.1h firmware as its cutter (tests/peers/run_grbl_firmware.sh
 // on a pty): a last dropped into the watch folder is flattened, nested and cut with the shipped
-// grbl-drag-knife profile (its knife), and the firmware executes every line of the cut file to its end.
+// grbl-drag-knife profile (knife and pens: the pens go down and up with M8/M9, buffer syncs), and the
+// firmware executes every line of the cut file to its end.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -17,6 +18,7 @@ namespace {
 // Motion lines of a cut file, and its last target in firmware steps (grbl's default 250 steps/mm).
 struct CutFile {
   int motion_lines = 0;
+  int pen_downs = 0;  // M8: a buffer sync on grbl
   long last_x_steps = 0, last_y_steps = 0;
 };
 
@@ -26,6 +28,7 @@ CutFile read_cut_file(const std::filesystem::path& file) {
   const std::regex motion(R"(^G[0-3]\b)");
   const std::regex word(R"(([XY])(-?[0-9.]+))");
   for (std::string line; std::getline(in, line);) {
+    if (line.rfind("M8", 0) == 0) ++cut.pen_downs;
     if (!std::regex_search(line, motion)) continue;
     ++cut.motion_lines;
     for (std::sregex_iterator it(line.begin(), line.end(), word), end; it != end; ++it) {
@@ -46,19 +49,6 @@ TEST(GrblFirmwareDaemon, ALastDroppedInTheWatchFolderIsCutOnTheRealFirmware) {
       "grbl_settings = [\"$110=60000\", \"$111=60000\", \"$112=60000\", \"$120=500000\", \"$121=500000\", "
       "\"$122=500000\"]\n";
   DaemonRig rig("firmware-e2e", options);
-  // The shipped drag-knife profile without its pens: the pens go down and up with M8/M9, buffer
-  // syncs, around which the firmware's simulator still stalls now and then (its own thread race,
-  // docs/grbl-firmware.md). The knife still cuts every outline and notch.
-  const auto machines = rig.root() / "machines";
-  std::filesystem::create_directories(machines);
-  const std::string profile = read_text(std::filesystem::path(LASTCUT_SOURCE_DIR) / "config/machines/grbl-drag-knife.toml");
-  write_text(machines / "grbl-knife-only.toml",
-             std::regex_replace(profile.substr(0, profile.find("[tools.mark]")), std::regex("grbl-drag-knife"),
-                                "grbl-knife-only"));
-  std::string config = read_text(rig.config_file());
-  config = std::regex_replace(config, std::regex("machines = \"[^\"]*\""), "machines = \"" + machines.string() + "\"");
-  config = std::regex_replace(config, std::regex("grbl-drag-knife"), "grbl-knife-only");
-  write_text(rig.config_file(), config);
   ASSERT_NO_FATAL_FAILURE(rig.start_cutters());
   ASSERT_NO_FATAL_FAILURE(rig.start_daemon());
 
@@ -76,13 +66,15 @@ TEST(GrblFirmwareDaemon, ALastDroppedInTheWatchFolderIsCutOnTheRealFirmware) {
     if (entry.path().filename() == "cut.nc") cut_files.insert(std::filesystem::canonical(entry.path()));
   }
   ASSERT_FALSE(cut_files.empty());
-  int motion_lines = 0;
+  int motion_lines = 0, pen_downs = 0;
   std::set<std::pair<long, long>> last_targets;
   for (const auto& file : cut_files) {
     const CutFile cut = read_cut_file(file);
     motion_lines += cut.motion_lines;
+    pen_downs += cut.pen_downs;
     last_targets.insert({cut.last_x_steps, cut.last_y_steps});
   }
+  EXPECT_GT(pen_downs, 0) << "the cut files never lowered a pen: the buffer syncs went untested";
   const auto blocks = rig.firmware_blocks("cutter-1");
   EXPECT_GE(static_cast<int>(blocks.size()), motion_lines) << "a motion line never reached the planner";
   ASSERT_FALSE(blocks.empty());
