@@ -11,11 +11,9 @@ bash scripts/setup.sh
 echo "== build (RelWithDebInfo)"
 bash scripts/build.sh build
 echo "== tests"
-# The tests on the real grbl firmware (labels firmware, firmware-slow) run on their own:
-# `ctest --test-dir build -L firmware`. Its simulator (grbl-sim, not ours) still stalls now and
-# then under load (docs/grbl-firmware.md), and a stall must not make this run a lottery. The
-# firmware itself is still built here (target grbl_firmware), so its build is checked.
-ctest --test-dir build --output-on-failure -j "$jobs" --timeout 600 -LE firmware
+# Every test, the ones on the real grbl 1.1h firmware included (labels firmware, firmware-slow:
+# tests/peers, docs/grbl-firmware.md); they share one resource lock, so one firmware runs at a time.
+ctest --test-dir build --output-on-failure -j "$jobs" --timeout 600
 
 echo "== build (ASan + UBSan)"
 bash scripts/build.sh build-asan -DLASTCUT_SANITIZE=ON -DLASTCUT_BUILD_BENCH=OFF
