@@ -16,6 +16,8 @@
 #include "tests/flatten/flatten_fixtures.hpp"
 
 #include "engine/lastgen/generate_last.hpp"
+#include "engine/mesh/midpoint_subdivision.hpp"
+#include "engine/mesh/read_mesh.hpp"
 #include "engine/orient/orient_last.hpp"
 #include "engine/segment/segment_last.hpp"
 
@@ -50,9 +52,33 @@ std::vector<BenchHalf> reference_halves(bool largest) {
   std::vector<BenchHalf> halves;
   halves.push_back({"FIND half, QEM-decimated", decimate(reference, 25000)});
   halves.push_back({"FIND half (reference file)", reference});
-  TriMesh hundred = decimate(testing::subdivide_midpoint(reference), 100000);
+  TriMesh hundred = decimate(subdivide_midpoint(reference), 100000);
   halves.push_back({"FIND half, subdivided + decimated", hundred});
-  if (largest) halves.push_back({"FIND half, subdivided + decimated + subdivided", testing::subdivide_midpoint(hundred)});
+  if (largest) halves.push_back({"FIND half, subdivided + decimated + subdivided", subdivide_midpoint(hundred)});
+  return halves;
+}
+
+std::vector<BenchHalf> find_foot_halves(int half_triangles) {
+  MeshReadOptions read;
+  read.unit = LengthUnit::Metre;
+  TriMesh foot = read_mesh(std::string(LASTCUT_SHARED_DATA_DIR) + "/meshes/find-template-foot.obj", read).mesh;
+  for (int level = 0; level < 4; ++level) foot = subdivide_midpoint(foot);
+  // The two halves hold ~86 % of the foot's triangles (the ankle cut and the sole rim are left out);
+  // correct the whole foot's size by what the first cut gave.
+  double halves_fraction = 0.86;
+  std::vector<BenchHalf> halves;
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    const TriMesh decimated = decimate(foot, static_cast<int>(2.0 * half_triangles / halves_fraction));
+    Segmentation both = segment_last(orient_last(decimated));
+    const int got = both.medial.mesh.triangle_count() + both.lateral.mesh.triangle_count();
+    if (std::abs(got - 2 * half_triangles) <= 0.04 * half_triangles || attempt == 2) {
+      const std::string name = "FIND foot (" + std::to_string((decimated.triangle_count() + 500) / 1000) + "k), ";
+      halves.push_back({name + "medial half", std::move(both.medial.mesh)});
+      halves.push_back({name + "lateral half", std::move(both.lateral.mesh)});
+      break;
+    }
+    halves_fraction = static_cast<double>(got) / decimated.triangle_count();
+  }
   return halves;
 }
 

@@ -18,6 +18,11 @@ struct BenchHalf {
 // subdivided again (~400k). `largest` false skips the ~400k one.
 std::vector<BenchHalf> reference_halves(bool largest);
 
+// Medial and lateral halves of the FIND foot template (a real scanned foot, MIT, 1,750 triangles):
+// subdivided 1:256 (midpoint), QEM-decimated so that each half has about half_triangles triangles,
+// then stood up and cut by the same orient + segment steps a scan goes through.
+std::vector<BenchHalf> find_foot_halves(int half_triangles);
+
 // Medial halves of generated EU 42 lasts (lastgen + segment) with half_triangles[i] triangles +/- 2 %
 // (the last's triangle count is corrected from the half it gave until the half is within 2 %), and the
 // lateral half too for the 100,000 target.

@@ -134,6 +134,7 @@ int main(int argc, char** argv) {
     if (std::strcmp(argv[i], "--save") == 0 && i + 1 < argc) save_folder = argv[++i];
   }
   std::vector<BenchHalf> halves = reference_halves(largest);
+  for (BenchHalf& foot_half : find_foot_halves(100000)) halves.push_back(std::move(foot_half));
   std::vector<int> generated_sizes = {25000, 100000};
   if (largest) generated_sizes.push_back(400000);
   for (BenchHalf& generated : generated_halves(generated_sizes)) halves.push_back(std::move(generated));

@@ -1,10 +1,11 @@
 #include "engine/core/tri_mesh.hpp"
 
 #include <Eigen/Geometry>
-#include <cstdio>
-#include <memory>
+#include <fstream>
 
+#include "engine/core/decimal_text.hpp"
 #include "engine/core/engine_error.hpp"
+#include "engine/core/text_sink.hpp"
 
 namespace lastcut {
 
@@ -41,35 +42,46 @@ Eigen::Vector3d bounding_box_size(const TriMesh& mesh) {
 
 namespace {
 
-struct FileCloser {
-  void operator()(std::FILE* file) const { std::fclose(file); }
-};
-using File = std::unique_ptr<std::FILE, FileCloser>;
-
-File open_for_writing(const std::filesystem::path& path) {
-  File file(std::fopen(path.c_str(), "w"));
-  if (!file) throw EngineError("cannot write " + path.string());
-  return file;
+std::ofstream open_for_writing(const std::filesystem::path& path) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw EngineError("cannot write " + path.string());
+  return out;
 }
 
-void write_faces(std::FILE* file, const Eigen::MatrixXi& F) {
-  for (Eigen::Index f = 0; f < F.rows(); ++f)
-    std::fprintf(file, "f %d %d %d\n", F(f, 0) + 1, F(f, 1) + 1, F(f, 2) + 1);
+// `columns` coordinates of each vertex with 6 decimals (1 nm in mm), then z = 0 for 2D positions,
+// then the triangles with 1-based indices.
+void write_obj_text(const std::filesystem::path& path, const Eigen::MatrixXd& V, const Eigen::MatrixXi& F) {
+  std::ofstream out = open_for_writing(path);
+  {
+    TextSink sink(out);
+    for (Eigen::Index v = 0; v < V.rows(); ++v) {
+      sink.text() += 'v';
+      for (Eigen::Index c = 0; c < V.cols(); ++c) {
+        sink.text() += ' ';
+        append_fixed(sink.text(), V(v, c), 6);
+      }
+      if (V.cols() == 2) sink.text() += " 0";
+      sink.end_line();
+    }
+    for (Eigen::Index f = 0; f < F.rows(); ++f) {
+      sink.text() += 'f';
+      for (int c = 0; c < 3; ++c) {
+        sink.text() += ' ';
+        append_integer(sink.text(), F(f, c) + 1);
+      }
+      sink.end_line();
+    }
+  }
+  out.flush();
+  if (!out) throw EngineError("cannot write " + path.string() + " (disk full?)");
 }
 
 }  // namespace
 
-void write_obj(const std::filesystem::path& path, const TriMesh& mesh) {
-  File file = open_for_writing(path);
-  for (Eigen::Index v = 0; v < mesh.V.rows(); ++v)
-    std::fprintf(file.get(), "v %.6f %.6f %.6f\n", mesh.V(v, 0), mesh.V(v, 1), mesh.V(v, 2));
-  write_faces(file.get(), mesh.F);
-}
+void write_obj(const std::filesystem::path& path, const TriMesh& mesh) { write_obj_text(path, mesh.V, mesh.F); }
 
 void write_obj_2d(const std::filesystem::path& path, const Eigen::MatrixXd& UV, const Eigen::MatrixXi& F) {
-  File file = open_for_writing(path);
-  for (Eigen::Index v = 0; v < UV.rows(); ++v) std::fprintf(file.get(), "v %.6f %.6f 0\n", UV(v, 0), UV(v, 1));
-  write_faces(file.get(), F);
+  write_obj_text(path, UV, F);
 }
 
 }  // namespace lastcut

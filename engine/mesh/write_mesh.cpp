@@ -10,7 +10,9 @@
 #include <fstream>
 #include <string>
 
+#include "engine/core/decimal_text.hpp"
 #include "engine/core/engine_error.hpp"
+#include "engine/core/text_sink.hpp"
 
 namespace lastcut {
 namespace {
@@ -35,32 +37,40 @@ void put(std::ofstream& out, T value) {
   out.write(bytes, sizeof(T));
 }
 
-void write_obj_file(const std::filesystem::path& path, const TriMesh& mesh) {
-  std::ofstream out = open_binary(path);
-  char line[128];
-  for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) {
-    const int n = std::snprintf(line, sizeof line, "v %.6f %.6f %.6f\n", mesh.V(v, 0), mesh.V(v, 1), mesh.V(v, 2));
-    out.write(line, n);
+// "x y z" of vertex v with 6 decimals (1 nm in mm), as "%.6f" writes them.
+void append_vertex(std::string& text, const Eigen::MatrixXd& V, Eigen::Index v) {
+  for (int c = 0; c < 3; ++c) {
+    if (c > 0) text += ' ';
+    append_fixed(text, V(v, c), 6);
   }
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-    const int n = std::snprintf(line, sizeof line, "f %d %d %d\n", mesh.F(f, 0) + 1, mesh.F(f, 1) + 1, mesh.F(f, 2) + 1);
-    out.write(line, n);
+}
+
+void append_triangle(std::string& text, const Eigen::MatrixXi& F, Eigen::Index f, int index_base) {
+  for (int c = 0; c < 3; ++c) {
+    text += ' ';
+    append_integer(text, F(f, c) + index_base);
   }
-  finish(out, path);
 }
 
 void write_off_file(const std::filesystem::path& path, const TriMesh& mesh) {
   std::ofstream out = open_binary(path);
-  char line[128];
-  int n = std::snprintf(line, sizeof line, "OFF\n%d %d 0\n", mesh.vertex_count(), mesh.triangle_count());
-  out.write(line, n);
-  for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) {
-    n = std::snprintf(line, sizeof line, "%.6f %.6f %.6f\n", mesh.V(v, 0), mesh.V(v, 1), mesh.V(v, 2));
-    out.write(line, n);
-  }
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-    n = std::snprintf(line, sizeof line, "3 %d %d %d\n", mesh.F(f, 0), mesh.F(f, 1), mesh.F(f, 2));
-    out.write(line, n);
+  {
+    TextSink sink(out);
+    sink.text() += "OFF\n";
+    append_integer(sink.text(), mesh.vertex_count());
+    sink.text() += ' ';
+    append_integer(sink.text(), mesh.triangle_count());
+    sink.text() += " 0";
+    sink.end_line();
+    for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) {
+      append_vertex(sink.text(), mesh.V, v);
+      sink.end_line();
+    }
+    for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+      sink.text() += '3';
+      append_triangle(sink.text(), mesh.F, f, 0);
+      sink.end_line();
+    }
   }
   finish(out, path);
 }
@@ -108,7 +118,7 @@ void write_stl_binary(const std::filesystem::path& path, const TriMesh& mesh) {
 void write_mesh(const std::filesystem::path& path, const TriMesh& mesh) {
   const std::string extension = lower_extension(path);
   if (extension == ".stl") return write_stl_binary(path, mesh);
-  if (extension == ".obj") return write_obj_file(path, mesh);
+  if (extension == ".obj") return write_obj(path, mesh);
   if (extension == ".ply") return write_ply_file(path, mesh);
   if (extension == ".off") return write_off_file(path, mesh);
   throw EngineError("cannot write mesh format '" + extension + "' of " + path.filename().string() +

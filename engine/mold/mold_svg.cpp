@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/decimal_text.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/core/svg_document.hpp"
 
@@ -24,11 +25,7 @@ constexpr int kBins = 10;
 constexpr std::array<const char*, kBins> kBinColors = {"#ffffcc", "#ffeda0", "#fed976", "#feb24c", "#fd8d3c",
                                                        "#fc4e2a", "#e31a1c", "#bd0026", "#990026", "#800026"};
 
-std::string fmt(double value, int decimals = 2) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.*f", decimals, value);
-  return text;
-}
+std::string fmt(double value, int decimals = 2) { return fixed_text(value, decimals); }
 
 double percentile(std::vector<double> values, double fraction) {
   if (values.empty()) return 1.0;
@@ -71,14 +68,22 @@ void write_mold_svg(const std::filesystem::path& path, const Mold& mold, const E
   const double low = std::min(percentile(values, 0.01), 0.99);
   const double high = std::max(percentile(values, 0.99), 1.01);
 
-  std::vector<std::ostringstream> bin_paths(kBins);
+  // Each vertex's "x,y" is formatted once: a vertex is shared by about six triangles.
+  std::vector<std::string> vertex_at(static_cast<size_t>(UV.rows()));
+  for (Eigen::Index v = 0; v < UV.rows(); ++v) vertex_at[v] = frame.at(UV.row(v).transpose());
+  std::vector<std::string> bin_paths(kBins);
   for (Eigen::Index f = 0; f < F.rows(); ++f) {
     const double s = stretch_per_triangle(f);
     const double t = std::isfinite(s) ? std::clamp((s - low) / (high - low), 0.0, 1.0) : 1.0;
     const int bin = std::min(kBins - 1, static_cast<int>(t * kBins));
-    auto& out = bin_paths[bin];
-    out << 'M' << frame.at(UV.row(F(f, 0)).transpose()) << 'L' << frame.at(UV.row(F(f, 1)).transpose()) << 'L'
-        << frame.at(UV.row(F(f, 2)).transpose()) << 'Z';
+    std::string& d = bin_paths[bin];
+    d += 'M';
+    d += vertex_at[F(f, 0)];
+    d += 'L';
+    d += vertex_at[F(f, 1)];
+    d += 'L';
+    d += vertex_at[F(f, 2)];
+    d += 'Z';
   }
 
   std::ostringstream svg;
@@ -86,7 +91,7 @@ void write_mold_svg(const std::filesystem::path& path, const Mold& mold, const E
       << "<title>mold " << xml_escaped(mold.name) << ": stretch of the leather (1 = unstrained), 1:1 in mm</title>\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<g id=\"stretch\" stroke-width=\"0.02\">\n";
   for (int b = 0; b < kBins; ++b) {
-    const std::string d = bin_paths[b].str();
+    const std::string& d = bin_paths[b];
     if (!d.empty())
       svg << "<path fill=\"" << kBinColors[b] << "\" stroke=\"" << kBinColors[b] << "\" d=\"" << d << "\"/>\n";
   }

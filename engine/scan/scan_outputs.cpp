@@ -69,6 +69,12 @@ nlohmann::json intake_report_json(const IntakeReport& intake) {
           {"notes", intake.notes}};
 }
 
+nlohmann::json profile_json(const std::vector<StageTime>& stages) {
+  nlohmann::json profile = nlohmann::json::array();
+  for (const StageTime& stage : stages) profile.push_back({{"stage", stage.stage}, {"seconds", stage.seconds}});
+  return profile;
+}
+
 }  // namespace
 
 nlohmann::json scan_report_json(const ScanResult& result) {
@@ -80,6 +86,7 @@ nlohmann::json scan_report_json(const ScanResult& result) {
                            {"segments", nlohmann::json::array()}};
   report["side"] = result.side ? nlohmann::json(std::string(to_string(*result.side))) : nlohmann::json();
   for (const auto& segment : result.segments) report["segments"].push_back(segment_json(segment));
+  report["profile"] = profile_json(result.profile);
   return report;
 }
 
@@ -87,14 +94,21 @@ nlohmann::json write_scan_outputs(const ScanResult& result, const fs::path& out_
   std::error_code error;
   fs::create_directories(out_dir, error);
   if (error) throw EngineError("cannot create output folder " + out_dir.string() + ": " + error.message());
+  StageClock clock;
   for (const auto& segment : result.segments) {
     write_obj(out_dir / (segment.name + "-3d.obj"), segment.mesh3d);
+    clock.lap(segment.name + ": write 3d obj");
     write_obj_2d(out_dir / (segment.name + "-flat.obj"), segment.UV, segment.mesh3d.F);
+    clock.lap(segment.name + ": write flat obj");
     write_mold_dxf(out_dir / (segment.name + ".dxf"), segment.mold);
+    clock.lap(segment.name + ": write dxf");
     write_mold_svg(out_dir / (segment.name + ".svg"), segment.mold, segment.UV, segment.mesh3d.F,
                    triangle_strain(segment.measures));
+    clock.lap(segment.name + ": write svg");
   }
-  const nlohmann::json report_json = scan_report_json(result);
+  nlohmann::json report_json = scan_report_json(result);
+  for (const StageTime& stage : clock.stages())
+    report_json["profile"].push_back({{"stage", stage.stage}, {"seconds", stage.seconds}});
   const Status written = write_file_durably(out_dir / "report.json", report_json.dump(2) + "\n");
   if (!written) throw EngineError(written.error());
   return report_json;

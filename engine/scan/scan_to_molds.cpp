@@ -80,18 +80,21 @@ Eigen::MatrixXd place_flattening(const Eigen::MatrixXd& UV, const std::map<std::
 // topology: of mesh3d, built once and used by the disk check, the distortion measures and the mold.
 SegmentResult flatten_segment(std::string name, TriMesh mesh3d, const MeshTopology& topology,
                               const std::map<std::string, int>& landmarks, const ScanOptions& options,
-                              std::vector<std::string>& notes) {
+                              std::vector<std::string>& notes, StageClock& clock) {
   SegmentResult result;
   result.name = std::move(name);
   result.mesh3d = std::move(mesh3d);
   result.flatten = flatten(result.mesh3d, topology, options.flatten);
   result.UV = place_flattening(result.flatten.UV, landmarks);
+  clock.lap(result.name + ": flatten");
   result.measures = measure_distortion(result.mesh3d, result.UV, topology);
+  clock.lap(result.name + ": distortion");
   for (const auto& note : result.flatten.notes) notes.push_back(result.name + ": " + note);
   if (result.measures.flipped_triangles > 0)
     notes.push_back(result.name + ": " + std::to_string(result.measures.flipped_triangles) +
                     " triangles are flipped in the flattening");
   result.mold = make_mold(result.name, result.UV, result.mesh3d.F, landmarks, options.mold, topology);
+  clock.lap(result.name + ": mold outline");
   return result;
 }
 
@@ -108,29 +111,35 @@ Eigen::VectorXd triangle_strain(const DistortionMeasures& measures) {
 
 ScanResult scan_to_molds(const std::filesystem::path& scan, const ScanOptions& options) {
   const auto start = std::chrono::steady_clock::now();
+  StageClock clock;
   ScanResult result;
   result.input = scan.string();
   MeshIntake intake = read_mesh(scan, options.read);
   result.intake = intake.report;
+  clock.lap("read and repair");
 
   if (!options.segment) {
     const MeshTopology topology = build_mesh_topology(intake.mesh.F, intake.mesh.V.rows());
     refuse_closed_patch(topology);
-    result.segments.push_back(flatten_segment("patch", std::move(intake.mesh), topology, {}, options, result.notes));
-    result.seconds_total = seconds_since(start);
-    return result;
-  }
-
-  refuse_open_patch(intake.mesh, options.segment_options);
-  check_is_last(intake.mesh);
-  const OrientedLast oriented = orient_last(intake.mesh);
-  result.side = oriented.side;
-  result.notes.insert(result.notes.end(), oriented.notes.begin(), oriented.notes.end());
-  Segmentation halves = segment_last(oriented, options.segment_options);
-  result.notes.insert(result.notes.end(), halves.notes.begin(), halves.notes.end());
-  for (Segment* half : {&halves.medial, &halves.lateral})
+    clock.lap("patch check");
     result.segments.push_back(
-        flatten_segment(half->name, std::move(half->mesh), half->topology, half->landmarks, options, result.notes));
+        flatten_segment("patch", std::move(intake.mesh), topology, {}, options, result.notes, clock));
+  } else {
+    refuse_open_patch(intake.mesh, options.segment_options);
+    check_is_last(intake.mesh);
+    clock.lap("last check");
+    const OrientedLast oriented = orient_last(intake.mesh);
+    result.side = oriented.side;
+    result.notes.insert(result.notes.end(), oriented.notes.begin(), oriented.notes.end());
+    clock.lap("orient");
+    Segmentation halves = segment_last(oriented, options.segment_options);
+    result.notes.insert(result.notes.end(), halves.notes.begin(), halves.notes.end());
+    clock.lap("segment");
+    for (Segment* half : {&halves.medial, &halves.lateral})
+      result.segments.push_back(flatten_segment(half->name, std::move(half->mesh), half->topology, half->landmarks,
+                                                options, result.notes, clock));
+  }
+  result.profile = clock.stages();
   result.seconds_total = seconds_since(start);
   return result;
 }

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "engine/core/foot_side.hpp"
+#include "engine/core/stage_clock.hpp"
 #include "engine/core/tri_mesh.hpp"
 #include "engine/flatten/flatten.hpp"
 #include "engine/mesh/read_mesh.hpp"
@@ -50,6 +51,7 @@ struct ScanResult {
   std::vector<SegmentResult> segments;
   std::vector<std::string> notes;    // from orientation, segmentation and flattening, one line each
   double seconds_total = 0;
+  std::vector<StageTime> profile;    // wall seconds per stage ("read", "medial: flatten", ...), in order
 };
 
 // Throws EngineError with one line an operator can act on.

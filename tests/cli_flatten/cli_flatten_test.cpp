@@ -228,6 +228,22 @@ TEST_F(CliFlatten, FlattensALastIntoTheContractFiles) {
     EXPECT_EQ(mold.marks.size(), 4u) << name;
     EXPECT_GT(signed_area(mold.outline), segment["area_2d_mm2"].get<double>());  // 2 mm allowance
   }
+  // The profile names every stage from reading to the last picture, each with its wall time, and
+  // the stages before writing add up to no more than the pipeline's total.
+  std::vector<std::string> stages;
+  double before_writing_s = 0.0;
+  for (const auto& stage : report["profile"]) {
+    stages.push_back(stage["stage"]);
+    EXPECT_GE(stage["seconds"].get<double>(), 0.0);
+    if (stages.back().find("write") == std::string::npos) before_writing_s += stage["seconds"].get<double>();
+  }
+  const std::vector<std::string> expected = {
+      "read and repair", "last check", "orient", "segment", "medial: flatten", "medial: distortion",
+      "medial: mold outline", "lateral: flatten", "lateral: distortion", "lateral: mold outline",
+      "medial: write 3d obj", "medial: write flat obj", "medial: write dxf", "medial: write svg",
+      "lateral: write 3d obj", "lateral: write flat obj", "lateral: write dxf", "lateral: write svg"};
+  EXPECT_EQ(stages, expected);
+  EXPECT_LE(before_writing_s, report["seconds_total"].get<double>());
 }
 
 TEST_F(CliFlatten, FlattensAnOpenPatchWithNoSegment) {
