@@ -1,6 +1,6 @@
 // Flattening benchmark: ARAP on half lasts (init, factorization, per-iteration, total, distortion reached)
 // against plain baselines measured in the same run, the sparse Cholesky backends, and LSCM vs ARAP.
-// Usage: bench_flatten [--no-400k] [--arap-only] [--only NAME-PART] [--save FOLDER]   Prints markdown tables (docs/benchmarks-flatten.md).
+// Usage: bench_flatten [--no-400k] [--arap-only] [--starts] [--only NAME-PART] [--save FOLDER]   Prints markdown tables (docs/benchmarks-flatten.md).
 #include <time.h>
 
 #include <algorithm>
@@ -11,6 +11,7 @@
 #include <string>
 
 #include "bench/flatten/bench_halves.hpp"
+#include "bench/flatten/start_comparison.hpp"
 #include "engine/flatten/arap_iterations.hpp"
 #include "engine/flatten/cotangent_laplacian.hpp"
 #include "engine/flatten/disk_topology.hpp"
@@ -124,12 +125,13 @@ void solver_rows(const BenchHalf& half) {
 int main(int argc, char** argv) {
   using namespace lastcut;
   using namespace lastcut::bench;
-  bool largest = true, arap_only = false;
+  bool largest = true, arap_only = false, starts = false;
   std::string only;         // run only the halves whose name contains this
   std::string save_folder;  // write each half there as <triangles>.off (to profile one half alone)
   for (int i = 1; i < argc; ++i) {
     largest = largest && std::strcmp(argv[i], "--no-400k") != 0;
     arap_only = arap_only || std::strcmp(argv[i], "--arap-only") == 0;
+    starts = starts || std::strcmp(argv[i], "--starts") == 0;
     if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) only = argv[++i];
     if (std::strcmp(argv[i], "--save") == 0 && i + 1 < argc) save_folder = argv[++i];
   }
@@ -147,7 +149,7 @@ int main(int argc, char** argv) {
     }
   }
 
-  std::printf("## ARAP (default options: Auto solver = %s, Anderson acceleration, tolerance 1e-6)\n\n",
+  std::printf("## ARAP (default options: boundary-first start, Auto solver = %s, Anderson acceleration, tolerance 1e-6)\n\n",
               std::string(to_string(SparseCholesky().backend())).c_str());
   std::printf("| half | triangles | init s | factorize s (count) | per iteration ms | iterations | total s | "
               "total CPU s | D_angle | D_area | flipped | notes |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
@@ -164,6 +166,7 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
     ours.push_back(std::move(t));
   }
+  if (starts) print_start_comparison(halves);
   if (arap_only) return 0;
 
   std::printf("\n## Baselines measured in the same run\n\n"

@@ -6,6 +6,7 @@
 
 #include "engine/core/engine_error.hpp"
 #include "engine/flatten/arap_iterations.hpp"
+#include "engine/flatten/boundary_first_start.hpp"
 #include "engine/flatten/cotangent_laplacian.hpp"
 #include "engine/flatten/disk_topology.hpp"
 #include "engine/flatten/lscm.hpp"
@@ -41,21 +42,39 @@ void run_arap(const TriMesh& disk, const TriangleFrames& frames, const MeshTopol
   SparseCholesky factor(options.solver);
   result.seconds_init += seconds_since(clock);
 
-  // One factorization of the cotangent Laplacian serves the start map and every ARAP iteration.
+  // One symbolic analysis serves the start map's fixed-boundary system and ARAP's Laplacian (same pattern).
   clock = Clock::now();
   factor.analyze_pattern(laplacian.matrix);
+  result.seconds_factorize += seconds_since(clock);
+
+  std::optional<Eigen::MatrixXd> start;
+  if (!options.flip_guard && options.start == ArapStart::BoundaryFirst) {
+    clock = Clock::now();
+    start = boundary_first_start(disk, frames, topology, laplacian, factor);
+    ++result.factorizations;
+    if (!start->allFinite()) start.reset();
+    // Back to ARAP's own system: the cotangent Laplacian with only the pinned vertex fixed.
+    std::vector<char> fixed(disk.V.rows(), 0);
+    fixed[static_cast<size_t>(laplacian.pinned)] = 1;
+    assemble_laplacian(frames, frames.half_weight, fixed, laplacian);
+    result.seconds_init += seconds_since(clock);
+  }
+
+  clock = Clock::now();
   factor.factorize(laplacian.matrix);
   ++result.factorizations;
   result.seconds_factorize += seconds_since(clock);
 
   clock = Clock::now();
   // Flip-guarded ARAP keeps a flip-free start flip-free, so it starts from the Tutte map.
-  std::optional<Eigen::MatrixXd> start;
-  if (!options.flip_guard) start = plane_rotation_start(disk, frames, topology, laplacian, factor);
+  if (!options.flip_guard && options.start == ArapStart::PlaneRotation)
+    start = plane_rotation_start(disk, frames, topology, laplacian, factor);
   if (options.flip_guard) {
     start = flip_free_start(disk, frames, topology, laplacian, options, result);
   } else if (!start) {
-    result.notes.push_back("the half faces no one way (mean normal near zero): started from the Tutte embedding");
+    result.notes.push_back(options.start == ArapStart::BoundaryFirst
+                               ? "the boundary-first start map failed: started from the Tutte embedding"
+                               : "the half faces no one way (mean normal near zero): started from the Tutte embedding");
     start = flip_free_start(disk, frames, topology, laplacian, options, result);
   }
   Eigen::MatrixXd UV = std::move(*start);

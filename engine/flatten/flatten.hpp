@@ -5,9 +5,13 @@
 // Parameterization", SGP 2008, as used in M. Sabaliauskas' thesis (Vilnius University 2017, sections 2.2-2.4):
 // analytic 2x2 SVD in the local step, the Laplacian factored once by sparse Cholesky for the global step,
 // Anderson acceleration of the iteration (anderson_acceleration.hpp).
-// Start map: one global step of ARAP with every triangle turned onto the half's mean plane
-// (plane_rotation_start.hpp), solved with the Laplacian factor ARAP needs anyway, so a flattening costs
-// one sparse factorization. If ARAP folds triangles (it can, where the surface is far from developable),
+// Start map (ArapStart): by default a conformal map that keeps the boundary's lengths, by Boundary First
+// Flattening (R. Sawhney, K. Crane, ACM TOG 37(1), 2017; boundary_first_start.hpp), which has the half's
+// unrolled global shape, so ARAP only redistributes scale; it costs one numeric factorization of the
+// fixed-boundary Laplacian, sharing the symbolic analysis with ARAP's. The older start, one global step
+// with every triangle turned onto the half's mean plane (plane_rotation_start.hpp), needs no factorization
+// of its own but leaves halves that wrap around the foot rolled up: ARAP then needs hundreds of iterations
+// (docs/benchmarks-flatten.md). If ARAP folds triangles (it can, where the surface is far from developable),
 // they are untangled locally (untangle.hpp, star_untangle.hpp) and polished with flip-guarded steps; if
 // that fails, flip-guarded ARAP restarts from the flip-free Tutte embedding (tutte_embedding.hpp, one more
 // factorization). Either way FlattenResult::notes says what happened and flipped_triangles what is left
@@ -30,6 +34,9 @@ namespace lastcut {
 
 enum class FlattenMethod { Arap, Lscm };
 
+// Where ARAP starts (see above); PlaneRotation is kept for comparison in bench/flatten.
+enum class ArapStart { BoundaryFirst, PlaneRotation };
+
 struct FlattenOptions {
   FlattenMethod method = FlattenMethod::Arap;
   int max_iterations = 200;                  // ARAP local/global iterations at most
@@ -39,6 +46,7 @@ struct FlattenOptions {
   // triangle (slower, more distortion); by default ARAP runs free and the few folds it may leave are
   // repaired afterwards (see FlattenResult::notes).
   bool flip_guard = false;
+  ArapStart start = ArapStart::BoundaryFirst;  // ignored with flip_guard (which starts from the Tutte map)
   // Anderson acceleration of the local/global iteration (Peng et al. 2018): same fixed point, fewer iterations.
   bool anderson_acceleration = true;
 };

@@ -146,16 +146,56 @@ TriMesh subdivide_midpoint(const TriMesh& mesh) {
   return out;
 }
 
-double max_distance_after_rigid_alignment(const Eigen::MatrixXd& moving, const Eigen::MatrixXd& target) {
+namespace {
+
+// moving after the rotation and translation (no reflection, no scaling) that best fit it onto target.
+Eigen::MatrixXd rigidly_aligned(const Eigen::MatrixXd& moving, const Eigen::MatrixXd& target) {
   const Eigen::RowVector2d moving_mean = moving.colwise().mean(), target_mean = target.colwise().mean();
   const Eigen::MatrixXd P = moving.rowwise() - moving_mean, Q = target.rowwise() - target_mean;
   const Eigen::Matrix2d H = P.transpose() * Q;
   const Eigen::JacobiSVD<Eigen::Matrix2d> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
   Eigen::Matrix2d D = Eigen::Matrix2d::Identity();
   D(1, 1) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
-  const Eigen::Matrix2d R = svd.matrixV() * D * svd.matrixU().transpose();  // no reflection, no scaling
-  const Eigen::MatrixXd aligned = (P * R.transpose()).rowwise() + target_mean;
-  return (aligned - target).rowwise().norm().maxCoeff();
+  const Eigen::Matrix2d R = svd.matrixV() * D * svd.matrixU().transpose();
+  return (P * R.transpose()).rowwise() + target_mean;
+}
+
+}  // namespace
+
+double max_distance_after_rigid_alignment(const Eigen::MatrixXd& moving, const Eigen::MatrixXd& target) {
+  return (rigidly_aligned(moving, target) - target).rowwise().norm().maxCoeff();
+}
+
+double rms_distance_after_rigid_alignment(const Eigen::MatrixXd& moving, const Eigen::MatrixXd& target) {
+  return std::sqrt((rigidly_aligned(moving, target) - target).rowwise().squaredNorm().mean());
+}
+
+// Spherical cap of radius_mm up to polar angle cap_deg, as a ring grid with a fan at the pole.
+TriMesh spherical_cap(double radius_mm, double cap_deg, int rings, int around) {
+  TriMesh mesh;
+  mesh.V.resize(1 + rings * around, 3);
+  mesh.V.row(0) << 0.0, 0.0, radius_mm;
+  for (int r = 1; r <= rings; ++r) {
+    const double polar = cap_deg * std::numbers::pi / 180.0 * r / rings;
+    for (int a = 0; a < around; ++a) {
+      const double azimuth = 2.0 * std::numbers::pi * (a + 0.5 * (r % 2)) / around;
+      mesh.V.row(1 + (r - 1) * around + a) << radius_mm * std::sin(polar) * std::cos(azimuth),
+          radius_mm * std::sin(polar) * std::sin(azimuth), radius_mm * std::cos(polar);
+    }
+  }
+  std::vector<Eigen::Vector3i> faces;
+  for (int a = 0; a < around; ++a) faces.emplace_back(0, 1 + a, 1 + (a + 1) % around);
+  for (int r = 1; r < rings; ++r) {
+    for (int a = 0; a < around; ++a) {
+      const int i0 = 1 + (r - 1) * around + a, i1 = 1 + (r - 1) * around + (a + 1) % around;
+      const int o0 = 1 + r * around + a, o1 = 1 + r * around + (a + 1) % around;
+      faces.emplace_back(i0, o0, o1);
+      faces.emplace_back(i0, o1, i1);
+    }
+  }
+  mesh.F.resize(static_cast<Eigen::Index>(faces.size()), 3);
+  for (size_t f = 0; f < faces.size(); ++f) mesh.F.row(static_cast<Eigen::Index>(f)) = faces[f].transpose();
+  return mesh;
 }
 
 }  // namespace lastcut::testing

@@ -32,8 +32,13 @@ TriMesh read_off(const std::filesystem::path& path, double scale);
 // 1-to-4 midpoint subdivision (4x triangles, geometry unchanged).
 TriMesh subdivide_midpoint(const TriMesh& mesh);
 
+// Spherical cap of radius_mm up to polar angle cap_deg, as a ring grid with a fan at the pole (a disk, mm).
+TriMesh spherical_cap(double radius_mm, double cap_deg, int rings, int around);
+
 // Least-squares rigid alignment (rotation + translation, no scaling; Procrustes/Kabsch) of `moving` onto
 // `target` (both #V x 2); returns the largest point distance after alignment (mm).
 double max_distance_after_rigid_alignment(const Eigen::MatrixXd& moving, const Eigen::MatrixXd& target);
+// The root mean square of the same distances.
+double rms_distance_after_rigid_alignment(const Eigen::MatrixXd& moving, const Eigen::MatrixXd& target);
 
 }  // namespace lastcut::testing

@@ -23,34 +23,6 @@ std::string error_of(const TriMesh& mesh) {
   return "";
 }
 
-// Spherical cap of radius_mm up to polar angle cap_deg, as a ring grid with a fan at the pole.
-TriMesh spherical_cap(double radius_mm, double cap_deg, int rings, int around) {
-  TriMesh mesh;
-  mesh.V.resize(1 + rings * around, 3);
-  mesh.V.row(0) << 0.0, 0.0, radius_mm;
-  for (int r = 1; r <= rings; ++r) {
-    const double polar = cap_deg * std::numbers::pi / 180.0 * r / rings;
-    for (int a = 0; a < around; ++a) {
-      const double azimuth = 2.0 * std::numbers::pi * (a + 0.5 * (r % 2)) / around;
-      mesh.V.row(1 + (r - 1) * around + a) << radius_mm * std::sin(polar) * std::cos(azimuth),
-          radius_mm * std::sin(polar) * std::sin(azimuth), radius_mm * std::cos(polar);
-    }
-  }
-  std::vector<Eigen::Vector3i> faces;
-  for (int a = 0; a < around; ++a) faces.emplace_back(0, 1 + a, 1 + (a + 1) % around);
-  for (int r = 1; r < rings; ++r) {
-    for (int a = 0; a < around; ++a) {
-      const int i0 = 1 + (r - 1) * around + a, i1 = 1 + (r - 1) * around + (a + 1) % around;
-      const int o0 = 1 + r * around + a, o1 = 1 + r * around + (a + 1) % around;
-      faces.emplace_back(i0, o0, o1);
-      faces.emplace_back(i0, o1, i1);
-    }
-  }
-  mesh.F.resize(static_cast<Eigen::Index>(faces.size()), 3);
-  for (size_t f = 0; f < faces.size(); ++f) mesh.F.row(static_cast<Eigen::Index>(f)) = faces[f].transpose();
-  return mesh;
-}
-
 TEST(FlattenInput, RefusesWhatIsNotADiskWithOneLine) {
   const TriMesh patch = testing::cylinder_patch(30.0, 90.0, 40.0, 6, 4).mesh;
 
@@ -115,7 +87,7 @@ TEST(FlattenInput, SmallPatchFlattensCleanly) {
 }
 
 TEST(FlattenInvariance, RigidMotionOfTheMeshDoesNotChangeTheMold) {
-  const TriMesh cap = spherical_cap(80.0, 50.0, 12, 40);
+  const TriMesh cap = testing::spherical_cap(80.0, 50.0, 12, 40);
   const Eigen::Affine3d motion = Eigen::Translation3d(250.0, -40.0, 1000.0) *
                                  Eigen::AngleAxisd(1.1, Eigen::Vector3d(0.3, -0.8, 0.5).normalized());
   TriMesh moved = cap;
@@ -139,7 +111,7 @@ TEST(Lscm, DevelopsACylinderPatchAndIsConformalOnACap) {
   EXPECT_EQ(developed.iterations, 0);
   EXPECT_LE(testing::max_distance_after_rigid_alignment(developed.UV, patch.development), 1e-6);
 
-  const TriMesh cap = spherical_cap(60.0, 60.0, 20, 60);
+  const TriMesh cap = testing::spherical_cap(60.0, 60.0, 20, 60);
   const FlattenResult conformal = flatten(cap, options);
   const DistortionMeasures lscm = measure_distortion(cap, conformal.UV);
   EXPECT_EQ(lscm.flipped_triangles, 0);

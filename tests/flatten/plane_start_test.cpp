@@ -1,5 +1,6 @@
 // The ARAP start map from rotations onto the mean plane: exact on a developable patch, pose-independent,
-// one factorization in total; the Tutte map is still used where the half faces no one way or when a
+// one factorization in total (options.start = ArapStart::PlaneRotation; the default start is
+// boundary_first_start.hpp); the Tutte map is still used where the half faces no one way or when a
 // flip-guarded run is asked for.
 #include <gtest/gtest.h>
 
@@ -11,6 +12,12 @@
 
 namespace lastcut {
 namespace {
+
+FlattenOptions plane_start_options() {
+  FlattenOptions options;
+  options.start = ArapStart::PlaneRotation;
+  return options;
+}
 
 std::optional<Eigen::MatrixXd> start_of(const TriMesh& mesh) {
   const MeshTopology topology = check_disk(mesh);
@@ -43,7 +50,7 @@ TEST(PlaneRotationStart, IsCloseToTheDevelopmentOfAConePatch) {
   FlattenOptions tutte_start;
   tutte_start.flip_guard = true;
   const FlattenResult from_tutte = flatten(patch.mesh, tutte_start);
-  const FlattenResult from_plane = flatten(patch.mesh);
+  const FlattenResult from_plane = flatten(patch.mesh, plane_start_options());
   EXPECT_LT(from_plane.energy_start, 0.05 * from_tutte.energy_start);
   EXPECT_LE(from_plane.iterations, from_tutte.iterations);
   std::printf("start energy %.4g (Tutte %.4g), iterations %d (Tutte, flip-guarded %d)\n", from_plane.energy_start,
@@ -54,7 +61,7 @@ TEST(PlaneRotationStart, RefusedWhenTheHalfFacesNoOneWayAndTutteIsUsed) {
   // A 350-degree sleeve: its normals nearly cancel out.
   const TriMesh sleeve = testing::cylinder_patch(30.0, 350.0, 40.0, 60, 10).mesh;
   EXPECT_FALSE(start_of(sleeve).has_value());
-  const FlattenResult result = flatten(sleeve);
+  const FlattenResult result = flatten(sleeve, plane_start_options());
   EXPECT_EQ(result.factorizations, 2);
   ASSERT_FALSE(result.notes.empty());
   EXPECT_NE(result.notes.front().find("Tutte"), std::string::npos) << result.notes.front();
@@ -67,7 +74,7 @@ TEST(PlaneRotationStart, FlipGuardedRunStartsFromTheFlipFreeTutteMap) {
   const FlattenResult guarded = flatten(patch.mesh, options);
   EXPECT_EQ(guarded.factorizations, 2);
   EXPECT_EQ(guarded.flipped_triangles, 0);
-  const FlattenResult free_run = flatten(patch.mesh);
+  const FlattenResult free_run = flatten(patch.mesh, plane_start_options());
   EXPECT_EQ(free_run.factorizations, 1);
   // The developed start is already at the minimum; from the Tutte map ARAP has to iterate there.
   EXPECT_LT(free_run.energy_start, 1e-6 * guarded.energy_start);
