@@ -47,8 +47,14 @@ void run_arap(const TriMesh& disk, const TriangleFrames& frames, const MeshTopol
   factor.analyze_pattern(laplacian.matrix);
   result.seconds_factorize += seconds_since(clock);
 
+  // Share of the area facing away from the mean normal above which the plane start lays a half rolled up.
+  constexpr double kMaxFacingAwayForPlaneStart = 0.01;
+  ArapStart start_kind = options.start;
+  if (start_kind == ArapStart::Auto)
+    start_kind = area_facing_away_share(disk) > kMaxFacingAwayForPlaneStart ? ArapStart::BoundaryFirst
+                                                                             : ArapStart::PlaneRotation;
   std::optional<Eigen::MatrixXd> start;
-  if (!options.flip_guard && options.start == ArapStart::BoundaryFirst) {
+  if (!options.flip_guard && start_kind == ArapStart::BoundaryFirst) {
     clock = Clock::now();
     start = boundary_first_start(disk, frames, topology, laplacian, factor);
     ++result.factorizations;
@@ -67,12 +73,12 @@ void run_arap(const TriMesh& disk, const TriangleFrames& frames, const MeshTopol
 
   clock = Clock::now();
   // Flip-guarded ARAP keeps a flip-free start flip-free, so it starts from the Tutte map.
-  if (!options.flip_guard && options.start == ArapStart::PlaneRotation)
+  if (!options.flip_guard && start_kind == ArapStart::PlaneRotation)
     start = plane_rotation_start(disk, frames, topology, laplacian, factor);
   if (options.flip_guard) {
     start = flip_free_start(disk, frames, topology, laplacian, options, result);
   } else if (!start) {
-    result.notes.push_back(options.start == ArapStart::BoundaryFirst
+    result.notes.push_back(start_kind == ArapStart::BoundaryFirst
                                ? "the boundary-first start map failed: started from the Tutte embedding"
                                : "the half faces no one way (mean normal near zero): started from the Tutte embedding");
     start = flip_free_start(disk, frames, topology, laplacian, options, result);

@@ -34,8 +34,11 @@ namespace lastcut {
 
 enum class FlattenMethod { Arap, Lscm };
 
-// Where ARAP starts (see above); PlaneRotation is kept for comparison in bench/flatten.
-enum class ArapStart { BoundaryFirst, PlaneRotation };
+// Where ARAP starts (see above). Auto: the plane-rotation start when less than 1 % of the half's area
+// faces away from its mean normal (it then lays the half out unrolled, and costs no factorization),
+// the boundary-first start otherwise (measured: generated last halves 0.2-0.7 %, FIND foot halves
+// 3.8-20 %; docs/benchmarks-flatten.md).
+enum class ArapStart { Auto, BoundaryFirst, PlaneRotation };
 
 struct FlattenOptions {
   FlattenMethod method = FlattenMethod::Arap;
@@ -46,7 +49,7 @@ struct FlattenOptions {
   // triangle (slower, more distortion); by default ARAP runs free and the few folds it may leave are
   // repaired afterwards (see FlattenResult::notes).
   bool flip_guard = false;
-  ArapStart start = ArapStart::BoundaryFirst;  // ignored with flip_guard (which starts from the Tutte map)
+  ArapStart start = ArapStart::Auto;  // ignored with flip_guard (which starts from the Tutte map)
   // Anderson acceleration of the local/global iteration (Peng et al. 2018): same fixed point, fewer iterations.
   bool anderson_acceleration = true;
 };

@@ -77,4 +77,16 @@ std::optional<Eigen::MatrixXd> plane_rotation_start(const TriMesh& mesh, const T
   return UV;
 }
 
+double area_facing_away_share(const TriMesh& mesh) {
+  const Eigen::MatrixXd normals = triangle_normals(mesh);
+  const Eigen::VectorXd areas = triangle_areas(mesh);
+  const Eigen::Vector3d mean = (normals.array().colwise() * areas.array()).colwise().sum().transpose();
+  if (!(mean.norm() > 0.0)) return 1.0;
+  const Eigen::VectorXd facing = normals * mean.normalized();
+  double away = 0.0;
+  for (Eigen::Index f = 0; f < facing.size(); ++f)
+    if (facing(f) < 0.0) away += areas(f);
+  return away / areas.sum();
+}
+
 }  // namespace lastcut

@@ -24,6 +24,11 @@ namespace lastcut {
 // laplacian.pinned and `factor` its factorization. Empty when the half has no mean direction (its area-
 // weighted normals cancel out, as on a nearly closed surface): the caller then starts from the Tutte
 // embedding. Triangles facing almost straight away from N are turned half a turn and projected.
+// Share of the surface area (0..1) whose triangles face away from the area-weighted mean normal (normal
+// at more than 90 degrees to it): where there is such area the half wraps around and this start lays
+// it rolled up. 1 when the normals cancel out.
+double area_facing_away_share(const TriMesh& mesh);
+
 std::optional<Eigen::MatrixXd> plane_rotation_start(const TriMesh& mesh, const TriangleFrames& frames,
                                                     const MeshTopology& topology, const ReducedLaplacian& laplacian,
                                                     const SparseCholesky& factor);

@@ -82,3 +82,20 @@ TEST(PlaneRotationStart, FlipGuardedRunStartsFromTheFlipFreeTutteMap) {
 
 }  // namespace
 }  // namespace lastcut
+
+namespace lastcut {
+namespace {
+
+TEST(PlaneRotationStart, AreaFacingAwayIsTheSweepBeyondHalfATurn) {
+  // A cylinder patch over sweep s (centred on the mean normal) faces away from it beyond +-90 degrees:
+  // the share is (s - 180) / s for s > 180, else 0. The fine grid keeps the facet error small.
+  EXPECT_NEAR(area_facing_away_share(testing::cylinder_patch(40.0, 150.0, 60.0, 300, 4).mesh), 0.0, 1e-12);
+  EXPECT_NEAR(area_facing_away_share(testing::cylinder_patch(40.0, 270.0, 60.0, 540, 4).mesh), 1.0 / 3.0, 0.005);
+  // The default start follows it: one factorization for the patch that faces one way (plane start),
+  // two (boundary-first start, then ARAP) for the one that wraps round.
+  EXPECT_EQ(flatten(testing::cylinder_patch(40.0, 150.0, 60.0, 60, 8).mesh).factorizations, 1);
+  EXPECT_EQ(flatten(testing::cylinder_patch(40.0, 270.0, 60.0, 108, 8).mesh).factorizations, 2);
+}
+
+}  // namespace
+}  // namespace lastcut

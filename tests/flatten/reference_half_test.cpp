@@ -21,7 +21,7 @@ TEST(ReferenceHalf, FlattensWithoutFlipsAndWithLowDistortion) {
   const DistortionMeasures d = measure_distortion(half, result.UV);
   EXPECT_EQ(result.flipped_triangles, 0);
   EXPECT_EQ(d.flipped_triangles, 0);
-  EXPECT_EQ(result.factorizations, 2);  // the boundary-first start map, then ARAP; no Tutte fallback
+  EXPECT_EQ(result.factorizations, 2);  // a foot half wraps round: the boundary-first start, then ARAP; no Tutte
   // A foot is far from developable (toes, heel cup): ARAP keeps distortion low but not ideal.
   EXPECT_LT(d.D_angle, 2.15);
   EXPECT_LT(d.D_area, 2.15);
