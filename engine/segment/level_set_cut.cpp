@@ -12,21 +12,25 @@ int sign_of(double value) { return value > 0.0 ? 1 : (value < 0.0 ? -1 : 0); }
 
 }  // namespace
 
-void cut_along_zero_level(TriMesh& mesh, Eigen::MatrixXd& fields, int column, double snap_fraction) {
-  const Eigen::Index face_count = mesh.F.rows();
-  // Snap: crossings very close to a vertex move onto the vertex.
-  std::vector<char> snap(static_cast<std::size_t>(mesh.V.rows()), 0);
-  for (Eigen::Index f = 0; f < face_count; ++f)
+void snap_to_zero_level(const Eigen::MatrixXi& F, Eigen::Ref<Eigen::VectorXd> values, double snap_fraction) {
+  // Crossings very close to a vertex move onto the vertex; all decided from the values before snapping.
+  std::vector<char> snap(static_cast<std::size_t>(values.size()), 0);
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
     for (int k = 0; k < 3; ++k) {
-      const int a = mesh.F(f, k), b = mesh.F(f, (k + 1) % 3);
-      const double fa = fields(a, column), fb = fields(b, column);
+      const int a = F(f, k), b = F(f, (k + 1) % 3);
+      const double fa = values(a), fb = values(b);
       if (sign_of(fa) * sign_of(fb) >= 0) continue;
       const double t = fa / (fa - fb);
       if (t < snap_fraction) snap[static_cast<std::size_t>(a)] = 1;
       if (t > 1.0 - snap_fraction) snap[static_cast<std::size_t>(b)] = 1;
     }
   for (std::size_t v = 0; v < snap.size(); ++v)
-    if (snap[v]) fields(static_cast<Eigen::Index>(v), column) = 0.0;
+    if (snap[v]) values(static_cast<Eigen::Index>(v)) = 0.0;
+}
+
+void cut_along_zero_level(TriMesh& mesh, Eigen::MatrixXd& fields, int column, double snap_fraction) {
+  const Eigen::Index face_count = mesh.F.rows();
+  snap_to_zero_level(mesh.F, fields.col(column), snap_fraction);
 
   std::unordered_map<std::uint64_t, int> crossing_vertex;
   std::vector<Eigen::RowVector3d> new_positions;

@@ -18,4 +18,9 @@ namespace lastcut {
 // snap_fraction in [0, 0.5).
 void cut_along_zero_level(TriMesh& mesh, Eigen::MatrixXd& fields, int column, double snap_fraction);
 
+// The snapping step of cut_along_zero_level alone: values (#V) of a field on the faces F (#F x 3)
+// are set to 0 at the vertices a crossing lies within snap_fraction of an edge from. The cut then
+// follows the zero level set of the piecewise-linear field with these values.
+void snap_to_zero_level(const Eigen::MatrixXi& F, Eigen::Ref<Eigen::VectorXd> values, double snap_fraction);
+
 }  // namespace lastcut

@@ -75,14 +75,17 @@ std::vector<Eigen::Vector3d> loop_points(const TriMesh& mesh, const std::vector<
 
 }  // namespace
 
-Segmentation segment_last(const OrientedLast& last, const SegmentOptions& options) {
+BandCut cut_band(const OrientedLast& last, const SegmentOptions& options) {
   if (!(options.sole_angle_rad < 0.0 && options.top_angle_rad > 0.0))
     throw EngineError("segmentation angles must be negative for the sole and positive for the top");
   if (options.smoothing_passes < 0) throw EngineError("segmentation smoothing passes must not be negative");
   if (!(options.feather_height_mm > 0.0 && options.rim_depth_mm > 0.0))
     throw EngineError("the feather line height and the top rim depth must be positive (mm)");
-  Segmentation result;
-  TriMesh mesh = last.mesh;
+  BandCut result;
+  result.side = last.side;
+  result.snap_fraction = kSnapFraction;
+  TriMesh& mesh = result.mesh;
+  mesh = last.mesh;
   const int filled = fill_holes(mesh, options.max_hole_fill_diameter_mm);
   if (filled > 0)
     result.notes.push_back("closed " + std::to_string(filled) + " scan hole(s) up to " +
@@ -106,7 +109,8 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
   // indicators, cut into the mesh. The passes are meant for the reference edge length; on a finer
   // or coarser mesh they are scaled so the curves are smoothed over the same distance in mm
   // (diffusion spreads as sqrt(passes)).
-  Eigen::MatrixXd fields = Eigen::MatrixXd::Zero(mesh.V.rows(), 3);
+  Eigen::MatrixXd& fields = result.fields;
+  fields = Eigen::MatrixXd::Zero(mesh.V.rows(), 3);
   const double field_passes = options.smoothing_passes * std::pow(kReferenceEdgeMm / edge_mm, 2);
   // Where the fits hold, the curves are placed by the shape (a height above the sole, a depth
   // below the top plane), lightly smoothed against scanner noise; else by the classification.
@@ -141,14 +145,30 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
           fields(mesh.F(f, 0), column) + fields(mesh.F(f, 1), column) + fields(mesh.F(f, 2), column) > 0.0;
     return smooth_closed_polyline(loop_points(mesh, region_boundary_loop(mesh, level_topology, region)), 0, kReferenceEdgeMm);
   };
-  const SplitPlane plane = split_plane(level_loop(kSoleField), level_loop(kTopField), options.plane_t, last.side);
+  result.lower_loop = level_loop(kSoleField);
+  result.upper_loop = level_loop(kTopField);
+  return result;
+}
+
+SplitPlane place_split_plane(const BandCut& band, const SegmentOptions& options) {
+  return options.split_rule == SplitRule::Expert
+             ? expert_split_plane(band.lower_loop, band.upper_loop, options.expert, band.side)
+             : split_plane(band.lower_loop, band.upper_loop, options.plane_t, band.side);
+}
+
+Segmentation split_band(const BandCut& band, const SplitPlane& plane) {
+  Segmentation result;
+  result.notes = band.notes;
+  result.plane = plane;
+  TriMesh mesh = band.mesh;
+  Eigen::MatrixXd fields = band.fields;
   result.notes.push_back("split plane normal (" + fixed(plane.normal.x(), 3) + ", " + fixed(plane.normal.y(), 3) + ", " +
                          fixed(plane.normal.z(), 3) + ") through the top centre (" + fixed(plane.T1.x(), 1) + ", " +
                          fixed(plane.T1.y(), 1) + ", " + fixed(plane.T1.z(), 1) + ") mm");
 
   // Step 4: cut along the plane.
   fields.col(kPlaneField) = (mesh.V * plane.normal).array() + plane.offset;
-  cut_along_zero_level(mesh, fields, kPlaneField, kSnapFraction);
+  cut_along_zero_level(mesh, fields, kPlaneField, band.snap_fraction);
 
   enum Label : int { kSole = 0, kTop = 1, kMedial = 2, kLateral = 3 };
   std::vector<int> labels(static_cast<std::size_t>(mesh.F.rows()));
@@ -172,6 +192,17 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
   const double medial_area = surface_area(result.medial.mesh), lateral_area = surface_area(result.lateral.mesh);
   result.notes.push_back("medial half " + fixed(medial_area / 100.0, 0) + " cm^2, lateral half " +
                          fixed(lateral_area / 100.0, 0) + " cm^2");
+  return result;
+}
+
+Segmentation segment_last(const OrientedLast& last, const SegmentOptions& options) {
+  const BandCut band = cut_band(last, options);
+  const SplitPlane plane = place_split_plane(band, options);
+  Segmentation result = split_band(band, plane);
+  if (options.split_rule == SplitRule::Expert)
+    result.notes.push_back("expert split: second toe at (" + fixed(plane.T2.x(), 1) + ", " + fixed(plane.T2.y(), 1) + ", " +
+                           fixed(plane.T2.z(), 1) + ") mm, heel middle at (" + fixed(plane.T3.x(), 1) + ", " +
+                           fixed(plane.T3.y(), 1) + ", " + fixed(plane.T3.z(), 1) + ") mm");
   return result;
 }
 

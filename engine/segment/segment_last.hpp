@@ -13,7 +13,9 @@
 //     top plane (contour_fields.hpp). Where a fit fails (not a last: a foot's toes) the 1/2 level
 //     set of the region indicator after the eq. 22 moving average is used, as the thesis does;
 //  4. those two cut curves, traced with Dijkstra (region_contour.hpp), place the split plane through
-//     T1, T2, T3 as arc-length means (split_plane.hpp), and the mesh is cut along the plane.
+//     T1, T2, T3 as arc-length means (split_plane.hpp), or with SplitRule::Expert through the top
+//     centre, the second toe and the heel middle as experts cut by hand (expert_split_plane.hpp),
+//     and the mesh is cut along the plane.
 //     Every step is measured in mm, not in vertices, so a denser or coarser scan of the same last
 //     gives the same curves;
 //  5. the faces between the curves on either side of the plane form the two halves, each checked
@@ -26,8 +28,16 @@
 #include "engine/core/mesh_topology.hpp"
 #include "engine/core/tri_mesh.hpp"
 #include "engine/orient/orient_last.hpp"
+#include "engine/segment/expert_split_plane.hpp"
+#include "engine/segment/split_plane.hpp"
 
 namespace lastcut {
+
+// Which lengthwise plane splits the last into its halves (docs/segmentation-expert.md).
+enum class SplitRule {
+  Auto,    // through T1, T2, T3 of the thesis's automatic method (section 3.1, split_plane.hpp)
+  Expert,  // through the top centre, the second toe and the heel middle (section 2.1, expert_split_plane.hpp)
+};
 
 struct SegmentOptions {
   double sole_angle_rad = -std::numbers::pi / 4;  // faces at or below this elevation are sole (eq. 7)
@@ -38,6 +48,8 @@ struct SegmentOptions {
   // Where the sole and the top cut fit smooth shapes, the curves are placed by height, not angle:
   double feather_height_mm = 1.5;  // the feather line runs this high above the fitted sole surface
   double rim_depth_mm = 1.25;      // the top rim runs this deep below the fitted top plane
+  SplitRule split_rule = SplitRule::Auto;
+  ExpertSplitOptions expert;       // used with SplitRule::Expert
 };
 
 struct Segment {
@@ -52,10 +64,29 @@ struct Segmentation {
   std::vector<std::string> notes;
   std::vector<Eigen::Vector3d> lower_contour;  // the smoothed feather line the halves were cut along, closed loop, mm
   std::vector<Eigen::Vector3d> upper_contour;  // the smoothed rim of the top cut, closed loop, mm
+  SplitPlane plane;                            // the lengthwise plane the halves were cut along
+};
+
+// The last cut along the feather line and the top rim, before the lengthwise cut (steps 1-3): what
+// every split plane shares, so that two rules can be compared on the same surface
+// (segmentation_agreement.hpp).
+struct BandCut {
+  TriMesh mesh;            // the whole last after both cuts, canonical frame, mm
+  Eigen::MatrixXd fields;  // #V x 3: sole, top and plane columns (CutField, segment_halves.hpp); the plane column is 0
+  std::vector<Eigen::Vector3d> lower_loop, upper_loop;  // smoothed feather line and top rim the plane is placed from, mm
+  double snap_fraction = 0;  // crossings of the plane this close to an edge end snap to it (level_set_cut.hpp)
+  FootSide side = FootSide::Left;
+  std::vector<std::string> notes;
 };
 
 // last: an oriented last (engine/orient/orient_last.hpp). Deterministic.
 // Throws EngineError when a step fails (no sole, no top cut, a half that is not one sheet).
 Segmentation segment_last(const OrientedLast& last, const SegmentOptions& options = {});
+
+// The three stages of segment_last, for callers that split one last by more than one plane.
+// Each throws EngineError like segment_last.
+BandCut cut_band(const OrientedLast& last, const SegmentOptions& options = {});
+SplitPlane place_split_plane(const BandCut& band, const SegmentOptions& options = {});
+Segmentation split_band(const BandCut& band, const SplitPlane& plane);
 
 }  // namespace lastcut

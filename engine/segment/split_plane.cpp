@@ -55,14 +55,29 @@ SplitPlane split_plane(const std::vector<Eigen::Vector3d>& lower, const std::vec
   const bool has_a = curve_centroid(lower, [&](const Eigen::Vector3d& C) { return delta(t, C); }, plane.T2);        // M1
   const bool has_b = curve_centroid(lower, [&](const Eigen::Vector3d& C) { return -delta(1.0 - t, C); }, plane.T3);  // M2
   if (!has_top || !has_a || !has_b) throw EngineError("the sole contour has no points near its toe or heel end");
+  return plane_through(plane.T1, plane.T2, plane.T3, side);
+}
+
+Eigen::Vector3d curve_mean(const std::vector<Eigen::Vector3d>& loop) {
+  Eigen::Vector3d mean;
+  if (!curve_centroid(loop, [](const Eigen::Vector3d&) { return 1.0; }, mean))
+    throw EngineError("the top contour has no length: cannot find its centre");
+  return mean;
+}
+
+SplitPlane plane_through(const Eigen::Vector3d& T1, const Eigen::Vector3d& T2, const Eigen::Vector3d& T3, FootSide side) {
+  SplitPlane plane;
+  plane.T1 = T1;
+  plane.T2 = T2;
+  plane.T3 = T3;
   // Eqs. 17-19 expand the determinant with rows (T2 - T1) and (T3 - T2): the normal is their cross product.
-  const Eigen::Vector3d normal = (plane.T2 - plane.T1).cross(plane.T3 - plane.T2);
+  const Eigen::Vector3d normal = (T2 - T1).cross(T3 - T2);
   const double length = normal.norm();
-  if (length < 1e-6 * (plane.T2 - plane.T3).squaredNorm())
+  if (length < 1e-6 * (T2 - T3).squaredNorm())
     throw EngineError("the top centre lies on the toe-heel line: cannot place the split plane");
   plane.normal = normal / length;
   if (plane.normal.y() * medial_y_sign(side) < 0.0) plane.normal = -plane.normal;
-  plane.offset = -plane.normal.dot(plane.T1);  // eq. 20
+  plane.offset = -plane.normal.dot(T1);  // eq. 20
   return plane;
 }
 

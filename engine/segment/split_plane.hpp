@@ -26,4 +26,11 @@ struct SplitPlane {
 SplitPlane split_plane(const std::vector<Eigen::Vector3d>& lower, const std::vector<Eigen::Vector3d>& upper, double t,
                        FootSide side);
 
+// Arc-length mean of a closed polyline (mm): T1 when it is the top rim. Throws EngineError when it has no length.
+Eigen::Vector3d curve_mean(const std::vector<Eigen::Vector3d>& loop);
+
+// The plane through T1, T2, T3 (mm), normal towards the medial side of `side`, offset so that T1 lies
+// on it (eq. 20). Throws EngineError when the points are (nearly) collinear.
+SplitPlane plane_through(const Eigen::Vector3d& T1, const Eigen::Vector3d& T2, const Eigen::Vector3d& T3, FootSide side);
+
 }  // namespace lastcut

@@ -1,6 +1,7 @@
 // Inputs the segmentation must refuse with one readable line instead of returning nonsense.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 
 #include "engine/core/engine_error.hpp"
@@ -83,6 +84,25 @@ TEST(SegmentBadInput, LargeHoleInTheSideIsReported) {
   last.mesh = test::without_faces_around(last.mesh, removed);
   const std::string error = error_of(last);
   EXPECT_NE(error.find("lateral half is not a single sheet"), std::string::npos) << error;
+}
+
+TEST(SegmentBadInput, ExpertSplitOptionsOutsideTheirRangeAreRefused) {
+  auto circle = [](double cx, double z, double r, int count) {
+    std::vector<Eigen::Vector3d> points;
+    for (int i = 0; i < count; ++i)
+      points.emplace_back(cx + r * std::cos(0.1 * i * 3.14159265), r * std::sin(0.1 * i * 3.14159265), z);
+    return points;
+  };
+  const std::vector<Eigen::Vector3d> lower = circle(100.0, 0.0, 100.0, 20), upper = circle(90.0, 120.0, 30.0, 20);
+  for (auto change : {+[](ExpertSplitOptions& o) { o.second_toe_fraction = 0.0; },
+                      +[](ExpertSplitOptions& o) { o.second_toe_fraction = 1.5; },
+                      +[](ExpertSplitOptions& o) { o.toe_section_fraction = 1.0; },
+                      +[](ExpertSplitOptions& o) { o.heel_arc_drop_mm = -1.0; }}) {
+    ExpertSplitOptions options;
+    change(options);
+    EXPECT_THROW(expert_split_plane(lower, upper, options, FootSide::Left), EngineError);
+  }
+  EXPECT_NO_THROW(expert_split_plane(lower, upper, ExpertSplitOptions{}, FootSide::Left));
 }
 
 }  // namespace
