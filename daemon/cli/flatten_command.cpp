@@ -20,6 +20,7 @@ struct FlattenArguments {
   std::string out_dir;
   std::string method = "arap";
   std::string unit = "auto";
+  std::string split = "auto";  // which lengthwise plane: auto (thesis 3.1) or expert (thesis 2.1)
   bool no_segment = false;
   double allowance_mm = 0.0;
   int max_triangles = 0;
@@ -44,6 +45,7 @@ LengthUnit length_unit_from_name(const std::string& name) {
 ScanOptions options_from(const FlattenArguments& arguments) {
   ScanOptions options;
   options.segment = !arguments.no_segment;
+  options.segment_options.split_rule = arguments.split == "expert" ? SplitRule::Expert : SplitRule::Auto;
   options.flatten.method = arguments.method == "lscm" ? FlattenMethod::Lscm : FlattenMethod::Arap;
   options.mold.allowance_mm = arguments.allowance_mm;
   options.read.unit = length_unit_from_name(arguments.unit);
@@ -54,6 +56,10 @@ ScanOptions options_from(const FlattenArguments& arguments) {
 int run_flatten(const FlattenArguments& arguments) {
   if (!(arguments.allowance_mm >= 0.0) || arguments.allowance_mm > 50.0) {
     print_error("allowance must be between 0 and 50 mm, not " + std::to_string(arguments.allowance_mm));
+    return 2;
+  }
+  if (arguments.split != "auto" && arguments.split != "expert") {
+    print_error("--split must be auto or expert, not \"" + arguments.split + "\"");
     return 2;
   }
   try {
@@ -86,6 +92,11 @@ void add_flatten_command(CLI::App& app, int& exit_code) {
   command->add_option("-o,--out", arguments->out_dir, "output folder (created if missing)")->required();
   command->add_option("--method", arguments->method, "flattening method: arap (least stretch) or lscm (conformal)")
       ->check(CLI::IsMember({"arap", "lscm"}))
+      ->capture_default_str();
+  // Checked in run_flatten, so a wrong value gets the same one-line refusal as other bad input.
+  command->add_option("--split", arguments->split,
+                      "lengthwise cut: auto (plane through the contours' toe, heel and top centres) or expert "
+                      "(through the heel middle, the second toe and the top centre)")
       ->capture_default_str();
   command->add_flag("--no-segment", arguments->no_segment, "the scan is one open patch: flatten it as it is");
   command->add_option("--allowance", arguments->allowance_mm, "outward margin added around each mold, mm")

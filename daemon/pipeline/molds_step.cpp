@@ -43,6 +43,7 @@ Result<MoldsMade> compute_molds(const std::filesystem::path& scan, const std::fi
   try {
     ScanOptions options;
     options.mold.allowance_mm = ticket.allowance_mm.value_or(default_allowance_mm);
+    if (ticket.split == "expert") options.segment_options.split_rule = SplitRule::Expert;
     const ScanResult result = scan_to_molds(scan, options);
     if (result.segments.empty()) return Status::failure("no mold could be made from the scan");
     MoldsMade made;

@@ -35,7 +35,7 @@ Result<JobTicket> check_ticket(const nlohmann::json& json) {
   JobTicket ticket;
   if (!json.is_object()) return Status::failure("the sidecar must be a table of keys");
   const std::set<std::string> known{"order", "customer", "size", "side", "quantity", "material",
-                                    "cutter", "allowance_mm", "priority"};
+                                    "cutter", "allowance_mm", "priority", "split"};
   for (auto it = json.begin(); it != json.end(); ++it) {
     if (!known.count(it.key())) return Status::failure("unknown key \"" + it.key() + "\"");
   }
@@ -49,11 +49,15 @@ Result<JobTicket> check_ticket(const nlohmann::json& json) {
   };
   for (auto [key, target] : {std::pair{"order", &ticket.order}, std::pair{"customer", &ticket.customer},
                              std::pair{"size", &ticket.size}, std::pair{"side", &ticket.side},
-                             std::pair{"material", &ticket.material}, std::pair{"cutter", &ticket.cutter}}) {
+                             std::pair{"material", &ticket.material}, std::pair{"cutter", &ticket.cutter},
+                             std::pair{"split", &ticket.split}}) {
     if (std::string error = text(key, *target); !error.empty()) return Status::failure(error);
   }
   if (!ticket.side.empty() && ticket.side != "left" && ticket.side != "right" && ticket.side != "pair") {
     return Status::failure("side \"" + ticket.side + "\" is not one of left, right, pair");
+  }
+  if (!ticket.split.empty() && ticket.split != "auto" && ticket.split != "expert") {
+    return Status::failure("split \"" + ticket.split + "\" is not one of auto, expert");
   }
   if (json.contains("quantity")) {
     const auto& node = json.at("quantity");
@@ -121,6 +125,7 @@ nlohmann::json ticket_to_json(const JobTicket& ticket) {
                       {"side", ticket.side},         {"quantity", ticket.quantity}, {"material", ticket.material},
                       {"cutter", ticket.cutter},     {"priority", ticket.priority}};
   if (ticket.allowance_mm) json["allowance_mm"] = *ticket.allowance_mm;
+  if (!ticket.split.empty()) json["split"] = ticket.split;
   return json;
 }
 
@@ -134,6 +139,7 @@ JobTicket ticket_from_json(const nlohmann::json& json) {
   ticket.material = json.value("material", "");
   ticket.cutter = json.value("cutter", "");
   ticket.priority = json.value("priority", 0);
+  ticket.split = json.value("split", "");
   if (json.contains("allowance_mm")) ticket.allowance_mm = json.at("allowance_mm").get<double>();
   return ticket;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // JobTicket: the optional sidecar next to a scan (NAME.job.toml or NAME.job.json) saying what
 // the workshop wants cut from it. Keys (all optional): order, customer, size, side
-// (left | right | pair), quantity, material, cutter, allowance_mm, priority. Unknown keys are errors.
+// (left | right | pair), quantity, material, cutter, allowance_mm, priority, split (auto | expert).
+// Unknown keys are errors.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -22,6 +23,7 @@ struct JobTicket {
   std::string cutter;    // "" means the configured default
   std::optional<double> allowance_mm;
   int priority = 0;      // higher is cut first within a batch
+  std::string split;     // lengthwise cut: "" or auto (thesis 3.1 plane), expert (heel middle to second toe)
 };
 
 // The sidecar's ticket, or one line saying why it is unusable.

@@ -246,6 +246,48 @@ TEST_F(CliFlatten, FlattensALastIntoTheContractFiles) {
   EXPECT_LE(before_writing_s, report["seconds_total"].get<double>());
 }
 
+TEST_F(CliFlatten, SplitExpertCutsTwoValidMoldsOfLeftAndRightLasts) {
+  for (FootSide side : {FootSide::Left, FootSide::Right}) {
+    LastParams params = LastParams::for_eu_size(side == FootSide::Left ? 39 : 45, side);
+    params.target_triangles = 16000;
+    params.random_pose = true;
+    params.noise_mm = 0.1;
+    params.seed = 11;
+    const std::string name(to_string(side));
+    const fs::path scan = dir_ / ("expert-" + name + ".stl");
+    write_stl_binary(scan, generate_last(params).mesh);
+    double medial_area_mm2[2] = {0, 0};
+    for (int expert = 0; expert < 2; ++expert) {
+      const fs::path out = dir_ / ("expert-" + name + std::to_string(expert));
+      const CommandRun run = flatten("'" + scan.string() + "' -o '" + out.string() + "'" + (expert ? " --split expert" : ""));
+      ASSERT_EQ(run.exit_code, 0) << run.err;
+      const auto report = nlohmann::json::parse(read_text(out / "report.json"));
+      EXPECT_EQ(report["side"], name);
+      ASSERT_EQ(report["segments"].size(), 2u);
+      for (const auto& segment : report["segments"]) {
+        const std::string half = segment["name"];
+        EXPECT_EQ(segment["flipped"], 0) << half;
+        EXPECT_LT(segment["D_angle"].get<double>(), 2.1) << half;
+        EXPECT_NEAR(segment["area_2d_mm2"].get<double>() / segment["area_3d_mm2"].get<double>(), 1.0, 0.03) << half;
+        EXPECT_EQ(read_mold_dxf(out / (half + ".dxf")).marks.size(), 4u) << half;
+        if (half == "medial") medial_area_mm2[expert] = segment["area_3d_mm2"].get<double>();
+      }
+      bool noted = false;
+      for (const auto& note : report["notes"]) noted = noted || note.get<std::string>().starts_with("expert split: second toe at");
+      EXPECT_EQ(noted, expert == 1) << name;
+    }
+    // The expert's plane is another plane: the medial half changes.
+    EXPECT_GT(std::abs(medial_area_mm2[1] - medial_area_mm2[0]), 100.0) << name;
+  }
+}
+
+TEST_F(CliFlatten, RefusesAnUnknownSplitRule) {
+  const fs::path out = dir_ / "bad-split";
+  const CommandRun run = flatten("'" + (dir_ / "any.stl").string() + "' -o '" + out.string() + "' --split sideways");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(run.err, "lastcut: error: --split must be auto or expert, not \"sideways\"\n");
+}
+
 TEST_F(CliFlatten, FlattensAnOpenPatchWithNoSegment) {
   const fs::path patch = dir_ / "open-patch.obj";
   write_mesh(patch, curved_patch());

@@ -146,6 +146,7 @@ TEST(JobTicket, BadSidecarsAreRefusedWithTheReason) {
       {"side = \"both\"\n", "side \"both\""},
       {"allowance_mm = \"wide\"\n", "allowance_mm must be"},
       {"order = \n", "line 1"},
+      {"split = \"sideways\"\n", "split \"sideways\" is not one of auto, expert"},
   };
   for (const auto& [text, expected] : cases) {
     write_text(folder / "x.job.toml", text);
@@ -156,6 +157,17 @@ TEST(JobTicket, BadSidecarsAreRefusedWithTheReason) {
   }
   write_text(folder / "y.job.json", "{\"order\": ");
   EXPECT_NE(read_job_ticket(folder / "y.job.json").error().find("not valid JSON"), std::string::npos);
+}
+
+TEST(JobTicket, SplitRuleIsReadAndAnUnknownOneRefusedInOneLine) {
+  const auto folder = testing::scratch_folder("splitticket");
+  write_text(folder / "e.job.toml", "split = \"expert\"\n");
+  const auto expert = read_job_ticket(folder / "e.job.toml");
+  ASSERT_TRUE(expert) << expert.error();
+  EXPECT_EQ(expert->split, "expert");
+  EXPECT_EQ(ticket_from_json(ticket_to_json(*expert)).split, "expert");
+  write_text(folder / "s.job.toml", "split = \"sideways\"\n");
+  EXPECT_EQ(read_job_ticket(folder / "s.job.toml").error(), "sidecar s.job.toml: split \"sideways\" is not one of auto, expert");
 }
 
 TEST(JobTicket, SidecarIsFoundBesideTheScan) {
