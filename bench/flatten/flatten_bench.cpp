@@ -1,6 +1,6 @@
 // Flattening benchmark: ARAP on half lasts (init, factorization, per-iteration, total, distortion reached)
 // against plain baselines measured in the same run, the sparse Cholesky backends, and LSCM vs ARAP.
-// Usage: bench_flatten [--no-400k] [--arap-only] [--starts] [--only NAME-PART] [--save FOLDER]   Prints markdown tables (docs/benchmarks-flatten.md).
+// Usage: bench_flatten [--no-400k] [--arap-only] [--starts] [--only NAME-PART] [--save FOLDER] | --split-agreement   Prints markdown tables (docs/benchmarks-flatten.md).
 #include <time.h>
 
 #include <algorithm>
@@ -11,6 +11,7 @@
 #include <string>
 
 #include "bench/flatten/bench_halves.hpp"
+#include "bench/flatten/split_agreement.hpp"
 #include "bench/flatten/start_comparison.hpp"
 #include "engine/flatten/arap_iterations.hpp"
 #include "engine/flatten/cotangent_laplacian.hpp"
@@ -134,6 +135,10 @@ int main(int argc, char** argv) {
     starts = starts || std::strcmp(argv[i], "--starts") == 0;
     if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) only = argv[++i];
     if (std::strcmp(argv[i], "--save") == 0 && i + 1 < argc) save_folder = argv[++i];
+    if (std::strcmp(argv[i], "--split-agreement") == 0) {  // only the automatic vs expert split table
+      print_split_agreement();
+      return 0;
+    }
   }
   std::vector<BenchHalf> halves = reference_halves(largest);
   for (BenchHalf& foot_half : find_foot_halves(100000)) halves.push_back(std::move(foot_half));
