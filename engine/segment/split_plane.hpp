@@ -17,7 +17,7 @@ namespace lastcut {
 
 struct SplitPlane {
   Eigen::Vector3d normal;  // unit, pointing to the medial side
-  double offset;           // signed distance of p is normal . p + offset (mm), > 0 on the medial side
+  double offset = 0;       // signed distance of p is normal . p + offset (mm), > 0 on the medial side
   Eigen::Vector3d T1, T2, T3;  // the three points (mm)
 };
 
