@@ -1,15 +1,240 @@
+// Ring-and-zipper hole patches, faired by the bi-Laplacian; see fill_holes.hpp.
 #include "engine/mesh/fill_holes.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numeric>
+#include <cstdio>
+#include <cstdlib>
+#include <numbers>
 #include <vector>
 
 #include "engine/core/mesh_topology.hpp"
+#include "engine/mesh/bilaplacian_fairing.hpp"
 
 namespace lastcut {
 namespace {
 
-double loop_diameter_mm(const Eigen::MatrixXd& V, const std::vector<int>& loop) {
+// A ring of patch vertices: indices into the growing vertex list and their arc-length fractions
+// in [0, 1), increasing, measured from the loop's first vertex in the loop's direction.
+struct Ring {
+  std::vector<int> vertex;
+  std::vector<double> fraction;
+};
+
+// Triangles between an outer and an inner ring running the same way: each step takes the ring whose
+// next vertex comes first by fraction. Outer edges are used reversed (the outer ring's faces lie
+// on its other side), inner edges forward (the next band uses them reversed).
+void zip_rings(const Ring& outer, const Ring& inner, std::vector<Eigen::RowVector3i>& faces) {
+  const size_t n_outer = outer.vertex.size(), n_inner = inner.vertex.size();
+  const auto outer_at = [&](size_t a) { return a < n_outer ? outer.fraction[a] - outer.fraction[0] : 1.0; };
+  const auto inner_at = [&](size_t b) { return b < n_inner ? inner.fraction[b] - inner.fraction[0] : 1.0; };
+  size_t a = 0, b = 0;
+  while (a < n_outer || b < n_inner) {
+    if (b == n_inner || (a < n_outer && outer_at(a + 1) <= inner_at(b + 1))) {
+      faces.emplace_back(outer.vertex[(a + 1) % n_outer], outer.vertex[a % n_outer], inner.vertex[b % n_inner]);
+      ++a;
+    } else {
+      faces.emplace_back(inner.vertex[b % n_inner], inner.vertex[(b + 1) % n_inner], outer.vertex[a % n_outer]);
+      ++b;
+    }
+  }
+}
+
+// The loop's plane: centroid and outward unit normal (Newell's normal of the loop, reversed: the loop
+// runs clockwise around the hole seen from outside), with u x v = normal.
+struct LoopPlane {
+  Eigen::Vector3d centroid, normal, u, v;
+};
+
+LoopPlane loop_plane(const Eigen::MatrixXd& V, const std::vector<int>& loop) {
+  LoopPlane plane;
+  plane.centroid = Eigen::Vector3d::Zero();
+  Eigen::Vector3d newell = Eigen::Vector3d::Zero();
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const Eigen::Vector3d a = V.row(loop[i]), b = V.row(loop[(i + 1) % loop.size()]);
+    plane.centroid += a / static_cast<double>(loop.size());
+    newell += a.cross(b);
+  }
+  plane.normal = newell.norm() > 0.0 ? Eigen::Vector3d(-newell.normalized()) : Eigen::Vector3d::UnitZ();
+  plane.u = plane.normal.unitOrthogonal();
+  plane.v = plane.normal.cross(plane.u);
+  return plane;
+}
+
+// How the loop turns around its centroid seen from its plane: the signed angle of each edge (loop[i]
+// to loop[i+1]) and whether every edge turns the same way, once round (star-shaped).
+struct LoopTurns {
+  std::vector<double> step;
+  double sign = 1.0;  // the way round: +1 or -1
+  bool star_shaped = false;
+};
+
+LoopTurns loop_turns(const Eigen::MatrixXd& V, const std::vector<int>& loop, const LoopPlane& plane) {
+  LoopTurns turns;
+  const auto angle_of = [&](const Eigen::Vector3d& p) {
+    const Eigen::Vector3d d = p - plane.centroid;
+    return std::atan2(d.dot(plane.v), d.dot(plane.u));
+  };
+  double total = 0.0;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    double step = angle_of(V.row(loop[(i + 1) % loop.size()])) - angle_of(V.row(loop[i]));
+    if (step < -std::numbers::pi) step += 2.0 * std::numbers::pi;
+    if (step > std::numbers::pi) step -= 2.0 * std::numbers::pi;
+    turns.step.push_back(step);
+    total += step;
+  }
+  turns.sign = total > 0.0 ? 1.0 : -1.0;
+  turns.star_shaped = std::abs(std::abs(total) - 2.0 * std::numbers::pi) < 1e-6 &&
+                      std::all_of(turns.step.begin(), turns.step.end(), [&](double a) { return turns.sign * a > 0.0; });
+  return turns;
+}
+
+// A scanner's ragged hole edge has teeth: edges that turn back around the hole's centre. Removing the
+// face behind each such edge (a few rounds) widens the hole to a star-shaped one, which the ring patch
+// covers without a fold; the patch then replaces those faces along the surface. Holes larger than
+// max_across_mm are left alone. Unreferenced vertices are dropped. Returns the number of faces removed.
+int trim_holes_to_star_shapes(TriMesh& mesh, double max_across_mm) {
+  constexpr int kRounds = 30;
+  int removed_total = 0;
+  for (int round = 0; round < kRounds; ++round) {
+    const MeshTopology topology = build_mesh_topology(mesh.F, mesh.V.rows());
+    std::vector<char> remove(static_cast<size_t>(mesh.F.rows()), 0);
+    int removed = 0;
+    for (const std::vector<int>& loop : topology.boundary_loops) {
+      if (loop.size() < 4 || loop.size() > 4000 || loop_across_mm(mesh.V, loop) > max_across_mm) continue;
+      const LoopTurns turns = loop_turns(mesh.V, loop, loop_plane(mesh.V, loop));
+      if (turns.star_shaped || std::abs(std::abs(std::accumulate(turns.step.begin(), turns.step.end(), 0.0)) -
+                                        2.0 * std::numbers::pi) > 1e-6)
+        continue;
+      for (size_t i = 0; i < loop.size(); ++i) {
+        if (turns.sign * turns.step[i] > 0.0) continue;
+        const int h = topology.find_half_edge(loop[i], loop[(i + 1) % loop.size()]);
+        if (h >= 0 && !remove[h / 3]) remove[h / 3] = 1, ++removed;
+      }
+    }
+    // Removing single faces can pinch the edge (two loops through one vertex) or cut off an island:
+    // the faces at a pinch go too, and only the largest piece of the surface stays.
+    if (removed > 0 && topology.first_pinch_vertex < 0) {
+      const MeshTopology trimmed = build_mesh_topology(mesh.F, mesh.V.rows(), remove);
+      if (trimmed.first_pinch_vertex >= 0) {
+        for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
+          for (int k = 0; k < 3; ++k)
+            if (mesh.F(f, k) == trimmed.first_pinch_vertex && !remove[f]) remove[f] = 1, ++removed;
+      }
+      std::vector<char> kept_faces(remove.size());
+      for (size_t f = 0; f < remove.size(); ++f) kept_faces[f] = !remove[f];
+      int components = 0;
+      const std::vector<int> component = face_components(trimmed, kept_faces, components);
+      if (components > 1) {
+        const std::vector<double> areas = component_areas(component, components, triangle_areas(mesh));
+        const int largest = static_cast<int>(std::max_element(areas.begin(), areas.end()) - areas.begin());
+        for (size_t f = 0; f < remove.size(); ++f)
+          if (!remove[f] && component[f] != largest) remove[f] = 1, ++removed;
+      }
+    }
+    if (removed == 0) break;
+    removed_total += removed;
+    std::vector<int> new_index(static_cast<size_t>(mesh.V.rows()), -1);
+    Eigen::MatrixXi kept(mesh.F.rows() - removed, 3);
+    int next_face = 0, next_vertex = 0;
+    for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+      if (remove[f]) continue;
+      for (int k = 0; k < 3; ++k) {
+        int& index = new_index[mesh.F(f, k)];
+        if (index < 0) index = next_vertex++;
+        kept(next_face, k) = index;
+      }
+      ++next_face;
+    }
+    Eigen::MatrixXd vertices(next_vertex, 3);
+    for (Eigen::Index v = 0; v < mesh.V.rows(); ++v)
+      if (new_index[v] >= 0) vertices.row(new_index[v]) = mesh.V.row(v);
+    mesh.V = std::move(vertices);
+    mesh.F = std::move(kept);
+  }
+  return removed_total;
+}
+
+// Closes one loop (mesh vertex indices in the faces' direction) with rings laid out flat in the loop's
+// plane: circles around the centroid inside the loop's nearest point, joined by angle, so that a loop
+// that is star-shaped around its centroid (a scan hole, however ragged its edge) is covered without a
+// fold. Returns false, adding nothing, when the loop is not star-shaped seen from its plane.
+// New vertices are appended to `vertices` (shared by all patches; vertices[i] will be mesh vertex
+// first_new_index + i), triangles to `faces`, and the plane's normal once per new vertex to `normals`.
+bool ring_patch(const Eigen::MatrixXd& V, const std::vector<int>& loop, int first_new_index,
+                std::vector<Eigen::RowVector3d>& vertices, std::vector<Eigen::RowVector3i>& faces,
+                std::vector<Eigen::Vector3d>& normals) {
+  const size_t count = loop.size();
+  const LoopPlane plane = loop_plane(V, loop);
+  const LoopTurns turns = loop_turns(V, loop, plane);
+  if (!turns.star_shaped) return false;
+  Ring outer;
+  double turned = 0.0, nearest_mm = std::numeric_limits<double>::max(), perimeter = 0.0;
+  for (size_t i = 0; i < count; ++i) {
+    const Eigen::Vector3d p = V.row(loop[i]), d = p - plane.centroid;
+    nearest_mm = std::min(nearest_mm, (d - d.dot(plane.normal) * plane.normal).norm());
+    perimeter += (V.row(loop[(i + 1) % count]) - V.row(loop[i])).norm();
+    outer.vertex.push_back(loop[i]);
+    outer.fraction.push_back(turned / (2.0 * std::numbers::pi));
+    turned += turns.sign * turns.step[i];
+  }
+  const double turn_sign = turns.sign;
+  const auto angle_of = [&](const Eigen::Vector3d& p) {
+    const Eigen::Vector3d d = p - plane.centroid;
+    return std::atan2(d.dot(plane.v), d.dot(plane.u));
+  };
+
+  const double edge_mm = perimeter / static_cast<double>(count);
+  const double start_angle = angle_of(V.row(loop[0]));
+  const auto add_vertex = [&](double radius_mm, double angle) {
+    const Eigen::Vector3d p = plane.centroid + radius_mm * (std::cos(angle) * plane.u + std::sin(angle) * plane.v);
+    vertices.push_back(p.transpose());
+    normals.push_back(plane.normal);
+    return first_new_index + static_cast<int>(vertices.size()) - 1;
+  };
+  // Ring spacing about the loop's edge length, the rings' own edges about the same.
+  const int rings = std::max(1, static_cast<int>(std::lround(nearest_mm / edge_mm)));
+  for (int j = 1; j < rings; ++j) {
+    const double radius_mm = nearest_mm * (1.0 - static_cast<double>(j) / rings);
+    const size_t wanted = static_cast<size_t>(std::lround(2.0 * std::numbers::pi * radius_mm / edge_mm));
+    const size_t n = std::clamp<size_t>(wanted, 3, outer.vertex.size());
+    Ring inner;
+    for (size_t i = 0; i < n; ++i) {
+      const double fraction = static_cast<double>(i) / static_cast<double>(n);
+      inner.fraction.push_back(fraction);
+      inner.vertex.push_back(add_vertex(radius_mm, start_angle + turn_sign * 2.0 * std::numbers::pi * fraction));
+    }
+    zip_rings(outer, inner, faces);
+    outer = std::move(inner);
+  }
+  if (outer.vertex.size() == 3 && rings == 1) {
+    faces.emplace_back(outer.vertex[2], outer.vertex[1], outer.vertex[0]);
+    return true;
+  }
+  const int centre = add_vertex(0.0, 0.0);
+  for (size_t i = 0; i < outer.vertex.size(); ++i)
+    faces.emplace_back(outer.vertex[(i + 1) % outer.vertex.size()], outer.vertex[i], centre);
+  return true;
+}
+
+// The fallback for a loop that is not star-shaped: a fan around its centroid (fairing then lifts the
+// centre onto the surface).
+void fan_patch(const Eigen::MatrixXd& V, const std::vector<int>& loop, int first_new_index,
+               std::vector<Eigen::RowVector3d>& vertices, std::vector<Eigen::RowVector3i>& faces,
+               std::vector<Eigen::Vector3d>& normals) {
+  const LoopPlane plane = loop_plane(V, loop);
+  vertices.push_back(plane.centroid.transpose());
+  normals.push_back(plane.normal);
+  const int centre = first_new_index + static_cast<int>(vertices.size()) - 1;
+  for (size_t i = 0; i < loop.size(); ++i) faces.emplace_back(loop[(i + 1) % loop.size()], loop[i], centre);
+}
+
+}  // namespace
+
+double loop_across_mm(const Eigen::MatrixXd& V, const std::vector<int>& loop) {
   double largest_squared = 0.0;
   for (std::size_t i = 0; i < loop.size(); ++i)
     for (std::size_t j = i + 1; j < loop.size(); ++j)
@@ -17,38 +242,47 @@ double loop_diameter_mm(const Eigen::MatrixXd& V, const std::vector<int>& loop) 
   return std::sqrt(largest_squared);
 }
 
-}  // namespace
-
-int fill_holes(TriMesh& mesh, double max_diameter_mm) {
+std::vector<double> fill_holes(TriMesh& mesh, double max_across_mm) {
+  // The sizes reported are the scan's own holes, measured before trimming widens them a little.
+  std::vector<double> scan_holes_mm;
+  for (const std::vector<int>& loop : build_mesh_topology(mesh.F, mesh.V.rows()).boundary_loops) {
+    if (loop.size() < 3 || loop.size() > 4000) continue;
+    const double across_mm = loop_across_mm(mesh.V, loop);
+    if (across_mm <= max_across_mm) scan_holes_mm.push_back(across_mm);
+  }
+  if (scan_holes_mm.empty()) return {};
+  trim_holes_to_star_shapes(mesh, max_across_mm);
+  // A trimmed hole is a few triangle widths wider than the scan's: still closed.
+  const double trimmed_max_across_mm = 1.25 * max_across_mm;
   // The loops run along the faces' own edges; at a pinch a loop takes whichever boundary edge comes first.
   const std::vector<std::vector<int>> loops = build_mesh_topology(mesh.F, mesh.V.rows()).boundary_loops;
   std::vector<Eigen::RowVector3d> new_vertices;
   std::vector<Eigen::RowVector3i> new_faces;
-  int filled = 0;
+  std::vector<Eigen::Vector3d> new_normals;  // per new vertex: its hole's plane normal (it moves only along it)
+  std::vector<double> filled_across_mm;
   constexpr std::size_t kLargestLoopChecked = 4000;  // a loop this long is an opening, not a scan hole
   for (const std::vector<int>& loop : loops) {
-    if (loop.size() < 3 || loop.size() > kLargestLoopChecked || loop_diameter_mm(mesh.V, loop) > max_diameter_mm) continue;
-    ++filled;
-    // The loop runs along the existing faces' edges, so the patch uses each edge reversed.
+    if (loop.size() < 3 || loop.size() > kLargestLoopChecked) continue;
+    const double across_mm = loop_across_mm(mesh.V, loop);
+    if (across_mm > trimmed_max_across_mm) continue;
+    filled_across_mm.push_back(across_mm);
     if (loop.size() == 3) {
       new_faces.emplace_back(loop[2], loop[1], loop[0]);
-      continue;
+    } else if (!ring_patch(mesh.V, loop, static_cast<int>(mesh.V.rows()), new_vertices, new_faces, new_normals)) {
+      if (std::getenv("FILL_DEBUG")) { auto t = loop_turns(mesh.V, loop, loop_plane(mesh.V, loop)); int back = 0; double tot = 0; for (double a : t.step) { tot += a; if (t.sign * a <= 0) ++back; } std::fprintf(stderr, "fan: loop %zu, total %.4f, back %d\n", loop.size(), tot, back); }
+      fan_patch(mesh.V, loop, static_cast<int>(mesh.V.rows()), new_vertices, new_faces, new_normals);
     }
-    Eigen::RowVector3d centroid = Eigen::RowVector3d::Zero();
-    for (int v : loop) centroid += mesh.V.row(v);
-    centroid /= static_cast<double>(loop.size());
-    const int centre = static_cast<int>(mesh.V.rows() + static_cast<Eigen::Index>(new_vertices.size()));
-    new_vertices.push_back(centroid);
-    for (std::size_t i = 0; i < loop.size(); ++i)
-      new_faces.emplace_back(loop[(i + 1) % loop.size()], loop[i], centre);
   }
-  if (filled == 0) return 0;
+  if (filled_across_mm.empty()) return {};
   const Eigen::Index old_v = mesh.V.rows(), old_f = mesh.F.rows();
   mesh.V.conservativeResize(old_v + static_cast<Eigen::Index>(new_vertices.size()), 3);
   for (std::size_t i = 0; i < new_vertices.size(); ++i) mesh.V.row(old_v + static_cast<Eigen::Index>(i)) = new_vertices[i];
   mesh.F.conservativeResize(old_f + static_cast<Eigen::Index>(new_faces.size()), 3);
   for (std::size_t i = 0; i < new_faces.size(); ++i) mesh.F.row(old_f + static_cast<Eigen::Index>(i)) = new_faces[i];
-  return filled;
+  std::vector<int> patch_vertices(new_vertices.size());
+  for (std::size_t i = 0; i < new_vertices.size(); ++i) patch_vertices[i] = static_cast<int>(old_v) + static_cast<int>(i);
+  fair_vertices_bilaplacian(mesh, patch_vertices, new_normals);
+  return filled_across_mm.size() == scan_holes_mm.size() ? scan_holes_mm : filled_across_mm;
 }
 
 }  // namespace lastcut

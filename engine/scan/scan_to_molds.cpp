@@ -9,6 +9,7 @@
 
 #include "engine/core/engine_error.hpp"
 #include "engine/core/mesh_topology.hpp"
+#include "engine/mesh/fill_holes.hpp"
 #include "engine/mold/boundary_loops.hpp"
 #include "engine/orient/orient_last.hpp"
 
@@ -20,32 +21,23 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::vector<double> boundary_loop_lengths_mm(const TriMesh& mesh) {
-  std::vector<double> lengths;
-  for (const auto& loop : simple_boundary_loops(build_mesh_topology(mesh.F, mesh.V.rows()))) {
-    double length = 0.0;
-    for (size_t i = 0; i < loop.size(); ++i) length += (mesh.V.row(loop[(i + 1) % loop.size()]) - mesh.V.row(loop[i])).norm();
-    lengths.push_back(length);
-  }
-  return lengths;
-}
-
-// A last may carry small scan holes (segmentation closes them); a boundary longer than the largest
-// closable hole means the scan is an open patch, not a last.
+// A last may carry scan holes (segmentation closes them up to max_hole_fill_diameter_mm across); a
+// larger boundary loop means the scan is an open patch or has a hole too large to close.
 void refuse_open_patch(const TriMesh& mesh, const SegmentOptions& options) {
-  const double closable_mm = std::numbers::pi * options.max_hole_fill_diameter_mm;
   int open_loops = 0;
-  double longest_mm = 0.0;
-  for (double length : boundary_loop_lengths_mm(mesh)) {
-    if (length <= closable_mm) continue;
+  double largest_mm = 0.0;
+  for (const auto& loop : simple_boundary_loops(build_mesh_topology(mesh.F, mesh.V.rows()))) {
+    const double across_mm = loop_across_mm(mesh.V, loop);
+    if (across_mm <= options.max_hole_fill_diameter_mm) continue;
     ++open_loops;
-    longest_mm = std::max(longest_mm, length);
+    largest_mm = std::max(largest_mm, across_mm);
   }
   if (open_loops == 0) return;
-  char line[200];
+  char line[240];
   std::snprintf(line, sizeof line,
-                "not a closed last: %d boundary loop%s of up to %.0f mm; use --no-segment to flatten an open patch",
-                open_loops, open_loops == 1 ? "" : "s", longest_mm);
+                "not a closed last: %d boundary loop%s up to %.1f mm across, larger than the %.0f mm scan holes are "
+                "closed up to; use --no-segment to flatten an open patch",
+                open_loops, open_loops == 1 ? "" : "s", largest_mm, options.max_hole_fill_diameter_mm);
   throw EngineError(line);
 }
 

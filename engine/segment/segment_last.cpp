@@ -83,10 +83,13 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
     throw EngineError("the feather line height and the top rim depth must be positive (mm)");
   Segmentation result;
   TriMesh mesh = last.mesh;
-  const int filled = fill_holes(mesh, options.max_hole_fill_diameter_mm);
-  if (filled > 0)
-    result.notes.push_back("closed " + std::to_string(filled) + " scan hole(s) up to " +
-                           fixed(options.max_hole_fill_diameter_mm, 0) + " mm across");
+  const std::vector<double> filled_mm = fill_holes(mesh, options.max_hole_fill_diameter_mm);
+  if (!filled_mm.empty()) {
+    std::string sizes;
+    for (double across_mm : filled_mm) sizes += (sizes.empty() ? "" : ", ") + fixed(across_mm, 1);
+    result.notes.push_back("closed " + std::to_string(filled_mm.size()) + " scan hole" +
+                           (filled_mm.size() == 1 ? "" : "s") + " (" + sizes + " mm across) with a smooth patch");
+  }
 
   // Step 2: sole and top regions, and their contours (Dijkstra, then eq. 22).
   const MeshTopology topology = build_mesh_topology(mesh.F, mesh.V.rows());

@@ -34,7 +34,7 @@ struct SegmentOptions {
   double top_angle_rad = std::numbers::pi / 4;    // faces at or above this elevation may be top (eq. 9)
   double plane_t = 1.0 / 3.0;                     // where the toe and heel parts of the sole contour end (eqs. 14-15)
   int smoothing_passes = 10;                      // eq. 22 moving-average passes on a 2 mm edge mesh (scaled to the same mm on others)
-  double max_hole_fill_diameter_mm = 15;          // larger scan holes are not closed
+  double max_hole_fill_diameter_mm = 30;          // scan holes up to this size across are closed (fill_holes.hpp)
   // Where the sole and the top cut fit smooth shapes, the curves are placed by height, not angle:
   double feather_height_mm = 1.5;  // the feather line runs this high above the fitted sole surface
   double rim_depth_mm = 1.25;      // the top rim runs this deep below the fitted top plane
