@@ -1,9 +1,13 @@
 #pragma once
-// Fairing of chosen vertices: they are moved so that the uniform bi-Laplacian vanishes at each of them,
-// every other vertex staying where it is. The discrete thin-plate condition of L. Kobbelt, S. Campagna,
+// Fairing of chosen vertices: they are moved so that the bi-Laplacian vanishes at each of them, every
+// other vertex staying where it is. The discrete thin-plate condition of L. Kobbelt, S. Campagna,
 // J. Vorsatz, H.-P. Seidel, "Interactive Multi-Resolution Modeling on Arbitrary Meshes", SIGGRAPH 1998
-// (umbrella operator U(p) = mean of the neighbours - p, applied twice), as P. Liepa's hole filling
-// (SGP 2003) uses it: a patch faired this way continues the slope of the surface around it.
+// (umbrella operator U(p) = weighted mean of the neighbours - p, applied twice), as P. Liepa's hole
+// filling (SGP 2003) uses it: a patch faired this way continues the slope of the surface around it.
+// The weights are the inverse edge lengths of the mesh as it is when called (the scale-dependent
+// umbrella of M. Desbrun, M. Meyer, P. Schroeder, A. Barr, "Implicit Fairing of Irregular Meshes using
+// Diffusion and Curvature Flow", SIGGRAPH 1999), so a patch finer than the scan around it is not
+// pulled towards its denser side.
 #include <vector>
 
 #include "engine/core/tri_mesh.hpp"

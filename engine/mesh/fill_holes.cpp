@@ -6,8 +6,6 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <cstdio>
-#include <cstdlib>
 #include <numbers>
 #include <vector>
 
@@ -92,27 +90,69 @@ LoopTurns loop_turns(const Eigen::MatrixXd& V, const std::vector<int>& loop, con
   return turns;
 }
 
+// The hole a boundary loop belongs to: the id carried by any of its vertices, or -1.
+int hole_of_loop(const std::vector<int>& loop, const std::vector<int>& hole_of_vertex) {
+  for (int v : loop)
+    if (hole_of_vertex[static_cast<size_t>(v)] >= 0) return hole_of_vertex[static_cast<size_t>(v)];
+  return -1;
+}
+
+// Drops the faces with remove[f] != 0 and the vertices no face uses any more; hole_of_vertex follows
+// the renumbering.
+void drop_faces(TriMesh& mesh, const std::vector<char>& remove, std::vector<int>& hole_of_vertex) {
+  std::vector<int> new_index(static_cast<size_t>(mesh.V.rows()), -1);
+  const auto kept_count = static_cast<Eigen::Index>(std::count(remove.begin(), remove.end(), 0));
+  Eigen::MatrixXi kept(kept_count, 3);
+  int next_face = 0, next_vertex = 0;
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    if (remove[static_cast<size_t>(f)]) continue;
+    for (int k = 0; k < 3; ++k) {
+      int& index = new_index[static_cast<size_t>(mesh.F(f, k))];
+      if (index < 0) index = next_vertex++;
+      kept(next_face, k) = index;
+    }
+    ++next_face;
+  }
+  Eigen::MatrixXd vertices(next_vertex, 3);
+  std::vector<int> hole_of_kept(static_cast<size_t>(next_vertex), -1);
+  for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) {
+    const int index = new_index[static_cast<size_t>(v)];
+    if (index < 0) continue;
+    vertices.row(index) = mesh.V.row(v);
+    hole_of_kept[static_cast<size_t>(index)] = hole_of_vertex[static_cast<size_t>(v)];
+  }
+  mesh.V = std::move(vertices);
+  mesh.F = std::move(kept);
+  hole_of_vertex = std::move(hole_of_kept);
+}
+
 // A scanner's ragged hole edge has teeth: edges that turn back around the hole's centre. Removing the
 // face behind each such edge (a few rounds) widens the hole to a star-shaped one, which the ring patch
-// covers without a fold; the patch then replaces those faces along the surface. Holes larger than
-// max_across_mm are left alone. Unreferenced vertices are dropped. Returns the number of faces removed.
-int trim_holes_to_star_shapes(TriMesh& mesh, double max_across_mm) {
+// covers without a fold; the patch then replaces those faces along the surface. Only loops of the
+// holes to close are touched (hole_of_vertex >= 0 on them); the vertices of every removed face join
+// that hole, so a widened hole is still known as the scan's hole it grew from. Returns the number of
+// faces removed.
+int trim_holes_to_star_shapes(TriMesh& mesh, std::vector<int>& hole_of_vertex) {
   constexpr int kRounds = 30;
   int removed_total = 0;
   for (int round = 0; round < kRounds; ++round) {
     const MeshTopology topology = build_mesh_topology(mesh.F, mesh.V.rows());
     std::vector<char> remove(static_cast<size_t>(mesh.F.rows()), 0);
+    std::vector<int> hole_of_face(static_cast<size_t>(mesh.F.rows()), -1);
     int removed = 0;
     for (const std::vector<int>& loop : topology.boundary_loops) {
-      if (loop.size() < 4 || loop.size() > 4000 || loop_across_mm(mesh.V, loop) > max_across_mm) continue;
+      const int hole = hole_of_loop(loop, hole_of_vertex);
+      if (loop.size() < 4 || hole < 0) continue;
       const LoopTurns turns = loop_turns(mesh.V, loop, loop_plane(mesh.V, loop));
       if (turns.star_shaped || std::abs(std::abs(std::accumulate(turns.step.begin(), turns.step.end(), 0.0)) -
                                         2.0 * std::numbers::pi) > 1e-6)
-        continue;
+        continue;  // already star-shaped, or not once round its centre (no trimming makes it so)
       for (size_t i = 0; i < loop.size(); ++i) {
         if (turns.sign * turns.step[i] > 0.0) continue;
         const int h = topology.find_half_edge(loop[i], loop[(i + 1) % loop.size()]);
-        if (h >= 0 && !remove[h / 3]) remove[h / 3] = 1, ++removed;
+        if (h >= 0 && !remove[static_cast<size_t>(h / 3)]) {
+          remove[static_cast<size_t>(h / 3)] = 1, hole_of_face[static_cast<size_t>(h / 3)] = hole, ++removed;
+        }
       }
     }
     // Removing single faces can pinch the edge (two loops through one vertex) or cut off an island:
@@ -120,9 +160,11 @@ int trim_holes_to_star_shapes(TriMesh& mesh, double max_across_mm) {
     if (removed > 0 && topology.first_pinch_vertex < 0) {
       const MeshTopology trimmed = build_mesh_topology(mesh.F, mesh.V.rows(), remove);
       if (trimmed.first_pinch_vertex >= 0) {
+        const int hole = hole_of_vertex[static_cast<size_t>(trimmed.first_pinch_vertex)];
         for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
           for (int k = 0; k < 3; ++k)
-            if (mesh.F(f, k) == trimmed.first_pinch_vertex && !remove[f]) remove[f] = 1, ++removed;
+            if (mesh.F(f, k) == trimmed.first_pinch_vertex && !remove[static_cast<size_t>(f)])
+              remove[static_cast<size_t>(f)] = 1, hole_of_face[static_cast<size_t>(f)] = hole, ++removed;
       }
       std::vector<char> kept_faces(remove.size());
       for (size_t f = 0; f < remove.size(); ++f) kept_faces[f] = !remove[f];
@@ -137,23 +179,14 @@ int trim_holes_to_star_shapes(TriMesh& mesh, double max_across_mm) {
     }
     if (removed == 0) break;
     removed_total += removed;
-    std::vector<int> new_index(static_cast<size_t>(mesh.V.rows()), -1);
-    Eigen::MatrixXi kept(mesh.F.rows() - removed, 3);
-    int next_face = 0, next_vertex = 0;
-    for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-      if (remove[f]) continue;
+    for (size_t f = 0; f < remove.size(); ++f) {
+      if (hole_of_face[f] < 0) continue;
       for (int k = 0; k < 3; ++k) {
-        int& index = new_index[mesh.F(f, k)];
-        if (index < 0) index = next_vertex++;
-        kept(next_face, k) = index;
+        int& hole = hole_of_vertex[static_cast<size_t>(mesh.F(static_cast<Eigen::Index>(f), k))];
+        if (hole < 0) hole = hole_of_face[f];
       }
-      ++next_face;
     }
-    Eigen::MatrixXd vertices(next_vertex, 3);
-    for (Eigen::Index v = 0; v < mesh.V.rows(); ++v)
-      if (new_index[v] >= 0) vertices.row(new_index[v]) = mesh.V.row(v);
-    mesh.V = std::move(vertices);
-    mesh.F = std::move(kept);
+    drop_faces(mesh, remove, hole_of_vertex);
   }
   return removed_total;
 }
@@ -242,38 +275,38 @@ double loop_across_mm(const Eigen::MatrixXd& V, const std::vector<int>& loop) {
   return std::sqrt(largest_squared);
 }
 
-std::vector<double> fill_holes(TriMesh& mesh, double max_across_mm) {
-  // The sizes reported are the scan's own holes, measured before trimming widens them a little.
-  std::vector<double> scan_holes_mm;
+std::vector<HoleRepair> fill_holes(TriMesh& mesh, double max_across_mm) {
+  // The holes to close, and their sizes as the scan had them (trimming widens them a little).
+  constexpr std::size_t kLargestLoopChecked = 4000;  // a loop this long is an opening, not a scan hole
+  std::vector<HoleRepair> repairs;
+  std::vector<int> hole_of_vertex(static_cast<size_t>(mesh.V.rows()), -1);
   for (const std::vector<int>& loop : build_mesh_topology(mesh.F, mesh.V.rows()).boundary_loops) {
-    if (loop.size() < 3 || loop.size() > 4000) continue;
+    if (loop.size() < 3 || loop.size() > kLargestLoopChecked) continue;
     const double across_mm = loop_across_mm(mesh.V, loop);
-    if (across_mm <= max_across_mm) scan_holes_mm.push_back(across_mm);
+    if (across_mm > max_across_mm) continue;
+    for (int v : loop) hole_of_vertex[static_cast<size_t>(v)] = static_cast<int>(repairs.size());
+    repairs.push_back({across_mm, 0, false});
   }
-  if (scan_holes_mm.empty()) return {};
-  trim_holes_to_star_shapes(mesh, max_across_mm);
-  // A trimmed hole is a few triangle widths wider than the scan's: still closed.
-  const double trimmed_max_across_mm = 1.25 * max_across_mm;
+  if (repairs.empty()) return {};
+  trim_holes_to_star_shapes(mesh, hole_of_vertex);
   // The loops run along the faces' own edges; at a pinch a loop takes whichever boundary edge comes first.
   const std::vector<std::vector<int>> loops = build_mesh_topology(mesh.F, mesh.V.rows()).boundary_loops;
   std::vector<Eigen::RowVector3d> new_vertices;
   std::vector<Eigen::RowVector3i> new_faces;
   std::vector<Eigen::Vector3d> new_normals;  // per new vertex: its hole's plane normal (it moves only along it)
-  std::vector<double> filled_across_mm;
-  constexpr std::size_t kLargestLoopChecked = 4000;  // a loop this long is an opening, not a scan hole
   for (const std::vector<int>& loop : loops) {
-    if (loop.size() < 3 || loop.size() > kLargestLoopChecked) continue;
-    const double across_mm = loop_across_mm(mesh.V, loop);
-    if (across_mm > trimmed_max_across_mm) continue;
-    filled_across_mm.push_back(across_mm);
+    const int hole = hole_of_loop(loop, hole_of_vertex);
+    if (hole < 0) continue;  // a loop larger than the limit: left open
+    HoleRepair& repair = repairs[static_cast<size_t>(hole)];
+    const size_t vertices_before = new_vertices.size();
     if (loop.size() == 3) {
       new_faces.emplace_back(loop[2], loop[1], loop[0]);
     } else if (!ring_patch(mesh.V, loop, static_cast<int>(mesh.V.rows()), new_vertices, new_faces, new_normals)) {
-      if (std::getenv("FILL_DEBUG")) { auto t = loop_turns(mesh.V, loop, loop_plane(mesh.V, loop)); int back = 0; double tot = 0; for (double a : t.step) { tot += a; if (t.sign * a <= 0) ++back; } std::fprintf(stderr, "fan: loop %zu, total %.4f, back %d\n", loop.size(), tot, back); }
       fan_patch(mesh.V, loop, static_cast<int>(mesh.V.rows()), new_vertices, new_faces, new_normals);
+      repair.fan = true;
     }
+    repair.patch_vertices += static_cast<int>(new_vertices.size() - vertices_before);
   }
-  if (filled_across_mm.empty()) return {};
   const Eigen::Index old_v = mesh.V.rows(), old_f = mesh.F.rows();
   mesh.V.conservativeResize(old_v + static_cast<Eigen::Index>(new_vertices.size()), 3);
   for (std::size_t i = 0; i < new_vertices.size(); ++i) mesh.V.row(old_v + static_cast<Eigen::Index>(i)) = new_vertices[i];
@@ -282,7 +315,7 @@ std::vector<double> fill_holes(TriMesh& mesh, double max_across_mm) {
   std::vector<int> patch_vertices(new_vertices.size());
   for (std::size_t i = 0; i < new_vertices.size(); ++i) patch_vertices[i] = static_cast<int>(old_v) + static_cast<int>(i);
   fair_vertices_bilaplacian(mesh, patch_vertices, new_normals);
-  return filled_across_mm.size() == scan_holes_mm.size() ? scan_holes_mm : filled_across_mm;
+  return repairs;
 }
 
 }  // namespace lastcut

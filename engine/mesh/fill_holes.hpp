@@ -12,26 +12,39 @@
 // plane) by removing the faces behind the edge's backward teeth; the patch replaces them too.
 // The patch, after P. Liepa, "Filling Holes in Meshes", Eurographics Symposium on Geometry Processing
 // 2003 (triangulate, refine to the surrounding edge length, fair), with a simpler triangulation:
-//   1. rings: concentric rings between the loop and its centroid, spaced by the loop's mean edge
-//      length and each with as many vertices as that spacing allows along it, joined ring to ring
-//      by a zipper (each next triangle takes the nearer next vertex by arc-length fraction), the
-//      innermost ring closed by a fan; the patch uses each loop edge reversed, so the faces keep
-//      the surface's outward orientation;
-//   2. fairing: the new vertices solve the uniform bi-Laplacian (umbrella operator applied twice,
-//      Liepa section 5, Kobbelt et al. 1998) with every old vertex fixed, so the patch meets the
-//      surrounding surface with its slope and bends with it, rather than spanning it flat.
+//   1. rings, laid out flat in the loop's plane: circles around the loop's centroid, the outermost
+//      inside the loop's nearest vertex, spaced by the loop's mean edge length, each with as many
+//      vertices as that spacing allows along it; ring to ring joined by a zipper (each next triangle
+//      takes the next vertex that comes first by angle around the centroid), the innermost ring
+//      closed by a fan. For a star-shaped loop this covers the hole without a fold seen from the
+//      plane. Each loop edge is used reversed, so the faces keep the surface's outward orientation;
+//   2. fairing: the new vertices move only along the plane's normal (the patch is a height field
+//      over the plane, so it cannot fold) until the bi-Laplacian vanishes at each of them, every old
+//      vertex fixed (Liepa section 5, Kobbelt et al. 1998; bilaplacian_fairing.hpp): the patch meets
+//      the surrounding surface with its slope and bends with it, rather than spanning it flat.
+// A loop that trimming cannot make star-shaped (30 rounds) is closed by a fan around its centroid,
+// faired the same way, and reported (HoleRepair::fan).
 #include <vector>
 
 #include "engine/core/tri_mesh.hpp"
 
 namespace lastcut {
 
-// The size across of a loop of vertices (largest distance between two of them), mm.
+// The size across of a loop of vertices (largest distance between two of them), mm. V #V x 3 mm.
 double loop_across_mm(const Eigen::MatrixXd& V, const std::vector<int>& loop);
 
-// mesh: V #V x 3 mm, F #F x 3, consistently oriented. Replaces the faces at the holes' ragged edges and
-// appends the patches (indices change). Returns the size across (mm) of each filled hole as the scan
-// had it, in the order of the mesh's boundary loops. Throws EngineError if the fairing system cannot be solved.
-std::vector<double> fill_holes(TriMesh& mesh, double max_across_mm);
+// One closed hole, for the job's report.
+struct HoleRepair {
+  double across_mm = 0;    // the hole's size across as the scan had it (before its teeth were trimmed)
+  int patch_vertices = 0;  // vertices the patch added
+  bool fan = false;        // the hole did not become star-shaped: closed by a fan around its centroid
+                           // (faired too, but its triangles may fold where the edge is very ragged)
+};
+
+// mesh: V #V x 3 mm, F #F x 3, consistently oriented. Closes every boundary loop up to max_across_mm
+// across; replaces the faces at those holes' ragged edges and appends the patches (vertex and face
+// indices change). Returns one entry per closed hole, in the order of the scan's boundary loops.
+// Throws EngineError if the fairing system cannot be solved.
+std::vector<HoleRepair> fill_holes(TriMesh& mesh, double max_across_mm);
 
 }  // namespace lastcut

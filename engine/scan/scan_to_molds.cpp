@@ -1,6 +1,7 @@
 #include "engine/scan/scan_to_molds.hpp"
 
 #include <Eigen/SVD>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -36,7 +37,7 @@ void refuse_open_patch(const TriMesh& mesh, const SegmentOptions& options) {
   char line[240];
   std::snprintf(line, sizeof line,
                 "not a closed last: %d boundary loop%s up to %.1f mm across, larger than the %.0f mm scan holes are "
-                "closed up to; use --no-segment to flatten an open patch",
+                "closed up to (--max-hole); use --no-segment to flatten an open patch",
                 open_loops, open_loops == 1 ? "" : "s", largest_mm, options.max_hole_fill_diameter_mm);
   throw EngineError(line);
 }
@@ -120,14 +121,23 @@ ScanResult scan_to_molds(const std::filesystem::path& scan, const ScanOptions& o
     refuse_open_patch(intake.mesh, options.segment_options);
     check_is_last(intake.mesh);
     clock.lap("last check");
-    const OrientedLast oriented = orient_last(intake.mesh);
-    result.side = oriented.side;
+    const OrientedLast oriented = orient_last(intake.mesh, options.side);
+    if (!oriented.side_unnamed) result.side = oriented.side;
     result.notes.insert(result.notes.end(), oriented.notes.begin(), oriented.notes.end());
+    result.warnings = oriented.warnings;
     clock.lap("orient");
     Segmentation halves = segment_last(oriented, options.segment_options);
     result.notes.insert(result.notes.end(), halves.notes.begin(), halves.notes.end());
+    result.repairs = halves.repairs;
+    for (const HoleRepair& repair : halves.repairs)
+      if (repair.fan)
+        result.warnings.push_back("a scan hole " + std::to_string(static_cast<int>(std::lround(repair.across_mm))) +
+                                  " mm across is too ragged for a smooth patch: closed by a fan, check the molds there");
     clock.lap("segment");
-    for (Segment* half : {&halves.medial, &halves.lateral})
+    // Named halves come medial first; unnamed ones side_a (+Y) first.
+    const std::array<Segment*, 2> order = oriented.side_unnamed ? std::array<Segment*, 2>{&halves.lateral, &halves.medial}
+                                                                : std::array<Segment*, 2>{&halves.medial, &halves.lateral};
+    for (Segment* half : order)
       result.segments.push_back(flatten_segment(half->name, std::move(half->mesh), half->topology, half->landmarks,
                                                 options, result.notes, clock));
   }

@@ -83,12 +83,14 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
     throw EngineError("the feather line height and the top rim depth must be positive (mm)");
   Segmentation result;
   TriMesh mesh = last.mesh;
-  const std::vector<double> filled_mm = fill_holes(mesh, options.max_hole_fill_diameter_mm);
-  if (!filled_mm.empty()) {
+  result.repairs = fill_holes(mesh, options.max_hole_fill_diameter_mm);
+  if (!result.repairs.empty()) {
     std::string sizes;
-    for (double across_mm : filled_mm) sizes += (sizes.empty() ? "" : ", ") + fixed(across_mm, 1);
-    result.notes.push_back("closed " + std::to_string(filled_mm.size()) + " scan hole" +
-                           (filled_mm.size() == 1 ? "" : "s") + " (" + sizes + " mm across) with a smooth patch");
+    for (const HoleRepair& repair : result.repairs)
+      sizes += (sizes.empty() ? "" : ", ") + fixed(repair.across_mm, 1) + " mm across (" +
+               std::to_string(repair.patch_vertices) + " patch vertices" + (repair.fan ? ", fan: may fold" : "") + ")";
+    result.notes.push_back("closed " + std::to_string(result.repairs.size()) + " scan hole" +
+                           (result.repairs.size() == 1 ? "" : "s") + " with a smooth patch: " + sizes);
   }
 
   // Step 2: sole and top regions, and their contours (Dijkstra, then eq. 22).
@@ -163,8 +165,9 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
                                                                      : kLateral;
   }
   const MeshTopology cut_topology = build_mesh_topology(mesh.F, mesh.V.rows());
-  result.medial = extract_half(mesh, cut_topology, labels, kMedial, fields, "medial");
-  result.lateral = extract_half(mesh, cut_topology, labels, kLateral, fields, "lateral");
+  // An unnamed symmetric last is split as a left one (medial -Y), named by side of Y instead.
+  result.medial = extract_half(mesh, cut_topology, labels, kMedial, fields, last.side_unnamed ? kNeutralHalfMinusY : "medial");
+  result.lateral = extract_half(mesh, cut_topology, labels, kLateral, fields, last.side_unnamed ? kNeutralHalfPlusY : "lateral");
 
   // The curves the halves were cut along, for previews.
   for (auto [label, contour] : {std::pair{kSole, &result.lower_contour}, std::pair{kTop, &result.upper_contour}}) {
@@ -173,8 +176,8 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
     *contour = loop_points(mesh, region_boundary_loop(mesh, cut_topology, region));
   }
   const double medial_area = surface_area(result.medial.mesh), lateral_area = surface_area(result.lateral.mesh);
-  result.notes.push_back("medial half " + fixed(medial_area / 100.0, 0) + " cm^2, lateral half " +
-                         fixed(lateral_area / 100.0, 0) + " cm^2");
+  result.notes.push_back(result.medial.name + " half " + fixed(medial_area / 100.0, 0) + " cm^2, " + result.lateral.name +
+                         " half " + fixed(lateral_area / 100.0, 0) + " cm^2");
   return result;
 }
 

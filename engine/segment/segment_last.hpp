@@ -2,7 +2,7 @@
 // Segmentation of an oriented last into its medial and lateral halves, the surfaces the molds are
 // flattened from (thesis steps 2-5, Sabaliauskas 2017, "Computerized modeling technology of unique
 // footwear surface manufacturing design", section 3.1).
-//  1. small scan holes are closed (engine/mesh/fill_holes.hpp);
+//  1. scan holes up to max_hole_fill_diameter_mm across are closed with a faired patch (engine/mesh/fill_holes.hpp);
 //  2. faces are classified by normal elevation into sole, sides and top, and the sole and the flat
 //     top cut become one connected region each (surface_regions.hpp);
 //  3. the mesh is cut along the feather line and the top rim (level_set_cut.hpp), so mold edges are
@@ -25,6 +25,7 @@
 
 #include "engine/core/mesh_topology.hpp"
 #include "engine/core/tri_mesh.hpp"
+#include "engine/mesh/fill_holes.hpp"
 #include "engine/orient/orient_last.hpp"
 
 namespace lastcut {
@@ -41,14 +42,15 @@ struct SegmentOptions {
 };
 
 struct Segment {
-  std::string name;                     // "medial" or "lateral"
+  std::string name;                     // "medial" or "lateral"; kNeutralHalf* of an unnamed symmetric last
   TriMesh mesh;                         // topological disk, canonical frame, mm
   std::map<std::string, int> landmarks; // boundary vertex indices: "toe", "heel", "top_front", "top_back"
   MeshTopology topology;                // of mesh, handed on to flattening and the mold
 };
 
 struct Segmentation {
-  Segment medial, lateral;
+  Segment medial, lateral;  // an unnamed symmetric last (OrientedLast::side_unnamed): side_b (-Y), side_a (+Y)
+  std::vector<HoleRepair> repairs;  // the scan holes closed (step 1)
   std::vector<std::string> notes;
   std::vector<Eigen::Vector3d> lower_contour;  // the smoothed feather line the halves were cut along, closed loop, mm
   std::vector<Eigen::Vector3d> upper_contour;  // the smoothed rim of the top cut, closed loop, mm

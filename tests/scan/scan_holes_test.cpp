@@ -10,6 +10,7 @@
 #include <set>
 #include <cmath>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <numbers>
 
 #include "engine/core/engine_error.hpp"
@@ -17,81 +18,18 @@
 #include "engine/lastgen/generate_last.hpp"
 #include "engine/lastgen/last_shape.hpp"
 #include "engine/mesh/fill_holes.hpp"
+#include "engine/mesh/write_mesh.hpp"
+#include "engine/scan/scan_outputs.hpp"
 #include "engine/scan/scan_to_molds.hpp"
+#include "tests/scan/ragged_holes.hpp"
 
 namespace lastcut {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct HoleSpec {
-  Eigen::Vector3d near_mm;  // the hole is centred on the vertex nearest this point
-  double across_mm;         // its outer size across
-};
-
-// Removes the faces within a star-shaped outline around each centre (radius varying 50-100 % with
-// nine lobes, on top of the triangles' own staircase): a ragged boundary whose
-// perimeter is far longer than pi x its size across. Unreferenced vertices are dropped.
-TriMesh with_ragged_holes(const TriMesh& mesh, const std::vector<HoleSpec>& holes) {
-  const Eigen::MatrixXd normals = triangle_normals(mesh);
-  std::vector<char> removed(static_cast<size_t>(mesh.F.rows()), 0);
-  for (const HoleSpec& hole : holes) {
-    Eigen::Index centre_vertex = 0;
-    (mesh.V.rowwise() - hole.near_mm.transpose()).rowwise().squaredNorm().minCoeff(&centre_vertex);
-    const Eigen::Vector3d centre = mesh.V.row(centre_vertex).transpose();
-    Eigen::Vector3d normal = Eigen::Vector3d::Zero();
-    for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
-      if ((mesh.V.row(mesh.F(f, 0)).transpose() - centre).norm() < 5.0) normal += normals.row(f).transpose();
-    normal.normalize();
-    const Eigen::Vector3d u = normal.unitOrthogonal(), v = normal.cross(u);
-    for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-      const Eigen::Vector3d d =
-          (mesh.V.row(mesh.F(f, 0)) + mesh.V.row(mesh.F(f, 1)) + mesh.V.row(mesh.F(f, 2))).transpose() / 3.0 - centre;
-      if (d.norm() > hole.across_mm) continue;  // the other side of the last
-      const double angle = std::atan2(d.dot(v), d.dot(u));
-      // Whole triangles go: the hole reaches about one edge length beyond the outline, hence the 1.5 mm.
-      const double radius = 0.5 * (hole.across_mm - 1.5) * (0.75 + 0.25 * std::sin(9.0 * angle));
-      if (std::hypot(d.dot(u), d.dot(v)) < radius) removed[f] = 1;
-    }
-  }
-  // A vertex where the hole's edge touches itself (a pinch) joins two loops: its faces go too, until
-  // every hole has one boundary loop.
-  for (int round = 0; round < 100; ++round) {
-    const MeshTopology topology = build_mesh_topology(mesh.F, mesh.V.rows(), removed);
-    if (topology.first_pinch_vertex < 0) break;
-    for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
-      for (int k = 0; k < 3; ++k)
-        if (mesh.F(f, k) == topology.first_pinch_vertex) removed[f] = 1;
-  }
-  // Islands of faces left between the lobes belong to the hole: keep the largest kept component only.
-  std::vector<char> kept(removed.size());
-  for (size_t f = 0; f < kept.size(); ++f) kept[f] = !removed[f];
-  int components = 0;
-  const std::vector<int> component = face_components(build_mesh_topology(mesh.F, mesh.V.rows()), kept, components);
-  const std::vector<double> areas = component_areas(component, components, triangle_areas(mesh));
-  const int largest = static_cast<int>(std::max_element(areas.begin(), areas.end()) - areas.begin());
-  for (size_t f = 0; f < removed.size(); ++f) removed[f] = component[f] != largest;
-  std::vector<int> new_index(static_cast<size_t>(mesh.V.rows()), -1);
-  std::vector<Eigen::RowVector3i> faces;
-  int used = 0;
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-    if (removed[f]) continue;
-    Eigen::RowVector3i face;
-    for (int k = 0; k < 3; ++k) {
-      int& index = new_index[mesh.F(f, k)];
-      if (index < 0) index = used++;
-      face(k) = index;
-    }
-    faces.push_back(face);
-  }
-  TriMesh holed;
-  holed.V.resize(used, 3);
-  for (Eigen::Index v = 0; v < mesh.V.rows(); ++v)
-    if (new_index[v] >= 0) holed.V.row(new_index[v]) = mesh.V.row(v);
-  holed.F.resize(static_cast<Eigen::Index>(faces.size()), 3);
-  for (size_t f = 0; f < faces.size(); ++f) holed.F.row(static_cast<Eigen::Index>(f)) = faces[f];
-  return holed;
-}
+using test::side_holes;
+using test::with_ragged_holes;
 
 double loop_length_mm(const TriMesh& mesh, const std::vector<int>& loop) {
   double length = 0.0;
@@ -111,18 +49,6 @@ class ScanHoles : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
 
-  // Points on the last's sides at mid height, well apart.
-  std::vector<HoleSpec> side_holes(const std::vector<double>& across_mm) const {
-    std::vector<HoleSpec> holes;
-    const double z = 0.5 * (last_.V.col(2).minCoeff() + last_.V.col(2).maxCoeff()) - 10.0;
-    for (size_t i = 0; i < across_mm.size(); ++i) {
-      const double x = last_.V.col(0).minCoeff() + (0.25 + 0.25 * static_cast<double>(i)) * length_mm_;
-      const double y = (i % 2 == 0 ? 1.0 : -1.0) * 200.0;  // beyond the side: the nearest vertex is on it
-      holes.push_back({Eigen::Vector3d(x, y, z), across_mm[i]});
-    }
-    return holes;
-  }
-
   LastParams params_;
   TriMesh last_;
   double length_mm_ = 0;
@@ -133,7 +59,7 @@ TEST_F(ScanHoles, RaggedHolesAreMeasuredAcrossAndClosedAlongTheSurface) {
   const LastShape shape(params_);
   for (Eigen::Index v = 0; v < last_.V.rows(); v += 97) ASSERT_LT(std::abs(shape.value(last_.V.row(v))), 0.1);
 
-  TriMesh holed = with_ragged_holes(last_, side_holes({10.0, 20.0, 30.0}));
+  TriMesh holed = with_ragged_holes(last_, side_holes(last_, {10.0, 20.0, 30.0}));
   const auto loops = build_mesh_topology(holed.F, holed.V.rows()).boundary_loops;
   ASSERT_EQ(loops.size(), 3u);
   for (const auto& loop : loops) {
@@ -146,15 +72,24 @@ TEST_F(ScanHoles, RaggedHolesAreMeasuredAcrossAndClosedAlongTheSurface) {
 
   // The repair renumbers vertices (the ragged edges' teeth are trimmed first): the patch's vertices
   // are the ones at positions the holed scan did not have.
+  const TriMesh holed_before = holed;
   std::set<std::array<double, 3>> scanned;
   for (Eigen::Index v = 0; v < holed.V.rows(); ++v) scanned.insert({holed.V(v, 0), holed.V(v, 1), holed.V(v, 2)});
-  const std::vector<double> filled = fill_holes(holed, 30.0);
+  const std::vector<HoleRepair> filled = fill_holes(holed, 30.0);
   std::vector<char> is_new(static_cast<size_t>(holed.V.rows()), 0);
   int new_count = 0;
   for (Eigen::Index v = 0; v < holed.V.rows(); ++v)
     if (!scanned.count({holed.V(v, 0), holed.V(v, 1), holed.V(v, 2)})) is_new[v] = 1, ++new_count;
   EXPECT_GT(new_count, 50);
   ASSERT_EQ(filled.size(), 3u);
+  int reported_count = 0;
+  for (size_t i = 0; i < filled.size(); ++i) {
+    // The sizes reported are the scan's own, in the order of its boundary loops.
+    EXPECT_DOUBLE_EQ(filled[i].across_mm, loop_across_mm(holed_before.V, loops[i]));
+    EXPECT_FALSE(filled[i].fan);
+    reported_count += filled[i].patch_vertices;
+  }
+  EXPECT_EQ(reported_count, new_count);
   EXPECT_TRUE(build_mesh_topology(holed.F, holed.V.rows()).boundary_loops.empty());
   EXPECT_GT(triangle_areas(holed).minCoeff(), 1e-4);
   // The patch follows the last: every new vertex within 0.5 mm of the surface the scan was made from
@@ -187,7 +122,12 @@ TEST_F(ScanHoles, RaggedHolesAreMeasuredAcrossAndClosedAlongTheSurface) {
 
 TEST_F(ScanHoles, HolesOfTenTwentyAndThirtyMillimetresGiveMoldsWithTheRepairReported) {
   const fs::path scan = dir_ / "holed.stl";
-  write_stl_binary(scan, with_ragged_holes(last_, side_holes({10.0, 20.0, 30.0})));
+  const TriMesh holed = with_ragged_holes(last_, side_holes(last_, {10.0, 20.0, 30.0}));
+  std::vector<double> scan_across_mm;
+  for (const auto& loop : build_mesh_topology(holed.F, holed.V.rows()).boundary_loops)
+    scan_across_mm.push_back(loop_across_mm(holed.V, loop));
+  ASSERT_EQ(scan_across_mm.size(), 3u);
+  write_stl_binary(scan, holed);
   const ScanResult result = scan_to_molds(scan, {});
   ASSERT_EQ(result.segments.size(), 2u);
   for (const std::string& note : result.notes) std::printf("note: %s\n", note.c_str());
@@ -197,28 +137,56 @@ TEST_F(ScanHoles, HolesOfTenTwentyAndThirtyMillimetresGiveMoldsWithTheRepairRepo
     EXPECT_EQ(segment.measures.flipped_triangles, 0) << segment.name;
     EXPECT_LT(segment.measures.D_angle, 2.05) << segment.name;
   }
-  bool reported = false;
-  for (const std::string& note : result.notes) {
-    if (note.rfind("closed 3 scan holes (", 0) == 0 && note.find("mm across) with a smooth patch") != std::string::npos)
-      reported = true;
+  EXPECT_EQ(result.segments[0].name, "lateral");  // the generated last is a right one: its toe leans +Y
+  EXPECT_TRUE(result.warnings.empty()) << ::testing::PrintToString(result.warnings);
+  bool noted = false;
+  for (const std::string& note : result.notes) noted = noted || note.starts_with("closed 3 scan holes with a smooth patch: ");
+  EXPECT_TRUE(noted) << ::testing::PrintToString(result.notes);
+
+  // The report lists each hole with its size across as the scan had it (reading the STL keeps the
+  // loops' vertices; the sizes match to the file's float precision) and the patch's vertex count.
+  const nlohmann::json report = write_scan_outputs(result, dir_ / "out");
+  ASSERT_EQ(report["repairs"].size(), 3u) << report["repairs"].dump();
+  std::vector<double> reported_mm;
+  for (const auto& repair : report["repairs"]) {
+    EXPECT_EQ(repair["kind"], "hole closed");
+    EXPECT_EQ(repair["patch"], "faired rings");
+    EXPECT_GT(repair["patch_vertices"].get<int>(), 5);
+    reported_mm.push_back(repair["across_mm"].get<double>());
   }
-  EXPECT_TRUE(reported) << ::testing::PrintToString(result.notes);
+  std::sort(reported_mm.begin(), reported_mm.end());
+  std::sort(scan_across_mm.begin(), scan_across_mm.end());
+  for (size_t i = 0; i < 3; ++i) EXPECT_NEAR(reported_mm[i], scan_across_mm[i], 1e-3);
+  EXPECT_NEAR(scan_across_mm[0], 10.0, 1.5);
+  EXPECT_NEAR(scan_across_mm[1], 20.0, 1.5);
+  EXPECT_NEAR(scan_across_mm[2], 30.0, 1.5);
 }
 
-TEST_F(ScanHoles, AFortyMillimetreHoleIsRefusedWithOneClearLine) {
+TEST_F(ScanHoles, AFortyMillimetreHoleIsRefusedWithOneClearLineUnlessTheLimitIsRaised) {
   const fs::path scan = dir_ / "big-hole.stl";
-  write_stl_binary(scan, with_ragged_holes(last_, side_holes({40.0})));
+  const TriMesh holed = with_ragged_holes(last_, side_holes(last_, {40.0}));
+  const auto loops = build_mesh_topology(holed.F, holed.V.rows()).boundary_loops;
+  ASSERT_EQ(loops.size(), 1u);
+  const double across_mm = loop_across_mm(holed.V, loops[0]);
+  write_stl_binary(scan, holed);
+  char expected[240];
+  std::snprintf(expected, sizeof expected,
+                "not a closed last: 1 boundary loop up to %.1f mm across, larger than the 30 mm scan holes are closed up "
+                "to (--max-hole); use --no-segment to flatten an open patch",
+                across_mm);
   try {
     scan_to_molds(scan, {});
     FAIL() << "a 40 mm hole was closed";
   } catch (const EngineError& error) {
-    const std::string what = error.what();
-    EXPECT_EQ(what.find('\n'), std::string::npos);
-    EXPECT_EQ(what.rfind("not a closed last: 1 boundary loop up to ", 0), 0u) << what;
-    EXPECT_NE(what.find(" mm across, larger than the 30 mm scan holes are closed up to; use --no-segment"),
-              std::string::npos)
-        << what;
+    EXPECT_EQ(std::string(error.what()), expected);
   }
+  ScanOptions raised;
+  raised.segment_options.max_hole_fill_diameter_mm = 45.0;
+  const ScanResult result = scan_to_molds(scan, raised);
+  ASSERT_EQ(result.segments.size(), 2u);
+  ASSERT_EQ(result.repairs.size(), 1u);
+  EXPECT_NEAR(result.repairs[0].across_mm, across_mm, 1e-3);
+  for (const SegmentResult& segment : result.segments) EXPECT_EQ(segment.measures.flipped_triangles, 0) << segment.name;
 }
 
 }  // namespace

@@ -59,10 +59,12 @@ TEST(FillHoles, LeavesHolesWiderThanTheLimitOpen) {
   EXPECT_EQ(holed.F.rows(), faces_before);
   EXPECT_EQ(test::boundary_loops_of(holed).size(), 1u);
   const Eigen::Index vertices_before = holed.V.rows();
-  const std::vector<double> filled = fill_holes(holed, 60.0);
+  const std::vector<HoleRepair> filled = fill_holes(holed, 60.0);
   ASSERT_EQ(filled.size(), 1u);
-  EXPECT_GT(filled[0], 30.0);  // "about 40 mm across"
-  EXPECT_LT(filled[0], 60.0);
+  EXPECT_GT(filled[0].across_mm, 30.0);  // "about 40 mm across"
+  EXPECT_LT(filled[0].across_mm, 60.0);
+  EXPECT_EQ(filled[0].patch_vertices, holed.V.rows() - vertices_before);
+  EXPECT_FALSE(filled[0].fan);
   EXPECT_TRUE(closed_and_oriented(holed));
   EXPECT_GT(triangle_areas(holed).minCoeff(), 1e-3);
   // The patch is faired, not flat: its vertices stay near the sphere (a flat lid over this hole lies up
