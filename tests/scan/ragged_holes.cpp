@@ -1,6 +1,7 @@
 // Ragged scan holes for tests; see ragged_holes.hpp.
 #include "tests/scan/ragged_holes.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 
