@@ -77,6 +77,37 @@ TEST(FillHoles, LeavesHolesWiderThanTheLimitOpen) {
               worst_mm);
 }
 
+TEST(FillHoles, ClosesOnlyTheHolesWithinTheLimitWhenOthersAreJustLarger) {
+  // Widening a ragged hole makes it a little larger than the scan's; a neighbouring loop only a little
+  // larger than the limit must still stay open. One hole around one vertex, one around two neighbours.
+  const TriMesh sphere = test::uv_sphere(50.0, 40, 60);
+  TriMesh holed = test::without_faces_around(sphere, {2 + 10 * 60 + 5, 2 + 25 * 60 + 30, 2 + 25 * 60 + 31});
+  const auto loops = test::boundary_loops_of(holed);
+  ASSERT_EQ(loops.size(), 2u);
+  double small_mm = loop_across_mm(holed.V, loops[0]), large_mm = loop_across_mm(holed.V, loops[1]);
+  if (small_mm > large_mm) std::swap(small_mm, large_mm);
+  const double limit_mm = 0.5 * (small_mm + large_mm);
+  ASSERT_LT(large_mm, 1.25 * limit_mm);  // within the slack a trimmed hole may grow by
+  const std::vector<HoleRepair> filled = fill_holes(holed, limit_mm);
+  ASSERT_EQ(filled.size(), 1u);
+  EXPECT_DOUBLE_EQ(filled[0].across_mm, small_mm);
+  const auto left_open = test::boundary_loops_of(holed);
+  ASSERT_EQ(left_open.size(), 1u);
+  EXPECT_DOUBLE_EQ(loop_across_mm(holed.V, left_open[0]), large_mm);
+}
+
+TEST(FillHoles, MeasuresAHoleAcrossNotAround) {
+  // A zig-zag loop: 12 points alternating between radius 6 and 3 mm, in a plane.
+  Eigen::MatrixXd V(12, 3);
+  std::vector<int> loop;
+  for (int i = 0; i < 12; ++i) {
+    const double angle = 2.0 * std::numbers::pi * i / 12.0, radius = i % 2 == 0 ? 6.0 : 3.0;
+    V.row(i) << radius * std::cos(angle), radius * std::sin(angle), 0.0;
+    loop.push_back(i);
+  }
+  EXPECT_NEAR(loop_across_mm(V, loop), 12.0, 1e-12);  // points 0 and 6 are opposite on the outer circle
+}
+
 TEST(CutAlongZeroLevel, SplitsTrianglesExactlyOnThePlaneWithoutSlivers) {
   TriMesh sphere = test::uv_sphere(50.0, 30, 45);
   const double area_before = surface_area(sphere);
