@@ -15,30 +15,44 @@
 namespace lastcut {
 namespace {
 
-// A ring of patch vertices: indices into the growing vertex list and their arc-length fractions
-// in [0, 1), increasing, measured from the loop's first vertex in the loop's direction.
+// A ring of patch vertices: indices into the growing vertex list, their positions in the loop's
+// plane (mm, relative to the centroid) and their fractions of the turn around the centroid in [0, 1),
+// increasing, measured from the loop's first vertex in the loop's direction.
 struct Ring {
   std::vector<int> vertex;
+  std::vector<Eigen::Vector2d> point;
   std::vector<double> fraction;
 };
 
 // Triangles between an outer and an inner ring running the same way: each step takes the ring whose
 // next vertex comes first by fraction. Outer edges are used reversed (the outer ring's faces lie
-// on its other side), inner edges forward (the next band uses them reversed).
-void zip_rings(const Ring& outer, const Ring& inner, std::vector<Eigen::RowVector3i>& faces) {
+// on its other side), inner edges forward (the next band uses them reversed). Returns false, adding
+// nothing, when a triangle would be folded or degenerate in the plane (turn_sign: +1 when the rings
+// run counter-clockwise in the plane's (u, v) coordinates).
+bool zip_rings(const Ring& outer, const Ring& inner, double turn_sign, double smallest_area_mm2,
+               std::vector<Eigen::RowVector3i>& faces) {
   const size_t n_outer = outer.vertex.size(), n_inner = inner.vertex.size();
   const auto outer_at = [&](size_t a) { return a < n_outer ? outer.fraction[a] - outer.fraction[0] : 1.0; };
   const auto inner_at = [&](size_t b) { return b < n_inner ? inner.fraction[b] - inner.fraction[0] : 1.0; };
+  const auto unfolded = [&](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r) {
+    const Eigen::Vector2d e = q - p, f = r - p;
+    return -turn_sign * 0.5 * (e.x() * f.y() - e.y() * f.x()) > smallest_area_mm2;  // faces run against the rings
+  };
+  std::vector<Eigen::RowVector3i> band;
   size_t a = 0, b = 0;
   while (a < n_outer || b < n_inner) {
     if (b == n_inner || (a < n_outer && outer_at(a + 1) <= inner_at(b + 1))) {
-      faces.emplace_back(outer.vertex[(a + 1) % n_outer], outer.vertex[a % n_outer], inner.vertex[b % n_inner]);
+      if (!unfolded(outer.point[(a + 1) % n_outer], outer.point[a % n_outer], inner.point[b % n_inner])) return false;
+      band.emplace_back(outer.vertex[(a + 1) % n_outer], outer.vertex[a % n_outer], inner.vertex[b % n_inner]);
       ++a;
     } else {
-      faces.emplace_back(inner.vertex[b % n_inner], inner.vertex[(b + 1) % n_inner], outer.vertex[a % n_outer]);
+      if (!unfolded(inner.point[b % n_inner], inner.point[(b + 1) % n_inner], outer.point[a % n_outer])) return false;
+      band.emplace_back(inner.vertex[b % n_inner], inner.vertex[(b + 1) % n_inner], outer.vertex[a % n_outer]);
       ++b;
     }
   }
+  faces.insert(faces.end(), band.begin(), band.end());
+  return true;
 }
 
 // The loop's plane: centroid and outward unit normal (Newell's normal of the loop, reversed: the loop
@@ -62,31 +76,45 @@ LoopPlane loop_plane(const Eigen::MatrixXd& V, const std::vector<int>& loop) {
   return plane;
 }
 
+// sin 15 degrees: the smallest angle between a hole's edge and the ray from its centre to it that the
+// ring patch takes as it is (steeper tooth flanks are trimmed).
+constexpr double kSmallestEdgeToRaySine = 0.26;
+
 // How the loop turns around its centroid seen from its plane: the signed angle of each edge (loop[i]
-// to loop[i+1]) and whether every edge turns the same way, once round (star-shaped).
+// to loop[i+1]), and whether every edge faces the centroid, once round (star-shaped, with no edge
+// steeper than kSmallestEdgeToRaySine to its ray).
 struct LoopTurns {
   std::vector<double> step;
-  double sign = 1.0;  // the way round: +1 or -1
-  bool star_shaped = false;
+  std::vector<char> facing;  // per edge: turns the loop's way and is not a tooth's flank
+  double sign = 1.0;         // the way round: +1 or -1
+  bool star_shaped = false;  // once round, every edge facing
 };
 
 LoopTurns loop_turns(const Eigen::MatrixXd& V, const std::vector<int>& loop, const LoopPlane& plane) {
   LoopTurns turns;
-  const auto angle_of = [&](const Eigen::Vector3d& p) {
+  const auto flat = [&](const Eigen::Vector3d& p) {
     const Eigen::Vector3d d = p - plane.centroid;
-    return std::atan2(d.dot(plane.v), d.dot(plane.u));
+    return Eigen::Vector2d(d.dot(plane.u), d.dot(plane.v));
   };
   double total = 0.0;
+  std::vector<double> sine;  // of the angle between each edge and the ray to its start, signed
   for (size_t i = 0; i < loop.size(); ++i) {
-    double step = angle_of(V.row(loop[(i + 1) % loop.size()])) - angle_of(V.row(loop[i]));
+    const Eigen::Vector2d p = flat(V.row(loop[i])), q = flat(V.row(loop[(i + 1) % loop.size()]));
+    double step = std::atan2(q.y(), q.x()) - std::atan2(p.y(), p.x());
     if (step < -std::numbers::pi) step += 2.0 * std::numbers::pi;
     if (step > std::numbers::pi) step -= 2.0 * std::numbers::pi;
     turns.step.push_back(step);
+    const Eigen::Vector2d e = q - p;
+    sine.push_back((p.x() * e.y() - p.y() * e.x()) / std::max(p.norm() * e.norm(), 1e-12));
     total += step;
   }
   turns.sign = total > 0.0 ? 1.0 : -1.0;
+  // An edge nearly along the ray from the centre (a tooth's flank) turns forward by a sliver only: the
+  // ring patch's band there would be a sliver too. Such edges count as turning back.
+  for (size_t i = 0; i < loop.size(); ++i)
+    turns.facing.push_back(turns.sign * turns.step[i] > 0.0 && turns.sign * sine[i] >= kSmallestEdgeToRaySine);
   turns.star_shaped = std::abs(std::abs(total) - 2.0 * std::numbers::pi) < 1e-6 &&
-                      std::all_of(turns.step.begin(), turns.step.end(), [&](double a) { return turns.sign * a > 0.0; });
+                      std::all_of(turns.facing.begin(), turns.facing.end(), [](char f) { return f != 0; });
   return turns;
 }
 
@@ -148,7 +176,7 @@ int trim_holes_to_star_shapes(TriMesh& mesh, std::vector<int>& hole_of_vertex) {
                                         2.0 * std::numbers::pi) > 1e-6)
         continue;  // already star-shaped, or not once round its centre (no trimming makes it so)
       for (size_t i = 0; i < loop.size(); ++i) {
-        if (turns.sign * turns.step[i] > 0.0) continue;
+        if (turns.facing[i]) continue;
         const int h = topology.find_half_edge(loop[i], loop[(i + 1) % loop.size()]);
         if (h >= 0 && !remove[static_cast<size_t>(h / 3)]) {
           remove[static_cast<size_t>(h / 3)] = 1, hole_of_face[static_cast<size_t>(h / 3)] = hole, ++removed;
@@ -192,11 +220,16 @@ int trim_holes_to_star_shapes(TriMesh& mesh, std::vector<int>& hole_of_vertex) {
 }
 
 // Closes one loop (mesh vertex indices in the faces' direction) with rings laid out flat in the loop's
-// plane: circles around the centroid inside the loop's nearest point, joined by angle, so that a loop
-// that is star-shaped around its centroid (a scan hole, however ragged its edge) is covered without a
-// fold. Returns false, adding nothing, when the loop is not star-shaped seen from its plane.
-// New vertices are appended to `vertices` (shared by all patches; vertices[i] will be mesh vertex
-// first_new_index + i), triangles to `faces`, and the plane's normal once per new vertex to `normals`.
+// plane: copies of the loop (projected on the plane) shrunk towards its centroid by 1 - j/R, R about
+// the loop's mean radius over its mean edge length. A ring keeps the directions (from the centroid) of
+// every loop vertex, or of every second one of the ring outside it once its edges would be shorter
+// than half the loop's. For a loop that is star-shaped around its centroid (a scan hole, however
+// ragged its edge, once trimmed) a band between two shrunk copies with the same directions is a row
+// of trapezoids and cannot fold; a band that halves the directions is checked triangle by triangle in
+// the plane and, where one would fold, built without halving. Returns false, adding nothing, when the
+// loop is not star-shaped. New vertices are appended to `vertices` (shared by all patches; vertices[i]
+// will be mesh vertex first_new_index + i), triangles to `faces`, the plane's normal once per new
+// vertex to `normals`.
 bool ring_patch(const Eigen::MatrixXd& V, const std::vector<int>& loop, int first_new_index,
                 std::vector<Eigen::RowVector3d>& vertices, std::vector<Eigen::RowVector3i>& faces,
                 std::vector<Eigen::Vector3d>& normals) {
@@ -205,49 +238,62 @@ bool ring_patch(const Eigen::MatrixXd& V, const std::vector<int>& loop, int firs
   const LoopTurns turns = loop_turns(V, loop, plane);
   if (!turns.star_shaped) return false;
   Ring outer;
-  double turned = 0.0, nearest_mm = std::numeric_limits<double>::max(), perimeter = 0.0;
+  double turned = 0.0, mean_radius_mm = 0.0, perimeter_mm = 0.0;
   for (size_t i = 0; i < count; ++i) {
-    const Eigen::Vector3d p = V.row(loop[i]), d = p - plane.centroid;
-    nearest_mm = std::min(nearest_mm, (d - d.dot(plane.normal) * plane.normal).norm());
-    perimeter += (V.row(loop[(i + 1) % count]) - V.row(loop[i])).norm();
+    const Eigen::Vector3d d = Eigen::Vector3d(V.row(loop[i])) - plane.centroid;
+    outer.point.emplace_back(d.dot(plane.u), d.dot(plane.v));
+    mean_radius_mm += outer.point.back().norm() / static_cast<double>(count);
+    perimeter_mm += (V.row(loop[(i + 1) % count]) - V.row(loop[i])).norm();
     outer.vertex.push_back(loop[i]);
     outer.fraction.push_back(turned / (2.0 * std::numbers::pi));
     turned += turns.sign * turns.step[i];
   }
-  const double turn_sign = turns.sign;
-  const auto angle_of = [&](const Eigen::Vector3d& p) {
-    const Eigen::Vector3d d = p - plane.centroid;
-    return std::atan2(d.dot(plane.v), d.dot(plane.u));
-  };
-
-  const double edge_mm = perimeter / static_cast<double>(count);
-  const double start_angle = angle_of(V.row(loop[0]));
-  const auto add_vertex = [&](double radius_mm, double angle) {
-    const Eigen::Vector3d p = plane.centroid + radius_mm * (std::cos(angle) * plane.u + std::sin(angle) * plane.v);
-    vertices.push_back(p.transpose());
-    normals.push_back(plane.normal);
-    return first_new_index + static_cast<int>(vertices.size()) - 1;
-  };
-  // Ring spacing about the loop's edge length, the rings' own edges about the same.
-  const int rings = std::max(1, static_cast<int>(std::lround(nearest_mm / edge_mm)));
+  const double edge_mm = perimeter_mm / static_cast<double>(count);
+  const double smallest_area_mm2 = 1e-6 * edge_mm * edge_mm;
+  const std::vector<Eigen::Vector2d> loop_points = outer.point;
+  const std::vector<double> loop_fractions = outer.fraction;
+  const size_t vertices_before = vertices.size(), faces_before = faces.size(), normals_before = normals.size();
+  std::vector<size_t> directions(count);  // loop vertex of each vertex of the current ring
+  for (size_t i = 0; i < count; ++i) directions[i] = i;
+  const int rings = std::max(1, static_cast<int>(std::lround(mean_radius_mm / edge_mm)));
   for (int j = 1; j < rings; ++j) {
-    const double radius_mm = nearest_mm * (1.0 - static_cast<double>(j) / rings);
-    const size_t wanted = static_cast<size_t>(std::lround(2.0 * std::numbers::pi * radius_mm / edge_mm));
-    const size_t n = std::clamp<size_t>(wanted, 3, outer.vertex.size());
-    Ring inner;
-    for (size_t i = 0; i < n; ++i) {
-      const double fraction = static_cast<double>(i) / static_cast<double>(n);
-      inner.fraction.push_back(fraction);
-      inner.vertex.push_back(add_vertex(radius_mm, start_angle + turn_sign * 2.0 * std::numbers::pi * fraction));
+    const double scale = 1.0 - static_cast<double>(j) / rings;
+    // Halve the directions when the ring's edges would be under half the loop's.
+    std::vector<size_t> halved;
+    if (scale * perimeter_mm / static_cast<double>(directions.size()) < 0.5 * edge_mm && directions.size() >= 6)
+      for (size_t i = 0; i < directions.size(); i += 2) halved.push_back(directions[i]);
+    bool placed = false;
+    for (const std::vector<size_t>* along : {&halved, &directions}) {
+      if (along->empty()) continue;
+      Ring inner;
+      const size_t first_vertex = vertices.size();
+      for (size_t k : *along) {
+        inner.point.push_back(scale * loop_points[k]);
+        inner.fraction.push_back(loop_fractions[k]);
+        inner.vertex.push_back(first_new_index + static_cast<int>(first_vertex + inner.vertex.size()));
+      }
+      if (!zip_rings(outer, inner, turns.sign, smallest_area_mm2, faces)) continue;
+      for (const Eigen::Vector2d& p : inner.point) {
+        vertices.push_back((plane.centroid + p.x() * plane.u + p.y() * plane.v).transpose());
+        normals.push_back(plane.normal);
+      }
+      directions = *along;
+      outer = std::move(inner);
+      placed = true;
+      break;
     }
-    zip_rings(outer, inner, faces);
-    outer = std::move(inner);
+    if (!placed) {  // not expected for a star-shaped loop (trapezoids): undo, the caller falls back to a fan
+      vertices.resize(vertices_before), faces.resize(faces_before), normals.resize(normals_before);
+      return false;
+    }
   }
   if (outer.vertex.size() == 3 && rings == 1) {
     faces.emplace_back(outer.vertex[2], outer.vertex[1], outer.vertex[0]);
     return true;
   }
-  const int centre = add_vertex(0.0, 0.0);
+  vertices.push_back(plane.centroid.transpose());
+  normals.push_back(plane.normal);
+  const int centre = first_new_index + static_cast<int>(vertices.size()) - 1;
   for (size_t i = 0; i < outer.vertex.size(); ++i)
     faces.emplace_back(outer.vertex[(i + 1) % outer.vertex.size()], outer.vertex[i], centre);
   return true;
