@@ -57,8 +57,9 @@ TEST(OrientSide, ASymmetricLastWithoutASideIsOrientedWithNeutralHalvesAndAWarnin
 }
 
 TEST(OrientSide, TheNamedSideSettlesASymmetricLast) {
+  const TriMesh scan = generate_last(symmetric_last(FootSide::Right, true)).mesh;
   for (FootSide side : {FootSide::Left, FootSide::Right}) {
-    const OrientedLast last = orient_last(generate_last(symmetric_last(FootSide::Right, true)).mesh, side);
+    const OrientedLast last = orient_last(scan, side);
     EXPECT_FALSE(last.side_unnamed);
     EXPECT_EQ(last.side, side);
     EXPECT_TRUE(last.warnings.empty());
