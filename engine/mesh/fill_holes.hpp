@@ -9,15 +9,18 @@
 // a real defect): the caller decides what a remaining boundary means.
 //
 // Before patching, a ragged hole is widened to a star-shaped one (seen from its centroid in its best-fit
-// plane) by removing the faces behind the edge's backward teeth; the patch replaces them too.
+// plane, no edge steeper than 15 degrees to the ray from the centroid) by removing the faces behind the
+// edge's backward teeth and steep flanks, a few rounds; the patch replaces them too.
 // The patch, after P. Liepa, "Filling Holes in Meshes", Eurographics Symposium on Geometry Processing
 // 2003 (triangulate, refine to the surrounding edge length, fair), with a simpler triangulation:
-//   1. rings, laid out flat in the loop's plane: circles around the loop's centroid, the outermost
-//      inside the loop's nearest vertex, spaced by the loop's mean edge length, each with as many
-//      vertices as that spacing allows along it; ring to ring joined by a zipper (each next triangle
-//      takes the next vertex that comes first by angle around the centroid), the innermost ring
-//      closed by a fan. For a star-shaped loop this covers the hole without a fold seen from the
-//      plane. Each loop edge is used reversed, so the faces keep the surface's outward orientation;
+//   1. rings, laid out flat in the loop's plane: copies of the loop shrunk towards its centroid by
+//      1 - j/R (R about the loop's mean radius over its mean edge length), each keeping the directions
+//      of the loop's vertices as seen from the centroid, every second one dropped where the ring's
+//      edges would fall under half the loop's; ring to ring joined by angle around the centroid, the
+//      innermost ring closed by a fan. Bands with the same directions are rows of trapezoids, which
+//      cannot fold for a star-shaped loop; a halving band is checked in the plane and not halved
+//      where it would fold. Each loop edge is used reversed, so the faces keep the surface's outward
+//      orientation;
 //   2. fairing: the new vertices move only along the plane's normal (the patch is a height field
 //      over the plane, so it cannot fold) until the bi-Laplacian vanishes at each of them, every old
 //      vertex fixed (Liepa section 5, Kobbelt et al. 1998; bilaplacian_fairing.hpp): the patch meets
