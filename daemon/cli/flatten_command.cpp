@@ -24,6 +24,8 @@ struct FlattenArguments {
   bool no_segment = false;
   double allowance_mm = 0.0;
   int max_triangles = 0;
+  std::string side;                 // "", left or right
+  double max_hole_mm = SegmentOptions{}.max_hole_fill_diameter_mm;
 };
 
 // One line, whatever the message holds.
@@ -50,6 +52,8 @@ ScanOptions options_from(const FlattenArguments& arguments) {
   options.mold.allowance_mm = arguments.allowance_mm;
   options.read.unit = length_unit_from_name(arguments.unit);
   if (arguments.max_triangles > 0) options.read.max_triangles = arguments.max_triangles;
+  if (!arguments.side.empty()) options.side = arguments.side == "left" ? FootSide::Left : FootSide::Right;
+  options.segment_options.max_hole_fill_diameter_mm = arguments.max_hole_mm;
   return options;
 }
 
@@ -62,9 +66,17 @@ int run_flatten(const FlattenArguments& arguments) {
     print_error("--split must be auto or expert, not \"" + arguments.split + "\"");
     return 2;
   }
+  if (!(arguments.max_hole_mm >= 0.0) || arguments.max_hole_mm > 100.0) {
+    print_error("--max-hole must be between 0 and 100 mm, not " + std::to_string(arguments.max_hole_mm));
+    return 2;
+  }
   try {
     const ScanResult result = scan_to_molds(arguments.scan, options_from(arguments));
     write_scan_outputs(result, arguments.out_dir);
+    for (const HoleRepair& repair : result.repairs)
+      std::printf("repaired: scan hole %.1f mm across closed (%s patch, %d vertices)\n", repair.across_mm,
+                  repair.fan ? "fan" : "faired", repair.patch_vertices);
+    for (const std::string& warning : result.warnings) std::printf("warning: %s\n", warning.c_str());
     for (const auto& segment : result.segments) {
       const DistortionMeasures& m = segment.measures;
       std::printf("%-8s %6d triangles  D_angle %.4f  D_area %.4f  area %+.2f %%  boundary %+.2f %%  flipped %d  %.2f s\n",
@@ -105,6 +117,10 @@ void add_flatten_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"auto", "mm", "cm", "m", "in"}))
       ->capture_default_str();
   command->add_option("--max-triangles", arguments->max_triangles, "refuse (or simplify) scans with more triangles");
+  command->add_option("--side", arguments->side, "the foot the last is for: names the halves of a symmetric last")
+      ->check(CLI::IsMember({"left", "right"}));
+  command->add_option("--max-hole", arguments->max_hole_mm, "close scan holes up to this size across, mm (larger: refused)")
+      ->capture_default_str();
   command->callback([arguments, &exit_code] { exit_code = run_flatten(*arguments); });
 }
 

@@ -170,6 +170,7 @@ void read_jobs(TableReader& root, DaemonConfig& config, std::vector<std::string>
   jobs.text("default_material", config.jobs.default_material, true);
   jobs.text("default_cutter", config.jobs.default_cutter, true);
   jobs.number("default_allowance_mm", config.jobs.default_allowance_mm, 0, 50);
+  jobs.number("max_hole_across_mm", config.jobs.max_hole_across_mm, 0, 100);
   jobs.integer("compute_workers", config.jobs.compute_workers, 1, 64);
   jobs.number("stop_grace_s", config.jobs.stop_grace_s, 0, 3600);
   jobs.reject_unknown();

@@ -36,6 +36,7 @@ struct JobsConfig {
   std::string default_material;   // key into materials
   std::string default_cutter;     // key into cutters
   double default_allowance_mm = 0;  // lasting allowance when the sidecar gives none
+  double max_hole_across_mm = 30;   // scan holes up to this size across are closed, larger ones fail the job
   int compute_workers = 1;          // scans computed at the same time
   double stop_grace_s = 60;         // on SIGTERM, a cut in progress may finish this long, then it is held
 };

@@ -36,9 +36,10 @@ struct MoldsMade {
 
 // Computes the molds of the scan into job_dir/molds/ and its nest items into job_dir/items.json:
 // `quantity` copies of each half, labelled for the cutting room, with a mirrored twin per half
-// when the ticket asks for a pair. A failure is one line in an operator's words.
+// when the ticket asks for a pair. The ticket's side left|right names a symmetric last's halves.
+// Scan holes up to max_hole_across_mm are closed. A failure is one line in an operator's words.
 Result<MoldsMade> compute_molds(const std::filesystem::path& scan, const std::filesystem::path& job_dir,
-                                const JobTicket& ticket, double default_allowance_mm);
+                                const JobTicket& ticket, double default_allowance_mm, double max_hole_across_mm);
 
 struct BatchJobInput {
   std::string job_id;

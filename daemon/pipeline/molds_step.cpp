@@ -39,11 +39,14 @@ std::vector<NestItem> job_items(const ScanResult& result, const JobTicket& ticke
 }  // namespace
 
 Result<MoldsMade> compute_molds(const std::filesystem::path& scan, const std::filesystem::path& job_dir,
-                                const JobTicket& ticket, double default_allowance_mm) {
+                                const JobTicket& ticket, double default_allowance_mm, double max_hole_across_mm) {
   try {
     ScanOptions options;
     options.mold.allowance_mm = ticket.allowance_mm.value_or(default_allowance_mm);
     if (ticket.split == "expert") options.segment_options.split_rule = SplitRule::Expert;
+    options.segment_options.max_hole_fill_diameter_mm = max_hole_across_mm;
+    if (ticket.side == "left") options.side = FootSide::Left;
+    if (ticket.side == "right") options.side = FootSide::Right;
     const ScanResult result = scan_to_molds(scan, options);
     if (result.segments.empty()) return Status::failure("no mold could be made from the scan");
     MoldsMade made;

@@ -19,6 +19,8 @@ struct LastParams {
   double toe_spring_mm = 12;    // how far the toe tip rises above the ground
   double top_height_mm = 110;   // height of the flat top cut (cone) above the heel seat
   FootSide side = FootSide::Left;
+  bool symmetric = false;       // a straight last for either foot: the plan outline's medial side mirrored
+                                // onto the lateral one, toe and heel centred on the long axis
   int target_triangles = 50000; // the result has this many (to within 2)
   double noise_mm = 0.0;        // scanner noise, Gaussian sigma along the vertex normal
   int holes = 0;                // small scan holes (a few mm across), never on the top cut

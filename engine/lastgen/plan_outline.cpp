@@ -42,6 +42,14 @@ std::vector<Eigen::Vector2d> control_points(const LastParams& p) {
       {0.025, -0.34, 0},
   }};
   std::vector<Eigen::Vector2d> points;
+  if (p.symmetric) {
+    // The medial rows (heel back to just before the toe tip), then the same mirrored on the way back.
+    constexpr size_t kMedialRows = 13;
+    for (size_t i = 0; i < kMedialRows; ++i) points.emplace_back(table[i][0] * L, table[i][1] * (table[i][2] == 0 ? H : W));
+    points.emplace_back(L, 0.0);
+    for (size_t i = kMedialRows - 1; i > 0; --i) points.emplace_back(points[i].x(), -points[i].y());
+    return points;
+  }
   for (const auto& row : table) {
     const double y = row[2] == 0 ? heel_centre + row[1] * H : row[1] * W;
     points.emplace_back(row[0] * L, y);

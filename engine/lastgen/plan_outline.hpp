@@ -6,6 +6,7 @@
 // (Yuksel, Schaefer & Keyser, "Parameterization and applications of Catmull-Rom curves",
 // Computer-Aided Design 43(7), 2011), scaled so that it spans x in [0, length] exactly and
 // its width across Y equals the ball width. Here the medial side is +Y; mirror for a left last.
+// A symmetric last (LastParams::symmetric) has the medial side on both sides of y = 0.
 #include <Eigen/Core>
 #include <vector>
 

@@ -150,7 +150,7 @@ double mean_y_between(const TriMesh& mesh, const Eigen::VectorXd& areas, double 
 
 }  // namespace
 
-OrientedLast orient_last(const TriMesh& scan) {
+OrientedLast orient_last(const TriMesh& scan, std::optional<FootSide> named_side) {
   if (scan.F.rows() < 100 || scan.V.rows() < 50)
     throw EngineError("the scan has only " + std::to_string(scan.F.rows()) + " triangles: too coarse to be a last");
   const PrincipalAxes principal = principal_axes(scan);
@@ -243,12 +243,29 @@ OrientedLast orient_last(const TriMesh& scan) {
   result.mesh.V.col(1).array() -= heel_y;
   const double toe_y = mean_y_between(result.mesh, areas, 0.85 * length, length);
   const double toe_offset_mm = toe_y;
-  if (std::abs(toe_offset_mm) < 0.005 * length)
-    throw EngineError("cannot tell left from right: the toe is centred on the heel (offset " +
-                      format_double(toe_offset_mm, 1) + " mm)");
-  result.side = toe_offset_mm < 0.0 ? FootSide::Left : FootSide::Right;
-  result.notes.push_back(std::string("side: ") + std::string(to_string(result.side)) + ", toe leans " +
-                         format_double(std::abs(toe_offset_mm), 1) + " mm to " + (toe_offset_mm < 0.0 ? "-Y" : "+Y"));
+  const std::string lean = format_double(std::abs(toe_offset_mm), 1) + " mm to " + (toe_offset_mm < 0.0 ? "-Y" : "+Y");
+  if (std::abs(toe_offset_mm) < kSymmetricToeOffsetShare * length) {
+    if (named_side) {
+      result.side = *named_side;
+      result.notes.push_back("side: " + std::string(to_string(result.side)) + " as named; the last is symmetric (toe off the heel's line by " +
+                             lean + ")");
+    } else {
+      result.side = FootSide::Left;
+      result.side_unnamed = true;
+      result.warnings.push_back(std::string("symmetric last: the side was not named, halves named ") + kNeutralHalfPlusY +
+                                " and " + kNeutralHalfMinusY + "; give --side or the sidecar's side to name them medial/lateral");
+      result.notes.push_back(result.warnings.back() + " (toe off the heel's line by " + lean + ")");
+    }
+  } else {
+    result.side = toe_offset_mm < 0.0 ? FootSide::Left : FootSide::Right;
+    result.notes.push_back(std::string("side: ") + std::string(to_string(result.side)) + ", toe leans " + lean);
+    if (named_side && *named_side != result.side) {
+      result.warnings.push_back("the side named is " + std::string(to_string(*named_side)) + " but the scan is a " +
+                                std::string(to_string(result.side)) + " last (toe leans " + lean +
+                                "): the halves are named for a " + std::string(to_string(result.side)) + " last");
+      result.notes.push_back(result.warnings.back());
+    }
+  }
 
   result.scan_to_canonical = Eigen::Affine3d::Identity();
   result.scan_to_canonical.linear() = rotation;

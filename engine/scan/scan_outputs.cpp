@@ -83,7 +83,14 @@ nlohmann::json scan_report_json(const ScanResult& result) {
                            {"seconds_total", result.seconds_total},
                            {"intake", intake_report_json(result.intake)},
                            {"notes", result.notes},
+                           {"warnings", result.warnings},
+                           {"repairs", nlohmann::json::array()},
                            {"segments", nlohmann::json::array()}};
+  for (const HoleRepair& repair : result.repairs)
+    report["repairs"].push_back({{"kind", "hole closed"},
+                                 {"across_mm", repair.across_mm},
+                                 {"patch_vertices", repair.patch_vertices},
+                                 {"patch", repair.fan ? "fan" : "faired rings"}});
   report["side"] = result.side ? nlohmann::json(std::string(to_string(*result.side))) : nlohmann::json();
   for (const auto& segment : result.segments) report["segments"].push_back(segment_json(segment));
   report["profile"] = profile_json(result.profile);

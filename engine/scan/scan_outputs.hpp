@@ -18,7 +18,9 @@ namespace lastcut {
 // when a file cannot be written.
 nlohmann::json write_scan_outputs(const ScanResult& result, const std::filesystem::path& out_dir);
 
-// {"input", "units": "mm", "side", "seconds_total", "intake": {...}, "notes": [...],
+// {"input", "units": "mm", "side" (null: not segmented, or a symmetric last with no side named),
+//  "seconds_total", "intake": {...}, "notes": [...], "warnings": [...] (also among the notes),
+//  "repairs": [{"kind": "hole closed", "across_mm", "patch_vertices", "patch": "faired rings" | "fan"}],
 //  "segments": [{"name", "triangles", "vertices", "flipped", "D_angle", "D_area", "area_3d_mm2",
 //  "area_2d_mm2", "area_error_pct", "boundary_3d_mm", "boundary_2d_mm", "boundary_error_pct",
 //  "max_stretch", "p95_stretch", "seconds_flatten", "iterations", "converged", "outline_points",

@@ -1,6 +1,7 @@
 #include "engine/scan/scan_to_molds.hpp"
 
 #include <Eigen/SVD>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +10,7 @@
 
 #include "engine/core/engine_error.hpp"
 #include "engine/core/mesh_topology.hpp"
+#include "engine/mesh/fill_holes.hpp"
 #include "engine/mold/boundary_loops.hpp"
 #include "engine/orient/orient_last.hpp"
 
@@ -20,32 +22,23 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::vector<double> boundary_loop_lengths_mm(const TriMesh& mesh) {
-  std::vector<double> lengths;
-  for (const auto& loop : simple_boundary_loops(build_mesh_topology(mesh.F, mesh.V.rows()))) {
-    double length = 0.0;
-    for (size_t i = 0; i < loop.size(); ++i) length += (mesh.V.row(loop[(i + 1) % loop.size()]) - mesh.V.row(loop[i])).norm();
-    lengths.push_back(length);
-  }
-  return lengths;
-}
-
-// A last may carry small scan holes (segmentation closes them); a boundary longer than the largest
-// closable hole means the scan is an open patch, not a last.
+// A last may carry scan holes (segmentation closes them up to max_hole_fill_diameter_mm across); a
+// larger boundary loop means the scan is an open patch or has a hole too large to close.
 void refuse_open_patch(const TriMesh& mesh, const SegmentOptions& options) {
-  const double closable_mm = std::numbers::pi * options.max_hole_fill_diameter_mm;
   int open_loops = 0;
-  double longest_mm = 0.0;
-  for (double length : boundary_loop_lengths_mm(mesh)) {
-    if (length <= closable_mm) continue;
+  double largest_mm = 0.0;
+  for (const auto& loop : simple_boundary_loops(build_mesh_topology(mesh.F, mesh.V.rows()))) {
+    const double across_mm = loop_across_mm(mesh.V, loop);
+    if (across_mm <= options.max_hole_fill_diameter_mm) continue;
     ++open_loops;
-    longest_mm = std::max(longest_mm, length);
+    largest_mm = std::max(largest_mm, across_mm);
   }
   if (open_loops == 0) return;
-  char line[200];
+  char line[240];
   std::snprintf(line, sizeof line,
-                "not a closed last: %d boundary loop%s of up to %.0f mm; use --no-segment to flatten an open patch",
-                open_loops, open_loops == 1 ? "" : "s", longest_mm);
+                "not a closed last: %d boundary loop%s up to %.1f mm across, larger than the %.0f mm scan holes are "
+                "closed up to (--max-hole); use --no-segment to flatten an open patch",
+                open_loops, open_loops == 1 ? "" : "s", largest_mm, options.max_hole_fill_diameter_mm);
   throw EngineError(line);
 }
 
@@ -128,14 +121,23 @@ ScanResult scan_to_molds(const std::filesystem::path& scan, const ScanOptions& o
     refuse_open_patch(intake.mesh, options.segment_options);
     check_is_last(intake.mesh);
     clock.lap("last check");
-    const OrientedLast oriented = orient_last(intake.mesh);
-    result.side = oriented.side;
+    const OrientedLast oriented = orient_last(intake.mesh, options.side);
+    if (!oriented.side_unnamed) result.side = oriented.side;
     result.notes.insert(result.notes.end(), oriented.notes.begin(), oriented.notes.end());
+    result.warnings = oriented.warnings;
     clock.lap("orient");
     Segmentation halves = segment_last(oriented, options.segment_options);
     result.notes.insert(result.notes.end(), halves.notes.begin(), halves.notes.end());
+    result.repairs = halves.repairs;
+    for (const HoleRepair& repair : halves.repairs)
+      if (repair.fan)
+        result.warnings.push_back("a scan hole " + std::to_string(static_cast<int>(std::lround(repair.across_mm))) +
+                                  " mm across is too ragged for a smooth patch: closed by a fan, check the molds there");
     clock.lap("segment");
-    for (Segment* half : {&halves.medial, &halves.lateral})
+    // Named halves come medial first; unnamed ones side_a (+Y) first.
+    const std::array<Segment*, 2> order = oriented.side_unnamed ? std::array<Segment*, 2>{&halves.lateral, &halves.medial}
+                                                                : std::array<Segment*, 2>{&halves.medial, &halves.lateral};
+    for (Segment* half : order)
       result.segments.push_back(flatten_segment(half->name, std::move(half->mesh), half->topology, half->landmarks,
                                                 options, result.notes, clock));
   }

@@ -5,6 +5,8 @@
 //   cut it into medial and lateral halves (thesis 3.1)        engine/segment/segment_last.hpp
 //   flatten each half with ARAP or LSCM (thesis 2.2-2.4)      engine/flatten/flatten.hpp
 //   measure the distortion, make the mold outline and notches engine/flatten/distortion.hpp, engine/mold
+// A scan hole up to segment_options.max_hole_fill_diameter_mm across is closed (engine/mesh/fill_holes.hpp);
+// a larger one is refused. A symmetric last with no side named gives halves side_a and side_b.
 // With segment = false the scan must already be one disk-shaped patch; it is flattened as it is
 // and named "patch". A closed last without segmentation, or an open patch with it, is refused.
 //
@@ -33,10 +35,12 @@ struct ScanOptions {
   FlattenOptions flatten;
   MoldOptions mold;
   SegmentOptions segment_options;
+  std::optional<FootSide> side;  // the foot as the operator names it (--side, the sidecar): settles a
+                                 // symmetric last; a clearly other-footed scan keeps its own side and warns
 };
 
 struct SegmentResult {
-  std::string name;             // "medial", "lateral" or "patch"
+  std::string name;             // "medial", "lateral" or "patch"; "side_a", "side_b" for an unnamed symmetric last
   TriMesh mesh3d;               // the triangles that were flattened, mm (canonical frame when segmented)
   Eigen::MatrixXd UV;           // #V x 2, mm, same vertex order as mesh3d, placed as described above
   FlattenResult flatten;        // iterations, timings, notes (its UV is the unplaced one)
@@ -47,9 +51,11 @@ struct SegmentResult {
 struct ScanResult {
   std::string input;                 // the scan's path as given
   IntakeReport intake;               // what reading the file found and repaired
-  std::optional<FootSide> side;      // known when segmented
+  std::optional<FootSide> side;      // known when segmented, unless a symmetric last with no side named
   std::vector<SegmentResult> segments;
   std::vector<std::string> notes;    // from orientation, segmentation and flattening, one line each
+  std::vector<std::string> warnings; // what the operator should look at (also among the notes)
+  std::vector<HoleRepair> repairs;   // scan holes closed before segmentation
   double seconds_total = 0;
   std::vector<StageTime> profile;    // wall seconds per stage ("read", "medial: flatten", ...), in order
 };

@@ -83,13 +83,19 @@ BandCut cut_band(const OrientedLast& last, const SegmentOptions& options) {
     throw EngineError("the feather line height and the top rim depth must be positive (mm)");
   BandCut result;
   result.side = last.side;
+  result.side_unnamed = last.side_unnamed;
   result.snap_fraction = kSnapFraction;
   TriMesh& mesh = result.mesh;
   mesh = last.mesh;
-  const int filled = fill_holes(mesh, options.max_hole_fill_diameter_mm);
-  if (filled > 0)
-    result.notes.push_back("closed " + std::to_string(filled) + " scan hole(s) up to " +
-                           fixed(options.max_hole_fill_diameter_mm, 0) + " mm across");
+  result.repairs = fill_holes(mesh, options.max_hole_fill_diameter_mm);
+  if (!result.repairs.empty()) {
+    std::string sizes;
+    for (const HoleRepair& repair : result.repairs)
+      sizes += (sizes.empty() ? "" : ", ") + fixed(repair.across_mm, 1) + " mm across (" +
+               std::to_string(repair.patch_vertices) + " patch vertices" + (repair.fan ? ", fan: may fold" : "") + ")";
+    result.notes.push_back("closed " + std::to_string(result.repairs.size()) + " scan hole" +
+                           (result.repairs.size() == 1 ? "" : "s") + " with a smooth patch: " + sizes);
+  }
 
   // Step 2: sole and top regions, and their contours (Dijkstra, then eq. 22).
   const MeshTopology topology = build_mesh_topology(mesh.F, mesh.V.rows());
@@ -159,6 +165,7 @@ SplitPlane place_split_plane(const BandCut& band, const SegmentOptions& options)
 Segmentation split_band(const BandCut& band, const SplitPlane& plane) {
   Segmentation result;
   result.notes = band.notes;
+  result.repairs = band.repairs;
   result.plane = plane;
   TriMesh mesh = band.mesh;
   Eigen::MatrixXd fields = band.fields;
@@ -180,8 +187,9 @@ Segmentation split_band(const BandCut& band, const SplitPlane& plane) {
                                                                      : kLateral;
   }
   const MeshTopology cut_topology = build_mesh_topology(mesh.F, mesh.V.rows());
-  result.medial = extract_half(mesh, cut_topology, labels, kMedial, fields, "medial");
-  result.lateral = extract_half(mesh, cut_topology, labels, kLateral, fields, "lateral");
+  // An unnamed symmetric last is split as a left one (medial -Y), named by side of Y instead.
+  result.medial = extract_half(mesh, cut_topology, labels, kMedial, fields, band.side_unnamed ? kNeutralHalfMinusY : "medial");
+  result.lateral = extract_half(mesh, cut_topology, labels, kLateral, fields, band.side_unnamed ? kNeutralHalfPlusY : "lateral");
 
   // The curves the halves were cut along, for previews.
   for (auto [label, contour] : {std::pair{kSole, &result.lower_contour}, std::pair{kTop, &result.upper_contour}}) {
@@ -190,8 +198,8 @@ Segmentation split_band(const BandCut& band, const SplitPlane& plane) {
     *contour = loop_points(mesh, region_boundary_loop(mesh, cut_topology, region));
   }
   const double medial_area = surface_area(result.medial.mesh), lateral_area = surface_area(result.lateral.mesh);
-  result.notes.push_back("medial half " + fixed(medial_area / 100.0, 0) + " cm^2, lateral half " +
-                         fixed(lateral_area / 100.0, 0) + " cm^2");
+  result.notes.push_back(result.medial.name + " half " + fixed(medial_area / 100.0, 0) + " cm^2, " + result.lateral.name +
+                         " half " + fixed(lateral_area / 100.0, 0) + " cm^2");
   return result;
 }
 

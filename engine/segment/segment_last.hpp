@@ -2,7 +2,7 @@
 // Segmentation of an oriented last into its medial and lateral halves, the surfaces the molds are
 // flattened from (thesis steps 2-5, Sabaliauskas 2017, "Computerized modeling technology of unique
 // footwear surface manufacturing design", section 3.1).
-//  1. small scan holes are closed (engine/mesh/fill_holes.hpp);
+//  1. scan holes up to max_hole_fill_diameter_mm across are closed with a faired patch (engine/mesh/fill_holes.hpp);
 //  2. faces are classified by normal elevation into sole, sides and top, and the sole and the flat
 //     top cut become one connected region each (surface_regions.hpp);
 //  3. the mesh is cut along the feather line and the top rim (level_set_cut.hpp), so mold edges are
@@ -27,6 +27,7 @@
 
 #include "engine/core/mesh_topology.hpp"
 #include "engine/core/tri_mesh.hpp"
+#include "engine/mesh/fill_holes.hpp"
 #include "engine/orient/orient_last.hpp"
 #include "engine/segment/expert_split_plane.hpp"
 #include "engine/segment/split_plane.hpp"
@@ -44,7 +45,7 @@ struct SegmentOptions {
   double top_angle_rad = std::numbers::pi / 4;    // faces at or above this elevation may be top (eq. 9)
   double plane_t = 1.0 / 3.0;                     // where the toe and heel parts of the sole contour end (eqs. 14-15)
   int smoothing_passes = 10;                      // eq. 22 moving-average passes on a 2 mm edge mesh (scaled to the same mm on others)
-  double max_hole_fill_diameter_mm = 15;          // larger scan holes are not closed
+  double max_hole_fill_diameter_mm = 30;          // scan holes up to this size across are closed (fill_holes.hpp)
   // Where the sole and the top cut fit smooth shapes, the curves are placed by height, not angle:
   double feather_height_mm = 1.5;  // the feather line runs this high above the fitted sole surface
   double rim_depth_mm = 1.25;      // the top rim runs this deep below the fitted top plane
@@ -53,14 +54,15 @@ struct SegmentOptions {
 };
 
 struct Segment {
-  std::string name;                     // "medial" or "lateral"
+  std::string name;                     // "medial" or "lateral"; kNeutralHalf* of an unnamed symmetric last
   TriMesh mesh;                         // topological disk, canonical frame, mm
   std::map<std::string, int> landmarks; // boundary vertex indices: "toe", "heel", "top_front", "top_back"
   MeshTopology topology;                // of mesh, handed on to flattening and the mold
 };
 
 struct Segmentation {
-  Segment medial, lateral;
+  Segment medial, lateral;  // an unnamed symmetric last (OrientedLast::side_unnamed): side_b (-Y), side_a (+Y)
+  std::vector<HoleRepair> repairs;  // the scan holes closed (step 1)
   std::vector<std::string> notes;
   std::vector<Eigen::Vector3d> lower_contour;  // the smoothed feather line the halves were cut along, closed loop, mm
   std::vector<Eigen::Vector3d> upper_contour;  // the smoothed rim of the top cut, closed loop, mm
@@ -76,6 +78,8 @@ struct BandCut {
   std::vector<Eigen::Vector3d> lower_loop, upper_loop;  // smoothed feather line and top rim the plane is placed from, mm
   double snap_fraction = 0;  // crossings of the plane this close to an edge end snap to it (level_set_cut.hpp)
   FootSide side = FootSide::Left;
+  bool side_unnamed = false;        // OrientedLast::side_unnamed: the halves get neutral names
+  std::vector<HoleRepair> repairs;  // the scan holes closed (step 1)
   std::vector<std::string> notes;
 };
 

@@ -84,6 +84,19 @@ TEST(DaemonConfig, WrongTypesAndRangesAreRefused) {
   EXPECT_NE(result.error.find("line 16"), std::string::npos) << result.error;
 }
 
+TEST(DaemonConfig, TheHoleLimitIsReadAndRangeChecked) {
+  EXPECT_EQ(load_daemon_config(kSource / "config/lastcut.toml").config->jobs.max_hole_across_mm, 30.0);
+  std::string text = minimal();
+  text.replace(text.find("default_cutter = \"a\""), 20, "default_cutter = \"a\"\nmax_hole_across_mm = 42.5");
+  auto result = load_text(text);
+  ASSERT_TRUE(result.config) << result.error;
+  EXPECT_EQ(result.config->jobs.max_hole_across_mm, 42.5);
+  text.replace(text.find("42.5"), 4, "-3");
+  result = load_text(text);
+  ASSERT_FALSE(result.config);
+  EXPECT_NE(result.error.find("jobs.max_hole_across_mm (line 9): -3 is outside"), std::string::npos) << result.error;
+}
+
 TEST(DaemonConfig, EnumerationsAndCrossReferencesAreChecked) {
   std::string text = minimal();
   text.replace(text.find("default_cutter = \"a\""), 20, "default_cutter = \"b\"");
