@@ -1,0 +1,121 @@
+#include "engine/subdiv/sample_surface.hpp"
+
+#include <string>
+
+#include "engine/core/engine_error.hpp"
+
+namespace lastcut {
+namespace {
+
+// The parameters of step s (0..n) along edge k of a face, running from corner k to corner k + 1.
+Eigen::Vector2d edge_parameter(int k, int s, int n) {
+  const double t = static_cast<double>(s) / n, back = static_cast<double>(n - s) / n;
+  switch (k) {
+    case 0: return {t, 0.0};
+    case 1: return {1.0, t};
+    case 2: return {back, 1.0};
+    default: return {0.0, back};
+  }
+}
+
+}  // namespace
+
+SubdividedSurface subdivide_bezier(const QuadMesh& control, int n) {
+  if (n < 1 || n > kMaxSubdivisionDetail) {
+    throw EngineError("detail n = " + std::to_string(n) + " is out of range 1.." + std::to_string(kMaxSubdivisionDetail));
+  }
+  if (control.quad_count() == 0) throw EngineError("the control mesh has no quads");
+  const long long quad_total = static_cast<long long>(control.quad_count()) * n * n;
+  if (quad_total > kMaxSubdividedQuads) {
+    throw EngineError("detail n = " + std::to_string(n) + " would make " + std::to_string(quad_total) + " quads from " +
+                      std::to_string(control.quad_count()) + " (at most " + std::to_string(kMaxSubdividedQuads) + ")");
+  }
+  const QuadTopology topology = build_quad_topology(control);
+  const std::vector<BezierPatch> patches = build_bezier_patches(control, topology);
+
+  // Output vertex ids: used control vertices first, then edges, then face interiors.
+  std::vector<int> corner_id(static_cast<size_t>(control.vertex_count()), -1);
+  int used = 0;
+  for (int v = 0; v < control.vertex_count(); ++v) {
+    if (topology.faces_at(v) > 0) corner_id[static_cast<size_t>(v)] = used++;
+  }
+  const int inner = n - 1;
+  const long long edge_base = used;
+  const long long face_base = edge_base + static_cast<long long>(topology.edge_count()) * inner;
+  const long long vertex_total = face_base + static_cast<long long>(control.quad_count()) * inner * inner;
+
+  SubdividedSurface surface;
+  surface.quads.V.resize(vertex_total, 3);
+  surface.quads.Q.resize(quad_total, 4);
+  surface.source_face.assign(static_cast<size_t>(vertex_total), -1);
+  surface.source_uv.resize(vertex_total, 2);
+  const auto place = [&surface, &patches](long long id, int q, const Eigen::Vector2d& uv) {
+    surface.quads.V.row(id) = patch_position(patches[static_cast<size_t>(q)], uv.x(), uv.y()).transpose();
+    surface.source_face[static_cast<size_t>(id)] = q;
+    surface.source_uv.row(id) = uv.transpose();
+  };
+  for (int v = 0; v < control.vertex_count(); ++v) {
+    if (corner_id[static_cast<size_t>(v)] < 0) continue;
+    const int h = topology.half_edge_at(v, 0);
+    place(corner_id[static_cast<size_t>(v)], h / 4, edge_parameter(h % 4, 0, n));
+  }
+  for (int e = 0; e < topology.edge_count(); ++e) {
+    const int h = topology.edge_half_edge[static_cast<size_t>(e)];
+    for (int s = 1; s < n; ++s) place(edge_base + static_cast<long long>(e) * inner + s - 1, h / 4, edge_parameter(h % 4, s, n));
+  }
+
+  // The output vertex at grid point (i, j) of face q.
+  const auto grid_vertex = [&](int q, int i, int j) -> long long {
+    int k = -1, s = 0;
+    if (j == 0) {
+      k = 0, s = i;
+    } else if (i == n) {
+      k = 1, s = j;
+    } else if (j == n) {
+      k = 2, s = n - i;
+    } else if (i == 0) {
+      k = 3, s = n - j;
+    }
+    if (k < 0) return face_base + static_cast<long long>(q) * inner * inner + (j - 1) * inner + (i - 1);
+    if (s == 0) return corner_id[static_cast<size_t>(control.Q(q, k))];
+    if (s == n) return corner_id[static_cast<size_t>(control.Q(q, (k + 1) % 4))];
+    const int h = 4 * q + k;
+    const int e = topology.edge_of[static_cast<size_t>(h)];
+    const int step = topology.edge_half_edge[static_cast<size_t>(e)] == h ? s : n - s;
+    return edge_base + static_cast<long long>(e) * inner + step - 1;
+  };
+  long long quad = 0;
+  for (int q = 0; q < control.quad_count(); ++q) {
+    for (int j = 1; j < n; ++j) {
+      for (int i = 1; i < n; ++i) place(grid_vertex(q, i, j), q, {static_cast<double>(i) / n, static_cast<double>(j) / n});
+    }
+    for (int j = 0; j < n; ++j) {
+      for (int i = 0; i < n; ++i, ++quad) {
+        surface.quads.Q.row(quad) << static_cast<int>(grid_vertex(q, i, j)), static_cast<int>(grid_vertex(q, i + 1, j)),
+            static_cast<int>(grid_vertex(q, i + 1, j + 1)), static_cast<int>(grid_vertex(q, i, j + 1));
+      }
+    }
+  }
+  return surface;
+}
+
+TriMesh triangulate_quads(const QuadMesh& quads) {
+  TriMesh mesh;
+  mesh.V = quads.V;
+  mesh.F.resize(2 * quads.Q.rows(), 3);
+  for (Eigen::Index q = 0; q < quads.Q.rows(); ++q) {
+    const Eigen::Vector4i c = quads.Q.row(q).transpose();
+    const double diagonal02 = (quads.V.row(c(0)) - quads.V.row(c(2))).squaredNorm();
+    const double diagonal13 = (quads.V.row(c(1)) - quads.V.row(c(3))).squaredNorm();
+    if (diagonal02 <= diagonal13) {
+      mesh.F.row(2 * q) << c(0), c(1), c(2);
+      mesh.F.row(2 * q + 1) << c(0), c(2), c(3);
+    } else {
+      mesh.F.row(2 * q) << c(0), c(1), c(3);
+      mesh.F.row(2 * q + 1) << c(1), c(2), c(3);
+    }
+  }
+  return mesh;
+}
+
+}  // namespace lastcut
