@@ -61,14 +61,16 @@ VertexPoints interior_vertex(const Ring& ring) {
   }
   const double angle = 2.0 * std::numbers::pi / nd;
   const double a_n = 1.0 + std::cos(angle) + std::cos(angle / 2.0) * std::sqrt(2.0 * (9.0 + std::cos(angle)));
-  const double scale = 1.0 / (3.0 * nd * (a_n / 2.0 + 1.0 + std::cos(angle)));
   for (int i = 0; i < n; ++i) {
     Eigen::Vector3d tangent = Eigen::Vector3d::Zero();
     for (int j = 0; j < n; ++j) {
       const double c0 = std::cos(angle * (j - i)), c1 = std::cos(angle * (j - i + 1));
       tangent += a_n * c0 * ring.e[static_cast<size_t>(j)] + (c0 + c1) * ring.f[static_cast<size_t>(j)];
     }
-    points.edge.push_back(points.corner + scale * tangent);
+    const Eigen::Vector3d direction = tangent.normalized();
+    const Eigen::Vector3d average =
+        0.5 * (points.interior[static_cast<size_t>((i + n - 1) % n)] + points.interior[static_cast<size_t>(i)]);
+    points.edge.push_back(points.corner + direction.dot(average - points.corner) * direction);
   }
   return points;
 }

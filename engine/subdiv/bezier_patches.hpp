@@ -9,13 +9,17 @@
 // neighbours f_j (counter-clockwise):
 //   corner    P   = (n^2 v + 4 sum e_j + sum f_j) / (n (n + 5))       Catmull-Clark limit position
 //   interior  I_j = (n v + 2 (e_j + e_j+1) + f_j) / (n + 5)
-//   edge      E_i = P + t_i / (3 n (A_n / 2 + 1 + cos(2 pi / n)))    along the limit tangent t_i
-// with the limit tangent mask of Halstead, Kass and DeRose, "Efficient, fair interpolation using
+//   edge      E_i = P + ((M_i - P) . d_i) d_i,  M_i = (I_i-1 + I_i) / 2,  d_i = t_i / |t_i|
+// i.e. the direction of the Catmull-Clark limit tangent t_i (so all edge points at v lie in the limit
+// tangent plane) with the length of the regular rule M_i (for n = 4, E_i = M_i exactly, which we use).
+// The limit tangent mask is that of Halstead, Kass and DeRose, "Efficient, fair interpolation using
 // Catmull-Clark surfaces", SIGGRAPH 1993:
 //   t_i = sum_j A_n cos(2 pi (j-i)/n) e_j + (cos(2 pi (j-i)/n) + cos(2 pi (j-i+1)/n)) f_j,
 //   A_n = 1 + cos(2 pi/n) + cos(pi/n) sqrt(2 (9 + cos(2 pi/n))).
-// The scale of E_i is ours: it puts E_i a third of the way along a planar ring of unit edges, which
-// for n = 4 is the B-spline's (then E_i = (I_i-1 + I_i) / 2 exactly, which we use).
+// The length rule is ours (Loop & Schaefer scale the tangent differently); on the valence-3 corners
+// of a cube sphere (radius 20 mm, control edges ~ 8 mm) it keeps the samples within 0.12 mm of the
+// Catmull-Clark limit surface (tests/subdiv/catmull_clark_oracle_test.cpp), where scaling t_i to a
+// third of a planar ring of unit edges was 4 times farther off (0.48 mm).
 // For n = 4 these are the Bezier points of the uniform bicubic B-spline patch of the face's 4 x 4
 // control points (the standard B-spline-to-Bezier conversion), i.e. the Catmull-Clark limit surface
 // (Catmull & Clark 1978; Stam 1998).

@@ -19,8 +19,10 @@
 namespace lastcut {
 namespace {
 
-// Measured on this mesh (docs/subdivision.md): see the test's output; the bound leaves ~ 20 % room.
-constexpr double kNearExtraordinaryTolerance_mm = 1.0;
+// Measured on this mesh: 0.0710 mm at n = 2, 0.1144 mm at n = 4 and 8 (docs/subdivision.md); the bound
+// leaves ~ 20 % room. 1.5 % of a control edge: the Bezier patches at a valence-3 vertex approximate the
+// limit surface, they are not on it.
+constexpr double kNearExtraordinaryTolerance_mm = 0.14;
 
 struct OracleMesh {
   std::vector<Eigen::Vector3d> V;
