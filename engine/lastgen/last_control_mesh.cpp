@@ -15,7 +15,7 @@ namespace lastcut {
 namespace {
 
 constexpr int kTypicalControlQuads = 1500;  // n grows once the control mesh has this many quads
-constexpr int kFitSteps = 4;
+constexpr int kFitSteps = 16;
 
 // Where the ray centre + t * direction (t in [0, 1.5]) first leaves the solid.
 Eigen::Vector3d ray_exit(const LastShape& shape, const Eigen::Vector3d& centre, const Eigen::Vector3d& direction) {
