@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/lastgen/last_control_mesh.hpp"
@@ -16,15 +17,6 @@
 namespace {
 
 using namespace lastcut;
-
-Eigen::Vector2d corner_parameter(int k, double t) {
-  switch (k) {
-    case 0: return {t, 0.0};
-    case 1: return {1.0, t};
-    case 2: return {1.0 - t, 1.0};
-    default: return {0.0, 1.0 - t};
-  }
-}
 
 struct RatioStats {
   double min = 1e9, max = 0.0, sum = 0.0;
@@ -58,30 +50,34 @@ int main(int argc, char** argv) {
     std::printf("| %d | %d | %d | %.4f s |\n", n, surface.quads.quad_count(), surface.quads.vertex_count(), times[2]);
   }
 
+  // Sample segments along every control edge, read from the sampled mesh (corners first, then n - 1
+  // samples per edge in the order of QuadTopology's edges, running along the edge's representative half-edge).
   const QuadTopology topology = build_quad_topology(control);
-  const std::vector<BezierPatch> patches = build_bezier_patches(control, topology);
-  std::printf("\n| n | l_1 / mean l at valence 3: min / mean / max | at valence 4: min / mean / max |\n|---|---|---|\n");
+  std::printf("\n| n | spread | l_1 / mean l at valence 3: min / mean / max | at valence 4: min / mean / max |\n|---|---|---|---|\n");
   for (int n : {3, 4, 8}) {
-    RatioStats extraordinary, regular;
-    for (int h = 0; h < 4 * control.quad_count(); ++h) {
-      const int v = control.Q(h / 4, h % 4);
-      const int valence = topology.valence(v);
-      if (valence != 3 && valence != 4) continue;
-      std::vector<double> lengths;
-      Eigen::Vector3d previous = control.V.row(v).transpose();
-      for (int s = 0; s <= n; ++s) {
-        const Eigen::Vector2d uv = corner_parameter(h % 4, static_cast<double>(s) / n);
-        const Eigen::Vector3d p = patch_position(patches[static_cast<size_t>(h / 4)], uv.x(), uv.y());
-        if (s > 0) lengths.push_back((p - previous).norm());
-        previous = p;
+    for (SampleSpread spread : {SampleSpread::Uniform, SampleSpread::EvenAtExtraordinary}) {
+      const SubdividedSurface surface = subdivide_bezier(control, n, spread);
+      RatioStats extraordinary, regular;
+      for (int e = 0; e < topology.edge_count(); ++e) {
+        const int h = topology.edge_half_edge[static_cast<size_t>(e)];
+        const int from = control.Q(h / 4, h % 4), to = control.Q(h / 4, (h + 1) % 4);
+        std::vector<Eigen::Vector3d> points{surface.quads.V.row(from).transpose()};
+        for (int s = 1; s < n; ++s) points.push_back(surface.quads.V.row(control.vertex_count() + e * (n - 1) + s - 1).transpose());
+        points.push_back(surface.quads.V.row(to).transpose());
+        double mean = 0.0;
+        for (int s = 0; s < n; ++s) mean += (points[static_cast<size_t>(s + 1)] - points[static_cast<size_t>(s)]).norm() / n;
+        const double first = (points[1] - points[0]).norm(), last = (points[static_cast<size_t>(n)] - points[static_cast<size_t>(n - 1)]).norm();
+        for (const auto& [vertex, length] : {std::pair{from, first}, std::pair{to, last}}) {
+          const int valence = topology.valence(vertex);
+          if (valence == 3) extraordinary.add(length / mean);
+          if (valence == 4) regular.add(length / mean);
+        }
       }
-      double mean = 0.0;
-      for (double l : lengths) mean += l / n;
-      (valence == 3 ? extraordinary : regular).add(lengths.front() / mean);
+      std::printf("| %d | %s | %.3f / %.3f / %.3f (%d edges) | %.3f / %.3f / %.3f (%d edges) |\n", n,
+                  spread == SampleSpread::Uniform ? "uniform" : "even at EV", extraordinary.min,
+                  extraordinary.sum / extraordinary.count, extraordinary.max, extraordinary.count, regular.min,
+                  regular.sum / regular.count, regular.max, regular.count);
     }
-    std::printf("| %d | %.3f / %.3f / %.3f (%d edges) | %.3f / %.3f / %.3f (%d edges) |\n", n, extraordinary.min,
-                extraordinary.sum / extraordinary.count, extraordinary.max, extraordinary.count, regular.min,
-                regular.sum / regular.count, regular.max, regular.count);
   }
   return 0;
 }

@@ -17,12 +17,13 @@ struct SubdivideOptions {
   std::string input;
   std::string output;
   int n = 4;
+  bool even = false;
 };
 
 int run_subdivide(const SubdivideOptions& options) {
   try {
     const QuadMesh control = read_quad_obj(options.input);
-    const SubdividedSurface surface = subdivide_bezier(control, options.n);
+    const SubdividedSurface surface = subdivide_bezier(control, options.n, options.even ? SampleSpread::EvenAtExtraordinary : SampleSpread::Uniform);
     write_quad_obj(options.output, surface.quads);
     std::printf("wrote %s: %d control quads at n = %d -> %d quads, %d vertices\n", options.output.c_str(),
                 control.quad_count(), options.n, surface.quads.quad_count(), surface.quads.vertex_count());
@@ -40,6 +41,7 @@ void add_subdivide_command(CLI::App& app, int& exit_code) {
   auto* command = app.add_subcommand("subdivide", "Bezier surface of a quad mesh (OBJ), n x n quads per control face");
   command->add_option("quads", options->input, "Quad control mesh (.obj, 4 corners per face)")->required();
   command->add_option("-n,--n", options->n, "Detail: quads per control face edge (any n >= 1)")->capture_default_str();
+  command->add_flag("--even", options->even, "Spread the samples evenly at extraordinary vertices (default: at i/n, as Catmull-Clark)");
   command->add_option("-o,--output", options->output, "Quad OBJ to write")->required();
   command->callback([options, &exit_code] { exit_code = run_subdivide(*options); });
 }

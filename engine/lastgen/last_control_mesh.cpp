@@ -124,7 +124,7 @@ QuadMesh last_control_mesh(const LastShape& shape, const LastParams& params, int
 TriMesh bezier_last_surface(const LastShape& shape, const LastParams& params) {
   const int n = bezier_detail_for(params.target_triangles);
   const int control_quads = std::max(24, static_cast<int>(std::lround(params.target_triangles / (2.0 * n * n))));
-  return triangulate_quads(subdivide_bezier(last_control_mesh(shape, params, control_quads), n).quads);
+  return triangulate_quads(subdivide_bezier(last_control_mesh(shape, params, control_quads), n, SampleSpread::EvenAtExtraordinary).quads);
 }
 
 }  // namespace lastcut

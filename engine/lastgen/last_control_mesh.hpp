@@ -24,7 +24,8 @@ QuadMesh last_control_mesh(const LastShape& shape, const LastParams& params, int
 // (the Catmull-Clark-like density) for the default 50k triangles, fewer for small meshes, at most 8.
 int bezier_detail_for(int target_triangles);
 
-// The triangulated Bezier surface of the last, 2 F n^2 triangles with F within a few % of
+// The triangulated Bezier surface of the last (samples spread evenly at the eight extraordinary
+// vertices, SampleSpread::EvenAtExtraordinary), 2 F n^2 triangles with F within a few % of
 // target_triangles / (2 n^2) (the box's sides are whole numbers of quads).
 TriMesh bezier_last_surface(const LastShape& shape, const LastParams& params);
 

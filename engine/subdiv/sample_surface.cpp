@@ -1,5 +1,7 @@
 #include "engine/subdiv/sample_surface.hpp"
 
+#include <algorithm>
+#include <array>
 #include <string>
 
 #include "engine/core/engine_error.hpp"
@@ -18,9 +20,60 @@ Eigen::Vector2d edge_parameter(int k, int s, int n) {
   }
 }
 
+// Directions (in (u, v)) of the next and the previous edge leaving corner k of a face.
+constexpr double kNextDirection[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+constexpr double kPrevDirection[4][2] = {{0, 1}, {-1, 0}, {0, -1}, {1, 0}};
+constexpr double kCornerUv[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+
+// Warp strength along one edge leaving a corner: the first segment of n is about |S'(0)| / n long,
+// the mean chord / n; a = chord / |S'(0)| - 1 makes them match (w'(0) = 1 + a).
+double edge_warp(const BezierPatch& patch, int k, const double (&direction)[2], const Eigen::Vector3d& far_corner) {
+  const PatchPoint corner = evaluate_patch(patch, kCornerUv[k][0], kCornerUv[k][1]);
+  const double speed = (direction[0] * corner.du + direction[1] * corner.dv).norm();
+  const double chord = (far_corner - corner.position).norm();
+  if (speed <= 0.0) return 0.0;
+  return std::clamp(chord / speed - 1.0, -0.3, 0.5);
+}
+
+// Per face corner: warp strengths along its next and previous edge (0 at regular and boundary vertices).
+std::vector<std::array<double, 8>> corner_warps(const QuadMesh& control, const QuadTopology& topology,
+                                                const std::vector<BezierPatch>& patches) {
+  std::vector<std::array<double, 8>> warps(static_cast<size_t>(control.quad_count()), std::array<double, 8>{});
+  for (int q = 0; q < control.quad_count(); ++q) {
+    const BezierPatch& patch = patches[static_cast<size_t>(q)];
+    for (int k = 0; k < 4; ++k) {
+      const int v = control.Q(q, k);
+      if (topology.valence(v) == 4 || topology.on_boundary[static_cast<size_t>(v)]) continue;
+      const int next = (k + 1) % 4, prev = (k + 3) % 4;
+      warps[static_cast<size_t>(q)][static_cast<size_t>(2 * k)] =
+          edge_warp(patch, k, kNextDirection[k], patch_position(patch, kCornerUv[next][0], kCornerUv[next][1]));
+      warps[static_cast<size_t>(q)][static_cast<size_t>(2 * k + 1)] =
+          edge_warp(patch, k, kPrevDirection[k], patch_position(patch, kCornerUv[prev][0], kCornerUv[prev][1]));
+    }
+  }
+  return warps;
+}
+
+// (u, v) moved by the warps of the face's extraordinary corners (see SampleSpread).
+Eigen::Vector2d warped(const std::array<double, 8>& warp, const Eigen::Vector2d& uv) {
+  Eigen::Vector2d result = uv;
+  for (int k = 0; k < 4; ++k) {
+    const double a_next = warp[static_cast<size_t>(2 * k)], a_prev = warp[static_cast<size_t>(2 * k + 1)];
+    if (a_next == 0.0 && a_prev == 0.0) continue;
+    // Corner-local coordinates: s along the next edge, r along the previous edge.
+    const Eigen::Vector2d offset = uv - Eigen::Vector2d(kCornerUv[k][0], kCornerUv[k][1]);
+    const double s = offset.x() * kNextDirection[k][0] + offset.y() * kNextDirection[k][1];
+    const double r = offset.x() * kPrevDirection[k][0] + offset.y() * kPrevDirection[k][1];
+    const double ds = a_next * s * (1 - s) * (1 - s) * (1 - r) * (1 - r);
+    const double dr = a_prev * r * (1 - r) * (1 - r) * (1 - s) * (1 - s);
+    result += ds * Eigen::Vector2d(kNextDirection[k][0], kNextDirection[k][1]) + dr * Eigen::Vector2d(kPrevDirection[k][0], kPrevDirection[k][1]);
+  }
+  return result;
+}
+
 }  // namespace
 
-SubdividedSurface subdivide_bezier(const QuadMesh& control, int n) {
+SubdividedSurface subdivide_bezier(const QuadMesh& control, int n, SampleSpread spread) {
   if (n < 1 || n > kMaxSubdivisionDetail) {
     throw EngineError("detail n = " + std::to_string(n) + " is out of range 1.." + std::to_string(kMaxSubdivisionDetail));
   }
@@ -32,6 +85,9 @@ SubdividedSurface subdivide_bezier(const QuadMesh& control, int n) {
   }
   const QuadTopology topology = build_quad_topology(control);
   const std::vector<BezierPatch> patches = build_bezier_patches(control, topology);
+  const std::vector<std::array<double, 8>> warps = spread == SampleSpread::EvenAtExtraordinary
+                                                       ? corner_warps(control, topology, patches)
+                                                       : std::vector<std::array<double, 8>>(static_cast<size_t>(control.quad_count()), std::array<double, 8>{});
 
   // Output vertex ids: used control vertices first, then edges, then face interiors.
   std::vector<int> corner_id(static_cast<size_t>(control.vertex_count()), -1);
@@ -49,7 +105,8 @@ SubdividedSurface subdivide_bezier(const QuadMesh& control, int n) {
   surface.quads.Q.resize(quad_total, 4);
   surface.source_face.assign(static_cast<size_t>(vertex_total), -1);
   surface.source_uv.resize(vertex_total, 2);
-  const auto place = [&surface, &patches](long long id, int q, const Eigen::Vector2d& uv) {
+  const auto place = [&surface, &patches, &warps](long long id, int q, const Eigen::Vector2d& grid_uv) {
+    const Eigen::Vector2d uv = warped(warps[static_cast<size_t>(q)], grid_uv);
     surface.quads.V.row(id) = patch_position(patches[static_cast<size_t>(q)], uv.x(), uv.y()).transpose();
     surface.source_face[static_cast<size_t>(id)] = q;
     surface.source_uv.row(id) = uv.transpose();

@@ -20,16 +20,24 @@ namespace lastcut {
 constexpr int kMaxSubdivisionDetail = 1024;
 constexpr long long kMaxSubdividedQuads = 20'000'000;
 
+// Where the samples sit in each face: Uniform at (i/n, j/n) (at n = 2^k the Catmull-Clark parameters), or
+// EvenAtExtraordinary: near a control vertex of valence != 4 (not on the boundary) the parameters are warped
+// so that the first sample segment along each edge leaving it is about as long as the edge's mean segment.
+// The warp along an edge t -> t + a t (1 - t)^2 (a from the ratio |S'(0)| / chord of that edge, clamped to
+// [-0.3, 0.5], monotone) is blended into the face by (1 - r)^2, r the parameter across; it vanishes on the
+// face edges away from the vertex, so shared edges keep one set of samples.
+enum class SampleSpread { Uniform, EvenAtExtraordinary };
+
 struct SubdividedSurface {
   QuadMesh quads;  // #Q n^2 quads; vertices: used control corners, then n - 1 per edge, (n - 1)^2 per face
-  // Per output vertex: the control face it was evaluated on and its (u, v) there.
+  // Per output vertex: the control face it was evaluated on and its (u, v) there (after the warp).
   std::vector<int> source_face;  // #V
   Eigen::MatrixXd source_uv;     // #V x 2
 };
 
 // Throws EngineError when n is outside 1..kMaxSubdivisionDetail, the output would exceed
 // kMaxSubdividedQuads, or the control mesh is not an oriented 2-manifold of quads.
-SubdividedSurface subdivide_bezier(const QuadMesh& control, int n);
+SubdividedSurface subdivide_bezier(const QuadMesh& control, int n, SampleSpread spread = SampleSpread::Uniform);
 
 // Each quad split into two triangles along its shorter diagonal (same vertices, counter-clockwise).
 TriMesh triangulate_quads(const QuadMesh& quads);

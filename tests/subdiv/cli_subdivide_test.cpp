@@ -61,6 +61,13 @@ TEST_F(CliSubdivide, WritesTheSampledQuadMesh) {
   const SubdividedSurface expected = subdivide_bezier(read_quad_obj(input), 3);
   EXPECT_EQ(written.Q, expected.quads.Q);
   EXPECT_LT((written.V - expected.quads.V).cwiseAbs().maxCoeff(), 1e-6);
+  // --even: the same connectivity, samples moved only near the eight valence-3 corners.
+  ASSERT_EQ(run("'" + input.string() + "' --n 3 --even -o '" + output.string() + "'").exit_code, 0);
+  const QuadMesh even = read_quad_obj(output);
+  EXPECT_EQ(even.Q, expected.quads.Q);
+  const SubdividedSurface expected_even = subdivide_bezier(read_quad_obj(input), 3, SampleSpread::EvenAtExtraordinary);
+  EXPECT_LT((even.V - expected_even.quads.V).cwiseAbs().maxCoeff(), 1e-6);
+  EXPECT_GT((even.V - written.V).cwiseAbs().maxCoeff(), 0.1);
 }
 
 TEST_F(CliSubdivide, BadInputFailsWithOneLine) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <iostream>
 #include <map>
 #include <utility>
 
@@ -48,6 +49,55 @@ TEST(BezierSampling, OddDetailsGiveExactCountsAndAWatertightSurfaceOnThePatches)
     }
     EXPECT_LT(worst_mm, 1e-11) << "n = " << n;
   }
+}
+
+// Mean of l_1 / mean(l) over the control edges' ends at valence-3 vertices: l_1 the sample segment at
+// the vertex, read from the output (corners first, then n - 1 samples per edge in topology order).
+double first_segment_ratio_at_valence_3(const QuadMesh& control, const SubdividedSurface& surface, int n) {
+  const QuadTopology topology = build_quad_topology(control);
+  double sum = 0.0;
+  int count = 0;
+  for (int e = 0; e < topology.edge_count(); ++e) {
+    const int h = topology.edge_half_edge[static_cast<size_t>(e)];
+    const int from = control.Q(h / 4, h % 4), to = control.Q(h / 4, (h + 1) % 4);
+    std::vector<Eigen::Vector3d> points{surface.quads.V.row(from).transpose()};
+    for (int s = 1; s < n; ++s) points.push_back(surface.quads.V.row(control.vertex_count() + e * (n - 1) + s - 1).transpose());
+    points.push_back(surface.quads.V.row(to).transpose());
+    double mean = 0.0;
+    for (int s = 0; s < n; ++s) mean += (points[static_cast<size_t>(s + 1)] - points[static_cast<size_t>(s)]).norm() / n;
+    if (topology.valence(from) == 3) sum += (points[1] - points[0]).norm() / mean, ++count;
+    if (topology.valence(to) == 3) sum += (points[static_cast<size_t>(n)] - points[static_cast<size_t>(n - 1)]).norm() / mean, ++count;
+  }
+  EXPECT_EQ(count, 24);  // 8 corners x 3 edges
+  return sum / count;
+}
+
+TEST(BezierSampling, EvenSpreadLengthensTheCrampedSegmentsAtExtraordinaryVerticesAndStaysWelded) {
+  const QuadMesh control = test::cube_sphere(3, 25.0);
+  const QuadTopology topology = build_quad_topology(control);
+  const std::vector<BezierPatch> patches = build_bezier_patches(control, topology);
+  const int n = 5;
+  const SubdividedSurface uniform = subdivide_bezier(control, n);
+  const SubdividedSurface even = subdivide_bezier(control, n, SampleSpread::EvenAtExtraordinary);
+  EXPECT_EQ(even.quads.Q, uniform.quads.Q);  // same connectivity: still welded and watertight
+  const double uniform_ratio = first_segment_ratio_at_valence_3(control, uniform, n);
+  const double even_ratio = first_segment_ratio_at_valence_3(control, even, n);
+  std::cout << "l_1 / mean at valence 3, n = 5: uniform " << uniform_ratio << ", even " << even_ratio << "\n";
+  EXPECT_LT(uniform_ratio, 0.92);
+  EXPECT_NEAR(even_ratio, 1.0, 0.04);
+  // Every sample on its face's patch at the (warped) parameters it reports, and inside the face.
+  int moved = 0;
+  for (int v = 0; v < even.quads.vertex_count(); ++v) {
+    const Eigen::Vector2d uv = even.source_uv.row(v).transpose();
+    EXPECT_TRUE(uv.minCoeff() >= 0.0 && uv.maxCoeff() <= 1.0);
+    const Eigen::Vector3d on_patch = patch_position(patches[static_cast<size_t>(even.source_face[static_cast<size_t>(v)])], uv.x(), uv.y());
+    EXPECT_LT((even.quads.V.row(v).transpose() - on_patch).norm(), 1e-12);
+    moved += (uv - uniform.source_uv.row(v).transpose()).norm() > 1e-9;
+  }
+  // Only the samples of faces at the eight corners move (3 faces each, (n + 1)^2 - 2n - 1 samples off
+  // the face's far edges, minus the corner itself).
+  EXPECT_GT(moved, 0);
+  EXPECT_LE(moved, 8 * 3 * (n * n - 1));
 }
 
 TEST(BezierSampling, DetailOneReturnsTheLimitCornersOnTheControlConnectivity) {
