@@ -87,5 +87,21 @@ TEST_F(CliSubdivide, BadInputFailsWithOneLine) {
   EXPECT_NE(result.err.find("detail n = 0 is out of range"), std::string::npos) << result.err;
 }
 
+TEST_F(CliSubdivide, GenerateBuildsTheLastThroughTheBezierSurfaceWhenAsked) {
+  const auto file = dir_ / "last.obj";
+  const auto generate = [&] {
+    const std::string command = std::string("'") + LASTCUT_BINARY_DIR + "/bin/lastcut' generate -o '" + file.string() +
+                                "' --triangles 5000 --surface bezier --noise 0.1 >'" + (dir_ / "out.txt").string() + "' 2>&1";
+    return std::system(command.c_str());
+  };
+  ASSERT_EQ(generate(), 0) << slurp(dir_ / "out.txt");
+  const std::string text = slurp(file);
+  int faces = 0;
+  for (size_t at = text.find("\nf "); at != std::string::npos; at = text.find("\nf ", at + 1)) ++faces;
+  EXPECT_NEAR(faces, 5000, 300);
+  ASSERT_EQ(generate(), 0);
+  EXPECT_EQ(slurp(file), text);  // deterministic
+}
+
 }  // namespace
 }  // namespace lastcut
