@@ -56,6 +56,32 @@ QuadMesh cube_sphere(int m, double radius_mm) {
   return mesh;
 }
 
+QuadMesh pentagon_prism(double radius_mm) {
+  // Ids: top ring 0-4, top midpoints 5-9, bottom ring 10-14, bottom midpoints 15-19, top centre 20, bottom centre 21.
+  QuadMesh mesh;
+  mesh.V.resize(22, 3);
+  const double pi = 3.14159265358979323846;
+  for (int i = 0; i < 5; ++i) {
+    for (int level = 0; level < 2; ++level) {
+      const double z = level == 0 ? 0.6 : -0.6;
+      const double corner = 2.0 * pi * i / 5.0, middle = corner + pi / 5.0;
+      mesh.V.row(i + 10 * level) = Eigen::RowVector3d(std::cos(corner), std::sin(corner), z).normalized() * radius_mm;
+      mesh.V.row(5 + i + 10 * level) = Eigen::RowVector3d(std::cos(middle), std::sin(middle), z).normalized() * radius_mm * 1.05;
+    }
+  }
+  mesh.V.row(20) << 0, 0, radius_mm;
+  mesh.V.row(21) << 0, 0, -radius_mm;
+  mesh.Q.resize(20, 4);
+  for (int i = 0; i < 5; ++i) {
+    const int next = (i + 1) % 5, before = (i + 4) % 5;
+    mesh.Q.row(4 * i) << 20, 5 + before, i, 5 + i;                       // top cap, counter-clockwise from above
+    mesh.Q.row(4 * i + 1) << 21, 15 + i, 10 + i, 15 + before;             // bottom cap, reversed
+    mesh.Q.row(4 * i + 2) << 10 + i, 15 + i, 5 + i, i;                    // side, seen from outside
+    mesh.Q.row(4 * i + 3) << 15 + i, 10 + next, next, 5 + i;
+  }
+  return mesh;
+}
+
 QuadMesh height_grid(int nx, int ny, uint64_t seed) {
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> coefficient(-1.0, 1.0);
