@@ -4,6 +4,7 @@
 #include <cmath>
 #include <random>
 
+#include "engine/lastgen/last_control_mesh.hpp"
 #include "engine/lastgen/last_shape.hpp"
 #include "engine/lastgen/scan_artifacts.hpp"
 #include "engine/mesh/isotropic_remesh.hpp"
@@ -68,7 +69,8 @@ GeneratedLast generate_last(const LastParams& params) {
   validate(params);
   const LastShape shape(params);  // medial side +Y
   GeneratedLast result;
-  result.mesh = remeshed_surface(shape, params.length_mm, params.target_triangles);
+  result.mesh = params.surface == LastSurface::Bezier ? bezier_last_surface(shape, params)
+                                                      : remeshed_surface(shape, params.length_mm, params.target_triangles);
   result.canonical_to_scan = Eigen::Affine3d::Identity();
 
   // Separate streams, so that asking for holes does not move the noise and vice versa.

@@ -11,6 +11,10 @@
 
 namespace lastcut {
 
+// How the surface is made: marching tetrahedra + isotropic remeshing (exact triangle count), or the
+// bicubic Bezier surface of a quad control mesh (engine/lastgen/last_control_mesh.hpp; count within a few %).
+enum class LastSurface { Remeshed, Bezier };
+
 struct LastParams {
   double length_mm = 270;       // heel back to toe tip
   double ball_width_mm = 95;    // widest, at the ball (~ 64-72% of length from heel)
@@ -26,6 +30,7 @@ struct LastParams {
   int holes = 0;                // small scan holes (a few mm across), never on the top cut
   bool random_pose = false;     // arbitrary rotation + translation of the whole scan
   uint64_t seed = 1;
+  LastSurface surface = LastSurface::Remeshed;
 
   // Plausible proportions for a medium-width everyday last of EU (Paris point) size 35..47:
   // length = size x 6.667 mm, widths and heights proportional. Throws EngineError outside 35..47.

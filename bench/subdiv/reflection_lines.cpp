@@ -1,0 +1,140 @@
+// Reflection lines on the Bezier surface of a generated last's quad control mesh, sampled at n = 3
+// and at the Catmull-Clark-like n = 4, side by side: a small software rasteriser (z-buffer,
+// per-pixel interpolated exact surface normals du x dv of the patches) writes a binary PPM. The
+// stripes are the reflected view vector against an environment of parallel bands; they bend smoothly
+// where the surface is C2 and kink where only the position (C0) is shared. Red dots mark the
+// extraordinary (valence-3) control vertices.
+//   build/bin/render_reflection_lines OUT.ppm [control_quads] [view: side|toe]
+//   convert OUT.ppm docs/pictures/reflection-lines.png
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "engine/lastgen/last_control_mesh.hpp"
+#include "engine/subdiv/sample_surface.hpp"
+
+namespace {
+
+using namespace lastcut;
+
+constexpr int kPanelWidth = 640, kPanelHeight = 420;
+
+struct Camera {
+  Eigen::Vector3d forward, right, up;
+};
+
+struct Image {
+  int width, height;
+  std::vector<unsigned char> rgb;
+  std::vector<double> depth;
+  Image(int w, int h) : width(w), height(h), rgb(static_cast<size_t>(3 * w * h), 255), depth(static_cast<size_t>(w * h), std::numeric_limits<double>::infinity()) {}
+};
+
+void render_panel(Image& image, int x0, const QuadMesh& control, int n, const Camera& camera, const Eigen::Vector3d& stripe_axis) {
+  const QuadTopology topology = build_quad_topology(control);
+  const std::vector<BezierPatch> patches = build_bezier_patches(control, topology);
+  const SubdividedSurface surface = subdivide_bezier(control, n);
+  const TriMesh mesh = triangulate_quads(surface.quads);
+  const int vertices = mesh.vertex_count();
+  Eigen::MatrixXd screen(vertices, 3), normal(vertices, 3);
+  for (int v = 0; v < vertices; ++v) {
+    const Eigen::Vector3d p = mesh.V.row(v).transpose();
+    screen.row(v) << p.dot(camera.right), p.dot(camera.up), p.dot(camera.forward);
+    const PatchPoint point = evaluate_patch(patches[static_cast<size_t>(surface.source_face[static_cast<size_t>(v)])],
+                                            surface.source_uv(v, 0), surface.source_uv(v, 1));
+    normal.row(v) = point.du.cross(point.dv).normalized().transpose();
+  }
+  const Eigen::Vector3d low = screen.colwise().minCoeff(), high = screen.colwise().maxCoeff();
+  const double scale = 0.92 * std::min(kPanelWidth / (high.x() - low.x()), kPanelHeight / (high.y() - low.y()));
+  const Eigen::Vector2d middle = 0.5 * (low.head<2>() + high.head<2>());
+  const auto to_pixel = [&](const Eigen::Vector3d& s) {
+    return Eigen::Vector3d(x0 + kPanelWidth / 2.0 + scale * (s.x() - middle.x()), kPanelHeight / 2.0 - scale * (s.y() - middle.y()), s.z());
+  };
+  for (int f = 0; f < mesh.triangle_count(); ++f) {
+    Eigen::Vector3d c[3];
+    for (int k = 0; k < 3; ++k) c[k] = to_pixel(screen.row(mesh.F(f, k)).transpose());
+    const double area = (c[1].x() - c[0].x()) * (c[2].y() - c[0].y()) - (c[2].x() - c[0].x()) * (c[1].y() - c[0].y());
+    if (std::abs(area) < 1e-12) continue;
+    const int px0 = std::max(x0, static_cast<int>(std::floor(std::min({c[0].x(), c[1].x(), c[2].x()}))));
+    const int px1 = std::min(x0 + kPanelWidth - 1, static_cast<int>(std::ceil(std::max({c[0].x(), c[1].x(), c[2].x()}))));
+    const int py0 = std::max(0, static_cast<int>(std::floor(std::min({c[0].y(), c[1].y(), c[2].y()}))));
+    const int py1 = std::min(kPanelHeight - 1, static_cast<int>(std::ceil(std::max({c[0].y(), c[1].y(), c[2].y()}))));
+    for (int py = py0; py <= py1; ++py) {
+      for (int px = px0; px <= px1; ++px) {
+        const double x = px + 0.5, y = py + 0.5;
+        double w[3];
+        for (int k = 0; k < 3; ++k) {
+          const Eigen::Vector3d& a = c[(k + 1) % 3];
+          const Eigen::Vector3d& b = c[(k + 2) % 3];
+          w[k] = ((b.x() - a.x()) * (y - a.y()) - (x - a.x()) * (b.y() - a.y())) / area;
+        }
+        if (w[0] < 0 || w[1] < 0 || w[2] < 0) continue;
+        const double z = w[0] * c[0].z() + w[1] * c[1].z() + w[2] * c[2].z();
+        const auto pixel = static_cast<size_t>(py * image.width + px);
+        if (z >= image.depth[pixel]) continue;
+        image.depth[pixel] = z;
+        Eigen::Vector3d nrm = Eigen::Vector3d::Zero();
+        for (int k = 0; k < 3; ++k) nrm += w[k] * normal.row(mesh.F(f, k)).transpose();
+        nrm.normalize();
+        const Eigen::Vector3d reflected = camera.forward - 2.0 * camera.forward.dot(nrm) * nrm;
+        const double elevation = std::asin(std::clamp(reflected.dot(stripe_axis), -1.0, 1.0));
+        const bool light = static_cast<int>(std::floor(elevation / (std::numbers::pi / 18.0) + 100.0)) % 2 == 0;
+        const double shade = 0.55 + 0.45 * std::abs(nrm.dot(camera.forward));
+        const double grey = (light ? 245.0 : 35.0) * shade;
+        for (int ch = 0; ch < 3; ++ch) image.rgb[3 * pixel + static_cast<size_t>(ch)] = static_cast<unsigned char>(grey);
+      }
+    }
+  }
+  // Extraordinary control vertices (their limit positions) as red dots where visible.
+  const SubdividedSurface corners = subdivide_bezier(control, 1);
+  for (int v = 0; v < control.vertex_count(); ++v) {
+    if (topology.valence(v) == 4) continue;
+    const Eigen::Vector3d p = corners.quads.V.row(v).transpose();
+    const Eigen::Vector3d s = to_pixel(Eigen::Vector3d(p.dot(camera.right), p.dot(camera.up), p.dot(camera.forward)));
+    const int cx = static_cast<int>(s.x()), cy = static_cast<int>(s.y());
+    if (cx < x0 || cx >= x0 + kPanelWidth || cy < 0 || cy >= kPanelHeight) continue;
+    if (s.z() > image.depth[static_cast<size_t>(cy * image.width + cx)] + 1.0) continue;
+    for (int dy = -3; dy <= 3; ++dy) {
+      for (int dx = -3; dx <= 3; ++dx) {
+        const int x = cx + dx, y = cy + dy;
+        if (dx * dx + dy * dy > 10 || x < x0 || x >= x0 + kPanelWidth || y < 0 || y >= kPanelHeight) continue;
+        const auto pixel = static_cast<size_t>(y * image.width + x);
+        image.rgb[3 * pixel] = 220, image.rgb[3 * pixel + 1] = 20, image.rgb[3 * pixel + 2] = 20;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: render_reflection_lines OUT.ppm [control_quads] [side|toe]\n");
+    return 2;
+  }
+  const int control_quads = argc > 2 ? std::stoi(argv[2]) : 600;
+  const std::string view = argc > 3 ? argv[3] : "side";
+  const LastParams params = LastParams::for_eu_size(42, FootSide::Right);
+  const LastShape shape(params);
+  const QuadMesh control = last_control_mesh(shape, params, control_quads);
+  Camera camera;
+  // Looking down onto the lateral side (or onto the toe), slightly from the front.
+  camera.forward = view == "toe" ? Eigen::Vector3d(-0.75, 0.35, -0.56).normalized() : Eigen::Vector3d(-0.25, 0.80, -0.55).normalized();
+  camera.right = camera.forward.cross(Eigen::Vector3d::UnitZ()).normalized();
+  camera.up = camera.right.cross(camera.forward);
+  const Eigen::Vector3d stripe_axis = Eigen::Vector3d(0.3, 0.2, 1.0).normalized();
+  Image image(2 * kPanelWidth, kPanelHeight);
+  render_panel(image, 0, control, 3, camera, stripe_axis);
+  render_panel(image, kPanelWidth, control, 4, camera, stripe_axis);
+  std::ofstream out(argv[1], std::ios::binary);
+  out << "P6\n" << image.width << " " << image.height << "\n255\n";
+  out.write(reinterpret_cast<const char*>(image.rgb.data()), static_cast<std::streamsize>(image.rgb.size()));
+  std::printf("wrote %s: %d control quads, n = 3 (left) and n = 4 (right)\n", argv[1], control.quad_count());
+  return out ? 0 : 1;
+}

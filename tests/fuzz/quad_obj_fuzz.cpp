@@ -1,0 +1,22 @@
+// Fuzz target: the quad OBJ reader of `lastcut subdivide` (engine/subdiv/quad_obj.hpp), then the
+// manifold checks and the Bezier sampling at n = 2 on what it read. The control mesh comes from
+// people and other programs: outside input. Only EngineError (the one-line refusal) is caught; see
+// mesh_fuzz.hpp for why anything else must be reported as a crash.
+#include <cstddef>
+#include <cstdint>
+
+#include "engine/core/engine_error.hpp"
+#include "engine/subdiv/quad_obj.hpp"
+#include "engine/subdiv/sample_surface.hpp"
+#include "fuzz_input_file.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  static lastcut::fuzz::FuzzInputFile file("quads.obj");
+  try {
+    const lastcut::QuadMesh control = lastcut::read_quad_obj(file.write(data, size));
+    lastcut::subdivide_bezier(control, 2, lastcut::SampleSpread::EvenAtExtraordinary);
+  } catch (const lastcut::EngineError&) {
+    // a refusal with one line for the operator
+  }
+  return 0;
+}
