@@ -12,5 +12,6 @@ void add_toolpath_command(CLI::App& app, int& exit_code);  // toolpath_command.c
 void add_send_command(CLI::App& app, int& exit_code);      // send_command.cpp: cut file -> cutter; also `ports`
 void add_spool_commands(CLI::App& app, int& exit_code);    // spool_command.cpp: `status`, `requeue`
 void add_generate_command(CLI::App& app, int& exit_code);  // generate_command.cpp: parametric sample lasts
+void add_compare_command(CLI::App& app, int& exit_code);   // compare_command.cpp: mold vs reference pattern
 
 }  // namespace lastcut::cli
