@@ -146,7 +146,7 @@ void parse_path(const std::filesystem::path& path, const std::string& d, double 
     }
     const bool relative = std::islower(static_cast<unsigned char>(command));
     const Point2 base = relative ? pen : Point2::Zero();
-    const auto point = [&] {
+    const auto point = [&]() -> Point2 {
       const double x = scan.number();
       return Point2(x, scan.number()) + base;
     };
