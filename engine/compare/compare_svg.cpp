@@ -61,7 +61,11 @@ std::string comparison_svg(const Comparison& comparison, double tolerance_mm) {
   for (const auto& p : comparison.reference_moved.outline.points) svg += frame.at(p) + " ";
   svg += "\"/>\n";
 
-  // The mold's edge: one run of segments per colour bin.
+  // The mold's edge: a dark underlay (the light middle of the scale must show on white), then
+  // one run of segments per colour bin.
+  svg += "<polygon id=\"mold\" fill=\"none\" stroke=\"#222222\" stroke-width=\"1.1\" points=\"";
+  for (const auto& p : comparison.mold.outline.points) svg += frame.at(p) + " ";
+  svg += "\"/>\n";
   const double limit = scale_limit_mm(comparison, tolerance_mm);
   const auto& samples = comparison.deviation.along_mold;
   svg += "<g id=\"mold-edge\" fill=\"none\" stroke-width=\"0.8\" stroke-linecap=\"round\">\n";
