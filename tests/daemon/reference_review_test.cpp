@@ -119,7 +119,8 @@ TEST(DaemonReferenceReview, MissingPatternFailsAtTheClaim) {
   ASSERT_TRUE(wait_until([&] { return rig.jobs("failed").size() == 1; }, 60)) << read_text(rig.daemon_log());
   EXPECT_EQ(rig.stop_daemon(), 0);
   rig.stop_cutters();
-  const auto& [id, state] = *rig.jobs("failed").begin();
+  const auto failed = rig.jobs("failed");
+  const auto& [id, state] = *failed.begin();
   EXPECT_TRUE(state.value("reason", "").starts_with("reference pattern nowhere.svg for the lateral mold is not in "))
       << state.value("reason", "");
   EXPECT_TRUE(std::filesystem::exists(rig.spool() / "failed" / id / "lost.stl"));
