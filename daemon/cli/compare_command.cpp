@@ -2,6 +2,7 @@
 // (engine/compare; the guide in docs/compare.md). Exit 0 when every corner margin is within
 // --tolerance, 3 when one is not, 1 when a file cannot be read or written, 2 for bad arguments.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -31,6 +32,9 @@ struct CompareArguments {
   bool no_mirror = false;
   double tolerance_mm = 2.0;
 };
+
+// A printed 3-decimal value without "-0.000".
+double shown(double value) { return std::abs(value) < 5e-4 ? 0.0 : value; }
 
 void print_error(std::string reason) {
   for (char& c : reason)
@@ -83,8 +87,8 @@ int run_compare(const CompareArguments& arguments) {
     std::printf("overlap    %7.2f %%   (A %.1f mm2 reference, B %.1f mm2 mold, C %.1f mm2 common)\n",
                 100.0 * a.overlap_fraction(), a.reference_area_mm2, a.mold_area_mm2, a.intersection_area_mm2);
     std::printf("motion     %s, rotated %.3f deg, moved (%.3f, %.3f) mm\n", a.motion.mirrored ? "mirrored" : "not mirrored",
-                a.motion.rotation_rad * 180.0 / 3.14159265358979323846, a.motion.translation_mm.x(),
-                a.motion.translation_mm.y());
+                shown(a.motion.rotation_rad * 180.0 / 3.14159265358979323846), shown(a.motion.translation_mm.x()),
+                shown(a.motion.translation_mm.y()));
     if (comparison.corners.empty()) std::printf("corners    none: the mold has no notch marks\n");
     for (const auto& corner : comparison.corners)
       std::printf("corner     %-10s %6.2f mm  %s\n", corner.name.c_str(), corner.margin_mm,
