@@ -2,12 +2,12 @@
 // compared with it (engine/compare), the comparison goes into the job's molds folder and report,
 // and a corner beyond the configured tolerance holds the job for an operator.
 #include <cstdio>
+#include <exception>
 #include <string>
 
 #include "daemon/pipeline/engine_steps.hpp"
 #include "engine/compare/compare_report.hpp"
 #include "engine/compare/reference_outline.hpp"
-#include "engine/core/engine_error.hpp"
 #include "engine/mold/mold_dxf.hpp"
 
 namespace lastcut::daemon {
@@ -40,7 +40,8 @@ Result<ReferenceCheck> check_against_references(const std::filesystem::path& job
         check.hold_reason = reason;
       }
     }
-  } catch (const EngineError& error) {
+  } catch (const std::exception& error) {
+    // EngineError: a refused pattern; anything else (memory, Clipper) must not stop lastcutd either.
     return Status::failure(std::string("reference pattern: ") + error.what());
   }
   return check;

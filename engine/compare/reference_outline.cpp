@@ -23,6 +23,11 @@ Polygon2 largest_closed_outline(const std::filesystem::path& path, std::vector<P
     throw EngineError(reason);
   }
   Polygon2 outline = std::move(*best);
+  // Clipper's integers of 1e-5 mm reach far beyond this; a pattern this large has wrong units.
+  constexpr double kLargestCoordinate_mm = 1e6;
+  for (const auto& p : outline.points)
+    if (!(std::abs(p.x()) <= kLargestCoordinate_mm && std::abs(p.y()) <= kLargestCoordinate_mm))
+      throw EngineError(path.string() + ": coordinates beyond 1 km; check the drawing's units");
   make_counter_clockwise(outline);
   return outline;
 }

@@ -174,6 +174,10 @@ OverlapAlignment align_for_overlap(const Polygon2& reference, const Polygon2& mo
   if (reference.points.size() < 3 || !(result.reference_area_mm2 > 0.0))
     throw EngineError("the reference pattern has no area");
   if (mold.points.size() < 3 || !(result.mold_area_mm2 > 0.0)) throw EngineError("the mold has no area");
+  for (const auto* outline : {&reference, &mold})
+    for (const auto& p : outline->points)
+      if (!(std::abs(p.x()) <= 1e6 && std::abs(p.y()) <= 1e6))
+        throw EngineError("an outline has coordinates beyond 1 km; check its units");
 
   OverlapSearch search(reference, mold);
   const Point2 mold_axis = principal_axis(mold, area_centroid(mold));

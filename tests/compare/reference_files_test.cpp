@@ -147,6 +147,8 @@ TEST_F(ReferenceFiles, BadFilesAreRefusedWithOneLine) {
                  ": no closed outline (1 open, close the outline in the drawing program)");
   expect_refusal(write("feet.dxf", dxf("9\n$INSUNITS\n70\n2\n", lwpolyline({{0, 0}, {1, 0}, {1, 1}}, true))),
                  ": drawing units $INSUNITS 2 are not supported; save the pattern in mm, cm, m or inches");
+  expect_refusal(write("huge.dxf", dxf("9\n$INSUNITS\n70\n6\n", lwpolyline({{0, 0}, {2e3, 0}, {2e3, 2e3}}, true))),
+                 ": coordinates beyond 1 km; check the drawing's units");
   expect_refusal(write("text.dxf", "this is not\na drawing\n"), " is not a DXF file: line 1 is not a group code");
   expect_refusal(write("nothing.dxf", dxf("", "")), ": no closed outline");
   expect_refusal(write("arc.svg", "<svg width=\"10mm\" viewBox=\"0 0 10 10\"><path d=\"M0 0 A 5 5 0 0 1 10 0 Z\"/></svg>"),
