@@ -36,7 +36,7 @@ class CliCompare : public ::testing::Test {
   static void SetUpTestSuite() {
     dir_ = fs::temp_directory_path() / ("lastcut-cli-compare-" + std::to_string(::getpid()));
     fs::create_directories(dir_);
-    ASSERT_EQ(run("generate -o '" + (dir_ / "last.stl").string() + "' --size 40 --side left").exit_code, 0);
+    ASSERT_EQ(run("generate -o '" + (dir_ / "last.stl").string() + "' --size 40 --side left --triangles 20000").exit_code, 0);
     ASSERT_EQ(run("flatten '" + (dir_ / "last.stl").string() + "' -o '" + (dir_ / "flat").string() + "'").exit_code, 0);
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
