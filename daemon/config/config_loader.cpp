@@ -304,6 +304,14 @@ void read_cutters(TableReader& root, const std::filesystem::path& base, DaemonCo
   if (config.cutters.empty()) errors.push_back("cutters: at least one cutter is needed");
 }
 
+void read_review(TableReader& root, DaemonConfig& config, std::vector<std::string>& errors) {
+  const toml::table* table = root.subtable("review", false);
+  if (!table) return;
+  TableReader review(*table, "review", errors);
+  review.number("corner_tolerance_mm", config.review.corner_tolerance_mm, 0, 100);
+  review.reject_unknown();
+}
+
 void read_log(TableReader& root, DaemonConfig& config, std::vector<std::string>& errors) {
   const toml::table* table = root.subtable("log", false);
   if (!table) return;
@@ -370,6 +378,7 @@ ConfigLoadResult load_daemon_config(const std::filesystem::path& file) {
     read_batch(reader, config, errors);
     read_materials(reader, config, errors);
     read_cutters(reader, base, config, errors);
+    read_review(reader, config, errors);
     read_log(reader, config, errors);
     reader.reject_unknown();
   }

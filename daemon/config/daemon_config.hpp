@@ -63,6 +63,12 @@ struct CutterSection {
   double retry_interval_s = 30;  // cutter unreachable: wait this long before trying again
 };
 
+// Jobs whose sidecar names reference patterns: each mold is compared with its pattern
+// (docs/compare.md); a corner farther off than this holds the job for review instead of cutting it.
+struct ReviewConfig {
+  double corner_tolerance_mm = 2.0;  // the thesis's permissible error at the corners
+};
+
 struct LogConfig {
   std::string level = "info";  // trace | debug | info | warn | error
 };
@@ -74,6 +80,7 @@ struct DaemonConfig {
   BatchConfig batch;
   std::map<std::string, MaterialConfig> materials;
   std::map<std::string, CutterSection> cutters;
+  ReviewConfig review;
   LogConfig log;
 };
 

@@ -6,8 +6,27 @@
 #include "daemon/pipeline/job_outcomes.hpp"
 #include "daemon/pipeline/pipeline.hpp"
 #include "daemon/spool/sha256.hpp"
+#include "engine/core/durable_file.hpp"
 
 namespace lastcut::daemon {
+namespace {
+
+// Reference patterns travel with the job as copies: the watch folder may keep one pattern for
+// many jobs, and nothing of the job may depend on the watch folder once it is claimed.
+std::string copy_reference_patterns(const std::filesystem::path& sidecar_dir, const std::filesystem::path& job_dir,
+                                    const JobTicket& ticket) {
+  for (const auto& [mold, file] : ticket.references) {
+    const std::filesystem::path from = sidecar_dir / file;
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(from, error))
+      return "reference pattern " + file + " for the " + mold + " mold is not in " + sidecar_dir.string();
+    if (Status copied = copy_file_durably(from, job_dir / reference_copy_name(mold, file)); !copied)
+      return "reference pattern " + file + " cannot be copied: " + copied.error();
+  }
+  return {};
+}
+
+}  // namespace
 
 void Pipeline::index_hashes() {
   for (JobFolder folder : {JobFolder::Done, JobFolder::Failed, JobFolder::Held, JobFolder::Work}) {
@@ -63,6 +82,9 @@ void Pipeline::take(const ReadyScan& ready) {
   spdlog::info("{}: taken from the watch folder{} (material {}, cutter {})", claimed->label(),
                ready.sidecar.empty() ? "" : " with " + ready.sidecar.filename().string(), claimed->ticket.material,
                claimed->ticket.cutter);
+  if (problem.empty())
+    problem = copy_reference_patterns(ready.sidecar.parent_path(), spool_->job_dir(JobFolder::Work, job_id),
+                                      claimed->ticket);
   if (!problem.empty()) {
     fail_job(*spool_, *claimed, problem);
     return;

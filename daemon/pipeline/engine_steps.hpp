@@ -41,6 +41,18 @@ struct MoldsMade {
 Result<MoldsMade> compute_molds(const std::filesystem::path& scan, const std::filesystem::path& job_dir,
                                 const JobTicket& ticket, double default_allowance_mm, double max_hole_across_mm);
 
+struct ReferenceCheck {
+  nlohmann::json comparisons = nlohmann::json::object();  // mold name -> compare JSON (engine/compare/compare_report.hpp)
+  std::string hold_reason;  // "" when every corner is within tolerance (or no reference is named)
+};
+
+// Compares each mold in job_dir/molds/ with the reference pattern the ticket names for it (the
+// claim's copy in job_dir, reference_copy_name) and writes molds/compare-<mold>.json and .svg.
+// The hold reason names the worst corner beyond corner_tolerance_mm. An unreadable pattern or a
+// pattern for a mold the scan did not give is a failure of one line.
+Result<ReferenceCheck> check_against_references(const std::filesystem::path& job_dir, const JobTicket& ticket,
+                                                double corner_tolerance_mm);
+
 struct BatchJobInput {
   std::string job_id;
   std::filesystem::path job_dir;  // holds items.json

@@ -57,16 +57,23 @@ void Pipeline::compute_job(const std::string& job_id, const std::string& worker)
     fail_job(*spool_, *state, outcome.error());
     return;
   }
+  const Result<ReferenceCheck> checked =
+      check_against_references(job_dir, state->ticket, settings->review.corner_tolerance_mm);
+  if (!checked) {
+    fail_job(*spool_, *state, checked.error());
+    return;
+  }
   state->piece_count = outcome->piece_count * state->ticket.quantity;
-  const Status reported = update_job_report(*spool_, JobFolder::Work, job_id,
-                    {{"job", job_id},
-                     {"scan", state->scan_name},
-                     {"sha256", state->sha256},
-                     {"ticket", ticket_to_json(state->ticket)},
-                     {"molds", outcome->piece_count},
-                     {"pieces", state->piece_count},
-                     {"measures", outcome->measures},
-                     {"timings_s", {{"molds", took_s}}}});
+  nlohmann::json report{{"job", job_id},
+                        {"scan", state->scan_name},
+                        {"sha256", state->sha256},
+                        {"ticket", ticket_to_json(state->ticket)},
+                        {"molds", outcome->piece_count},
+                        {"pieces", state->piece_count},
+                        {"measures", outcome->measures},
+                        {"timings_s", {{"molds", took_s}}}};
+  if (!checked->comparisons.empty()) report["compare"] = checked->comparisons;
+  const Status reported = update_job_report(*spool_, JobFolder::Work, job_id, report);
   if (!reported) {
     fail_job(*spool_, *state, "molds made but " + reported.error());
     return;
@@ -79,6 +86,11 @@ void Pipeline::compute_job(const std::string& job_id, const std::string& worker)
     return;
   }
   spdlog::info("{}: {} molds ready in {:.1f} s", state->label(), outcome->piece_count, took_s);
+  if (!checked->hold_reason.empty()) {
+    // Computed first: `lastcut requeue` of the held job then nests it as it is (the operator's approval).
+    hold_job(*spool_, *state, checked->hold_reason);
+    return;
+  }
   std::lock_guard lock(computed_mutex_);
   computed_.push_back(job_id);
 }

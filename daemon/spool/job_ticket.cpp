@@ -35,7 +35,8 @@ Result<JobTicket> check_ticket(const nlohmann::json& json) {
   JobTicket ticket;
   if (!json.is_object()) return Status::failure("the sidecar must be a table of keys");
   const std::set<std::string> known{"order", "customer", "size", "side", "quantity", "material",
-                                    "cutter", "allowance_mm", "priority", "split"};
+                                    "cutter", "allowance_mm", "priority", "split", "reference_medial",
+                                    "reference_lateral", "reference_patch"};
   for (auto it = json.begin(); it != json.end(); ++it) {
     if (!known.count(it.key())) return Status::failure("unknown key \"" + it.key() + "\"");
   }
@@ -70,6 +71,13 @@ Result<JobTicket> check_ticket(const nlohmann::json& json) {
     const auto& node = json.at("priority");
     if (!node.is_number_integer()) return Status::failure("priority must be a whole number");
     ticket.priority = node.get<int>();
+  }
+  for (const char* mold : {"medial", "lateral", "patch"}) {
+    const std::string key = std::string("reference_") + mold;
+    if (!json.contains(key)) continue;
+    const auto& node = json.at(key);
+    if (!node.is_string() || node.get<std::string>().empty()) return Status::failure(key + " must be a file name");
+    ticket.references[mold] = node.get<std::string>();
   }
   if (json.contains("allowance_mm")) {
     const auto& node = json.at("allowance_mm");
@@ -126,6 +134,7 @@ nlohmann::json ticket_to_json(const JobTicket& ticket) {
                       {"cutter", ticket.cutter},     {"priority", ticket.priority}};
   if (ticket.allowance_mm) json["allowance_mm"] = *ticket.allowance_mm;
   if (!ticket.split.empty()) json["split"] = ticket.split;
+  for (const auto& [mold, file] : ticket.references) json["reference_" + mold] = file;
   return json;
 }
 
@@ -141,7 +150,14 @@ JobTicket ticket_from_json(const nlohmann::json& json) {
   ticket.priority = json.value("priority", 0);
   ticket.split = json.value("split", "");
   if (json.contains("allowance_mm")) ticket.allowance_mm = json.at("allowance_mm").get<double>();
+  for (const char* mold : {"medial", "lateral", "patch"})
+    if (json.contains(std::string("reference_") + mold))
+      ticket.references[mold] = json.at(std::string("reference_") + mold).get<std::string>();
   return ticket;
+}
+
+std::string reference_copy_name(const std::string& mold, const std::string& reference_file) {
+  return "reference-" + mold + std::filesystem::path(reference_file).extension().string();
 }
 
 }  // namespace lastcut::daemon

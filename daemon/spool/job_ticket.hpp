@@ -1,9 +1,11 @@
 #pragma once
 // JobTicket: the optional sidecar next to a scan (NAME.job.toml or NAME.job.json) saying what
 // the workshop wants cut from it. Keys (all optional): order, customer, size, side
-// (left | right | pair), quantity, material, cutter, allowance_mm, priority, split (auto | expert).
-// Unknown keys are errors.
+// (left | right | pair), quantity, material, cutter, allowance_mm, priority, split (auto | expert),
+// reference_medial, reference_lateral, reference_patch (reference pattern files, DXF or SVG, relative
+// to the sidecar's folder; see docs/compare.md). Unknown keys are errors.
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -24,7 +26,13 @@ struct JobTicket {
   std::optional<double> allowance_mm;
   int priority = 0;      // higher is cut first within a batch
   std::string split;     // lengthwise cut: "" or auto (thesis 3.1 plane), expert (heel middle to second toe)
+  // Reference pattern per mold name (medial, lateral, patch) as written in the sidecar; the claim
+  // copies each into the job folder as reference_copy_name(mold, file).
+  std::map<std::string, std::string> references;
 };
+
+// The name of a reference pattern's copy in the job folder: "reference-<mold><extension>".
+std::string reference_copy_name(const std::string& mold, const std::string& reference_file);
 
 // The sidecar's ticket, or one line saying why it is unusable.
 Result<JobTicket> read_job_ticket(const std::filesystem::path& sidecar);

@@ -170,6 +170,20 @@ TEST(DaemonConfig, GrblStreamingKeysReachTheDriver) {
       << result.error;
 }
 
+TEST(DaemonConfig, ReviewToleranceIsReadCheckedAndDefaultsToTwoMillimetres) {
+  EXPECT_EQ(load_daemon_config(kSource / "config/lastcut.toml").config->review.corner_tolerance_mm, 2.0);
+  auto result = load_text(minimal("", "[review]\ncorner_tolerance_mm = 0.5\n"));
+  ASSERT_TRUE(result.config) << result.error;
+  EXPECT_EQ(result.config->review.corner_tolerance_mm, 0.5);
+  EXPECT_EQ(load_text(minimal()).config->review.corner_tolerance_mm, 2.0);
+  result = load_text(minimal("", "[review]\ncorner_tolerance = 1.0\n"));
+  ASSERT_FALSE(result.config);
+  EXPECT_NE(result.error.find("review.corner_tolerance (line 2): unknown key"), std::string::npos) << result.error;
+  result = load_text(minimal("", "[review]\ncorner_tolerance_mm = -1\n"));
+  ASSERT_FALSE(result.config);
+  EXPECT_NE(result.error.find("review.corner_tolerance_mm"), std::string::npos) << result.error;
+}
+
 TEST(DaemonConfig, ShippedExampleListsEveryCutterKey) {
   // config/lastcut.toml documents every key; the option table is what the reader accepts.
   const std::string text = testing::read_text(kSource / "config/lastcut.toml");

@@ -138,6 +138,19 @@ TEST(JobTicket, TomlAndJsonSidecarsAreReadAlike) {
   }
 }
 
+TEST(JobTicket, ReferencePatternsSurviveTheStateJson) {
+  const auto folder = testing::scratch_folder("ticket-references");
+  write_text(folder / "r.job.toml", "reference_medial = \"patterns/4712-m.dxf\"\nreference_lateral = \"4712-l.svg\"\n");
+  const auto result = read_job_ticket(folder / "r.job.toml");
+  ASSERT_TRUE(result) << result.error();
+  EXPECT_EQ(result->references.at("medial"), "patterns/4712-m.dxf");
+  EXPECT_EQ(result->references.at("lateral"), "4712-l.svg");
+  EXPECT_EQ(result->references.count("patch"), 0u);
+  const JobTicket again = ticket_from_json(ticket_to_json(*result));
+  EXPECT_EQ(again.references, result->references);
+  EXPECT_EQ(reference_copy_name("medial", "patterns/4712-m.dxf"), "reference-medial.dxf");
+}
+
 TEST(JobTicket, BadSidecarsAreRefusedWithTheReason) {
   const auto folder = testing::scratch_folder("badticket");
   const std::vector<std::pair<std::string, std::string>> cases = {
@@ -147,6 +160,8 @@ TEST(JobTicket, BadSidecarsAreRefusedWithTheReason) {
       {"allowance_mm = \"wide\"\n", "allowance_mm must be"},
       {"order = \n", "line 1"},
       {"split = \"sideways\"\n", "split \"sideways\" is not one of auto, expert"},
+      {"reference_medial = 3\n", "reference_medial must be a file name"},
+      {"reference_left = \"p.dxf\"\n", "unknown key \"reference_left\""},
   };
   for (const auto& [text, expected] : cases) {
     write_text(folder / "x.job.toml", text);

@@ -1,0 +1,51 @@
+#include "engine/compare/reference_outline.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string>
+
+#include "engine/core/engine_error.hpp"
+
+namespace lastcut {
+
+Polygon2 largest_closed_outline(const std::filesystem::path& path, std::vector<Polygon2> rings, int open_count) {
+  Polygon2* best = nullptr;
+  double best_area = 0.0;
+  for (auto& ring : rings) {
+    if (ring.points.size() < 3) continue;
+    const double area = std::abs(signed_area(ring));
+    if (area > best_area) best_area = area, best = &ring;
+  }
+  if (best == nullptr) {
+    std::string reason = path.string() + ": no closed outline";
+    if (open_count > 0) reason += " (" + std::to_string(open_count) + " open, close the outline in the drawing program)";
+    throw EngineError(reason);
+  }
+  Polygon2 outline = std::move(*best);
+  // Clipper's integers of 1e-5 mm reach far beyond this; a pattern this large has wrong units.
+  constexpr double kLargestCoordinate_mm = 1e6;
+  for (const auto& p : outline.points)
+    if (!(std::abs(p.x()) <= kLargestCoordinate_mm && std::abs(p.y()) <= kLargestCoordinate_mm))
+      throw EngineError(path.string() + ": coordinates beyond 1 km; check the drawing's units");
+  make_counter_clockwise(outline);
+  return outline;
+}
+
+Mold read_reference_outline(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (!std::filesystem::is_regular_file(path)) throw EngineError("cannot read pattern file " + path.string());
+  if (std::filesystem::file_size(path) == 0) throw EngineError(path.string() + ": the file is empty");
+  if (extension == ".dxf") return read_dxf_outline(path);
+  if (extension == ".svg") {
+    Mold mold;
+    mold.name = path.stem().string();
+    mold.outline = read_svg_outline(path);
+    return mold;
+  }
+  throw EngineError(path.string() + ": not a pattern file; expected a .dxf or .svg outline");
+}
+
+}  // namespace lastcut
