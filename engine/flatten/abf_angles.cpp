@@ -1,6 +1,7 @@
 // ABF++ angle solve: Newton on the Lagrangian with the block elimination of Sheffer et al. 2005; see abf_angles.hpp.
 #include "engine/flatten/abf_angles.hpp"
 
+#include <Eigen/Geometry>
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <array>

@@ -70,7 +70,7 @@ TEST(AbfHalves, GeneratedLastHalvesAreFlipFreeWithValidMolds) {
     EXPECT_NEAR(d.area_error_pct, 0.0, 1e-6);
     // The mold: a simple counter-clockwise outline enclosing the flattened area (within the simplification),
     // with the notches of the landmarks.
-    ASSERT_GE(segment.mold.outline.size(), 3u);
+    ASSERT_GE(segment.mold.outline.points.size(), 3u);
     EXPECT_TRUE(is_simple(segment.mold.outline));
     EXPECT_NEAR(signed_area(segment.mold.outline), d.area_2d_mm2, 0.005 * d.area_2d_mm2);
     EXPECT_FALSE(segment.mold.marks.empty());
