@@ -179,9 +179,11 @@ AbfAngles solve_abf_angles(const Eigen::MatrixXi& F, const MeshTopology& topolog
       throw EngineError("ABF++: corner angle " + std::to_string(c) + " is outside (0, pi)");
 
   const VertexRows rows = vertex_rows(topology);
-  ReducedPattern pattern = reduced_pattern(F, rows);
-  SparseCholesky factor(options.solver);
-  if (rows.count > 0) factor.analyze_pattern(pattern.matrix);
+  // Built at the first Newton step: angles that already meet the constraints (a developable patch) need none.
+  ReducedPattern pattern;
+  // Nested dissection: on the 2x2-block system of a 100k-triangle half it cut the CPU time of the angle
+  // solve from 2.8-3.0 s (AMD) to 2.2 s (docs/abf.md); the eigen-ldlt backend ignores it.
+  SparseCholesky factor(options.solver, FillOrdering::NestedDissection);
 
   AbfAngles result;
   result.beta = beta;
@@ -208,6 +210,11 @@ AbfAngles solve_abf_angles(const Eigen::MatrixXi& F, const MeshTopology& topolog
       break;
     }
     if (iteration >= options.max_newton_iterations) break;
+
+    if (iteration == 0) {
+      pattern = reduced_pattern(F, rows);
+      if (rows.count > 0) factor.analyze_pattern(pattern.matrix);
+    }
 
     // Lambda: the Hessian of L in alpha is diagonal (see the header); kept >= 1 / beta^2 so the step is a descent.
     for (Eigen::Index f = 0; f < F.rows(); ++f) {

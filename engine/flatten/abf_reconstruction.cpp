@@ -64,7 +64,7 @@ Eigen::MatrixXd reconstruct_from_angles(const TriMesh& mesh, const MeshTopology&
   Eigen::SparseMatrix<double> A(2 * face_count, unknowns);
   A.setFromTriplets(triplets.begin(), triplets.end());
   const Eigen::SparseMatrix<double> normal = Eigen::SparseMatrix<double>(A.transpose()) * A;
-  SparseCholesky factor(solver);
+  SparseCholesky factor(solver, FillOrdering::NestedDissection);  // as for the angle system (abf_angles.cpp)
   factor.analyze_pattern(normal);
   factor.factorize(normal);
   const Eigen::VectorXd x = factor.solve(A.transpose() * rhs);
