@@ -128,23 +128,25 @@ void solver_rows(const BenchHalf& half) {
   }
 }
 
-// LSCM, ABF++ and ARAP side by side on the halves up to 120k triangles (one run each, wall s).
+// LSCM, ABF++ and ARAP side by side on the halves up to 120k triangles (one run each, wall and CPU s).
 void print_method_comparison(const std::vector<BenchHalf>& halves) {
   std::printf("\n## LSCM vs ABF++ vs ARAP (thesis comparison; ABF++ iterations are Newton steps)\n\n| half | triangles | "
               "method | D_angle | D_area | area error %% | boundary error %% | p95 stretch | flipped | iterations | "
-              "total s |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+              "total s | total CPU s |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::vector<std::string> method_notes;
   for (const BenchHalf& half : halves) {
     if (half.mesh.triangle_count() > 120000) continue;
     for (FlattenMethod method : {FlattenMethod::Arap, FlattenMethod::Abf, FlattenMethod::Lscm}) {
       FlattenOptions options;
       options.method = method;
+      const double cpu = thread_cpu_s();
       const FlattenResult r = flatten(half.mesh, options);
+      const double cpu_s = thread_cpu_s() - cpu;
       const DistortionMeasures d = measure_distortion(half.mesh, r.UV);
-      std::printf("| %s | %d | %s | %.4f | %.4f | %.2f | %.2f | %.3f | %d | %d | %.3f |\n", half.name.c_str(),
+      std::printf("| %s | %d | %s | %.4f | %.4f | %.2f | %.2f | %.3f | %d | %d | %.3f | %.3f |\n", half.name.c_str(),
                   half.mesh.triangle_count(), method_name(method), d.D_angle, d.D_area,
                   d.area_error_pct, d.boundary_error_pct, d.p95_stretch, d.flipped_triangles, r.iterations,
-                  r.seconds_total);
+                  r.seconds_total, cpu_s);
       for (const std::string& note : r.notes)
         method_notes.push_back(half.name + ", " + method_name(method) + ": " + note);
     }
