@@ -17,8 +17,9 @@
 //                The law of sines gives the ratio of the two edges at v in each triangle; their product
 //                around v must be 1 for the edges to close. The papers write the product form; the log
 //                form has the same zeros, a Jacobian entry of +-cot(alpha), and a diagonal Hessian.
-//   Positivity alpha > 0 (and < pi): kept by shortening a Newton step that would leave (0, pi) to half
-//              the remaining distance (the papers observe it is never active; the guard costs nothing).
+//   Positivity alpha > 0 (and < pi): not a Newton constraint; kept by shortening a Newton step that would
+//              leave (0, pi) to half the remaining distance (never needed on our meshes so far: the
+//              1 / beta^2 weights hold small angles near their targets).
 // Newton step (the ABF++ block elimination): the KKT system [Lambda J^T; J 0] with Lambda diagonal
 // (2 / beta^2 from E, plus the wheel multipliers' -lambda / sin^2 where that keeps it above 1 / beta^2),
 // J = [J_tri; J_vertex]. Lambda is inverted per corner, then J_tri Lambda^-1 J_tri^T (diagonal, per

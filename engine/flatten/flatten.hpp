@@ -67,7 +67,7 @@ struct FlattenResult {
   int factorizations = 0;          // numeric sparse Cholesky factorizations: 1, +1 if the Tutte map was needed
   double seconds_init = 0;         // checks, frames, pattern, start map (and the Tutte map if it was needed)
   double seconds_factorize = 0;    // symbolic analysis + numeric factorization of the ARAP Laplacian
-  double seconds_iterations = 0;   // ARAP local/global iterations
+  double seconds_iterations = 0;   // ARAP local/global iterations (ABF++: Newton, reconstruction and repair)
   double seconds_total = 0;
   int flipped_triangles = 0;       // after the repair/fallback below
   bool converged = false;          // ARAP reached the energy tolerance (LSCM: always true; ABF++: its Newton did)

@@ -3,7 +3,7 @@
 //   read the scan (units, repair, refusal of bad input)       engine/mesh/read_mesh.hpp
 //   stand it in the canonical frame, tell left from right     engine/orient/orient_last.hpp
 //   cut it into medial and lateral halves (thesis 3.1)        engine/segment/segment_last.hpp
-//   flatten each half with ARAP or LSCM (thesis 2.2-2.4)      engine/flatten/flatten.hpp
+//   flatten each half with ARAP, LSCM or ABF++ (thesis 2.2-2.4) engine/flatten/flatten.hpp
 //   measure the distortion, make the mold outline and notches engine/flatten/distortion.hpp, engine/mold
 // With segment = false the scan must already be one disk-shaped patch; it is flattened as it is
 // and named "patch". A closed last without segmentation, or an open patch with it, is refused.

@@ -126,8 +126,7 @@ TEST(AbfAngles, ConstraintsHoldOnADoublyCurvedCap) {
   EXPECT_EQ(d.flipped_triangles, 0);
   EXPECT_NEAR(d.area_error_pct, 0.0, 1e-9);
 
-  // ABF++ sits between the conformal and the isometric map: angles kept nearly as well as LSCM's,
-  // areas better than LSCM's, angles better than ARAP's.
+  // Through flatten(): ABF++ keeps angles (near LSCM's D_angle, printed) better than ARAP does.
   FlattenOptions options;
   options.method = FlattenMethod::Abf;
   const DistortionMeasures abf = measure_distortion(cap, flatten(cap, options).UV);
