@@ -21,7 +21,8 @@
 //              leave (0, pi) to half the remaining distance (never needed on our meshes so far: the
 //              1 / beta^2 weights hold small angles near their targets).
 // Newton step (the ABF++ block elimination): the KKT system [Lambda J^T; J 0] with Lambda diagonal
-// (2 / beta^2 from E, plus the wheel multipliers' -lambda / sin^2 where that keeps it above 1 / beta^2),
+// (2 / beta^2 from E plus the wheel multipliers' -lambda / sin^2, clamped below at 1 / beta^2 so that
+// the reduced system stays positive definite),
 // J = [J_tri; J_vertex]. Lambda is inverted per corner, then J_tri Lambda^-1 J_tri^T (diagonal, per
 // triangle), leaving a symmetric positive definite system in the vertex multipliers only
 // (2 #interior unknowns, the mesh's vertex adjacency in 2x2 blocks), factored by sparse Cholesky; the
