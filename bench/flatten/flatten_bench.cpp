@@ -1,6 +1,7 @@
 // Flattening benchmark: ARAP on half lasts (init, factorization, per-iteration, total, distortion reached)
-// against plain baselines measured in the same run, the sparse Cholesky backends, and LSCM vs ARAP.
-// Usage: bench_flatten [--no-400k] [--arap-only] [--starts] [--only NAME-PART] [--save FOLDER] | --split-agreement   Prints markdown tables (docs/benchmarks-flatten.md).
+// against plain baselines measured in the same run, the sparse Cholesky backends, and LSCM vs ABF++ vs ARAP.
+// Usage: bench_flatten [--no-400k] [--arap-only] [--starts] [--methods-only] [--only NAME-PART] [--save FOLDER] | --split-agreement
+// Prints markdown tables (docs/benchmarks-flatten.md).
 #include <time.h>
 
 #include <algorithm>
@@ -82,6 +83,15 @@ double refactorizing_seconds_per_iteration(const TriMesh& mesh, int iterations) 
   return wall_since(start) / iterations;
 }
 
+const char* method_name(FlattenMethod method) {
+  switch (method) {
+    case FlattenMethod::Arap: return "ARAP";
+    case FlattenMethod::Lscm: return "LSCM";
+    case FlattenMethod::Abf: return "ABF++";
+  }
+  return "?";
+}
+
 void solver_rows(const BenchHalf& half) {
   const MeshTopology topology = check_disk(half.mesh);
   const TriangleFrames frames = compute_triangle_frames(half.mesh);
@@ -120,19 +130,47 @@ void solver_rows(const BenchHalf& half) {
   }
 }
 
+// LSCM, ABF++ and ARAP side by side on the halves up to 120k triangles (one run each, wall and CPU s).
+void print_method_comparison(const std::vector<BenchHalf>& halves) {
+  std::printf("\n## LSCM vs ABF++ vs ARAP (thesis comparison; ABF++ iterations are Newton steps)\n\n| half | triangles | "
+              "method | D_angle | D_area | area error %% | boundary error %% | p95 stretch | flipped | iterations | "
+              "total s | total CPU s |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::vector<std::string> method_notes;
+  for (const BenchHalf& half : halves) {
+    if (half.mesh.triangle_count() > 120000) continue;
+    for (FlattenMethod method : {FlattenMethod::Arap, FlattenMethod::Abf, FlattenMethod::Lscm}) {
+      FlattenOptions options;
+      options.method = method;
+      const double cpu = thread_cpu_s();
+      const FlattenResult r = flatten(half.mesh, options);
+      const double cpu_s = thread_cpu_s() - cpu;
+      const DistortionMeasures d = measure_distortion(half.mesh, r.UV);
+      std::printf("| %s | %d | %s | %.4f | %.4f | %.2f | %.2f | %.3f | %d | %d | %.3f | %.3f |\n", half.name.c_str(),
+                  half.mesh.triangle_count(), method_name(method), d.D_angle, d.D_area,
+                  d.area_error_pct, d.boundary_error_pct, d.p95_stretch, d.flipped_triangles, r.iterations,
+                  r.seconds_total, cpu_s);
+      for (const std::string& note : r.notes)
+        method_notes.push_back(half.name + ", " + method_name(method) + ": " + note);
+    }
+  }
+  if (!method_notes.empty()) std::printf("\nNotes:\n");
+  for (const std::string& note : method_notes) std::printf("- %s\n", note.c_str());
+}
+
 }  // namespace
 }  // namespace lastcut::bench
 
 int main(int argc, char** argv) {
   using namespace lastcut;
   using namespace lastcut::bench;
-  bool largest = true, arap_only = false, starts = false;
+  bool largest = true, arap_only = false, starts = false, methods_only = false;
   std::string only;         // run only the halves whose name contains this
   std::string save_folder;  // write each half there as <triangles>.off (to profile one half alone)
   for (int i = 1; i < argc; ++i) {
     largest = largest && std::strcmp(argv[i], "--no-400k") != 0;
     arap_only = arap_only || std::strcmp(argv[i], "--arap-only") == 0;
     starts = starts || std::strcmp(argv[i], "--starts") == 0;
+    methods_only = methods_only || std::strcmp(argv[i], "--methods-only") == 0;
     if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) only = argv[++i];
     if (std::strcmp(argv[i], "--save") == 0 && i + 1 < argc) save_folder = argv[++i];
     if (std::strcmp(argv[i], "--split-agreement") == 0) {  // only the automatic vs expert split table
@@ -154,6 +192,10 @@ int main(int argc, char** argv) {
     }
   }
 
+  if (methods_only) {
+    print_method_comparison(halves);
+    return 0;
+  }
   std::printf("## ARAP (default options: boundary-first start, Auto solver = %s, Anderson acceleration, tolerance 1e-6)\n\n",
               std::string(to_string(SparseCholesky().backend())).c_str());
   std::printf("| half | triangles | init s | factorize s (count) | per iteration ms | iterations | total s | "
@@ -212,19 +254,6 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
   }
 
-  std::printf("\n## LSCM vs ARAP (thesis comparison)\n\n| half | triangles | method | D_angle | D_area | "
-              "area error %% | boundary error %% | p95 stretch | flipped | total s |\n|---|---|---|---|---|---|---|---|---|---|\n");
-  for (const BenchHalf& half : halves) {
-    if (half.mesh.triangle_count() > 120000) continue;
-    for (FlattenMethod method : {FlattenMethod::Arap, FlattenMethod::Lscm}) {
-      FlattenOptions options;
-      options.method = method;
-      const FlattenResult r = flatten(half.mesh, options);
-      const DistortionMeasures d = measure_distortion(half.mesh, r.UV);
-      std::printf("| %s | %d | %s | %.4f | %.4f | %.2f | %.2f | %.3f | %d | %.3f |\n", half.name.c_str(),
-                  half.mesh.triangle_count(), method == FlattenMethod::Arap ? "ARAP" : "LSCM", d.D_angle, d.D_area,
-                  d.area_error_pct, d.boundary_error_pct, d.p95_stretch, d.flipped_triangles, r.seconds_total);
-    }
-  }
+  print_method_comparison(halves);
   return 0;
 }

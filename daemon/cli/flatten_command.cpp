@@ -48,7 +48,9 @@ ScanOptions options_from(const FlattenArguments& arguments) {
   ScanOptions options;
   options.segment = !arguments.no_segment;
   options.segment_options.split_rule = arguments.split == "expert" ? SplitRule::Expert : SplitRule::Auto;
-  options.flatten.method = arguments.method == "lscm" ? FlattenMethod::Lscm : FlattenMethod::Arap;
+  options.flatten.method = arguments.method == "lscm"  ? FlattenMethod::Lscm
+                           : arguments.method == "abf" ? FlattenMethod::Abf
+                                                       : FlattenMethod::Arap;
   options.mold.allowance_mm = arguments.allowance_mm;
   options.read.unit = length_unit_from_name(arguments.unit);
   if (arguments.max_triangles > 0) options.read.max_triangles = arguments.max_triangles;
@@ -102,8 +104,8 @@ void add_flatten_command(CLI::App& app, int& exit_code) {
   auto* command = app.add_subcommand("flatten", "flatten a scanned last into medial and lateral molds (DXF, SVG, OBJ, report.json)");
   command->add_option("scan", arguments->scan, "scan of the last: STL, OBJ, PLY or OFF")->required();
   command->add_option("-o,--out", arguments->out_dir, "output folder (created if missing)")->required();
-  command->add_option("--method", arguments->method, "flattening method: arap (least stretch) or lscm (conformal)")
-      ->check(CLI::IsMember({"arap", "lscm"}))
+  command->add_option("--method", arguments->method, "flattening method: arap (least stretch), lscm (conformal) or abf (ABF++, angle based)")
+      ->check(CLI::IsMember({"arap", "lscm", "abf"}))
       ->capture_default_str();
   // Checked in run_flatten, so a wrong value gets the same one-line refusal as other bad input.
   command->add_option("--split", arguments->split,

@@ -1,10 +1,13 @@
-// The flattening pipeline: checks, start map, ARAP or LSCM, flip check and fallback; see flatten.hpp.
+// The flattening pipeline: checks, start map, ARAP, LSCM or ABF++, flip check and fallback; see flatten.hpp.
 #include "engine/flatten/flatten.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <optional>
 
 #include "engine/core/engine_error.hpp"
+#include "engine/flatten/abf_angles.hpp"
+#include "engine/flatten/abf_reconstruction.hpp"
 #include "engine/flatten/arap_iterations.hpp"
 #include "engine/flatten/boundary_first_start.hpp"
 #include "engine/flatten/cotangent_laplacian.hpp"
@@ -134,9 +137,70 @@ void run_arap(const TriMesh& disk, const TriangleFrames& frames, const MeshTopol
   result.UV = std::move(UV);
 }
 
+// Replaces result's map by ARAP's, adding ARAP's counts, times and notes (LSCM and ABF++ fallback).
+void fall_back_to_arap(const TriMesh& disk, const TriangleFrames& frames, const MeshTopology& topology,
+                       const FlattenOptions& options, FlattenResult& result) {
+  FlattenResult arap;
+  run_arap(disk, frames, topology, options, arap);
+  result.UV = std::move(arap.UV);
+  result.iterations = arap.iterations;
+  result.factorizations += arap.factorizations;
+  result.seconds_init += arap.seconds_init;
+  result.seconds_factorize += arap.seconds_factorize;
+  result.seconds_iterations += arap.seconds_iterations;
+  result.converged = arap.converged;
+  result.notes.insert(result.notes.end(), arap.notes.begin(), arap.notes.end());
+}
+
+// ABF++: angles by Newton (one factorization per step), the map by least squares (one more), then folds
+// untangled locally or, failing that, ARAP instead. seconds_iterations holds all of it.
+void run_abf(const TriMesh& disk, const TriangleFrames& frames, const MeshTopology& topology,
+             const FlattenOptions& options, FlattenResult& result) {
+  const auto clock = Clock::now();
+  AbfOptions abf_options;
+  abf_options.max_newton_iterations = options.abf_max_newton_iterations;
+  abf_options.gradient_tolerance = options.abf_gradient_tolerance;
+  abf_options.solver = options.solver;
+  const AbfAngles angles = solve_abf_angles(disk, topology, abf_options);
+  result.iterations = angles.iterations;
+  result.factorizations = angles.iterations + 1;
+  result.converged = angles.converged;
+  if (!angles.converged) {
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "ABF++ Newton stopped after %d iterations at |grad L| = %.3g (tolerance %.3g): the map is built "
+                  "from its best angles",
+                  angles.iterations, angles.gradient_norm, options.abf_gradient_tolerance);
+    result.notes.push_back(line);
+  }
+  if (angles.shortened_steps > 0) {
+    result.notes.push_back(std::to_string(angles.shortened_steps) +
+                           " ABF++ Newton steps shortened to keep every angle between 0 and 180 degrees");
+  }
+  result.UV = reconstruct_from_angles(disk, topology, angles.alpha, options.solver);
+  result.seconds_iterations = seconds_since(clock);
+
+  const int flips = count_flipped_triangles(disk.F, result.UV);
+  if (flips == 0) return;
+  const UntangleReport untangled = untangle_flips(frames, topology, result.UV);
+  if (untangled.flipped_after == 0) {
+    result.notes.push_back(std::to_string(flips) + " flipped triangles of the ABF++ map untangled: " +
+                           std::to_string(untangled.moved_vertices) + " vertices relaxed within " +
+                           std::to_string(untangled.rings) + " rings");
+    result.seconds_iterations = seconds_since(clock);
+  } else {
+    result.notes.push_back("the ABF++ map flipped " + std::to_string(flips) +
+                           " triangles that could not be untangled locally; fell back to ARAP");
+    result.seconds_iterations = seconds_since(clock);
+    fall_back_to_arap(disk, frames, topology, options, result);
+  }
+}
+
 void check_options(const FlattenOptions& options) {
   if (options.max_iterations < 0) throw EngineError("flatten: max_iterations must not be negative");
   if (!(options.relative_energy_tolerance >= 0.0)) throw EngineError("flatten: energy tolerance must be >= 0");
+  if (options.abf_max_newton_iterations < 0) throw EngineError("flatten: ABF++ Newton iterations must not be negative");
+  if (!(options.abf_gradient_tolerance >= 0.0)) throw EngineError("flatten: ABF++ tolerance must be >= 0");
 }
 
 // disk: checked by check_disk; start: when the caller began (seconds_init includes the check).
@@ -159,17 +223,10 @@ FlattenResult flatten_checked_disk(const TriMesh& disk, const MeshTopology& topo
     } else {
       result.notes.push_back("LSCM flipped " + std::to_string(flips) +
                              " triangles; fell back to ARAP");
-      FlattenResult arap;
-      run_arap(disk, frames, topology, options, arap);
-      result.UV = std::move(arap.UV);
-      result.iterations = arap.iterations;
-      result.factorizations += arap.factorizations;
-      result.seconds_init += arap.seconds_init;
-      result.seconds_factorize += arap.seconds_factorize;
-      result.seconds_iterations = arap.seconds_iterations;
-      result.converged = arap.converged;
-      result.notes.insert(result.notes.end(), arap.notes.begin(), arap.notes.end());
+      fall_back_to_arap(disk, frames, topology, options, result);
     }
+  } else if (options.method == FlattenMethod::Abf) {
+    run_abf(disk, frames, topology, options, result);
   } else {
     run_arap(disk, frames, topology, options, result);
   }

@@ -17,6 +17,10 @@
 // factorization). Either way FlattenResult::notes says what happened and flipped_triangles what is left
 // (0 in every case we have seen).
 // LSCM: B. Lévy, S. Petitjean, N. Ray, J. Maillot, SIGGRAPH 2002 (lscm.hpp), for comparison.
+// ABF++: A. Sheffer, B. Lévy, M. Mogilnitsky, A. Bogomyakov, ACM TOG 24(2), 2005: the corner angles by
+// Newton's method (abf_angles.hpp), then the map by least squares (abf_reconstruction.hpp), scaled to the
+// 3D area; folds are untangled locally (untangle.hpp), else it falls back to ARAP (notes say which).
+// A Newton that does not reach its tolerance keeps its best angles, converged = false and a note.
 //
 // Usage:
 //   lastcut::FlattenResult r = lastcut::flatten(half);          // half: TriMesh in mm, a disk
@@ -32,7 +36,7 @@
 
 namespace lastcut {
 
-enum class FlattenMethod { Arap, Lscm };
+enum class FlattenMethod { Arap, Lscm, Abf };
 
 // Where ARAP starts (see above). Auto: the plane-rotation start when less than 1 % of the half's area
 // faces away from its mean normal (it then lays the half out unrolled, and costs no factorization),
@@ -52,18 +56,21 @@ struct FlattenOptions {
   ArapStart start = ArapStart::Auto;  // ignored with flip_guard (which starts from the Tutte map)
   // Anderson acceleration of the local/global iteration (Peng et al. 2018): same fixed point, fewer iterations.
   bool anderson_acceleration = true;
+  // ABF++ (method Abf): Newton iterations at most and the tolerance on ||grad L|| (abf_angles.hpp).
+  int abf_max_newton_iterations = 50;
+  double abf_gradient_tolerance = 1e-6;
 };
 
 struct FlattenResult {
   Eigen::MatrixXd UV;              // #V x 2, mm, same vertex order as the input, centred on the vertex mean
-  int iterations = 0;              // ARAP global steps
+  int iterations = 0;              // ARAP global steps (ABF++: Newton steps)
   int factorizations = 0;          // numeric sparse Cholesky factorizations: 1, +1 if the Tutte map was needed
   double seconds_init = 0;         // checks, frames, pattern, start map (and the Tutte map if it was needed)
   double seconds_factorize = 0;    // symbolic analysis + numeric factorization of the ARAP Laplacian
-  double seconds_iterations = 0;   // ARAP local/global iterations
+  double seconds_iterations = 0;   // ARAP local/global iterations (ABF++: Newton, reconstruction and repair)
   double seconds_total = 0;
   int flipped_triangles = 0;       // after the repair/fallback below
-  bool converged = false;          // ARAP reached the energy tolerance (LSCM: always true)
+  bool converged = false;          // ARAP reached the energy tolerance (LSCM: always true; ABF++: its Newton did)
   double energy_start = 0, energy_final = 0;  // ARAP energy (mm^2) of the start map and the result
   std::vector<std::string> notes;  // e.g. "3 steps shortened to avoid flipped triangles", "fell back to ..."
 };

@@ -3,7 +3,7 @@
 //   read the scan (units, repair, refusal of bad input)       engine/mesh/read_mesh.hpp
 //   stand it in the canonical frame, tell left from right     engine/orient/orient_last.hpp
 //   cut it into medial and lateral halves (thesis 3.1)        engine/segment/segment_last.hpp
-//   flatten each half with ARAP or LSCM (thesis 2.2-2.4)      engine/flatten/flatten.hpp
+//   flatten each half with ARAP, LSCM or ABF++ (thesis 2.2-2.4) engine/flatten/flatten.hpp
 //   measure the distortion, make the mold outline and notches engine/flatten/distortion.hpp, engine/mold
 // A scan hole up to segment_options.max_hole_fill_diameter_mm across is closed (engine/mesh/fill_holes.hpp);
 // a larger one is refused. A symmetric last with no side named gives halves side_a and side_b.

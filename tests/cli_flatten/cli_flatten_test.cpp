@@ -286,6 +286,37 @@ TEST_F(CliFlatten, RefusesAnUnknownSplitRule) {
   const CommandRun run = flatten("'" + (dir_ / "any.stl").string() + "' -o '" + out.string() + "' --split sideways");
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_EQ(run.err, "lastcut: error: --split must be auto or expert, not \"sideways\"\n");
+// ABF++ end to end: both halves flip-free, scaled to their 3D area exactly, molds enclosing that area.
+TEST_F(CliFlatten, FlattensALastWithAbf) {
+  LastParams params = LastParams::for_eu_size(43, FootSide::Left);
+  params.target_triangles = 20000;
+  params.random_pose = true;
+  params.seed = 5;
+  const fs::path scan = dir_ / "last-abf.stl";
+  write_stl_binary(scan, generate_last(params).mesh);
+  const fs::path out = dir_ / "molds-abf";
+  const CommandRun run = flatten("'" + scan.string() + "' -o '" + out.string() + "' --method abf");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(run.err.empty()) << run.err;
+  const auto report = nlohmann::json::parse(read_text(out / "report.json"));
+  ASSERT_EQ(report["segments"].size(), 2u);
+  for (const auto& segment : report["segments"]) {
+    const std::string name = segment["name"];
+    for (const char* file : {"-3d.obj", "-flat.obj", ".dxf", ".svg"}) EXPECT_TRUE(fs::exists(out / (name + file)));
+    EXPECT_EQ(segment["flipped"], 0);
+    EXPECT_GE(segment["D_angle"].get<double>(), 2.0);
+    EXPECT_LT(segment["D_angle"].get<double>(), 2.02);
+    EXPECT_NEAR(segment["area_2d_mm2"].get<double>() / segment["area_3d_mm2"].get<double>(), 1.0, 1e-6);
+    const Mold mold = read_mold_dxf(out / (name + ".dxf"));
+    EXPECT_EQ(mold.marks.size(), 4u) << name;
+    EXPECT_NEAR(signed_area(mold.outline), segment["area_2d_mm2"].get<double>(),
+                0.005 * segment["area_2d_mm2"].get<double>());
+  }
+  // A method name that is not offered is refused by the option parser, naming the option.
+  const CommandRun wrong = flatten("'" + scan.string() + "' -o '" + (dir_ / "refused").string() + "' --method abf++");
+  EXPECT_FALSE(wrong.crashed);
+  EXPECT_NE(wrong.exit_code, 0);
+  EXPECT_NE(wrong.err.find("--method"), std::string::npos) << wrong.err;
 }
 
 TEST_F(CliFlatten, FlattensAnOpenPatchWithNoSegment) {
