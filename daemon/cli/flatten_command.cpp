@@ -4,9 +4,11 @@
 #include <exception>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "daemon/cli/commands.hpp"
+#include "daemon/cli/mold_allowance_options.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/scan/scan_outputs.hpp"
 #include "engine/scan/scan_to_molds.hpp"
@@ -22,6 +24,8 @@ struct FlattenArguments {
   std::string unit = "auto";
   bool no_segment = false;
   double allowance_mm = 0.0;
+  std::optional<double> lasting_mm, seam_mm, top_mm;  // per-edge allowances (docs/mold-allowances.md)
+  std::string balance_notches = "off";                // off | SPACING | SEAM,FEATHER (mm)
   int max_triangles = 0;
 };
 
@@ -46,6 +50,10 @@ ScanOptions options_from(const FlattenArguments& arguments) {
   options.segment = !arguments.no_segment;
   options.flatten.method = arguments.method == "lscm" ? FlattenMethod::Lscm : FlattenMethod::Arap;
   options.mold.allowance_mm = arguments.allowance_mm;
+  if (arguments.lasting_mm || arguments.seam_mm || arguments.top_mm)
+    options.mold.edge_allowances = EdgeAllowances{arguments.lasting_mm.value_or(0.0), arguments.seam_mm.value_or(0.0),
+                                                  arguments.top_mm.value_or(0.0)};
+  options.mold.balance_notches = *parse_balance_notches(arguments.balance_notches);
   options.read.unit = length_unit_from_name(arguments.unit);
   if (arguments.max_triangles > 0) options.read.max_triangles = arguments.max_triangles;
   return options;
@@ -54,6 +62,12 @@ ScanOptions options_from(const FlattenArguments& arguments) {
 int run_flatten(const FlattenArguments& arguments) {
   if (!(arguments.allowance_mm >= 0.0) || arguments.allowance_mm > 50.0) {
     print_error("allowance must be between 0 and 50 mm, not " + std::to_string(arguments.allowance_mm));
+    return 2;
+  }
+  if (const std::string problem = check_edge_allowances(arguments.allowance_mm, arguments.lasting_mm, arguments.seam_mm,
+                                                        arguments.top_mm, arguments.balance_notches);
+      !problem.empty()) {
+    print_error(problem);
     return 2;
   }
   try {
@@ -89,6 +103,12 @@ void add_flatten_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   command->add_flag("--no-segment", arguments->no_segment, "the scan is one open patch: flatten it as it is");
   command->add_option("--allowance", arguments->allowance_mm, "outward margin added around each mold, mm")
+      ->capture_default_str();
+  command->add_option("--lasting", arguments->lasting_mm, "lasting margin along the feather line, mm (per-edge allowances)");
+  command->add_option("--seam", arguments->seam_mm, "seam allowance along the centre cut, mm (per-edge allowances)");
+  command->add_option("--top", arguments->top_mm, "allowance along the top line, mm (per-edge allowances, default 0)");
+  command->add_option("--balance-notches", arguments->balance_notches,
+                      "balance notch spacing along the centre cut and the feather line: off, MM or SEAM_MM,FEATHER_MM")
       ->capture_default_str();
   command->add_option("--unit", arguments->unit, "length unit of the scan: auto, mm, cm, m or in")
       ->check(CLI::IsMember({"auto", "mm", "cm", "m", "in"}))

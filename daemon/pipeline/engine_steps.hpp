@@ -19,6 +19,7 @@
 #include "daemon/config/daemon_config.hpp"
 #include "daemon/spool/job_ticket.hpp"
 #include "engine/core/status.hpp"
+#include "engine/mold/mold.hpp"
 
 namespace lastcut::daemon {
 
@@ -38,7 +39,7 @@ struct MoldsMade {
 // `quantity` copies of each half, labelled for the cutting room, with a mirrored twin per half
 // when the ticket asks for a pair. A failure is one line in an operator's words.
 Result<MoldsMade> compute_molds(const std::filesystem::path& scan, const std::filesystem::path& job_dir,
-                                const JobTicket& ticket, double default_allowance_mm);
+                                const JobTicket& ticket, const MoldOptions& mold_options);
 
 struct BatchJobInput {
   std::string job_id;

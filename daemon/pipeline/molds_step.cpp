@@ -39,10 +39,10 @@ std::vector<NestItem> job_items(const ScanResult& result, const JobTicket& ticke
 }  // namespace
 
 Result<MoldsMade> compute_molds(const std::filesystem::path& scan, const std::filesystem::path& job_dir,
-                                const JobTicket& ticket, double default_allowance_mm) {
+                                const JobTicket& ticket, const MoldOptions& mold_options) {
   try {
     ScanOptions options;
-    options.mold.allowance_mm = ticket.allowance_mm.value_or(default_allowance_mm);
+    options.mold = mold_options;
     const ScanResult result = scan_to_molds(scan, options);
     if (result.segments.empty()) return Status::failure("no mold could be made from the scan");
     MoldsMade made;

@@ -1,7 +1,9 @@
 #pragma once
 // JobTicket: the optional sidecar next to a scan (NAME.job.toml or NAME.job.json) saying what
 // the workshop wants cut from it. Keys (all optional): order, customer, size, side
-// (left | right | pair), quantity, material, cutter, allowance_mm, priority. Unknown keys are errors.
+// (left | right | pair), quantity, material, cutter, allowance_mm, priority, and the per-edge
+// allowances lasting_mm, seam_mm, top_mm and balance notch spacings seam_notch_spacing_mm,
+// feather_notch_spacing_mm (docs/mold-allowances.md). Unknown keys are errors.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -20,7 +22,9 @@ struct JobTicket {
   int quantity = 1;      // how many of each mold
   std::string material;  // "" means the configured default
   std::string cutter;    // "" means the configured default
-  std::optional<double> allowance_mm;
+  std::optional<double> allowance_mm;  // all edges; not together with the per-edge keys
+  std::optional<double> lasting_mm, seam_mm, top_mm;                        // per edge, 0..50
+  std::optional<double> seam_notch_spacing_mm, feather_notch_spacing_mm;    // 0 = off, or 5..500
   int priority = 0;      // higher is cut first within a batch
 };
 
