@@ -24,18 +24,24 @@ double polyline_length(const std::vector<Point2>& polyline) {
   return length;
 }
 
-Point2 point_at_arc_length(const std::vector<Point2>& polyline, double s_mm) {
-  if (polyline.empty()) return Point2::Zero();
+PolylinePoint point_at_arc_length(const std::vector<Point2>& polyline, double s_mm) {
+  PolylinePoint at;
+  if (polyline.empty()) return at;
+  at.point = s_mm <= 0.0 ? polyline.front() : polyline.back();
   double walked = 0.0;
   for (size_t i = 1; i < polyline.size(); ++i) {
-    const double step = (polyline[i] - polyline[i - 1]).norm();
-    if (step > 0.0 && walked + step >= s_mm) {
-      const double t = std::clamp((s_mm - walked) / step, 0.0, 1.0);
-      return polyline[i - 1] + t * (polyline[i] - polyline[i - 1]);
+    const Point2 step = polyline[i] - polyline[i - 1];
+    const double length = step.norm();
+    if (length == 0.0) continue;
+    at.direction = step / length;
+    if (s_mm > 0.0 && walked + length >= s_mm) {
+      at.point = polyline[i - 1] + std::clamp((s_mm - walked) / length, 0.0, 1.0) * step;
+      return at;
     }
-    walked += step;
+    if (s_mm <= 0.0) return at;
+    walked += length;
   }
-  return s_mm <= 0.0 ? polyline.front() : polyline.back();
+  return at;
 }
 
 std::vector<NetNotch> balance_notch_points(const std::vector<NetEdge>& edges, const BalanceNotches& spacing) {
@@ -54,11 +60,15 @@ std::vector<NetNotch> balance_notch_points(const std::vector<NetEdge>& edges, co
     }
     if (spacing_mm <= 0.0) continue;
     std::vector<Point2> line = edge.points;
-    if (edge.from != start) std::reverse(line.begin(), line.end());
+    const bool reversed = edge.from != start;
+    if (reversed) std::reverse(line.begin(), line.end());
     const double length_mm = polyline_length(line);
     for (int k = 1; k * spacing_mm <= length_mm - 0.5 * spacing_mm; ++k) {
       const double s_mm = k * spacing_mm;
-      notches.push_back({prefix + std::to_string(k), point_at_arc_length(line, s_mm), s_mm});
+      const PolylinePoint at = point_at_arc_length(line, s_mm);
+      // The net runs counter-clockwise, so outside is to the right of its direction.
+      const Point2 along = reversed ? Point2(-at.direction) : at.direction;
+      notches.push_back({prefix + std::to_string(k), at.point, s_mm, Point2(along.y(), -along.x())});
     }
   }
   return notches;

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -71,6 +72,30 @@ MoldMark notch_at(const std::string& name, const Polygon2& outline, const Point2
     inward += inward_normal(outline, (nearest.edge + 1) % n);
   if (inward.norm() > 0.0) inward.normalize();
   return {name, nearest.point, inward};
+}
+
+// A balance notch where the net line's outward normal from `net_point` first meets the outline,
+// pointing back at net_point, so the notch marks the stitch point even where the allowance
+// changes; the nearest outline point when the normal misses (it cannot for a grown outline).
+MoldMark notch_along_normal(const std::string& name, const Polygon2& outline, const Point2& net_point,
+                            const Point2& outward) {
+  const auto& q = outline.points;
+  const size_t n = q.size();
+  double best_t = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < n; ++i) {
+    const Point2 a = q[i], b = q[(i + 1) % n];
+    const Point2 ab = b - a;
+    const double denominator = outward.x() * ab.y() - outward.y() * ab.x();
+    if (denominator == 0.0) continue;
+    const Point2 ap = a - net_point;
+    const double t = (ap.x() * ab.y() - ap.y() * ab.x()) / denominator;         // along the normal
+    const double u = (ap.x() * outward.y() - ap.y() * outward.x()) / denominator;  // along the edge
+    // The zero-allowance edges of a grown outline are the net rounded to Clipper's 10 nm grid.
+    constexpr double kOnOutline_mm = 1e-4;
+    if (t >= -kOnOutline_mm && u >= 0.0 && u <= 1.0 && t < best_t) best_t = t;
+  }
+  if (!std::isfinite(best_t) || outward.norm() == 0.0) return notch_at(name, outline, net_point);
+  return {name, net_point + best_t * outward, -outward};
 }
 
 }  // namespace
@@ -155,7 +180,7 @@ Mold make_mold(std::string name, const Eigen::MatrixXd& UV, const Eigen::MatrixX
   for (const auto& [landmark, vertex] : landmark_vertices)
     mold.marks.push_back(notch_at(landmark, mold.outline, UV.row(vertex).transpose()));
   for (const NetNotch& notch : balance_notch_points(edges, options.balance_notches))
-    mold.marks.push_back(notch_at(notch.name, mold.outline, notch.position_mm));
+    mold.marks.push_back(notch_along_normal(notch.name, mold.outline, notch.position_mm, notch.outward_normal));
   return mold;
 }
 
