@@ -42,15 +42,15 @@ struct KnownEdge {
   std::vector<Point2> rim;  // the patch's rim vertices on this edge, in order
 };
 
-struct Setup {
+struct KnownMold {
   test::FlatPatch patch = mold_like_patch();
   std::map<std::string, int> landmarks;
   std::vector<KnownEdge> edges;
   Point2 rim_point(double degrees) const { return patch.UV.row(mold_rim_vertex(patch, degrees)).transpose(); }
 };
 
-Setup setup(const EdgeAllowances& allowances) {
-  Setup s;
+KnownMold known_mold(const EdgeAllowances& allowances) {
+  KnownMold s;
   s.landmarks = {{"top_front", mold_rim_vertex(s.patch, 50)},
                  {"top_back", mold_rim_vertex(s.patch, 150)},
                  {"heel", mold_rim_vertex(s.patch, 195)},
@@ -67,7 +67,7 @@ Setup setup(const EdgeAllowances& allowances) {
   return s;
 }
 
-Mold mold_of(const Setup& s, const EdgeAllowances& allowances, const BalanceNotches& notches = {}) {
+Mold mold_of(const KnownMold& s, const EdgeAllowances& allowances, const BalanceNotches& notches = {}) {
   MoldOptions options;
   options.edge_allowances = allowances;
   options.balance_notches = notches;
@@ -75,7 +75,7 @@ Mold mold_of(const Setup& s, const EdgeAllowances& allowances, const BalanceNotc
 }
 
 // Within the fillet zone of a transition (3 x the larger allowance of the two edges meeting there).
-bool in_transition(const Setup& s, const EdgeAllowances& a, const Point2& q) {
+bool in_transition(const KnownMold& s, const EdgeAllowances& a, const Point2& q) {
   const std::map<std::string, double> zone_mm = {{"top_front", 3 * std::max(a.seam_mm, a.top_mm)},
                                                  {"top_back", 3 * std::max(a.seam_mm, a.top_mm)},
                                                  {"heel", 3 * std::max(a.seam_mm, a.lasting_mm)},
@@ -113,7 +113,7 @@ bool self_intersects(const std::vector<Point2>& q) {
 TEST(EdgeAllowance, EveryEdgeOfTheCutOutlineLiesItsOwnAllowanceFromTheNetEdge) {
   for (const EdgeAllowances allowances : {EdgeAllowances{15, 5, 0}, EdgeAllowances{18, 3, 2}}) {
     SCOPED_TRACE("lasting " + std::to_string(allowances.lasting_mm) + " seam " + std::to_string(allowances.seam_mm));
-    const Setup s = setup(allowances);
+    const KnownMold s = known_mold(allowances);
     const Mold mold = mold_of(s, allowances);
     ASSERT_FALSE(mold.net.points.empty());
     std::map<std::string, int> outline_points_on;
@@ -144,7 +144,7 @@ TEST(EdgeAllowance, EveryEdgeOfTheCutOutlineLiesItsOwnAllowanceFromTheNetEdge) {
 
 TEST(EdgeAllowance, OutlineIsSimpleCounterClockwiseAndTurnsSmoothlyAtTheTransitions) {
   const EdgeAllowances allowances{15, 5, 0};
-  const Setup s = setup(allowances);
+  const KnownMold s = known_mold(allowances);
   const Mold mold = mold_of(s, allowances);
   EXPECT_FALSE(self_intersects(mold.outline.points));
   EXPECT_GT(signed_area(mold.outline), signed_area(mold.net));
@@ -165,7 +165,7 @@ TEST(EdgeAllowance, OutlineIsSimpleCounterClockwiseAndTurnsSmoothlyAtTheTransiti
 
 TEST(EdgeAllowance, LandmarkNotchesSitOnTheCutOutlineAtTheLandmarksPerpendicularProjection) {
   const EdgeAllowances allowances{15, 5, 0};
-  const Setup s = setup(allowances);
+  const KnownMold s = known_mold(allowances);
   const Mold mold = mold_of(s, allowances);
   ASSERT_EQ(mold.marks.size(), 4u);
   for (const MoldMark& mark : mold.marks) {
@@ -179,7 +179,7 @@ TEST(EdgeAllowance, LandmarkNotchesSitOnTheCutOutlineAtTheLandmarksPerpendicular
 
 TEST(BalanceNotches, EvenlySpacedAlongTheSeamsAndTheFeatherLineOnTheCutOutline) {
   const EdgeAllowances allowances{15, 5, 0};
-  const Setup s = setup(allowances);
+  const KnownMold s = known_mold(allowances);
   const BalanceNotches spacing{20.0, 50.0};
   const Mold mold = mold_of(s, allowances, spacing);
   auto length_mm = [](const std::vector<Point2>& line) {
@@ -213,7 +213,7 @@ TEST(BalanceNotches, EvenlySpacedAlongTheSeamsAndTheFeatherLineOnTheCutOutline) 
 }
 
 TEST(EdgeAllowance, RefusesBadOptionsAndLandmarksInOneLine) {
-  const Setup s = setup({});
+  const KnownMold s = known_mold({});
   auto refusal = [&](const MoldOptions& options, std::map<std::string, int> landmarks) -> std::string {
     try {
       make_mold("medial", s.patch.UV, s.patch.F, landmarks, options);
