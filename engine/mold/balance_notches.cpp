@@ -16,13 +16,13 @@ void check_spacing(double spacing_mm, const char* edge) {
                       std::to_string(static_cast<int>(kMinBalanceSpacing_mm)) + " mm");
 }
 
-}  // namespace
-
-double polyline_length(const std::vector<Point2>& polyline) {
+double open_length_mm(const std::vector<Point2>& polyline) {
   double length = 0.0;
   for (size_t i = 1; i < polyline.size(); ++i) length += (polyline[i] - polyline[i - 1]).norm();
   return length;
 }
+
+}  // namespace
 
 PolylinePoint point_at_arc_length(const std::vector<Point2>& polyline, double s_mm) {
   PolylinePoint at;
@@ -62,7 +62,7 @@ std::vector<NetNotch> balance_notch_points(const std::vector<NetEdge>& edges, co
     std::vector<Point2> line = edge.points;
     const bool reversed = edge.from != start;
     if (reversed) std::reverse(line.begin(), line.end());
-    const double length_mm = polyline_length(line);
+    const double length_mm = open_length_mm(line);
     for (int k = 1; k * spacing_mm <= length_mm - 0.5 * spacing_mm; ++k) {
       const double s_mm = k * spacing_mm;
       const PolylinePoint at = point_at_arc_length(line, s_mm);

@@ -42,6 +42,5 @@ struct PolylinePoint {
   Point2 direction = Point2::Zero();
 };
 PolylinePoint point_at_arc_length(const std::vector<Point2>& polyline, double s_mm);
-double polyline_length(const std::vector<Point2>& polyline);
 
 }  // namespace lastcut
