@@ -4,9 +4,11 @@
 #include <exception>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "daemon/cli/commands.hpp"
+#include "daemon/cli/mold_allowance_options.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/scan/scan_outputs.hpp"
 #include "engine/scan/scan_to_molds.hpp"
@@ -23,6 +25,8 @@ struct FlattenArguments {
   std::string split = "auto";  // which lengthwise plane: auto (thesis 3.1) or expert (thesis 2.1)
   bool no_segment = false;
   double allowance_mm = 0.0;
+  std::optional<double> lasting_mm, seam_mm, top_mm;  // per-edge allowances (docs/mold-allowances.md)
+  std::string balance_notches = "off";                // off | SPACING | SEAM,FEATHER (mm)
   int max_triangles = 0;
   std::string side;                 // "", left or right
   double max_hole_mm = SegmentOptions{}.max_hole_fill_diameter_mm;
@@ -52,6 +56,10 @@ ScanOptions options_from(const FlattenArguments& arguments) {
                            : arguments.method == "abf" ? FlattenMethod::Abf
                                                        : FlattenMethod::Arap;
   options.mold.allowance_mm = arguments.allowance_mm;
+  if (arguments.lasting_mm || arguments.seam_mm || arguments.top_mm)
+    options.mold.edge_allowances = EdgeAllowances{arguments.lasting_mm.value_or(0.0), arguments.seam_mm.value_or(0.0),
+                                                  arguments.top_mm.value_or(0.0)};
+  options.mold.balance_notches = *parse_balance_notches(arguments.balance_notches);
   options.read.unit = length_unit_from_name(arguments.unit);
   if (arguments.max_triangles > 0) options.read.max_triangles = arguments.max_triangles;
   if (!arguments.side.empty()) options.side = arguments.side == "left" ? FootSide::Left : FootSide::Right;
@@ -70,6 +78,12 @@ int run_flatten(const FlattenArguments& arguments) {
   }
   if (!(arguments.max_hole_mm >= 0.0) || arguments.max_hole_mm > 100.0) {
     print_error("--max-hole must be between 0 and 100 mm, not " + std::to_string(arguments.max_hole_mm));
+    return 2;
+  }
+  if (const std::string problem = check_edge_allowances(arguments.allowance_mm, arguments.lasting_mm, arguments.seam_mm,
+                                                        arguments.top_mm, arguments.balance_notches);
+      !problem.empty()) {
+    print_error(problem);
     return 2;
   }
   try {
@@ -114,6 +128,12 @@ void add_flatten_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   command->add_flag("--no-segment", arguments->no_segment, "the scan is one open patch: flatten it as it is");
   command->add_option("--allowance", arguments->allowance_mm, "outward margin added around each mold, mm")
+      ->capture_default_str();
+  command->add_option("--lasting", arguments->lasting_mm, "lasting margin along the feather line, mm (per-edge allowances)");
+  command->add_option("--seam", arguments->seam_mm, "seam allowance along the centre cut, mm (per-edge allowances)");
+  command->add_option("--top", arguments->top_mm, "allowance along the top line, mm (per-edge allowances, default 0)");
+  command->add_option("--balance-notches", arguments->balance_notches,
+                      "balance notch spacing along the centre cut and the feather line: off, MM or SEAM_MM,FEATHER_MM")
       ->capture_default_str();
   command->add_option("--unit", arguments->unit, "length unit of the scan: auto, mm, cm, m or in")
       ->check(CLI::IsMember({"auto", "mm", "cm", "m", "in"}))

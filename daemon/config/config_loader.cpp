@@ -171,6 +171,14 @@ void read_jobs(TableReader& root, DaemonConfig& config, std::vector<std::string>
   jobs.text("default_cutter", config.jobs.default_cutter, true);
   jobs.number("default_allowance_mm", config.jobs.default_allowance_mm, 0, 50);
   jobs.number("max_hole_across_mm", config.jobs.max_hole_across_mm, 0, 100);
+  jobs.number("default_lasting_mm", config.jobs.default_lasting_mm, 0, 50);
+  jobs.number("default_seam_mm", config.jobs.default_seam_mm, 0, 50);
+  jobs.number("default_top_mm", config.jobs.default_top_mm, 0, 50);
+  jobs.number("default_seam_notch_spacing_mm", config.jobs.default_seam_notch_spacing_mm, 0, 500);
+  jobs.number("default_feather_notch_spacing_mm", config.jobs.default_feather_notch_spacing_mm, 0, 500);
+  for (auto [key, value] : {std::pair{"default_seam_notch_spacing_mm", config.jobs.default_seam_notch_spacing_mm},
+                            std::pair{"default_feather_notch_spacing_mm", config.jobs.default_feather_notch_spacing_mm}})
+    if (value > 0 && value < 5) errors.push_back(std::string("jobs.") + key + ": must be 0 (off) or from 5 to 500");
   jobs.integer("compute_workers", config.jobs.compute_workers, 1, 64);
   jobs.number("stop_grace_s", config.jobs.stop_grace_s, 0, 3600);
   jobs.reject_unknown();

@@ -37,6 +37,10 @@ struct JobsConfig {
   std::string default_cutter;     // key into cutters
   double default_allowance_mm = 0;  // lasting allowance when the sidecar gives none
   double max_hole_across_mm = 30;   // scan holes up to this size across are closed, larger ones fail the job
+  // Per-edge allowances and balance notch spacings when the sidecar gives none (0 = none/off);
+  // any non-zero per-edge default makes molds per-edge (docs/mold-allowances.md).
+  double default_lasting_mm = 0, default_seam_mm = 0, default_top_mm = 0;
+  double default_seam_notch_spacing_mm = 0, default_feather_notch_spacing_mm = 0;
   int compute_workers = 1;          // scans computed at the same time
   double stop_grace_s = 60;         // on SIGTERM, a cut in progress may finish this long, then it is held
 };

@@ -19,6 +19,7 @@
 #include "daemon/config/daemon_config.hpp"
 #include "daemon/spool/job_ticket.hpp"
 #include "engine/core/status.hpp"
+#include "engine/mold/mold.hpp"
 
 namespace lastcut::daemon {
 
@@ -39,7 +40,7 @@ struct MoldsMade {
 // when the ticket asks for a pair. The ticket's side left|right names a symmetric last's halves.
 // Scan holes up to max_hole_across_mm are closed. A failure is one line in an operator's words.
 Result<MoldsMade> compute_molds(const std::filesystem::path& scan, const std::filesystem::path& job_dir,
-                                const JobTicket& ticket, double default_allowance_mm, double max_hole_across_mm);
+                                const JobTicket& ticket, const MoldOptions& mold_options, double max_hole_across_mm);
 
 struct ReferenceCheck {
   nlohmann::json comparisons = nlohmann::json::object();  // mold name -> compare JSON (engine/compare/compare_report.hpp)

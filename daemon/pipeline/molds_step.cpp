@@ -39,10 +39,10 @@ std::vector<NestItem> job_items(const ScanResult& result, const JobTicket& ticke
 }  // namespace
 
 Result<MoldsMade> compute_molds(const std::filesystem::path& scan, const std::filesystem::path& job_dir,
-                                const JobTicket& ticket, double default_allowance_mm, double max_hole_across_mm) {
+                                const JobTicket& ticket, const MoldOptions& mold_options, double max_hole_across_mm) {
   try {
     ScanOptions options;
-    options.mold.allowance_mm = ticket.allowance_mm.value_or(default_allowance_mm);
+    options.mold = mold_options;
     if (ticket.split == "expert") options.segment_options.split_rule = SplitRule::Expert;
     options.segment_options.max_hole_fill_diameter_mm = max_hole_across_mm;
     if (ticket.side == "left") options.side = FootSide::Left;

@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include "daemon/pipeline/engine_steps.hpp"
+#include "daemon/pipeline/job_mold_options.hpp"
 #include "daemon/pipeline/job_outcomes.hpp"
 #include "daemon/pipeline/pipeline.hpp"
 
@@ -49,7 +50,7 @@ void Pipeline::compute_job(const std::string& job_id, const std::string& worker)
   const auto start = std::chrono::steady_clock::now();
   monitor_.begin(worker, "molds of job " + job_id, settings->jobs.compute_timeout_s);
   const Result<MoldsMade> outcome =
-      compute_molds(job_dir / state->scan_name, job_dir, state->ticket, settings->jobs.default_allowance_mm,
+      compute_molds(job_dir / state->scan_name, job_dir, state->ticket, job_mold_options(state->ticket, settings->jobs),
                     settings->jobs.max_hole_across_mm);
   monitor_.end(worker);
   const double took_s = seconds_since(start);

@@ -2,6 +2,7 @@
 // once, so both formats accept exactly the same keys.
 #include "daemon/spool/job_ticket.hpp"
 
+#include <array>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -31,12 +32,36 @@ std::optional<nlohmann::json> toml_to_json(const std::filesystem::path& file, st
   return std::nullopt;
 }
 
+// The per-edge allowances and balance notch spacings (docs/mold-allowances.md).
+Status check_mold_keys(const nlohmann::json& json, JobTicket& ticket) {
+  for (auto [key, target] : {std::pair{"lasting_mm", &ticket.lasting_mm}, std::pair{"seam_mm", &ticket.seam_mm},
+                             std::pair{"top_mm", &ticket.top_mm}}) {
+    if (!json.contains(key)) continue;
+    const auto& node = json.at(key);
+    if (!node.is_number() || !(node.get<double>() >= 0) || node.get<double>() > 50)
+      return Status::failure(std::string(key) + " must be a number from 0 to 50");
+    *target = node.get<double>();
+  }
+  if (ticket.allowance_mm && (ticket.lasting_mm || ticket.seam_mm || ticket.top_mm))
+    return Status::failure("allowance_mm (all edges) and lasting_mm/seam_mm/top_mm cannot be given together");
+  for (auto [key, target] : {std::pair{"seam_notch_spacing_mm", &ticket.seam_notch_spacing_mm},
+                             std::pair{"feather_notch_spacing_mm", &ticket.feather_notch_spacing_mm}}) {
+    if (!json.contains(key)) continue;
+    const auto& node = json.at(key);
+    if (!node.is_number() || !(node.get<double>() == 0 || (node.get<double>() >= 5 && node.get<double>() <= 500)))
+      return Status::failure(std::string(key) + " must be 0 (off) or a number from 5 to 500");
+    *target = node.get<double>();
+  }
+  return Status::success();
+}
+
 Result<JobTicket> check_ticket(const nlohmann::json& json) {
   JobTicket ticket;
   if (!json.is_object()) return Status::failure("the sidecar must be a table of keys");
   const std::set<std::string> known{"order", "customer", "size", "side", "quantity", "material",
                                     "cutter", "allowance_mm", "priority", "split", "reference_medial",
-                                    "reference_lateral", "reference_patch"};
+                                    "reference_lateral", "reference_patch", "lasting_mm", "seam_mm", "top_mm",
+                                    "seam_notch_spacing_mm", "feather_notch_spacing_mm"};
   for (auto it = json.begin(); it != json.end(); ++it) {
     if (!known.count(it.key())) return Status::failure("unknown key \"" + it.key() + "\"");
   }
@@ -86,7 +111,15 @@ Result<JobTicket> check_ticket(const nlohmann::json& json) {
     }
     ticket.allowance_mm = node.get<double>();
   }
+  if (Status per_edge = check_mold_keys(json, ticket); !per_edge) return per_edge;
   return ticket;
+}
+
+template <typename Ticket>
+auto mold_keys(Ticket& ticket) {
+  return std::array{std::pair{"lasting_mm", &ticket.lasting_mm}, std::pair{"seam_mm", &ticket.seam_mm},
+                    std::pair{"top_mm", &ticket.top_mm}, std::pair{"seam_notch_spacing_mm", &ticket.seam_notch_spacing_mm},
+                    std::pair{"feather_notch_spacing_mm", &ticket.feather_notch_spacing_mm}};
 }
 
 }  // namespace
@@ -135,6 +168,8 @@ nlohmann::json ticket_to_json(const JobTicket& ticket) {
   if (ticket.allowance_mm) json["allowance_mm"] = *ticket.allowance_mm;
   if (!ticket.split.empty()) json["split"] = ticket.split;
   for (const auto& [mold, file] : ticket.references) json["reference_" + mold] = file;
+  for (auto [key, value] : mold_keys(ticket))
+    if (*value) json[key] = **value;
   return json;
 }
 
@@ -153,6 +188,8 @@ JobTicket ticket_from_json(const nlohmann::json& json) {
   for (const char* mold : {"medial", "lateral", "patch"})
     if (json.contains(std::string("reference_") + mold))
       ticket.references[mold] = json.at(std::string("reference_") + mold).get<std::string>();
+  for (auto [key, value] : mold_keys(ticket))
+    if (json.contains(key)) *value = json.at(key).get<double>();
   return ticket;
 }
 

@@ -3,7 +3,9 @@
 // the workshop wants cut from it. Keys (all optional): order, customer, size, side
 // (left | right | pair), quantity, material, cutter, allowance_mm, priority, split (auto | expert),
 // reference_medial, reference_lateral, reference_patch (reference pattern files, DXF or SVG, relative
-// to the sidecar's folder; see docs/compare.md). Unknown keys are errors.
+// to the sidecar's folder; see docs/compare.md), and the per-edge allowances lasting_mm, seam_mm,
+// top_mm and balance notch spacings seam_notch_spacing_mm, feather_notch_spacing_mm
+// (docs/mold-allowances.md). Unknown keys are errors.
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -23,7 +25,9 @@ struct JobTicket {
   int quantity = 1;      // how many of each mold
   std::string material;  // "" means the configured default
   std::string cutter;    // "" means the configured default
-  std::optional<double> allowance_mm;
+  std::optional<double> allowance_mm;  // all edges; not together with the per-edge keys
+  std::optional<double> lasting_mm, seam_mm, top_mm;                        // per edge, 0..50
+  std::optional<double> seam_notch_spacing_mm, feather_notch_spacing_mm;    // 0 = off, or 5..500
   int priority = 0;      // higher is cut first within a batch
   std::string split;     // lengthwise cut: "" or auto (thesis 3.1 plane), expert (heel middle to second toe)
   // Reference pattern per mold name (medial, lateral, patch) as written in the sidecar; the claim

@@ -1,14 +1,14 @@
-#include <polyclipping/clipper.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <unordered_map>
 #include <utility>
 
 #include "engine/core/engine_error.hpp"
 #include "engine/mold/boundary_loops.hpp"
+#include "engine/mold/clipper_paths.hpp"
 #include "engine/mold/mold.hpp"
 #include "engine/mold/outline_geometry.hpp"
 #include "engine/mold/outline_simplify.hpp"
@@ -16,9 +16,6 @@
 namespace lastcut {
 
 namespace {
-
-// Clipper works on integers: 1 unit = 10 nm, far below any cutter's resolution.
-constexpr double kClipperUnitsPerMm = 1e5;
 
 std::string format_point(const Point2& p) {
   char text[64];
@@ -30,6 +27,8 @@ void check_inputs(const std::string& name, const Eigen::MatrixXd& UV, const Eige
                   const MoldOptions& options) {
   if (!(options.allowance_mm >= 0.0) || !std::isfinite(options.allowance_mm))
     throw EngineError("allowance must be a finite number of millimetres >= 0");
+  if (options.edge_allowances && options.allowance_mm > 0.0)
+    throw EngineError("give one allowance for all edges or per-edge allowances, not both");
   if (!(options.simplify_tolerance_mm >= 0.0) || !std::isfinite(options.simplify_tolerance_mm))
     throw EngineError("simplification tolerance must be a finite number of millimetres >= 0");
   if (UV.cols() != 2) throw EngineError("mold " + name + ": flattened positions must have 2 columns");
@@ -47,28 +46,15 @@ double loop_length(const Eigen::MatrixXd& UV, const std::vector<int>& loop) {
 }
 
 Polygon2 offset_outward(const Polygon2& outline, double allowance_mm, double tolerance_mm) {
-  ClipperLib::Path path;
-  path.reserve(outline.points.size());
-  for (const auto& p : outline.points)
-    path.emplace_back(static_cast<ClipperLib::cInt>(std::llround(p.x() * kClipperUnitsPerMm)),
-                      static_cast<ClipperLib::cInt>(std::llround(p.y() * kClipperUnitsPerMm)));
   // Half the tolerance: Clipper's chords of the round joins then stay well within it.
   ClipperLib::ClipperOffset offset(2.0, std::max(0.5 * tolerance_mm, 0.001) * kClipperUnitsPerMm);
-  offset.AddPath(path, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
+  offset.AddPath(to_clipper_path(outline.points), ClipperLib::jtRound, ClipperLib::etClosedPolygon);
   ClipperLib::Paths solution;
   offset.Execute(solution, allowance_mm * kClipperUnitsPerMm);
   // Growing a simple polygon gives one outer ring (and possibly holes where narrow bays close).
-  const ClipperLib::Path* outer = nullptr;
-  double outer_area = 0.0;
-  for (const auto& candidate : solution) {
-    const double area = std::abs(ClipperLib::Area(candidate));
-    if (area > outer_area) outer_area = area, outer = &candidate;
-  }
+  const ClipperLib::Path* outer = largest_ring(solution);
   if (outer == nullptr) throw EngineError("allowance offset produced no outline");
-  Polygon2 grown;
-  grown.points.reserve(outer->size());
-  for (const auto& q : *outer)
-    grown.points.emplace_back(static_cast<double>(q.X) / kClipperUnitsPerMm, static_cast<double>(q.Y) / kClipperUnitsPerMm);
+  Polygon2 grown = from_clipper_path(*outer);
   make_counter_clockwise(grown);
   return grown;
 }
@@ -86,6 +72,30 @@ MoldMark notch_at(const std::string& name, const Polygon2& outline, const Point2
     inward += inward_normal(outline, (nearest.edge + 1) % n);
   if (inward.norm() > 0.0) inward.normalize();
   return {name, nearest.point, inward};
+}
+
+// A balance notch where the net line's outward normal from `net_point` first meets the outline,
+// pointing back at net_point, so the notch marks the stitch point even where the allowance
+// changes; the nearest outline point when the normal misses (it cannot for a grown outline).
+MoldMark notch_along_normal(const std::string& name, const Polygon2& outline, const Point2& net_point,
+                            const Point2& outward) {
+  const auto& q = outline.points;
+  const size_t n = q.size();
+  double best_t = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < n; ++i) {
+    const Point2 a = q[i], b = q[(i + 1) % n];
+    const Point2 ab = b - a;
+    const double denominator = outward.x() * ab.y() - outward.y() * ab.x();
+    if (denominator == 0.0) continue;
+    const Point2 ap = a - net_point;
+    const double t = (ap.x() * ab.y() - ap.y() * ab.x()) / denominator;         // along the normal
+    const double u = (ap.x() * outward.y() - ap.y() * outward.x()) / denominator;  // along the edge
+    // The zero-allowance edges of a grown outline are the net rounded to Clipper's 10 nm grid.
+    constexpr double kOnOutline_mm = 1e-4;
+    if (t >= -kOnOutline_mm && u >= 0.0 && u <= 1.0 && t < best_t) best_t = t;
+  }
+  if (!std::isfinite(best_t) || outward.norm() == 0.0) return notch_at(name, outline, net_point);
+  return {name, net_point + best_t * outward, -outward};
 }
 
 }  // namespace
@@ -134,21 +144,43 @@ Mold make_mold(std::string name, const Eigen::MatrixXd& UV, const Eigen::MatrixX
   std::unordered_map<int, int> position_in_boundary;
   for (int i = 0; i < static_cast<int>(boundary_vertex.size()); ++i) position_in_boundary[boundary_vertex[i]] = i;
   std::vector<int> keep;
+  std::vector<std::pair<std::string, int>> landmark_at;  // name, index in the boundary
   for (const auto& [landmark, vertex] : landmark_vertices) {
     if (vertex < 0 || vertex >= UV.rows())
       throw EngineError("mold " + name + ": landmark " + landmark + " refers to vertex " + std::to_string(vertex) +
                         " of a patch with " + std::to_string(UV.rows()) + " vertices");
-    if (const auto found = position_in_boundary.find(vertex); found != position_in_boundary.end())
+    if (const auto found = position_in_boundary.find(vertex); found != position_in_boundary.end()) {
       keep.push_back(found->second);
+      landmark_at.emplace_back(landmark, found->second);
+    }
   }
 
   Mold mold;
   mold.name = std::move(name);
-  mold.outline = select_points(boundary, simplify_outline(boundary, options.simplify_tolerance_mm, keep));
-  if (options.allowance_mm > 0.0)
-    mold.outline = offset_outward(mold.outline, options.allowance_mm, options.simplify_tolerance_mm);
+  const std::vector<int> kept = simplify_outline(boundary, options.simplify_tolerance_mm, keep);
+  mold.outline = select_points(boundary, kept);
+  const bool balance = options.balance_notches.seam_spacing_mm != 0.0 || options.balance_notches.feather_spacing_mm != 0.0;
+  std::vector<NetEdge> edges;
+  if (options.edge_allowances || balance) {
+    for (auto& [landmark, index] : landmark_at)
+      index = static_cast<int>(std::lower_bound(kept.begin(), kept.end(), index) - kept.begin());
+    try {
+      edges = split_net_edges(mold.outline, landmark_at);
+    } catch (const EngineError& error) {
+      throw EngineError("mold " + mold.name + ": " + error.what());
+    }
+  }
+  const Polygon2 net = mold.outline;
+  const auto& per_edge = options.edge_allowances;
+  if (per_edge && (per_edge->lasting_mm != 0.0 || per_edge->seam_mm != 0.0 || per_edge->top_mm != 0.0))
+    mold.outline = grow_by_edge_allowances(net, edges, *options.edge_allowances, std::max(options.simplify_tolerance_mm, 0.002));
+  else if (options.allowance_mm > 0.0)
+    mold.outline = offset_outward(net, options.allowance_mm, options.simplify_tolerance_mm);
+  if (mold.outline.points != net.points) mold.net = net;
   for (const auto& [landmark, vertex] : landmark_vertices)
     mold.marks.push_back(notch_at(landmark, mold.outline, UV.row(vertex).transpose()));
+  for (const NetNotch& notch : balance_notch_points(edges, options.balance_notches))
+    mold.marks.push_back(notch_along_normal(notch.name, mold.outline, notch.position_mm, notch.outward_normal));
   return mold;
 }
 

@@ -10,18 +10,25 @@
 //      "Algorithms for the reduction of the number of points required to represent a digitized
 //      line", Cartographica 10(2)); spans whose chord would cross another chord are refined again
 //      until the result is simple, so simplification never introduces a self-intersection,
-//   4. an optional outward allowance (lasting or seam margin) is added by a Clipper offset with
-//      round joins (Clipper 6.4, Angus Johnson), arc tolerance = simplify tolerance,
+//   4. an optional outward allowance is added: either one distance all around (a Clipper offset
+//      with round joins, Clipper 6.4 by Angus Johnson, arc tolerance = simplify tolerance) or one
+//      per edge between the landmarks (lasting margin, seam allowance, top line; edge_allowance.hpp),
+//      the simplified outline is kept as the mold's net line (the last's edge),
 //   5. every landmark vertex becomes a notch mark on the final outline: the nearest outline point
-//      and the inward normal there. Landmark vertices are always kept by the simplification, so
-//      without allowance the notch sits exactly on the landmark.
+//      (its perpendicular projection) and the inward normal there. Landmark vertices are always
+//      kept by the simplification, so without allowance the notch sits exactly on the landmark,
+//   6. optional balance notches along the centre cut and the feather line (balance_notches.hpp),
+//      placed on the net line and projected onto the outline the same way.
 #include <Eigen/Core>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "engine/core/mesh_topology.hpp"
 #include "engine/core/polygon.hpp"
+#include "engine/mold/balance_notches.hpp"
+#include "engine/mold/edge_allowance.hpp"
 
 namespace lastcut {
 
@@ -33,16 +40,23 @@ struct MoldMark {
   Point2 inward_direction = Point2::Zero();
 };
 
-// outline: counter-clockwise, simple, mm; marks: notches on it.
+// outline: counter-clockwise, simple, mm; marks: notches on it. net: the last's edge inside the
+// allowance (where the leather is folded or stitched), drawn but never cut; empty when the mold
+// has no allowance (the outline is the net line).
 struct Mold {
   std::string name;
   Polygon2 outline;
   std::vector<MoldMark> marks;
+  Polygon2 net;
 };
 
 struct MoldOptions {
   double simplify_tolerance_mm = 0.02;  // max distance of a dropped boundary vertex from the outline
-  double allowance_mm = 0.0;            // outward margin added all around (>= 0)
+  double allowance_mm = 0.0;            // outward margin added all around (>= 0), without landmarks
+  // Per-edge allowances instead of allowance_mm (which must then be 0); need the landmarks
+  // toe, heel, top_back, top_front on the outline.
+  std::optional<EdgeAllowances> edge_allowances;
+  BalanceNotches balance_notches;       // off by default; needs the same landmarks
 };
 
 // Length of a notch line as drawn in DXF and SVG and cut by the mark tool (mm).

@@ -107,8 +107,9 @@ std::string text_of(const Entity& entity) {
 }  // namespace
 
 void write_mold_dxf(const std::filesystem::path& path, const Mold& mold) {
-  DxfDocument dxf(DxfVersion::R12, {{"CUT", 7}, {"MARK", 1}, {"LABEL", 3}});  // white, red, green
+  DxfDocument dxf(DxfVersion::R12, {{"CUT", 7}, {"MARK", 1}, {"LABEL", 3}, {"NET", 5}});  // white, red, green, blue
   dxf.polyline("CUT", mold.outline.points, true);
+  if (!mold.net.points.empty()) dxf.polyline("NET", mold.net.points, true);
   for (const auto& mark : mold.marks) {
     const Point2 inner = notch_inner_end(mark);
     dxf.line("MARK", mark.position_mm, inner);
@@ -126,7 +127,7 @@ void write_mold_dxf(const std::filesystem::path& path, const Mold& mold) {
 Mold read_mold_dxf(const std::filesystem::path& path) {
   const std::vector<Entity> entities = read_entities(path);
   Mold mold;
-  int outlines = 0;
+  int outlines = 0, net_lines = 0;
   struct Notch {
     Point2 from, to;
   };
@@ -135,17 +136,22 @@ Mold read_mold_dxf(const std::filesystem::path& path) {
   for (size_t e = 0; e < entities.size(); ++e) {
     const Entity& entity = entities[e];
     const std::string layer = entity.layer();
-    if (layer == "CUT" && (entity.type == "POLYLINE" || entity.type == "LWPOLYLINE")) {
-      if (!(flags_of(entity) & 1)) throw EngineError(path.string() + ": the outline on layer CUT is not closed");
-      ++outlines;
+    const bool is_polyline = entity.type == "POLYLINE" || entity.type == "LWPOLYLINE";
+    if (is_polyline && (layer == "CUT" || layer == "NET")) {
+      if (!(flags_of(entity) & 1))
+        throw EngineError(path.string() + ": the " + (layer == "CUT" ? "outline" : "net line") + " on layer " + layer +
+                          " is not closed");
+      if (layer == "CUT") ++outlines;
+      if (layer == "NET") ++net_lines;
+      std::vector<Point2>& points = layer == "CUT" ? mold.outline.points : mold.net.points;
       if (entity.type == "LWPOLYLINE") {
-        mold.outline.points = points_of(path, entity);
+        points = points_of(path, entity);
       } else {
-        mold.outline.points.clear();
+        points.clear();
         for (size_t v = e + 1; v < entities.size() && entities[v].type == "VERTEX"; ++v) {
           const auto vertex = points_of(path, entities[v]);
           if (vertex.size() != 1) throw EngineError(path.string() + ": a VERTEX without one coordinate pair");
-          mold.outline.points.push_back(vertex.front());
+          points.push_back(vertex.front());
         }
       }
     } else if (layer == "MARK" && entity.type == "LINE") {
@@ -167,6 +173,11 @@ Mold read_mold_dxf(const std::filesystem::path& path) {
     throw EngineError(path.string() + ": " + std::to_string(outlines) + " outlines on layer CUT; one mold per file");
   if (mold.outline.points.size() < 3) throw EngineError(path.string() + ": the outline on layer CUT has fewer than 3 points");
   make_counter_clockwise(mold.outline);
+  if (net_lines > 1)
+    throw EngineError(path.string() + ": " + std::to_string(net_lines) + " net lines on layer NET; one mold per file");
+  if (net_lines == 1 && mold.net.points.size() < 3)
+    throw EngineError(path.string() + ": the net line on layer NET has fewer than 3 points");
+  make_counter_clockwise(mold.net);
   for (const auto& notch : notches) {
     MoldMark mark;
     mark.position_mm = notch.from;

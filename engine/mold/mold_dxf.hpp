@@ -5,6 +5,8 @@
 //   layer MARK  one LINE per notch, from the outline inward kNotchLength_mm long, and a TEXT
 //               with the notch name at its inner end
 //   layer LABEL a TEXT with the mold name inside the outline
+//   layer NET   one closed POLYLINE, the net line (the last's edge inside the allowance), only
+//               when the mold has an allowance; drawn for the pattern maker, never cut
 // The reader accepts what the writer writes, and also LWPOLYLINE outlines (R14+ files).
 #include <filesystem>
 

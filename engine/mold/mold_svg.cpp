@@ -97,7 +97,14 @@ void write_mold_svg(const std::filesystem::path& path, const Mold& mold, const E
   }
   svg << "</g>\n<polygon id=\"outline\" fill=\"none\" stroke=\"black\" stroke-width=\"0.35\" points=\"";
   for (const auto& p : mold.outline.points) svg << frame.at(p) << ' ';
-  svg << "\"/>\n<g id=\"marks\" stroke=\"#0050c8\" stroke-width=\"0.5\" font-family=\"sans-serif\" font-size=\"3\" "
+  svg << "\"/>\n";
+  // The net line (the last's edge) dashed inside the cut outline: drawn, never cut.
+  if (!mold.net.points.empty()) {
+    svg << "<polygon id=\"net\" fill=\"none\" stroke=\"#303030\" stroke-width=\"0.25\" stroke-dasharray=\"2,1\" points=\"";
+    for (const auto& p : mold.net.points) svg << frame.at(p) << ' ';
+    svg << "\"/>\n";
+  }
+  svg << "<g id=\"marks\" stroke=\"#0050c8\" stroke-width=\"0.5\" font-family=\"sans-serif\" font-size=\"3\" "
          "fill=\"#0050c8\">\n";
   for (const auto& mark : mold.marks) {
     const Point2 inner = notch_inner_end(mark);

@@ -1,6 +1,7 @@
 #pragma once
 // A picture of a mold for people: the flattened triangles coloured by how much the leather has to
-// stretch there (a heat map with a legend), the cutting outline, the notches and a 50 mm scale bar.
+// stretch there (a heat map with a legend), the cutting outline, the net line inside the allowance
+// (dashed), the notches and a 50 mm scale bar.
 // The SVG is sized in millimetres, so printed at 100 % it is the mold at 1:1. Y points up as in
 // the DXF (the picture is not mirrored).
 #include <Eigen/Core>

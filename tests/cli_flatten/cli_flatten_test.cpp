@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <sstream>
@@ -159,6 +160,44 @@ TEST_F(CliFlatten, RefusesAMissingFileAndBadOptions) {
   const fs::path patch = dir_ / "patch-for-options.obj";
   write_mesh(patch, curved_patch(10, 5));
   expect_refused(patch, "--no-segment --allowance=-3", "allowance");
+}
+
+TEST_F(CliFlatten, RefusesBadEdgeAllowancesAndNotchSpacingsInOneLine) {
+  const fs::path patch = dir_ / "patch-for-edges.obj";
+  write_mesh(patch, curved_patch(10, 5));
+  expect_refused(patch, "--no-segment --lasting=-1", "--lasting must be between 0 and 50 mm, not -1");
+  expect_refused(patch, "--no-segment --seam 80", "--seam must be between 0 and 50 mm, not 80");
+  expect_refused(patch, "--no-segment --top nan", "--top must be between 0 and 50 mm, not nan");
+  expect_refused(patch, "--no-segment --allowance 2 --seam 4",
+                 "give --allowance (all edges) or --lasting/--seam/--top (per edge), not both");
+  expect_refused(patch, "--no-segment --balance-notches 2",
+                 "--balance-notches must be off, a spacing in mm (0 or 5 to 500) or SEAM_MM,FEATHER_MM, not \"2\"");
+  expect_refused(patch, "--no-segment --balance-notches 20,x", "--balance-notches must be off");
+  // A patch has no landmarks, so it has no edges to give allowances to.
+  expect_refused(patch, "--no-segment --lasting 15", "mold patch: per-edge allowances need the landmark");
+}
+
+TEST_F(CliFlatten, PerEdgeAllowancesAndBalanceNotchesReachTheMoldFiles) {
+  LastParams params = LastParams::for_eu_size(39, FootSide::Left);
+  params.target_triangles = 8000;
+  const fs::path scan = dir_ / "last-edges.stl";
+  write_stl_binary(scan, generate_last(params).mesh);
+  const fs::path out = dir_ / "molds-edges";
+  const CommandRun run = flatten("'" + scan.string() + "' -o '" + out.string() +
+                                 "' --lasting 16 --seam 5 --top 0 --balance-notches 20,50");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  for (const char* name : {"medial", "lateral"}) {
+    const Mold mold = read_mold_dxf(out / (std::string(name) + ".dxf"));
+    ASSERT_GE(mold.net.points.size(), 3u) << name;
+    EXPECT_GT(signed_area(mold.outline), signed_area(mold.net) + 100 * 16.0) << name;  // a 16 mm margin on >= 100 mm
+    std::map<std::string, int> count;
+    for (const MoldMark& mark : mold.marks) count[mark.name.substr(0, mark.name.find_last_of('_'))]++;
+    EXPECT_GE(count["balance_seam_front"], 2) << name;
+    EXPECT_GE(count["balance_seam_back"], 1) << name;
+    EXPECT_GE(count["balance_feather"], 2) << name;
+    const std::string svg = read_text(out / (std::string(name) + ".svg"));
+    EXPECT_NE(svg.find("<polygon id=\"net\""), std::string::npos) << name;
+  }
 }
 
 void expect_same_mesh_layout(const fs::path& mesh3d, const fs::path& flat) {

@@ -35,13 +35,13 @@ TEST(MoldsStep, TheSidecarsSideNamesASymmetricLastsHalves) {
   JobTicket ticket;
   ticket.order = "77";
   ticket.side = "right";
-  const Result<MoldsMade> named = compute_molds(scan, folder / "named", ticket, 0.0, 30.0);
+  const Result<MoldsMade> named = compute_molds(scan, folder / "named", ticket, MoldOptions{}, 30.0);
   ASSERT_TRUE(named) << named.error();
   EXPECT_EQ(named->measures["side"], "right");
   EXPECT_EQ(labels_of(folder / "named"), (std::vector<std::string>{"#77 R lat", "#77 R med"}));
 
   ticket.side = "";
-  const Result<MoldsMade> unnamed = compute_molds(scan, folder / "unnamed", ticket, 0.0, 30.0);
+  const Result<MoldsMade> unnamed = compute_molds(scan, folder / "unnamed", ticket, MoldOptions{}, 30.0);
   ASSERT_TRUE(unnamed) << unnamed.error();
   EXPECT_TRUE(unnamed->measures["side"].is_null());
   ASSERT_EQ(unnamed->measures["warnings"].size(), 1u);

@@ -17,14 +17,16 @@ struct FlatPatch {
 // Radius of the rim at angle theta (mm): 60 +- 8 mm, five bays.
 inline double rim_radius_mm(double theta) { return 60.0 + 8.0 * std::sin(5.0 * theta) + 1.5 * std::sin(23.0 * theta); }
 
-inline FlatPatch wavy_disk(int rim_count = 720, int rings = 12) {
+// A star-shaped patch around the origin with rim radius radius_mm(theta), triangulated in rings.
+template <typename Radius>
+FlatPatch ring_patch(Radius radius_mm, int rim_count, int rings) {
   FlatPatch patch;
   patch.UV.resize(1 + rings * rim_count, 2);
   patch.UV.row(0) << 0.0, 0.0;
   for (int r = 1; r <= rings; ++r)
     for (int k = 0; k < rim_count; ++k) {
       const double theta = 2.0 * std::numbers::pi * k / rim_count;
-      const double radius = rim_radius_mm(theta) * r / rings;
+      const double radius = radius_mm(theta) * r / rings;
       patch.UV.row(1 + (r - 1) * rim_count + k) << radius * std::cos(theta), radius * std::sin(theta);
     }
   patch.F.resize(rim_count + 2 * (rings - 1) * rim_count, 3);
@@ -40,6 +42,23 @@ inline FlatPatch wavy_disk(int rim_count = 720, int rings = 12) {
   patch.rim_first = 1 + (rings - 1) * rim_count;
   patch.rim_count = rim_count;
   return patch;
+}
+
+inline FlatPatch wavy_disk(int rim_count = 720, int rings = 12) { return ring_patch(rim_radius_mm, rim_count, rings); }
+
+// A mold-like patch: an ellipse 240 x 110 mm, a little fuller at the top, heel left, toe right.
+// Its rim bends no tighter than a 20 mm radius, so a 15 mm lasting margin is an exact offset.
+inline double mold_rim_radius_mm(double theta) {
+  const double a = 120.0, b = 55.0 + 5.0 * std::sin(theta);
+  return a * b / std::hypot(b * std::cos(theta), a * std::sin(theta));
+}
+inline FlatPatch mold_like_patch(int rim_count = 1440, int rings = 10) { return ring_patch(mold_rim_radius_mm, rim_count, rings); }
+
+// Landmarks of mold_like_patch at these rim angles (degrees), counter-clockwise:
+// top_front 50, top_back 150, heel 195, toe 345. So the top line runs 50 -> 150, the back seam
+// 150 -> 195, the feather line 195 -> 345 (the bottom) and the front seam 345 -> 50.
+inline int mold_rim_vertex(const FlatPatch& patch, double degrees) {
+  return patch.rim_first + static_cast<int>(std::lround(degrees / 360.0 * patch.rim_count)) % patch.rim_count;
 }
 
 // Even-odd point-in-polygon test.

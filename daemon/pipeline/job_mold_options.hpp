@@ -1,0 +1,17 @@
+#pragma once
+// The mold options of one job: the sidecar's allowances and balance notches, else the daemon
+// configuration's defaults ([jobs] in lastcut.toml). docs/mold-allowances.md explains the keys.
+//   - allowance_mm in the sidecar: one allowance all around (the per-edge defaults are not used);
+//   - else any of lasting_mm, seam_mm, top_mm in the sidecar, or a non-zero per-edge default:
+//     per-edge allowances, each edge from the sidecar or else its default;
+//   - else the uniform default_allowance_mm.
+// Balance notch spacings come from the sidecar or else the defaults (0 = off).
+#include "daemon/config/daemon_config.hpp"
+#include "daemon/spool/job_ticket.hpp"
+#include "engine/mold/mold.hpp"
+
+namespace lastcut::daemon {
+
+MoldOptions job_mold_options(const JobTicket& ticket, const JobsConfig& jobs);
+
+}  // namespace lastcut::daemon
