@@ -325,6 +325,8 @@ TEST_F(CliFlatten, RefusesAnUnknownSplitRule) {
   const CommandRun run = flatten("'" + (dir_ / "any.stl").string() + "' -o '" + out.string() + "' --split sideways");
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_EQ(run.err, "lastcut: error: --split must be auto or expert, not \"sideways\"\n");
+}
+
 // ABF++ end to end: both halves flip-free, scaled to their 3D area exactly, molds enclosing that area.
 TEST_F(CliFlatten, FlattensALastWithAbf) {
   LastParams params = LastParams::for_eu_size(43, FootSide::Left);
