@@ -58,11 +58,24 @@ std::vector<BenchHalf> reference_halves(bool largest) {
   return halves;
 }
 
-std::vector<BenchHalf> find_foot_halves(int half_triangles) {
+namespace {
+
+TriMesh subdivided_find_foot() {
   MeshReadOptions read;
   read.unit = LengthUnit::Metre;
   TriMesh foot = read_mesh(std::string(LASTCUT_SHARED_DATA_DIR) + "/meshes/find-template-foot.obj", read).mesh;
   for (int level = 0; level < 4; ++level) foot = subdivide_midpoint(foot);
+  return foot;
+}
+
+}  // namespace
+
+Segmentation find_foot_segmentation(int foot_triangles) {
+  return segment_last(orient_last(decimate(subdivided_find_foot(), foot_triangles)));
+}
+
+std::vector<BenchHalf> find_foot_halves(int half_triangles) {
+  const TriMesh foot = subdivided_find_foot();
   // The two halves hold ~86 % of the foot's triangles (the ankle cut and the sole rim are left out);
   // correct the whole foot's size by what the first cut gave.
   double halves_fraction = 0.86;

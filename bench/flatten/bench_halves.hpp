@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "engine/core/tri_mesh.hpp"
+#include "engine/segment/segment_last.hpp"
 
 namespace lastcut::bench {
 
@@ -22,6 +23,10 @@ std::vector<BenchHalf> reference_halves(bool largest);
 // subdivided 1:256 (midpoint), QEM-decimated so that each half has about half_triangles triangles,
 // then stood up and cut by the same orient + segment steps a scan goes through.
 std::vector<BenchHalf> find_foot_halves(int half_triangles);
+
+// The FIND foot template subdivided 1:256 (midpoint), QEM-decimated to foot_triangles and cut by
+// lastcut's own orient + segment steps: both halves with their landmarks.
+Segmentation find_foot_segmentation(int foot_triangles);
 
 // Medial halves of generated EU 42 lasts (lastgen + segment) with half_triangles[i] triangles +/- 2 %
 // (the last's triangle count is corrected from the half it gave until the half is within 2 %), and the
