@@ -1,16 +1,19 @@
 // Flattening benchmark: ARAP on half lasts (init, factorization, per-iteration, total, distortion reached)
 // against plain baselines measured in the same run, the sparse Cholesky backends, and LSCM vs ARAP.
-// Usage: bench_flatten [--no-400k] [--arap-only] [--starts] [--only NAME-PART] [--save FOLDER]   Prints markdown tables (docs/benchmarks-flatten.md).
+// Usage: bench_flatten [--no-400k] [--arap-only] [--starts] [--quality RUNS] [--trace] [--only NAME-PART]
+//                      [--save FOLDER] [--from FOLDER]   Prints markdown tables (docs/benchmarks-flatten.md).
 #include <time.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <optional>
 #include <string>
 
 #include "bench/flatten/bench_halves.hpp"
+#include "bench/flatten/convergence_quality.hpp"
 #include "bench/flatten/start_comparison.hpp"
 #include "engine/flatten/arap_iterations.hpp"
 #include "engine/flatten/cotangent_laplacian.hpp"
@@ -125,21 +128,31 @@ void solver_rows(const BenchHalf& half) {
 int main(int argc, char** argv) {
   using namespace lastcut;
   using namespace lastcut::bench;
-  bool largest = true, arap_only = false, starts = false;
+  bool largest = true, arap_only = false, starts = false, trace = false;
+  int quality_runs = 0;  // --quality RUNS: only the speed-and-quality table
   std::string only;         // run only the halves whose name contains this
   std::string save_folder;  // write each half there as <triangles>.off (to profile one half alone)
+  std::string from_folder;  // read the halves from there (OFF in mm, as --save wrote them) instead of making them
   for (int i = 1; i < argc; ++i) {
     largest = largest && std::strcmp(argv[i], "--no-400k") != 0;
     arap_only = arap_only || std::strcmp(argv[i], "--arap-only") == 0;
     starts = starts || std::strcmp(argv[i], "--starts") == 0;
+    trace = trace || std::strcmp(argv[i], "--trace") == 0;
+    if (std::strcmp(argv[i], "--quality") == 0 && i + 1 < argc) quality_runs = std::atoi(argv[++i]);
     if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) only = argv[++i];
     if (std::strcmp(argv[i], "--save") == 0 && i + 1 < argc) save_folder = argv[++i];
+    if (std::strcmp(argv[i], "--from") == 0 && i + 1 < argc) from_folder = argv[++i];
   }
-  std::vector<BenchHalf> halves = reference_halves(largest);
-  for (BenchHalf& foot_half : find_foot_halves(100000)) halves.push_back(std::move(foot_half));
-  std::vector<int> generated_sizes = {25000, 100000};
-  if (largest) generated_sizes.push_back(400000);
-  for (BenchHalf& generated : generated_halves(generated_sizes)) halves.push_back(std::move(generated));
+  std::vector<BenchHalf> halves;
+  if (!from_folder.empty()) {
+    halves = saved_halves(from_folder);
+  } else {
+    halves = reference_halves(largest);
+    for (BenchHalf& foot_half : find_foot_halves(100000)) halves.push_back(std::move(foot_half));
+    std::vector<int> generated_sizes = {25000, 100000};
+    if (largest) generated_sizes.push_back(400000);
+    for (BenchHalf& generated : generated_halves(generated_sizes)) halves.push_back(std::move(generated));
+  }
   std::erase_if(halves, [&](const BenchHalf& h) { return h.name.find(only) == std::string::npos; });
   std::sort(halves.begin(), halves.end(),
             [](const BenchHalf& a, const BenchHalf& b) { return a.mesh.triangle_count() < b.mesh.triangle_count(); });
@@ -149,6 +162,11 @@ int main(int argc, char** argv) {
     }
   }
 
+  if (quality_runs > 0 || trace) {
+    if (quality_runs > 0) print_convergence_quality(halves, quality_runs);
+    if (trace) print_outline_by_iteration(halves);
+    return 0;
+  }
   std::printf("## ARAP (default options: boundary-first start, Auto solver = %s, Anderson acceleration, tolerance 1e-6)\n\n",
               std::string(to_string(SparseCholesky().backend())).c_str());
   std::printf("| half | triangles | init s | factorize s (count) | per iteration ms | iterations | total s | "
