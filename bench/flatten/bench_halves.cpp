@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include "engine/core/engine_error.hpp"
 #include "engine/mesh/openmesh_types.hpp"
@@ -134,6 +135,15 @@ std::vector<BenchHalf> generated_halves(const std::vector<int>& half_triangles) 
     } catch (const EngineError& e) {
       std::printf("(generated half of %dk skipped: %s)\n", target / 1000, e.what());
     }
+  }
+  return halves;
+}
+
+std::vector<BenchHalf> saved_halves(const std::string& folder) {
+  std::vector<BenchHalf> halves;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    if (entry.path().extension() != ".off") continue;
+    halves.push_back({"saved " + entry.path().filename().string(), testing::read_off(entry.path(), 1.0)});
   }
   return halves;
 }

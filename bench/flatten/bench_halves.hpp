@@ -33,6 +33,9 @@ Segmentation find_foot_segmentation(int foot_triangles);
 // lateral half too for the 100,000 target.
 std::vector<BenchHalf> generated_halves(const std::vector<int>& half_triangles);
 
+// Every *.off file in `folder` (mm, as bench_flatten --save writes them), named by its file name.
+std::vector<BenchHalf> saved_halves(const std::string& folder);
+
 // Wall seconds of segment_last on a generated EU 42 last of `last_triangles` triangles (best of
 // `repeats`), or a negative value when the segmentation gives an empty half.
 double segmentation_seconds(int last_triangles, int repeats);

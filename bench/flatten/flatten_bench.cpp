@@ -1,18 +1,21 @@
 // Flattening benchmark: ARAP on half lasts (init, factorization, per-iteration, total, distortion reached)
 // against plain baselines measured in the same run, the sparse Cholesky backends, and LSCM vs ABF++ vs ARAP.
-// Usage: bench_flatten [--no-400k] [--arap-only] [--starts] [--methods-only] [--only NAME-PART] [--save FOLDER] | --split-agreement
+// Usage: bench_flatten [--no-400k] [--arap-only] [--starts] [--methods-only] [--quality RUNS] [--trace]
+//                      [--only NAME-PART] [--save FOLDER] [--from FOLDER] | --split-agreement
 // Prints markdown tables (docs/benchmarks-flatten.md).
 #include <time.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <optional>
 #include <string>
 
 #include "bench/flatten/bench_halves.hpp"
 #include "bench/flatten/split_agreement.hpp"
+#include "bench/flatten/convergence_quality.hpp"
 #include "bench/flatten/start_comparison.hpp"
 #include "engine/flatten/arap_iterations.hpp"
 #include "engine/flatten/cotangent_laplacian.hpp"
@@ -163,26 +166,36 @@ void print_method_comparison(const std::vector<BenchHalf>& halves) {
 int main(int argc, char** argv) {
   using namespace lastcut;
   using namespace lastcut::bench;
-  bool largest = true, arap_only = false, starts = false, methods_only = false;
+  bool largest = true, arap_only = false, starts = false, methods_only = false, trace = false;
+  int quality_runs = 0;  // --quality RUNS: only the speed-and-quality table
   std::string only;         // run only the halves whose name contains this
   std::string save_folder;  // write each half there as <triangles>.off (to profile one half alone)
+  std::string from_folder;  // read the halves from there (OFF in mm, as --save wrote them) instead of making them
   for (int i = 1; i < argc; ++i) {
     largest = largest && std::strcmp(argv[i], "--no-400k") != 0;
     arap_only = arap_only || std::strcmp(argv[i], "--arap-only") == 0;
     starts = starts || std::strcmp(argv[i], "--starts") == 0;
     methods_only = methods_only || std::strcmp(argv[i], "--methods-only") == 0;
+    trace = trace || std::strcmp(argv[i], "--trace") == 0;
+    if (std::strcmp(argv[i], "--quality") == 0 && i + 1 < argc) quality_runs = std::atoi(argv[++i]);
     if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) only = argv[++i];
     if (std::strcmp(argv[i], "--save") == 0 && i + 1 < argc) save_folder = argv[++i];
+    if (std::strcmp(argv[i], "--from") == 0 && i + 1 < argc) from_folder = argv[++i];
     if (std::strcmp(argv[i], "--split-agreement") == 0) {  // only the automatic vs expert split table
       print_split_agreement();
       return 0;
     }
   }
-  std::vector<BenchHalf> halves = reference_halves(largest);
-  for (BenchHalf& foot_half : find_foot_halves(100000)) halves.push_back(std::move(foot_half));
-  std::vector<int> generated_sizes = {25000, 100000};
-  if (largest) generated_sizes.push_back(400000);
-  for (BenchHalf& generated : generated_halves(generated_sizes)) halves.push_back(std::move(generated));
+  std::vector<BenchHalf> halves;
+  if (!from_folder.empty()) {
+    halves = saved_halves(from_folder);
+  } else {
+    halves = reference_halves(largest);
+    for (BenchHalf& foot_half : find_foot_halves(100000)) halves.push_back(std::move(foot_half));
+    std::vector<int> generated_sizes = {25000, 100000};
+    if (largest) generated_sizes.push_back(400000);
+    for (BenchHalf& generated : generated_halves(generated_sizes)) halves.push_back(std::move(generated));
+  }
   std::erase_if(halves, [&](const BenchHalf& h) { return h.name.find(only) == std::string::npos; });
   std::sort(halves.begin(), halves.end(),
             [](const BenchHalf& a, const BenchHalf& b) { return a.mesh.triangle_count() < b.mesh.triangle_count(); });
@@ -192,6 +205,11 @@ int main(int argc, char** argv) {
     }
   }
 
+  if (quality_runs > 0 || trace) {
+    if (quality_runs > 0) print_convergence_quality(halves, quality_runs);
+    if (trace) print_outline_by_iteration(halves);
+    return 0;
+  }
   if (methods_only) {
     print_method_comparison(halves);
     return 0;

@@ -19,14 +19,18 @@ Eigen::VectorXd AndersonAcceleration::mix(const Eigen::Ref<const Eigen::VectorXd
   if (dF_.rows() != n) {
     dF_.resize(n, depth_);
     dG_.resize(n, depth_);
+    gram_.resize(depth_, depth_);
     reset();
   }
   Eigen::VectorXd f = g - x;
   if (has_previous_) {
     dF_.col(next_) = f - previous_f_;
     dG_.col(next_) = g - previous_g_;
-    next_ = (next_ + 1) % depth_;
     if (stored_ < depth_) ++stored_;
+    // The Gram matrix dF^T dF changes only in the new column's row and column: depth dot products
+    // instead of depth^2 per step (the history is long: 2 #V).
+    for (int j = 0; j < stored_; ++j) gram_(next_, j) = gram_(j, next_) = dF_.col(j).dot(dF_.col(next_));
+    next_ = (next_ + 1) % depth_;
   }
   previous_f_ = f;
   previous_g_ = g;
@@ -35,10 +39,9 @@ Eigen::VectorXd AndersonAcceleration::mix(const Eigen::Ref<const Eigen::VectorXd
 
   // Small least-squares problem by its normal equations, lightly regularised: the columns of dF become
   // nearly dependent as the iteration converges.
-  const auto F = dF_.leftCols(stored_);
-  Eigen::MatrixXd normal = F.transpose() * F;
+  Eigen::MatrixXd normal = gram_.topLeftCorner(stored_, stored_);
   normal.diagonal().array() += 1e-12 * normal.trace() + 1e-300;
-  const Eigen::VectorXd theta = normal.ldlt().solve(F.transpose() * f);
+  const Eigen::VectorXd theta = normal.ldlt().solve(dF_.leftCols(stored_).transpose() * f);
   return g - dG_.leftCols(stored_) * theta;
 }
 

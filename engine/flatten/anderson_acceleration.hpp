@@ -25,6 +25,7 @@ class AndersonAcceleration {
   int next_ = 0;    // column the next difference goes to
   bool has_previous_ = false;
   Eigen::MatrixXd dF_, dG_;
+  Eigen::MatrixXd gram_;  // depth x depth: dF^T dF of the stored columns
   Eigen::VectorXd previous_f_, previous_g_;
 };
 

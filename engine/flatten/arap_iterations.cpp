@@ -45,44 +45,59 @@ bool no_triangle_worse(const std::vector<char>& before, const std::vector<char>&
 // History length of Anderson acceleration; Peng et al. 2018 find 5-6 a good default for ARAP.
 constexpr int kAndersonDepth = 5;
 
+// Per corner j of each triangle, the constant 2-vector c_j = w_(j+1) e_(j+1) - w_(j+2) e_(j+2) (6 #F, mm):
+// the cross-covariance is sum_j (u_j, v_j) against c_j and corner j's share of the right-hand side is R c_j,
+// so the local step reads and writes each vertex once per triangle instead of once per edge end.
+std::vector<double> corner_vectors(const TriangleFrames& frames) {
+  const size_t face_count = frames.triangles.size();
+  std::vector<double> corner(6 * face_count);
+  for (size_t f = 0; f < face_count; ++f) {
+    const double* w = &frames.half_weight[3 * f];
+    const double* e = &frames.edge_local_mm[6 * f];
+    for (int j = 0; j < 3; ++j) {
+      const int plus = (j + 1) % 3, minus = (j + 2) % 3;
+      corner[6 * f + 2 * j] = w[plus] * e[2 * plus] - w[minus] * e[2 * minus];
+      corner[6 * f + 2 * j + 1] = w[plus] * e[2 * plus + 1] - w[minus] * e[2 * minus + 1];
+    }
+  }
+  return corner;
+}
+
 // Local step: best rotation per triangle for the current map, the global step's right-hand side
-// (interleaved u, v per vertex) and the ARAP energy of the current map.
-double local_step(const TriangleFrames& frames, const Eigen::MatrixXd& UV, double constant_energy,
-                  std::vector<double>& rhs) {
-  std::fill(rhs.begin(), rhs.end(), 0.0);
+// (interleaved u, v per vertex) and the ARAP energy of the current map. corner: corner_vectors(frames).
+double local_step(const TriangleFrames& frames, const std::vector<double>& corner, const Eigen::MatrixXd& UV,
+                  double constant_energy, std::vector<double>& rhs_vector) {
+  std::fill(rhs_vector.begin(), rhs_vector.end(), 0.0);
+  double* rhs = rhs_vector.data();
   const double* u = UV.col(0).data();
   const double* v = UV.col(1).data();
   const double* weights = frames.half_weight.data();
-  const double* edges = frames.edge_local_mm.data();
+  const double* corners = corner.data();
   double energy = constant_energy;
   const size_t face_count = frames.triangles.size();
   for (size_t f = 0; f < face_count; ++f) {
-    const auto& t = frames.triangles[f];
+    const int i0 = frames.triangles[f][0], i1 = frames.triangles[f][1], i2 = frames.triangles[f][2];
+    const double u0 = u[i0], u1 = u[i1], u2 = u[i2], v0 = v[i0], v1 = v[i1], v2 = v[i2];
     const double* w = weights + 3 * f;
-    const double* e = edges + 6 * f;
+    const double* c = corners + 6 * f;
+    const double a = u0 * c[0] + v0 * c[1] + u1 * c[2] + v1 * c[3] + u2 * c[4] + v2 * c[5];
+    const double b = v0 * c[0] - u0 * c[1] + v1 * c[2] - u1 * c[3] + v2 * c[4] - u2 * c[5];
     // Edge k runs from t[k+1] to t[k+2].
-    const double du[3] = {u[t[2]] - u[t[1]], u[t[0]] - u[t[2]], u[t[1]] - u[t[0]]};
-    const double dv[3] = {v[t[2]] - v[t[1]], v[t[0]] - v[t[2]], v[t[1]] - v[t[0]]};
-    double a = 0.0, b = 0.0, squared = 0.0;
-    for (int k = 0; k < 3; ++k) {
-      a += w[k] * (du[k] * e[2 * k] + dv[k] * e[2 * k + 1]);
-      b += w[k] * (dv[k] * e[2 * k] - du[k] * e[2 * k + 1]);
-      squared += w[k] * (du[k] * du[k] + dv[k] * dv[k]);
-    }
-    // Closest rotation [c -s; s c] to S (closest_rotation2x2, inlined: this loop is the hot path).
+    const double du0 = u2 - u1, du1 = u0 - u2, du2 = u1 - u0;
+    const double dv0 = v2 - v1, dv1 = v0 - v2, dv2 = v1 - v0;
+    const double squared = w[0] * (du0 * du0 + dv0 * dv0) + w[1] * (du1 * du1 + dv1 * dv1) +
+                           w[2] * (du2 * du2 + dv2 * dv2);
+    // Closest rotation [cs -sn; sn cs] to S (closest_rotation2x2, inlined: this loop is the hot path).
     const double norm = std::sqrt(a * a + b * b);
-    const double c = norm > 0.0 ? a / norm : 1.0;
-    const double s = norm > 0.0 ? b / norm : 0.0;
+    const double cs = norm > 0.0 ? a / norm : 1.0;
+    const double sn = norm > 0.0 ? b / norm : 0.0;
     energy += squared - 2.0 * norm;
-    for (int k = 0; k < 3; ++k) {
-      const double rx = w[k] * (c * e[2 * k] - s * e[2 * k + 1]);
-      const double ry = w[k] * (s * e[2 * k] + c * e[2 * k + 1]);
-      const int to = t[(k + 2) % 3], from = t[(k + 1) % 3];
-      rhs[2 * to] += rx;
-      rhs[2 * to + 1] += ry;
-      rhs[2 * from] -= rx;
-      rhs[2 * from + 1] -= ry;
-    }
+    rhs[2 * i0] += cs * c[0] - sn * c[1];
+    rhs[2 * i0 + 1] += sn * c[0] + cs * c[1];
+    rhs[2 * i1] += cs * c[2] - sn * c[3];
+    rhs[2 * i1 + 1] += sn * c[2] + cs * c[3];
+    rhs[2 * i2] += cs * c[4] - sn * c[5];
+    rhs[2 * i2 + 1] += sn * c[4] + cs * c[5];
   }
   return std::max(energy, 0.0);
 }
@@ -112,6 +127,7 @@ ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const Redu
   // An isometric map reaches energy 0: stop once the energy is at rounding level of the problem's scale.
   const double negligible_energy = 1e-13 * constant_energy;
 
+  const std::vector<double> corner = corner_vectors(frames);
   std::vector<double> rhs(2 * static_cast<size_t>(vertex_count));
   Eigen::MatrixXd reduced_rhs(laplacian.matrix.rows(), 2);
   std::vector<double> spare_rhs(rhs.size());
@@ -120,7 +136,7 @@ ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const Redu
   std::vector<char> state_now, state_candidate;
   if (flip_guard) classify_triangles(frames, UV, state_now);
 
-  double energy = local_step(frames, UV, constant_energy, rhs);
+  double energy = local_step(frames, corner, UV, constant_energy, rhs);
   report.energy_start = energy;
   for (int iteration = 0; iteration < max_iterations; ++iteration) {
     if (energy <= negligible_energy) {
@@ -158,17 +174,17 @@ ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const Redu
       if (step < 1.0) ++report.shortened_steps;
       state_now.swap(state_candidate);
       UV.swap(candidate);
-      energy = local_step(frames, UV, constant_energy, rhs);
+      energy = local_step(frames, corner, UV, constant_energy, rhs);
     } else if (!accelerate) {
       UV.swap(candidate);
-      energy = local_step(frames, UV, constant_energy, rhs);
+      energy = local_step(frames, corner, UV, constant_energy, rhs);
     } else {
       // Anderson-accelerated point, kept only if it lowers the energy more than the plain step is
       // guaranteed to (Peng et al. 2018); otherwise the plain step and a fresh history.
       accelerated = anderson.mix(Eigen::Map<const Eigen::VectorXd>(UV.data(), UV.size()),
                                  Eigen::Map<const Eigen::VectorXd>(candidate.data(), candidate.size()))
                         .reshaped(UV.rows(), 2);
-      const double accelerated_energy = local_step(frames, accelerated, constant_energy, spare_rhs);
+      const double accelerated_energy = local_step(frames, corner, accelerated, constant_energy, spare_rhs);
       if (accelerated_energy < previous) {
         UV.swap(accelerated);
         rhs.swap(spare_rhs);
@@ -177,7 +193,7 @@ ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const Redu
         anderson.reset();
         ++report.rejected_accelerations;
         UV.swap(candidate);
-        energy = local_step(frames, UV, constant_energy, rhs);
+        energy = local_step(frames, corner, UV, constant_energy, rhs);
       }
     }
     ++report.iterations;
