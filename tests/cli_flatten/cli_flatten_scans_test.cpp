@@ -17,23 +17,15 @@
 #include "engine/mesh/fill_holes.hpp"
 #include "engine/mesh/write_mesh.hpp"
 #include "tests/scan/ragged_holes.hpp"
+#include "tests/support/lastcut_cli.hpp"
 
 namespace lastcut {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandRun {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::CommandRun;
+using test::read_text;
 
 int count_lines_starting(const std::string& text, const std::string& prefix) {
   std::istringstream in(text);
@@ -51,16 +43,7 @@ class CliFlattenScans : public ::testing::Test {
   static void TearDownTestSuite() { fs::remove_all(dir_); }
 
   static CommandRun flatten(const fs::path& scan, const std::string& out_name, const std::string& extra) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command = std::string("'") + LASTCUT_BINARY_DIR + "/bin/lastcut' flatten '" + scan.string() +
-                                "' -o '" + (dir_ / out_name).string() + "' " + extra + " >'" + out.string() + "' 2>'" +
-                                err.string() + "'";
-    const int status = std::system(command.c_str());
-    CommandRun run;
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.out = read_text(out);
-    run.err = read_text(err);
-    return run;
+    return test::run_lastcut("flatten '" + scan.string() + "' -o '" + (dir_ / out_name).string() + "' " + extra, dir_);
   }
 
   static TriMesh right_last() {

@@ -18,24 +18,15 @@
 #include "engine/lastgen/generate_last.hpp"
 #include "engine/mesh/write_mesh.hpp"
 #include "engine/mold/mold_dxf.hpp"
+#include "tests/support/lastcut_cli.hpp"
 
 namespace lastcut {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandRun {
-  int exit_code = -1;
-  bool crashed = false;
-  std::string out, err;
-};
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::CommandRun;
+using test::read_text;
 
 class CliFlatten : public ::testing::Test {
  protected:
@@ -45,19 +36,7 @@ class CliFlatten : public ::testing::Test {
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
 
-  static CommandRun flatten(const std::string& arguments) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command = std::string("'") + LASTCUT_BINARY_DIR + "/bin/lastcut' flatten " + arguments + " >'" +
-                                out.string() + "' 2>'" + err.string() + "'";
-    const int status = std::system(command.c_str());
-    CommandRun run;
-    // The shell reports a child killed by a signal as 128 + signal.
-    run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.crashed = !WIFEXITED(status) || run.exit_code > 128;
-    run.out = read_text(out);
-    run.err = read_text(err);
-    return run;
-  }
+  static CommandRun flatten(const std::string& arguments) { return test::run_lastcut("flatten " + arguments, dir_); }
 
   // Non-zero exit, no crash, exactly one line "lastcut: error: ..." that contains `reason`.
   static void expect_refused(const fs::path& scan, const std::string& extra, const std::string& reason) {

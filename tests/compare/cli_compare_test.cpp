@@ -13,23 +13,15 @@
 #include <string>
 
 #include "engine/mold/mold_dxf.hpp"
+#include "tests/support/lastcut_cli.hpp"
 
 namespace lastcut {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandRun {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::CommandRun;
+using test::read_text;
 
 class CliCompare : public ::testing::Test {
  protected:
@@ -41,13 +33,7 @@ class CliCompare : public ::testing::Test {
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
 
-  static CommandRun run(const std::string& arguments) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command = std::string("'") + LASTCUT_BINARY_DIR + "/bin/lastcut' " + arguments + " >'" +
-                                out.string() + "' 2>'" + err.string() + "'";
-    const int status = std::system(command.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(out), read_text(err)};
-  }
+  static CommandRun run(const std::string& arguments) { return test::run_lastcut(arguments, dir_); }
 
   // The medial mold's outline as an SVG pattern in mm: mirrored (a pattern of the other foot),
   // with the toe corner pulled `pull_mm` along the outline's heel->toe direction.

@@ -12,14 +12,12 @@
 #include <string>
 
 #include "engine/mesh/read_mesh.hpp"
+#include "tests/support/lastcut_cli.hpp"
 
 namespace lastcut {
 namespace {
 
-struct CommandResult {
-  int exit_code;
-  std::string out, err;
-};
+using CommandResult = test::CommandRun;
 
 class CliGenerate : public ::testing::Test {
  protected:
@@ -29,18 +27,10 @@ class CliGenerate : public ::testing::Test {
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
 
-  static std::string slurp(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
+  static std::string slurp(const std::filesystem::path& path) { return test::read_text(path); }
 
   CommandResult run(const std::string& arguments) const {
-    const std::string command = std::string("'") + LASTCUT_BINARY_DIR + "/bin/lastcut' generate " + arguments + " >'" +
-                                (dir_ / "out.txt").string() + "' 2>'" + (dir_ / "err.txt").string() + "'";
-    const int status = std::system(command.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir_ / "out.txt"), slurp(dir_ / "err.txt")};
+    return test::run_lastcut("generate " + arguments, dir_);
   }
 
   std::filesystem::path dir_;

@@ -13,14 +13,12 @@
 #include "engine/subdiv/quad_obj.hpp"
 #include "engine/subdiv/sample_surface.hpp"
 #include "tests/subdiv/quad_test_meshes.hpp"
+#include "tests/support/lastcut_cli.hpp"
 
 namespace lastcut {
 namespace {
 
-struct CommandResult {
-  int exit_code;
-  std::string out, err;
-};
+using CommandResult = test::CommandRun;
 
 class CliSubdivide : public ::testing::Test {
  protected:
@@ -30,17 +28,9 @@ class CliSubdivide : public ::testing::Test {
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
 
-  static std::string slurp(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
+  static std::string slurp(const std::filesystem::path& path) { return test::read_text(path); }
   CommandResult run(const std::string& arguments) const {
-    const std::string command = std::string("'") + LASTCUT_BINARY_DIR + "/bin/lastcut' subdivide " + arguments + " >'" +
-                                (dir_ / "out.txt").string() + "' 2>'" + (dir_ / "err.txt").string() + "'";
-    const int status = std::system(command.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir_ / "out.txt"), slurp(dir_ / "err.txt")};
+    return test::run_lastcut("subdivide " + arguments, dir_);
   }
   static int line_count(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
 
