@@ -6,6 +6,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "daemon/cli/commands.hpp"
 #include "daemon/cli/mold_allowance_options.hpp"
@@ -67,13 +68,28 @@ ScanOptions options_from(const FlattenArguments& arguments) {
   return options;
 }
 
+// "" when value is one of choices, otherwise the one-line refusal: `--split must be auto or expert, not "x"`.
+// Choice options are checked here rather than by CLI11, which prints two lines and exits 105.
+std::string choice_problem(const std::string& option, const std::string& value, const std::vector<std::string>& choices) {
+  for (const std::string& choice : choices)
+    if (value == choice) return "";
+  std::string listed;
+  for (size_t i = 0; i < choices.size(); ++i)
+    listed += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i];
+  return option + " must be " + listed + ", not \"" + value + "\"";
+}
+
 int run_flatten(const FlattenArguments& arguments) {
-  if (!(arguments.allowance_mm >= 0.0) || arguments.allowance_mm > 50.0) {
-    print_error("allowance must be between 0 and 50 mm, not " + std::to_string(arguments.allowance_mm));
+  for (const std::string& problem : {choice_problem("--method", arguments.method, {"arap", "lscm", "abf"}),
+                                     choice_problem("--unit", arguments.unit, {"auto", "mm", "cm", "m", "in"}),
+                                     choice_problem("--split", arguments.split, {"auto", "expert"}),
+                                     arguments.side.empty() ? "" : choice_problem("--side", arguments.side, {"left", "right"})}) {
+    if (problem.empty()) continue;
+    print_error(problem);
     return 2;
   }
-  if (arguments.split != "auto" && arguments.split != "expert") {
-    print_error("--split must be auto or expert, not \"" + arguments.split + "\"");
+  if (!(arguments.allowance_mm >= 0.0) || arguments.allowance_mm > 50.0) {
+    print_error("allowance must be between 0 and 50 mm, not " + std::to_string(arguments.allowance_mm));
     return 2;
   }
   if (!(arguments.max_hole_mm >= 0.0) || arguments.max_hole_mm > 100.0) {
@@ -119,9 +135,8 @@ void add_flatten_command(CLI::App& app, int& exit_code) {
   command->add_option("scan", arguments->scan, "scan of the last: STL, OBJ, PLY or OFF")->required();
   command->add_option("-o,--out", arguments->out_dir, "output folder (created if missing)")->required();
   command->add_option("--method", arguments->method, "flattening method: arap (least stretch), lscm (conformal) or abf (ABF++, angle based)")
-      ->check(CLI::IsMember({"arap", "lscm", "abf"}))
       ->capture_default_str();
-  // Checked in run_flatten, so a wrong value gets the same one-line refusal as other bad input.
+  // Choices are checked in run_flatten, so a wrong value gets the same one-line refusal as other bad input.
   command->add_option("--split", arguments->split,
                       "lengthwise cut: auto (plane through the contours' toe, heel and top centres) or expert "
                       "(through the heel middle, the second toe and the top centre)")
@@ -136,11 +151,9 @@ void add_flatten_command(CLI::App& app, int& exit_code) {
                       "balance notch spacing along the centre cut and the feather line: off, MM or SEAM_MM,FEATHER_MM")
       ->capture_default_str();
   command->add_option("--unit", arguments->unit, "length unit of the scan: auto, mm, cm, m or in")
-      ->check(CLI::IsMember({"auto", "mm", "cm", "m", "in"}))
       ->capture_default_str();
   command->add_option("--max-triangles", arguments->max_triangles, "refuse (or simplify) scans with more triangles");
-  command->add_option("--side", arguments->side, "the foot the last is for: names the halves of a symmetric last")
-      ->check(CLI::IsMember({"left", "right"}));
+  command->add_option("--side", arguments->side, "the foot the last is for (left or right): names the halves of a symmetric last");
   command->add_option("--max-hole", arguments->max_hole_mm, "close scan holes up to this size across, mm (larger: refused)")
       ->capture_default_str();
   command->callback([arguments, &exit_code] { exit_code = run_flatten(*arguments); });

@@ -336,7 +336,11 @@ TEST_F(CliFlatten, FlattensALastWithAbf) {
   const CommandRun wrong = flatten("'" + scan.string() + "' -o '" + (dir_ / "refused").string() + "' --method abf++");
   EXPECT_FALSE(wrong.crashed);
   EXPECT_NE(wrong.exit_code, 0);
-  EXPECT_NE(wrong.err.find("--method"), std::string::npos) << wrong.err;
+  EXPECT_EQ(wrong.exit_code, 2);
+  EXPECT_EQ(wrong.err, "lastcut: error: --method must be arap, lscm or abf, not \"abf++\"\n");
+  const CommandRun unit = flatten("'" + scan.string() + "' -o '" + (dir_ / "refused").string() + "' --unit furlong");
+  EXPECT_EQ(unit.exit_code, 2);
+  EXPECT_EQ(unit.err, "lastcut: error: --unit must be auto, mm, cm, m or in, not \"furlong\"\n");
 }
 
 TEST_F(CliFlatten, FlattensAnOpenPatchWithNoSegment) {
