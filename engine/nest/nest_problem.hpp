@@ -18,6 +18,13 @@ struct ItemMark {
   Point2 to_mm = Point2::Zero();
 };
 
+// A part of a piece that needs better leather than the rest of it (the toe and vamp of a shoe mold,
+// which show on the finished shoe), in the item's own frame (mm).
+struct QualityRegion {
+  Polygon2 shape;       // counter-clockwise, inside the item's shape
+  int min_quality = 0;  // this region may not overlap a zone whose quality is below this
+};
+
 struct NestItem {
   int id = 0;
   Polygon2 shape;                             // counter-clockwise, own frame, mm
@@ -27,6 +34,11 @@ struct NestItem {
   std::optional<double> grain_deg;            // grain direction in the own frame; must end up along the bin's x axis
   double grain_tolerance_deg = 0;             // allowed deviation from the x axis (either direction)
   int min_quality = 0;                        // may not overlap a zone whose quality is below this
+  std::vector<QualityRegion> quality_regions;  // parts of the piece with a stricter min_quality than the whole
+  std::string pair_group;                     // items sharing a non-empty group (the left and right molds of one
+                                              // order) go on one hide, near each other, or none of them is placed
+  int priority = 0;                           // when not every piece fits, higher priority is placed first
+                                              // (the daemon: older jobs)
   std::string label;                          // short text drawn by the pen (order, size, L/R)
   std::vector<ItemMark> marks;
 };
@@ -40,6 +52,9 @@ struct QualityZone {
 // A hide or sheet: outer outline, defects (holes: nothing may be cut there), quality zones.
 struct Bin {
   int id = 0;
+  std::string name;                  // the hide's own id (digitizer or stock number), for reports
+  std::optional<double> backbone_deg;  // the hide's grain (backbone) direction, counter-clockwise from its x
+                                       // axis; when set, items' grain follows it instead of the x axis
   Polygon2 outer;
   std::vector<Polygon2> holes;
   std::vector<QualityZone> zones;
