@@ -9,6 +9,7 @@
 #include "drivers/grbl/grbl_codes.hpp"
 #include "drivers/grbl/grbl_session.hpp"
 #include "drivers/grbl/motion_watch.hpp"
+#include "drivers/seconds_text.hpp"
 
 namespace lastcut::drivers::grbl {
 
@@ -152,7 +153,7 @@ SendResult Streamer::run() {
       next_poll_s = now + config.status_poll_s;
     }
     if (session_.seconds_since_last_byte() > config.timeout_s) {
-      return interrupted("no reply from the machine for " + std::to_string(static_cast<int>(config.timeout_s)) + " s", false);
+      return interrupted("no reply from the machine for " + seconds_text(config.timeout_s), false);
     }
 
     if (motion_.stalled(monotonic_s())) {

@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "drivers/grbl/grbl_codes.hpp"
+#include "drivers/seconds_text.hpp"
 
 namespace lastcut::drivers::grbl {
 
@@ -82,7 +83,8 @@ void GrblSession::note(const Reply& reply) {
   }
 }
 
-StepResult GrblSession::query_status(Reply& status, double timeout_s) {
+StepResult GrblSession::query_status(Reply& status, double timeout_s, double stated_timeout_s) {
+  if (stated_timeout_s <= 0) stated_timeout_s = timeout_s;
   const double deadline = monotonic_s() + timeout_s;
   double next_poll = 0;
   std::string last_garbage;
@@ -104,9 +106,9 @@ StepResult GrblSession::query_status(Reply& status, double timeout_s) {
   }
   if (!last_garbage.empty()) {
     return {false, false, "only unintelligible replies ('" + last_garbage + "') within " +
-                              std::to_string(static_cast<int>(timeout_s)) + " s (wrong baud rate or not a grbl machine?)"};
+                              seconds_text(stated_timeout_s) + " (wrong baud rate or not a grbl machine?)"};
   }
-  return {false, false, "no status reply from grbl within " + std::to_string(static_cast<int>(timeout_s)) + " s on " +
+  return {false, false, "no status reply from grbl within " + seconds_text(stated_timeout_s) + " on " +
                             link_.describe()};
 }
 
@@ -128,7 +130,7 @@ StepResult GrblSession::send_and_wait(const std::string& line, std::vector<std::
         if (feedback) feedback->push_back(reply.text);
     }
   }
-  return {false, false, "no reply to '" + line + "' within " + std::to_string(static_cast<int>(config_.timeout_s)) + " s"};
+  return {false, false, "no reply to '" + line + "' within " + seconds_text(config_.timeout_s)};
 }
 
 StepResult GrblSession::connect() {
@@ -190,11 +192,12 @@ StepResult GrblSession::feed_hold() {
   int idle_reports = 0;
   while (monotonic_s() < deadline) {
     Reply status;
-    if (auto r = query_status(status, deadline - monotonic_s()); !r.ok) return r;
+    // The message names the whole stop's wait, not what was left of it when the replies stopped.
+    if (auto r = query_status(status, deadline - monotonic_s(), config_.timeout_s); !r.ok) return r;
     idle_reports = status.state == "Idle" ? idle_reports + 1 : 0;
     if (state_ == "Hold:0" || idle_reports >= 2 || status.state == "Alarm") return {};
   }
-  return {false, false, "machine did not come to a stop (Hold:0) within " + std::to_string(static_cast<int>(config_.timeout_s)) + " s"};
+  return {false, false, "machine did not come to a stop (Hold:0) within " + seconds_text(config_.timeout_s)};
 }
 
 StepResult GrblSession::resume() {
@@ -216,7 +219,7 @@ StepResult GrblSession::soft_reset() {
     if (auto r = next_reply(reply, got, deadline - monotonic_s()); !r.ok) return r;
     if (got && reply.kind == ReplyKind::Banner) return {};
   }
-  return {false, false, "grbl did not restart after soft reset within " + std::to_string(static_cast<int>(config_.timeout_s)) + " s"};
+  return {false, false, "grbl did not restart after soft reset within " + seconds_text(config_.timeout_s)};
 }
 
 }  // namespace lastcut::drivers::grbl

@@ -36,7 +36,9 @@ class GrblSession {
   // its banner first), applies the unlock policy, refuses a busy machine, reads the RX buffer size.
   StepResult connect();
   // One status report, polling every 0.25 s until timeout_s.
-  StepResult query_status(Reply& status, double timeout_s);
+  // `stated_timeout_s` (default: timeout_s) is the wait the error message names, when this query is
+  // the last part of a longer wait.
+  StepResult query_status(Reply& status, double timeout_s, double stated_timeout_s = 0);
   // Sends one line and waits for its ok / error:N (the send-and-wait used for `$` commands).
   StepResult send_and_wait(const std::string& line, std::vector<std::string>* feedback = nullptr);
   // Feed hold: '!' then waits for "Hold:0" (motion fully stopped).

@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "drivers/hpgl/hpgl_status.hpp"
+#include "drivers/seconds_text.hpp"
 
 namespace lastcut::drivers::hpgl {
 
@@ -82,7 +83,7 @@ class HpglJob {
     bool got = false;
     if (IoStatus r = reader_.answer(text, got, config_.timeout_s); !r.ok) return fail_io(r, error);
     if (!got) {
-      error = std::string("no answer to ESC.") + command + " within " + std::to_string(static_cast<int>(config_.timeout_s)) + " s";
+      error = std::string("no answer to ESC.") + command + " within " + seconds_text(config_.timeout_s);
       return false;
     }
     if (!parse_number(text, value)) {
@@ -156,7 +157,7 @@ SendResult HpglJob::run(const std::string& program) {
     if (xonxoff && reader_.paused()) {
       // XOFF while a long path is cut is normal; for many times the silence timeout it is a stall.
       if (reader_.paused_for_s() > kNoProgressFactor * config_.timeout_s) {
-        return stop("cutter held XOFF for more than " + std::to_string(static_cast<int>(kNoProgressFactor * config_.timeout_s)) + " s");
+        return stop("cutter held XOFF for more than " + seconds_text(kNoProgressFactor * config_.timeout_s));
       }
       if (IoStatus r = reader_.pump(0.01); !r.ok) return stop("link lost: " + r.error);
       continue;
@@ -172,7 +173,7 @@ SendResult HpglJob::run(const std::string& program) {
       if (free_bytes <= 0) {
         // A full buffer is normal while a long path is cut, but not for ever.
         if (now_s() - last_accepted_s > kNoProgressFactor * config_.timeout_s) {
-          return stop("cutter accepted no data for " + std::to_string(static_cast<int>(kNoProgressFactor * config_.timeout_s)) + " s");
+          return stop("cutter accepted no data for " + seconds_text(kNoProgressFactor * config_.timeout_s));
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
         continue;
@@ -222,7 +223,7 @@ SendResult HpglJob::run(const std::string& program) {
       continue;  // the keepalive ESC.E answered "no error"
     }
     if (now_s() - last_answer_s > config_.timeout_s) {
-      return stop("cutter stopped answering for " + std::to_string(static_cast<int>(config_.timeout_s)) + " s while finishing");
+      return stop("cutter stopped answering for " + seconds_text(config_.timeout_s) + " while finishing");
     }
     if (now_s() >= next_keepalive_s) {
       if (IoStatus w = link_.write("\x1b.E", config_.timeout_s); !w.ok) return stop(w.error);

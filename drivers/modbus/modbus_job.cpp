@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "drivers/modbus/modbus_client.hpp"
+#include "drivers/seconds_text.hpp"
 
 namespace lastcut::drivers::modbus {
 
@@ -96,7 +97,7 @@ bool ModbusJob::wait_for(const std::function<bool(const PlcState&)>& done, PlcSt
       return false;
     } else {
       if (now_s() - last_reply_s > config_.timeout_s) {
-        error = "no reply from the PLC for " + std::to_string(static_cast<int>(config_.timeout_s)) + " s (" + read_error + ")";
+        error = "no reply from the PLC for " + seconds_text(config_.timeout_s) + " (" + read_error + ")";
         return false;
       }
       log_.push_back("link error, reconnecting: " + read_error);

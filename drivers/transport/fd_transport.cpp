@@ -1,5 +1,6 @@
 // FdTransport: poll(2)-based reads and writes with timeouts on a non-blocking descriptor.
 #include "drivers/transport/fd_transport.hpp"
+#include "drivers/seconds_text.hpp"
 
 #include <cerrno>
 #include <chrono>
@@ -80,7 +81,7 @@ IoStatus FdTransport::write(std::string_view data, double timeout_s) {
     const double left_s = timeout_s - seconds_since(start);
     if (left_s <= 0) {
       return IoStatus::failure(description_ + ": the device has not accepted data for " +
-                               std::to_string(static_cast<int>(timeout_s)) + " s (flow control held or link stalled)");
+                               seconds_text(timeout_s) + " (flow control held or link stalled)");
     }
     pollfd pfd{fd_, POLLOUT, 0};
     if (::poll(&pfd, 1, to_poll_ms(left_s < 0.05 ? left_s : 0.05)) < 0 && errno != EINTR) {
@@ -103,7 +104,7 @@ IoStatus FdTransport::drain(double timeout_s) {
     if (::ioctl(fd_, TIOCOUTQ, &queued) != 0 || queued <= 0) return IoStatus::success();
     if (seconds_since(start) > timeout_s) {
       return IoStatus::failure(description_ + ": " + std::to_string(queued) + " bytes still queued after " +
-                               std::to_string(static_cast<int>(timeout_s)) + " s (flow control held)");
+                               seconds_text(timeout_s) + " (flow control held)");
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
