@@ -51,11 +51,7 @@ Result<MoldsMade> compute_molds(const std::filesystem::path& scan, const std::fi
     if (result.segments.empty()) return Status::failure("no mold could be made from the scan");
     MoldsMade made;
     made.measures = write_scan_outputs(result, job_dir / kMoldsFolder);
-    if ((ticket.side == "left" || ticket.side == "right") && result.side &&
-        ticket.side != std::string(to_string(*result.side))) {
-      made.measures["warning"] = "the sidecar says " + ticket.side + ", the scan looks like a " +
-                                 std::string(to_string(*result.side)) + " last";
-    }
+    // A sidecar side that contradicts the scan is among result.warnings (orient_last), in measures.
     const std::vector<NestItem> items = job_items(result, ticket, scan.filename().string());
     if (Status written = write_file_durably(job_dir / kItemsFile, items_to_json(items).dump() + "\n"); !written)
       return written.with_context("molds made but not saved: ");

@@ -87,6 +87,11 @@ void Pipeline::compute_job(const std::string& job_id, const std::string& worker)
     return;
   }
   spdlog::info("{}: {} molds ready in {:.1f} s", state->label(), outcome->piece_count, took_s);
+  // What the engine noticed but got past (a side contradicting the sidecar, a scan hole closed)
+  // must reach the operator's log, not only report.json.
+  if (const auto warnings = outcome->measures.find("warnings"); warnings != outcome->measures.end()) {
+    for (const auto& warning : *warnings) spdlog::warn("{}: {}", state->label(), warning.get<std::string>());
+  }
   if (!checked->hold_reason.empty()) {
     // Computed first: `lastcut requeue` of the held job then nests it as it is (the operator's approval).
     hold_job(*spool_, *state, checked->hold_reason);

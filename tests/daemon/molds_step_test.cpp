@@ -49,5 +49,22 @@ TEST(MoldsStep, TheSidecarsSideNamesASymmetricLastsHalves) {
   EXPECT_EQ(labels_of(folder / "unnamed"), (std::vector<std::string>{"#77 side_a", "#77 side_b"}));
 }
 
+TEST(MoldsStep, ASidecarSideThatContradictsTheScanIsWarnedOnce) {
+  const auto folder = testing::scratch_folder("molds-step-side-mismatch");
+  LastParams params = LastParams::for_eu_size(40, FootSide::Left);
+  params.target_triangles = 12000;
+  const auto scan = folder / "left.stl";
+  write_stl_binary(scan, generate_last(params).mesh);
+
+  JobTicket ticket;
+  ticket.order = "78";
+  ticket.side = "right";
+  const Result<MoldsMade> made = compute_molds(scan, folder / "job", ticket, MoldOptions{}, 30.0);
+  ASSERT_TRUE(made) << made.error();
+  ASSERT_EQ(made->measures["warnings"].size(), 1u) << made->measures["warnings"].dump();
+  EXPECT_TRUE(made->measures["warnings"][0].get<std::string>().starts_with("the side named is right but the scan is a left last"));
+  EXPECT_FALSE(made->measures.contains("warning")) << made->measures["warning"].dump();
+}
+
 }  // namespace
 }  // namespace lastcut::daemon
