@@ -76,11 +76,13 @@ Status check_broker(const StatusConfig& config, double timeout_s) {
     reply.answered.notify_all();
   });
   Status result = Status::success();
-  if (const int connecting = mosquitto_connect(client, config.host.c_str(), config.port, config.keepalive_s);
+  // Asynchronous, so that a host that drops packets costs timeout_s and not the TCP timeout.
+  mosquitto_loop_start(client);
+  if (const int connecting = mosquitto_connect_async(client, config.host.c_str(), config.port, config.keepalive_s);
       connecting != MOSQ_ERR_SUCCESS) {
     result = Status::failure(mqtt_error_text(connecting));
+    mosquitto_loop_stop(client, true);
   } else {
-    mosquitto_loop_start(client);
     std::unique_lock lock(answer.mutex);
     if (!answer.answered.wait_for(lock, std::chrono::duration<double>(timeout_s), [&] { return answer.done; })) {
       result = Status::failure("no answer within " + std::to_string(static_cast<int>(timeout_s)) + " s");

@@ -78,6 +78,8 @@ void MqttStatus::stop() {
 void MqttStatus::say_goodbye() {
   std::unique_lock lock(mutex_);
   if (!connected_) return;  // the broker already has, or will have, our last will
+  // Acknowledgements are collected from here on: the broker may answer before the id is known.
+  collecting_acks_ = true;
   lock.unlock();
   flush();
   const std::string offline = "false";
@@ -85,10 +87,9 @@ void MqttStatus::say_goodbye() {
   const int sent = mosquitto_publish(client_, &id, topics_.station_online(config_.station).c_str(),
                                      static_cast<int>(offline.size()), offline.data(), kQos, true);
   lock.lock();
-  goodbye_id_ = id;
+  const auto acknowledged = [&] { return acknowledged_ids_.count(id) > 0; };
   if (sent != MOSQ_ERR_SUCCESS ||
-      !wake_.wait_for(lock, std::chrono::seconds(2), [this] { return goodbye_acknowledged_ || !connected_; }) ||
-      !goodbye_acknowledged_) {
+      !wake_.wait_for(lock, std::chrono::seconds(2), [&] { return acknowledged() || !connected_; }) || !acknowledged()) {
     spdlog::warn("status: the broker did not confirm station {} offline; its last will says so", config_.station);
   }
 }
@@ -135,8 +136,8 @@ void MqttStatus::on_disconnect(mosquitto*, void* self, int code) {
 void MqttStatus::on_publish(mosquitto*, void* self, int message_id) {
   auto& status = *static_cast<MqttStatus*>(self);
   std::lock_guard lock(status.mutex_);
-  if (message_id == status.goodbye_id_) {
-    status.goodbye_acknowledged_ = true;
+  if (status.collecting_acks_) {
+    status.acknowledged_ids_.insert(message_id);
     status.wake_.notify_all();
   }
 }

@@ -85,8 +85,8 @@ class MqttStatus final : public StatusObserver {
   std::size_t dropped_events_ = 0;                // since the last "back" log line
   std::map<std::string, CutterStatus> cutters_;   // last reported, for change detection
   std::map<std::string, std::size_t> percent_sent_;  // cutter -> last progress percent published
-  int goodbye_id_ = -1;                           // message id of online = "false"
-  bool goodbye_acknowledged_ = false;
+  bool collecting_acks_ = false;                  // stopping: waiting for online = "false" to be confirmed
+  std::set<int> acknowledged_ids_;
 };
 
 }  // namespace lastcut::daemon
