@@ -23,6 +23,7 @@ struct BrokerAnswer {
   std::condition_variable answered;
   bool done = false;
   int connack = -1;
+  std::string lost;  // why the connection ended before an answer (in the network thread: its errno)
 };
 
 }  // namespace
@@ -65,13 +66,16 @@ Status check_broker(const StatusConfig& config, double timeout_s) {
   mosquitto_connect_callback_set(client, [](mosquitto*, void* data, int code) {
     auto& reply = *static_cast<BrokerAnswer*>(data);
     std::lock_guard lock(reply.mutex);
+    if (reply.done) return;
     reply.done = true;
     reply.connack = code;
     reply.answered.notify_all();
   });
-  mosquitto_disconnect_callback_set(client, [](mosquitto*, void* data, int) {
+  mosquitto_disconnect_callback_set(client, [](mosquitto*, void* data, int code) {
     auto& reply = *static_cast<BrokerAnswer*>(data);
     std::lock_guard lock(reply.mutex);
+    if (reply.done) return;
+    reply.lost = mqtt_error_text(code);
     reply.done = true;
     reply.answered.notify_all();
   });
@@ -87,8 +91,7 @@ Status check_broker(const StatusConfig& config, double timeout_s) {
     if (!answer.answered.wait_for(lock, std::chrono::duration<double>(timeout_s), [&] { return answer.done; })) {
       result = Status::failure("no answer within " + std::to_string(static_cast<int>(timeout_s)) + " s");
     } else if (answer.connack != 0) {
-      result = Status::failure(answer.connack < 0 ? "the connection closed before the broker answered"
-                                                  : mosquitto_connack_string(answer.connack));
+      result = Status::failure(answer.connack < 0 ? answer.lost : mosquitto_connack_string(answer.connack));
     }
     lock.unlock();
     mosquitto_disconnect(client);

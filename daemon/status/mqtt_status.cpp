@@ -129,6 +129,14 @@ void MqttStatus::on_disconnect(mosquitto*, void* self, int code) {
   if (was_connected && !status.stopping_) {
     spdlog::warn("status: MQTT broker {} lost ({}); job events queue (at most {}), retrying", status.url_,
                  mqtt_error_text(code), status.config_.queue_limit);
+  } else if (!status.connected_once_ && !status.stopping_) {
+    // Never reached since the start: said once, retried by libmosquitto's thread.
+    const std::string reason = mqtt_error_text(code);
+    if (status.refused_reason_.empty()) {
+      spdlog::warn("status: MQTT broker {} not reachable ({}); retrying, the daemon works on meanwhile", status.url_,
+                   reason);
+      status.refused_reason_ = reason;
+    }
   }
   status.wake_.notify_all();
 }

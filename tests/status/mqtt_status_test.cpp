@@ -102,7 +102,8 @@ TEST(StatusMqtt, JobEventsInOrderAndTheCutterStateRetained) {
   ASSERT_TRUE(wait_until([&] { return rig.settled(1); }, 60)) << read_text(rig.daemon_log());
   const auto done = rig.jobs("done");
   ASSERT_EQ(done.size(), 1u) << read_text(rig.daemon_log());
-  const auto& [job, state] = *done.begin();
+  const std::string job = done.begin()->first;
+  const nlohmann::json state = done.begin()->second;
   const auto history = history_of(state);
   ASSERT_TRUE(watcher.wait_until([&] { return events_of(watcher, job).size() >= history.size(); }, 10));
   EXPECT_EQ(events_of(watcher, job), history) << "one event per state change, in order";
@@ -112,12 +113,12 @@ TEST(StatusMqtt, JobEventsInOrderAndTheCutterStateRetained) {
   bool seen_sending = false;
   for (const MqttMessage& message : watcher.on("lastcut/cutter/cutter-1/state")) {
     const auto payload = nlohmann::json::parse(message.payload);
-    if (payload["state"] == "sending") seen_sending = payload["batch"] == state["batch_id"];
+    if (payload["state"] == "sending") seen_sending = payload["batch"] == state["batch"];
   }
   EXPECT_TRUE(seen_sending);
   ASSERT_TRUE(watcher.wait_until(
       [&] { return last_json(watcher, "lastcut/cutter/cutter-1/state").value("state", "") == "idle"; }, 10));
-  expect_current_retained(broker, rig, state["batch_id"]);
+  expect_current_retained(broker, rig, state["batch"].get<std::string>());
 
   // A clean stop says offline itself.
   EXPECT_EQ(rig.stop_daemon(), 0);
@@ -158,13 +159,18 @@ TEST(StatusMqtt, ABrokerRestartNeitherStopsTheCutNorLosesTheStatus) {
   ASSERT_TRUE(wait_until([&] { return rig.settled(1); }, 60)) << read_text(rig.daemon_log());
   const auto done = rig.jobs("done");
   ASSERT_EQ(done.size(), 1u) << "the cut goes on without the broker: " << read_text(rig.daemon_log());
-  const auto& [job, state] = *done.begin();
+  const std::string job = done.begin()->first;
+  const nlohmann::json state = done.begin()->second;
   const auto history = history_of(state);
   ASSERT_GT(history.size(), 3u);
 
+  // The daemon paused while the broker comes back, so that the watcher hears every queued event.
+  rig.daemon()->signal(SIGSTOP);
   ASSERT_EQ(broker.start(), "");
   MqttSubscriber watcher(broker.port());
-  ASSERT_TRUE(watcher.wait_subscribed(10));
+  const bool subscribed = watcher.wait_subscribed(10);
+  rig.daemon()->signal(SIGCONT);
+  ASSERT_TRUE(subscribed);
   ASSERT_TRUE(wait_until([&] { return read_text(rig.daemon_log()).find("back;") != std::string::npos; }, 40))
       << read_text(rig.daemon_log());
   const std::string log = read_text(rig.daemon_log());
@@ -174,7 +180,25 @@ TEST(StatusMqtt, ABrokerRestartNeitherStopsTheCutNorLosesTheStatus) {
   // The newest three events arrive after the restart, in order.
   ASSERT_TRUE(watcher.wait_until([&] { return events_of(watcher, job).size() >= 3; }, 10));
   EXPECT_EQ(events_of(watcher, job), decltype(history)(history.end() - 3, history.end()));
-  expect_current_retained(broker, rig, state["batch_id"]);
+  expect_current_retained(broker, rig, state["batch"].get<std::string>());
+}
+
+TEST(StatusMqtt, ADaemonStartedBeforeTheBrokerConnectsWhenItComes) {
+  MosquittoBroker broker(scratch_folder("mqtt-late-broker"));
+  DaemonRig rig("mqtt-late", rig_options(broker));
+  rig.start_cutters();
+  rig.start_daemon();
+  ASSERT_TRUE(wait_until([&] { return read_text(rig.daemon_log()).find("not reachable") != std::string::npos; }, 10))
+      << read_text(rig.daemon_log());
+  ASSERT_EQ(broker.start(), "");
+  ASSERT_TRUE(wait_until([&] { return read_text(rig.daemon_log()).find("connected to MQTT broker") != std::string::npos; }, 20))
+      << read_text(rig.daemon_log());
+  MqttSubscriber late(broker.port());
+  ASSERT_TRUE(late.wait_until([&] { return last_payload(late, "lastcut/station/station-a/online") == "true"; }, 10));
+  EXPECT_TRUE(late.last("lastcut/station/station-a/online")->retained);
+  ASSERT_TRUE(late.wait_until([&] { return late.last("lastcut/cutter/cutter-1/state").has_value(); }, 10));
+  EXPECT_EQ(last_json(late, "lastcut/cutter/cutter-1/state")["state"], "idle");
+  EXPECT_EQ(count_occurrences(read_text(rig.daemon_log()), "not reachable"), 1) << "said once";
 }
 
 TEST(StatusMqtt, CheckConfigReportsTheBrokerAndRefusesBadTablesInOneLine) {

@@ -154,7 +154,7 @@ void MqttSubscriber::on_subscribe(mosquitto*, void* self, int, int, const int*) 
   subscriber.subscribed_ = true;
 }
 
-void MqttSubscriber::on_message(mosquitto*, void* self, const struct mosquitto_message* message) {
+void MqttSubscriber::on_message(mosquitto*, void* self, const mosquitto_message* message) {
   auto& subscriber = *static_cast<MqttSubscriber*>(self);
   std::lock_guard lock(subscriber.mutex_);
   subscriber.messages_.push_back(

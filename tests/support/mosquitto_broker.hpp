@@ -17,6 +17,7 @@
 #include <vector>
 
 struct mosquitto;
+struct mosquitto_message;
 
 namespace lastcut::test {
 
@@ -67,7 +68,7 @@ class MqttSubscriber {
  private:
   static void on_connect(mosquitto* client, void* self, int code);
   static void on_subscribe(mosquitto* client, void* self, int mid, int count, const int* granted);
-  static void on_message(mosquitto* client, void* self, const struct mosquitto_message* message);
+  static void on_message(mosquitto* client, void* self, const mosquitto_message* message);
 
   std::string filter_;
   mosquitto* client_ = nullptr;
