@@ -17,7 +17,7 @@ DEBIAN_PACKAGES=(
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # independent interpreters and tools the tests run against our output
-  hp2xx mbpoll socat systemd procps python3
+  hp2xx mbpoll socat systemd procps python3 openssl
   # the real grbl 1.1h firmware simulator (tests/peers) and the load it is tested under
   make gcc
   # fuzzing the parsers (clang's libFuzzer, tests/fuzz)

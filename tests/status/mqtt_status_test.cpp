@@ -233,5 +233,57 @@ TEST(StatusMqtt, CheckConfigReportsTheBrokerAndRefusesBadTablesInOneLine) {
   }
 }
 
+// mqtts:// with the CA of a certificate made here, and a broker that wants a password: the
+// client lastcutd publishes with is set up the same way as the one --check-config connects with.
+TEST(StatusMqtt, TlsAndPasswordsReachTheBroker) {
+  const auto folder = scratch_folder("mqtt-tls-broker");
+  const auto openssl = [&](const std::vector<std::string>& args) {
+    std::vector<std::string> argv{"/usr/bin/openssl"};
+    argv.insert(argv.end(), args.begin(), args.end());
+    return run_command(argv, folder / "openssl.log");
+  };
+  const std::string f = folder.string() + "/";
+  ASSERT_EQ(openssl({"req", "-x509", "-newkey", "rsa:2048", "-nodes", "-keyout", f + "ca.key", "-out", f + "ca.pem",
+                     "-days", "2", "-subj", "/CN=lastcut test CA"}), 0)
+      << "openssl (Debian package openssl): " << read_text(folder / "openssl.log");
+  ASSERT_EQ(openssl({"req", "-newkey", "rsa:2048", "-nodes", "-keyout", f + "server.key", "-out", f + "server.csr",
+                     "-subj", "/CN=127.0.0.1"}), 0);
+  write_text(folder / "san.ext", "subjectAltName=IP:127.0.0.1\n");
+  ASSERT_EQ(openssl({"x509", "-req", "-in", f + "server.csr", "-CA", f + "ca.pem", "-CAkey", f + "ca.key",
+                     "-CAcreateserial", "-out", f + "server.pem", "-days", "2", "-extfile", f + "san.ext"}), 0)
+      << read_text(folder / "openssl.log");
+  ASSERT_EQ(run_command({"/usr/bin/mosquitto_passwd", "-b", "-c", f + "passwords", "operator", "s3cret"},
+                        folder / "passwd.log"), 0)
+      << read_text(folder / "passwd.log");
+  MosquittoBroker broker(folder, "cafile " + f + "ca.pem\ncertfile " + f + "server.pem\nkeyfile " + f +
+                                     "server.key\nallow_anonymous false\npassword_file " + f + "passwords\n");
+  ASSERT_EQ(broker.start(), "");
+  const std::string url = "mqtts://127.0.0.1:" + std::to_string(broker.port());
+  RigOptions options;
+  options.extra_config = "[status]\nmqtt_url = \"" + url + "\"\nstation = \"station-a\"\nca_file = \"" + f +
+                         "ca.pem\"\nusername = \"operator\"\npassword = \"s3cret\"\n";
+  DaemonRig rig("mqtt-tls", options);
+  const auto out = rig.root() / "check.log";
+  const auto check = [&] {
+    std::filesystem::remove(out);
+    return run_command({binary("lastcutd").string(), "--check-config", rig.config_file().string()}, out);
+  };
+  EXPECT_EQ(check(), 0);
+  EXPECT_NE(read_text(out).find("status: MQTT broker " + url + " reachable"), std::string::npos) << read_text(out);
+  const std::string good = read_text(rig.config_file());
+  std::string wrong = good;
+  wrong.replace(wrong.find("s3cret"), 6, "guess");
+  write_text(rig.config_file(), wrong);
+  EXPECT_EQ(check(), 0);
+  EXPECT_NE(read_text(out).find("NOT reachable: Connection Refused: not authorised"), std::string::npos)
+      << read_text(out);
+  std::string plain = good;  // the TLS port spoken to without TLS: no MQTT answer
+  plain.replace(plain.find("mqtts://"), 8, "mqtt://");
+  plain.replace(plain.find("ca_file"), 7, "# ca_file");
+  write_text(rig.config_file(), plain);
+  EXPECT_EQ(check(), 0);
+  EXPECT_NE(read_text(out).find("NOT reachable"), std::string::npos) << read_text(out);
+}
+
 }  // namespace
 }  // namespace lastcut::daemon::testing

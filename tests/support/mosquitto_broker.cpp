@@ -54,11 +54,13 @@ std::string read_all(const std::filesystem::path& file) {
 
 }  // namespace
 
-MosquittoBroker::MosquittoBroker(std::filesystem::path folder) : folder_(std::move(folder)), port_(free_port()) {
+MosquittoBroker::MosquittoBroker(std::filesystem::path folder, const std::string& listener_lines)
+    : folder_(std::move(folder)), port_(free_port()) {
   std::filesystem::create_directories(folder_);
   std::ofstream config(folder_ / "mosquitto.conf");
   config << "listener " << port_ << " 127.0.0.1\n"
-         << "allow_anonymous true\n"
+         << (listener_lines.find("allow_anonymous") == std::string::npos ? "allow_anonymous true\n" : "")
+         << listener_lines
          << "persistence false\n"
          << "log_dest stderr\n"
          << "log_type error\nlog_type warning\nlog_type notice\nlog_type information\n"

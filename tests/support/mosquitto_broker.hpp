@@ -23,7 +23,8 @@ namespace lastcut::test {
 
 class MosquittoBroker {
  public:
-  explicit MosquittoBroker(std::filesystem::path folder);
+  // `listener_lines`: more settings of the listener (TLS files, password_file, allow_anonymous false).
+  explicit MosquittoBroker(std::filesystem::path folder, const std::string& listener_lines = "");
   ~MosquittoBroker();
   MosquittoBroker(const MosquittoBroker&) = delete;
   MosquittoBroker& operator=(const MosquittoBroker&) = delete;
