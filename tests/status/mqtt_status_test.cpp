@@ -126,6 +126,31 @@ TEST(StatusMqtt, JobEventsInOrderAndTheCutterStateRetained) {
   EXPECT_EQ(count_occurrences(read_text(rig.daemon_log()), "did not confirm station"), 0);
 }
 
+TEST(StatusMqtt, ACutInterruptedByAnAlarmLeavesTheCutterHeld) {
+  MosquittoBroker broker(scratch_folder("mqtt-held-broker"));
+  ASSERT_EQ(broker.start(), "");
+  RigOptions options = rig_options(broker);
+  options.sim_faults = {{"cutter-1", "alarm-at-line=20"}};
+  DaemonRig rig("mqtt-held", options);
+  rig.start_cutters();
+  rig.start_daemon();
+  drop_last(rig, "alarm.stl", 3);
+  ASSERT_TRUE(wait_until([&] { return rig.settled(1); }, 60)) << read_text(rig.daemon_log());
+  const auto held = rig.jobs("held");
+  ASSERT_EQ(held.size(), 1u) << read_text(rig.daemon_log());
+  const nlohmann::json state = held.begin()->second;
+  MqttSubscriber late(broker.port());
+  ASSERT_TRUE(late.wait_until([&] { return late.last("lastcut/cutter/cutter-1/batch").has_value(); }, 10));
+  const auto cutter = last_json(late, "lastcut/cutter/cutter-1/state");
+  EXPECT_EQ(cutter["state"], "held") << "until the next batch starts: the hide may be partly cut";
+  EXPECT_EQ(cutter["batch"], state["batch"]);
+  EXPECT_NE(cutter["reason"].get<std::string>().find("pieces may be partly cut"), std::string::npos) << cutter;
+  EXPECT_EQ(late.last("lastcut/cutter/cutter-1/batch")->payload, state["batch"].get<std::string>());
+  const auto progress = last_json(late, "lastcut/cutter/cutter-1/progress");
+  EXPECT_LT(progress["percent"].get<int>(), 100);
+  EXPECT_LT(progress["lines_sent"].get<int>(), progress["lines_total"].get<int>());
+}
+
 TEST(StatusMqtt, TheLastWillSaysOfflineWhenLastcutdIsKilled) {
   MosquittoBroker broker(scratch_folder("mqtt-will-broker"));
   ASSERT_EQ(broker.start(), "");
