@@ -12,10 +12,12 @@ DEBIAN_PACKAGES=(
   libeigen3-dev libopenmesh-dev libsuitesparse-dev libpolyclipping-dev nlohmann-json3-dev
   # drivers, daemon, command line
   libserialport-dev libmodbus-dev libspdlog-dev libfmt-dev libtomlplusplus-dev libcli11-dev libsystemd-dev
+  # live status over MQTT (the tests start the mosquitto broker themselves)
+  libmosquitto-dev mosquitto
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # independent interpreters and tools the tests run against our output
-  hp2xx mbpoll socat systemd procps python3
+  hp2xx mbpoll socat systemd procps python3 openssl
   # the real grbl 1.1h firmware simulator (tests/peers) and the load it is tested under
   make gcc
   # fuzzing the parsers (clang's libFuzzer, tests/fuzz)

@@ -8,7 +8,11 @@
 #include <sstream>
 #include <vector>
 
+#include <unistd.h>
+
 #include <toml++/toml.h>
+
+#include "daemon/config/mqtt_url.hpp"
 
 namespace lastcut::daemon {
 namespace {
@@ -332,6 +336,51 @@ void read_log(TableReader& root, DaemonConfig& config, std::vector<std::string>&
   }
 }
 
+void read_status(TableReader& root, const std::filesystem::path& base, DaemonConfig& config,
+                 std::vector<std::string>& errors) {
+  const toml::table* table = root.subtable("status", false);
+  if (!table) return;
+  StatusConfig& status = config.status;
+  status.enabled = true;
+  TableReader reader(*table, "status", errors);
+  reader.text("mqtt_url", status.mqtt_url, true);
+  char host[256] = {};
+  if (::gethostname(host, sizeof host - 1) == 0) status.station = host;
+  reader.text("station", status.station);
+  reader.text("topic_prefix", status.topic_prefix);
+  reader.text("username", status.username);
+  reader.text("password", status.password);
+  reader.text("ca_file", status.ca_file);
+  reader.integer("keepalive_s", status.keepalive_s, 5, 3600);
+  reader.integer("queue_limit", status.queue_limit, 1, 1000000);
+  reader.reject_unknown();
+  if (!status.mqtt_url.empty()) {
+    std::string why;
+    if (auto address = parse_mqtt_url(status.mqtt_url, why)) {
+      status.host = address->host;
+      status.port = address->port;
+      status.tls = address->tls;
+    } else {
+      errors.push_back("status.mqtt_url: \"" + status.mqtt_url + "\" " + why);
+    }
+  }
+  if (std::string problem = topic_level_problem(status.station); !problem.empty()) {
+    errors.push_back("status.station: \"" + status.station + "\" " + problem);
+  }
+  if (status.topic_prefix.empty() || status.topic_prefix.find_first_of("+#") != std::string::npos ||
+      status.topic_prefix.front() == '/' || status.topic_prefix.back() == '/') {
+    errors.push_back("status.topic_prefix: \"" + status.topic_prefix +
+                     "\" must be non-empty, without + or # and without a leading or trailing /");
+  }
+  if (!status.ca_file.empty() && !status.tls) errors.push_back("status.ca_file: only used with an mqtts:// URL");
+  if (!status.ca_file.empty()) status.ca_file = resolve(base, status.ca_file).string();
+  for (const auto& [name, cutter] : config.cutters) {
+    if (std::string problem = topic_level_problem(name); !problem.empty()) {
+      errors.push_back("cutters." + name + ": a cutter name in MQTT topics " + problem);
+    }
+  }
+}
+
 void cross_check(DaemonConfig& config, std::vector<std::string>& errors) {
   if (!config.jobs.default_material.empty() && !config.materials.count(config.jobs.default_material)) {
     errors.push_back("jobs.default_material: \"" + config.jobs.default_material + "\" is not a [materials.*] table");
@@ -388,6 +437,7 @@ ConfigLoadResult load_daemon_config(const std::filesystem::path& file) {
     read_cutters(reader, base, config, errors);
     read_review(reader, config, errors);
     read_log(reader, config, errors);
+    read_status(reader, base, config, errors);
     reader.reject_unknown();
   }
   cross_check(config, errors);

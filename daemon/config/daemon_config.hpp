@@ -77,6 +77,21 @@ struct LogConfig {
   std::string level = "info";  // trace | debug | info | warn | error
 };
 
+// [status]: live status over MQTT (docs/status-mqtt.md). No table: no MQTT at all.
+struct StatusConfig {
+  bool enabled = false;              // true when the file has a [status] table
+  std::string mqtt_url;              // as written: mqtt://HOST[:PORT] or mqtts://HOST[:PORT]
+  std::string host;                  // parsed from mqtt_url
+  int port = 1883;                   // 1883 (mqtt), 8883 (mqtts) unless the URL names one
+  bool tls = false;                  // mqtts://
+  std::string ca_file;               // mqtts: CA certificates (PEM); "" = the system's /etc/ssl/certs
+  std::string username, password;    // "" = anonymous
+  std::string station;               // this node's name in the topics; default: the host name
+  std::string topic_prefix = "lastcut";
+  int keepalive_s = 15;              // the broker declares us dead (last will) after 1.5x this silence
+  int queue_limit = 1000;            // job events kept while the broker is away (oldest dropped first)
+};
+
 struct DaemonConfig {
   PathsConfig paths;
   WatchConfig watch;
@@ -86,6 +101,7 @@ struct DaemonConfig {
   std::map<std::string, CutterSection> cutters;
   ReviewConfig review;
   LogConfig log;
+  StatusConfig status;
 };
 
 std::string to_string(DuplicatePolicy policy);

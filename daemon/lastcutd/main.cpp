@@ -12,6 +12,8 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
@@ -21,6 +23,8 @@
 #include "daemon/service/operator_log.hpp"
 #include "daemon/service/signal_events.hpp"
 #include "daemon/service/systemd_notify.hpp"
+#include "daemon/status/mqtt_client.hpp"
+#include "daemon/status/mqtt_status.hpp"
 
 namespace {
 
@@ -36,10 +40,17 @@ int check_config(const std::string& file) {
   std::printf("%s: valid; watch %s, spool %s, %zu material(s), %zu cutter(s)\n", file.c_str(),
               config.paths.watch_dir.c_str(), config.paths.spool_dir.c_str(), config.materials.size(),
               config.cutters.size());
+  if (config.status.enabled) {
+    // A broker that is away is no configuration error (lastcutd retries), so the exit stays 0.
+    const lastcut::Status reached = lastcut::daemon::check_broker(config.status, 3.0);
+    const std::string answer = reached ? "reachable, station " + config.status.station : "NOT reachable: " + reached.error();
+    std::printf("status: MQTT broker %s %s\n", config.status.mqtt_url.c_str(), answer.c_str());
+  }
   return 0;
 }
 
-void reload(const std::string& file, lastcut::daemon::Pipeline& pipeline, lastcut::daemon::SystemdNotifier& notifier) {
+void reload(const std::string& file, lastcut::daemon::Pipeline& pipeline, lastcut::daemon::SystemdNotifier& notifier,
+            const lastcut::daemon::StatusConfig& running_status) {
   notifier.reloading();
   const auto result = lastcut::daemon::load_daemon_config(file);
   if (!result.config) {
@@ -48,6 +59,14 @@ void reload(const std::string& file, lastcut::daemon::Pipeline& pipeline, lastcu
     lastcut::daemon::set_operator_log_level(result.config->log.level);
     const std::string kept = pipeline.reload(std::make_shared<lastcut::daemon::DaemonConfig>(*result.config));
     spdlog::info("configuration reloaded from {}{}", file, kept.empty() ? "" : "; " + kept);
+    const auto& next = result.config->status;
+    if (std::tie(next.enabled, next.mqtt_url, next.station, next.topic_prefix, next.username, next.password,
+                 next.ca_file, next.keepalive_s, next.queue_limit) !=
+        std::tie(running_status.enabled, running_status.mqtt_url, running_status.station, running_status.topic_prefix,
+                 running_status.username, running_status.password, running_status.ca_file,
+                 running_status.keepalive_s, running_status.queue_limit)) {
+      spdlog::warn("[status] changed: the running MQTT status stays until lastcutd is restarted");
+    }
   }
   notifier.ready();
 }
@@ -63,7 +82,19 @@ int run(const std::string& file) {
   lastcut::daemon::setup_operator_log(loaded.config->log.level);
   spdlog::info("lastcutd starting with {}", file);
   lastcut::daemon::SystemdNotifier notifier;
+  // Live status first and stopped last, so that it sees recovery and the final state of the cutters.
+  std::unique_ptr<lastcut::daemon::MqttStatus> live_status;
+  if (loaded.config->status.enabled) {
+    std::vector<std::string> cutters;
+    for (const auto& [name, cutter] : loaded.config->cutters) cutters.push_back(name);
+    live_status = std::make_unique<lastcut::daemon::MqttStatus>(loaded.config->status, cutters);
+    if (lastcut::Status started = live_status->start(); !started) {
+      spdlog::critical("lastcutd cannot start: {}", started.error());
+      return 1;
+    }
+  }
   lastcut::daemon::Pipeline pipeline(std::make_shared<lastcut::daemon::DaemonConfig>(*loaded.config));
+  pipeline.set_observer(live_status.get());
   if (lastcut::Status started = pipeline.start(); !started) {
     spdlog::critical("lastcutd cannot start: {}", started.error());
     return 1;
@@ -79,7 +110,7 @@ int run(const std::string& file) {
     bool stop = false;
     for (auto event = signals.read(); event != lastcut::daemon::SignalEvent::None; event = signals.read()) {
       if (event == lastcut::daemon::SignalEvent::Stop) stop = true;
-      else reload(file, pipeline, notifier);
+      else reload(file, pipeline, notifier, loaded.config->status);
     }
     if (stop) break;
     pipeline.read_events();
@@ -101,6 +132,7 @@ int run(const std::string& file) {
   notifier.stopping();
   spdlog::info("lastcutd stopping: finishing or holding the jobs in hand");
   pipeline.stop();
+  if (live_status) live_status->stop();
   spdlog::info("lastcutd stopped");
   return 0;
 }

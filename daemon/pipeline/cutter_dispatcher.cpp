@@ -74,6 +74,14 @@ void CutterDispatcher::set_condition(const std::string& condition) {
   condition_ = condition;
 }
 
+void CutterDispatcher::report(const std::string& state, const std::string& batch_id, const std::string& reason,
+                              const drivers::SendProgress& progress) {
+  reported_state_ = state;
+  if (!status_listener_) return;
+  status_listener_(CutterStatus{name_, state, batch_id, reason, progress.lines_acked, progress.lines_total,
+                                progress.bytes_sent, progress.bytes_total});
+}
+
 void CutterDispatcher::stop(double grace_s) {
   stopping_ = true;
   queue_.clear_and_close();
@@ -97,6 +105,9 @@ void CutterDispatcher::run() {
   while (auto batch_id = queue_.pop()) {
     while (!stopping_ && !cut_batch(*batch_id)) wait_before_retry(settings_().retry_interval_s);
     if (!stopping_) set_condition("idle");
+    // A held batch stays the cutter's live state until the next one starts: the machine may
+    // hold a partly cut hide.
+    if (!stopping_ && reported_state_ != "held" && reported_state_ != "idle") report("idle", "", "");
   }
 }
 
@@ -111,6 +122,7 @@ bool CutterDispatcher::cut_batch(const std::string& batch_id) {
   if (!probe.ready) {
     const std::string problem = probe.reason.empty() ? probe.state : probe.reason;
     set_condition("waiting: " + problem);
+    if (reported_state_ != "waiting" || problem != last_problem_) report("waiting", batch_id, problem);
     if (problem != last_problem_) {
       spdlog::warn("cutter {}: not ready ({}); batch {} waits, retrying every {} s", name_, problem, batch_id,
                    section.retry_interval_s);
@@ -129,6 +141,7 @@ bool CutterDispatcher::cut_batch(const std::string& batch_id) {
   if (!in || batch->cut_file.empty() || program.str().empty()) {
     batch->reason = "the cut file " + batch->cut_file + " is missing or empty";
     hold_batch(spool_, *batch);
+    report("held", batch_id, batch->reason);
     return true;
   }
 
@@ -139,6 +152,7 @@ bool CutterDispatcher::cut_batch(const std::string& batch_id) {
     sending_ = true;
   }
   set_condition("cutting " + batch_id);
+  report("sending", batch_id, "");
   spdlog::info("cutter {}: cutting batch {} ({} jobs, {} pieces)", name_, batch_id, batch->job_ids.size(),
                batch->piece_count);
   const std::string worker = "cutter " + name_;
@@ -148,6 +162,7 @@ bool CutterDispatcher::cut_batch(const std::string& batch_id) {
     if (step.bytes_total > 0) {
       set_condition("cutting " + batch_id + " (" + std::to_string(100 * step.bytes_sent / step.bytes_total) + " %)");
     }
+    report("sending", batch_id, "", step);
   };
   const drivers::SendResult result = drivers::send_job(config, program.str(), progress, cancel_);
   monitor_.end(worker);
@@ -163,6 +178,7 @@ bool CutterDispatcher::cut_batch(const std::string& batch_id) {
       // Cut, even if batch.json cannot say so: the jobs must reach done/, never be cut again.
       mark_batch(spool_, *batch, BatchStage::Cut, "the cutter reported the job finished");
       complete_batch_jobs(spool_, *batch);
+      report("idle", "", "");
       return true;
     case drivers::SendOutcome::Failed:
       // The driver guarantees nothing reached the machine: the batch may wait and go again.
@@ -172,9 +188,11 @@ bool CutterDispatcher::cut_batch(const std::string& batch_id) {
         batch->reason = "cutter " + name_ + " refused batch " + batch_id + " before cutting (" + result.reason +
                         "), and its return to the queue could not be written";
         hold_batch(spool_, *batch);
+        report("held", batch_id, batch->reason);
         return true;
       }
       set_condition("waiting: " + result.reason);
+      report("waiting", batch_id, result.reason);
       if (result.reason != last_problem_) {
         spdlog::warn("cutter {}: batch {} not started ({}); retrying every {} s", name_, batch_id, result.reason,
                      section.retry_interval_s);
@@ -187,6 +205,7 @@ bool CutterDispatcher::cut_batch(const std::string& batch_id) {
   batch->reason = "cutter " + name_ + " stopped while cutting batch " + batch_id + ": " + result.reason +
                   "; pieces may be partly cut";
   hold_batch(spool_, *batch);
+  report("held", batch_id, batch->reason);
   return true;
 }
 

@@ -16,8 +16,10 @@
 
 #include "daemon/config/daemon_config.hpp"
 #include "daemon/pipeline/progress_monitor.hpp"
+#include "daemon/pipeline/status_observer.hpp"
 #include "daemon/pipeline/work_queue.hpp"
 #include "daemon/spool/spool.hpp"
+#include "drivers/cutter.hpp"
 
 namespace lastcut::daemon {
 
@@ -40,6 +42,8 @@ class CutterDispatcher {
   // "idle", "cutting B... (40 %)", "waiting: <reason>" for status and logs.
   std::string condition() const;
   std::size_t queued() const { return queue_.size(); }
+  // Live status of this cutter (StatusObserver::cutter_changed); set before start().
+  void on_status(std::function<void(const CutterStatus&)> listener) { status_listener_ = std::move(listener); }
 
  private:
   void run();
@@ -47,6 +51,9 @@ class CutterDispatcher {
   bool cut_batch(const std::string& batch_id);
   void set_condition(const std::string& condition);
   void wait_before_retry(double seconds);
+  // Dispatcher thread only: tells the status listener, if any.
+  void report(const std::string& state, const std::string& batch_id, const std::string& reason,
+              const drivers::SendProgress& progress = {});
 
   std::string name_;
   Spool& spool_;
@@ -61,6 +68,8 @@ class CutterDispatcher {
   bool sending_ = false;
   std::string condition_ = "idle";
   std::string last_problem_;
+  std::function<void(const CutterStatus&)> status_listener_;
+  std::string reported_state_ = "idle";  // dispatcher thread only
 };
 
 }  // namespace lastcut::daemon

@@ -21,6 +21,7 @@
 #include "daemon/config/daemon_config.hpp"
 #include "daemon/pipeline/cutter_dispatcher.hpp"
 #include "daemon/pipeline/progress_monitor.hpp"
+#include "daemon/pipeline/status_observer.hpp"
 #include "daemon/pipeline/work_queue.hpp"
 #include "daemon/spool/spool.hpp"
 #include "daemon/watch/hot_folder.hpp"
@@ -36,6 +37,8 @@ class Pipeline {
   Pipeline(const Pipeline&) = delete;
   Pipeline& operator=(const Pipeline&) = delete;
 
+  // Live status (optional, daemon/status): set before start(); must outlive stop().
+  void set_observer(StatusObserver* observer) { observer_ = observer; }
   // Prepares the spool, recovers it, starts watching and the worker threads.
   Status start();
   // One turn of the main loop: new files, requeued jobs, finished computations, due batches.
@@ -93,6 +96,7 @@ class Pipeline {
   mutable std::mutex config_mutex_;
   std::shared_ptr<const DaemonConfig> config_;
   std::unique_ptr<Spool> spool_;
+  StatusObserver* observer_ = nullptr;
   std::unique_ptr<HotFolder> hot_folder_;
   ProgressMonitor monitor_;
   WorkQueue<Task> tasks_;

@@ -130,7 +130,9 @@ std::optional<JobState> Spool::read_state(JobFolder folder, const std::string& i
 }
 
 Status Spool::write_state(JobFolder folder, const JobState& state) const {
-  return write_file_durably(job_dir(folder, state.id) / kStateFile, to_json(state).dump(2) + "\n");
+  Status written = write_file_durably(job_dir(folder, state.id) / kStateFile, to_json(state).dump(2) + "\n");
+  if (written && job_written_) job_written_(state);
+  return written;
 }
 
 Status Spool::move_job(JobFolder from, JobFolder to, const JobState& state) const {

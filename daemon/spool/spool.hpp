@@ -10,6 +10,7 @@
 //
 // Nothing is ever deleted by the daemon. Thread-safe: different threads may move different jobs.
 #include <filesystem>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -53,10 +54,15 @@ class Spool {
   Status write_batch(const BatchState& batch) const;
   std::vector<std::string> list_batches() const;
 
+  // Called after every successful write of a job's state.json (live status); set before the
+  // spool is shared between threads. The listener must be thread-safe and must not block.
+  void on_job_written(std::function<void(const JobState&)> listener) { job_written_ = std::move(listener); }
+
  private:
   std::string new_job_id();
 
   std::filesystem::path root_;
+  std::function<void(const JobState&)> job_written_;
   std::mutex id_mutex_;
   std::string last_id_second_;
   int id_sequence_ = 0;

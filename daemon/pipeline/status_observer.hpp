@@ -1,0 +1,35 @@
+#pragma once
+// StatusObserver: what the pipeline tells whoever shows live status (daemon/status publishes it
+// over MQTT). Called from the pipeline's own threads (main, compute workers, one per cutter)
+// right after the change is durable; an implementation must return at once and never block,
+// and must be thread-safe. Without an observer the pipeline runs exactly as before.
+#include <cstddef>
+#include <string>
+
+#include "daemon/spool/job_state.hpp"
+
+namespace lastcut::daemon {
+
+// What one cutter is doing now.
+struct CutterStatus {
+  std::string cutter;  // [cutters.<name>]
+  // idle: nothing to cut | sending: a batch is being cut | waiting: a batch waits because the
+  // cutter is not ready (alarm, switched off, refused before cutting) | held: the last batch was
+  // interrupted and held, the machine may hold a partly cut hide (until the next batch starts).
+  std::string state = "idle";
+  std::string batch;   // the batch being cut, waiting or held; "" when idle
+  std::string reason;  // why waiting or held, one line
+  std::size_t lines_sent = 0, lines_total = 0;  // of the batch's cut file, acknowledged by the cutter
+  std::size_t bytes_sent = 0, bytes_total = 0;
+};
+
+class StatusObserver {
+ public:
+  virtual ~StatusObserver() = default;
+  // A job's state.json was written (a stage change, or a note on the way such as an attempt).
+  virtual void job_changed(const JobState& state) = 0;
+  // A cutter changed state or reported progress (at most every ~100 ms while sending).
+  virtual void cutter_changed(const CutterStatus& status) = 0;
+};
+
+}  // namespace lastcut::daemon
