@@ -1,0 +1,30 @@
+#pragma once
+// The hide search: the strip nester's overlap-minimising machinery (separation by guided local
+// search, sparrow's sampled placement + coordinate descent, the pole overlap proxy, parallel sweep
+// workers) inside irregular containers (engine/nest/hide_container: outline inset by the margin,
+// defects grown by it, zones too poor for a piece or one of its quality regions forbidden, all with a
+// smooth pole penalty). Method: sparrow (Gardeyn, Vanden Berghe & Wauters, arXiv:2509.13329, 2025),
+// guided local search for nesting (Egeblad, Nielsen & Odgaard 2007), applied to the leather problem
+// of Baldacci, Boschetti, Ganovelli & Maniezzo (Discrete Applied Mathematics 163, 2014).
+//
+// Start: the greedy of engine/nest/hide_greedy (units by priority, then area; hides largest usable
+// area first). Then rounds, each one move that is kept only when it ends feasible:
+// - insert: a unit left over (highest value first) goes onto the hide with the most free area (then
+//   the next two, then the first unopened hide): placed at a free sampled spot if there is one,
+//   otherwise dropped in and the hide separated. A unit that fails is not tried again until a hide
+//   has been emptied (knapsack form).
+// - empty: the least-filled hide (fewest failed attempts first) gives up all its units, largest
+//   first, each inserted as above into the other used hides with the most free area (multi-hide
+//   form: one hide fewer per success).
+// Pair groups move as one unit and must end near each other (engine/nest/hide_pieces).
+// Deterministic for the seed, sweep workers and iteration budget; the time limit only stops it (a
+// round cut short is dropped). No threads of its own: sweeps go through NestOptions::run_parallel.
+#include "engine/nest/hide_pieces.hpp"
+#include "engine/nest/layout.hpp"
+#include "engine/nest/nest_options.hpp"
+
+namespace lastcut::nest_detail {
+
+Layout nest_hides_search(const NestInstance& instance, const HidePieces& pieces, const NestOptions& options);
+
+}  // namespace lastcut::nest_detail
