@@ -63,9 +63,15 @@ HidePieces prepare_hide_pieces(const NestInstance& instance, const NestOptions& 
     }
     result.frames.push_back(std::move(items));
   }
+  std::vector<int> qualities;  // the min_quality values the containers will be asked about
+  for (const NestItem& item : instance.items) {
+    qualities.push_back(item.min_quality);
+    for (const QualityRegion& region : item.quality_regions) qualities.push_back(region.min_quality);
+  }
   for (size_t b = 0; b < instance.bins.size(); ++b)
     for (int c = 0; c < instance.bins[b].stock; ++c)
-      result.slots.push_back({static_cast<int>(b), c, frame_of_bin[b], std::make_unique<HideContainer>(instance.bins[b], margin - result.gap_mm / 2)});
+      result.slots.push_back({static_cast<int>(b), c, frame_of_bin[b],
+                              std::make_unique<HideContainer>(instance.bins[b], margin - result.gap_mm / 2, qualities)});
   std::stable_sort(result.slots.begin(), result.slots.end(), [&](const HideSlot& a, const HideSlot& b) {
     const double ca = instance.bins[a.bin_index].cost / std::max(1e-9, a.container->usable_area_mm2());
     const double cb = instance.bins[b.bin_index].cost / std::max(1e-9, b.container->usable_area_mm2());

@@ -10,11 +10,15 @@
 namespace lastcut::nest_detail {
 namespace {
 
-// Separation budget of one insertion (strikes of `kStale` sweeps without a 2 % improvement).
-constexpr int kStrikes = 3, kStale = 40;
+// Separation budget of one insertion (strikes of `kStale` sweeps without a 2 % improvement) and the
+// sweep workers of a hide's separation: a small budget tried often beat 3 x 40 sweeps and four
+// workers on Test1, Test5 and Test6 at 10 s (docs/benchmarks-nest.md).
+constexpr int kStrikes = 2, kStale = 15;
 constexpr int kPlaceSamples = 240;
-constexpr int kDestinations = 3;  // hides an inserted unit tries, most free area first
-constexpr int kGiveUp = 12;       // failed emptyings of every used hide (and nothing left to insert): stop
+constexpr int kHideSweepWorkers = 2;
+constexpr int kDestinations = 2;  // hides an inserted unit tries, most free area first
+constexpr long kGiveUp = 12;      // failed moves in a row per used hide (and nothing left to insert): stop
+constexpr long kPerTarget = 4;   // failed moves before the next hide is tried
 
 Point2 box_centre(const Box& b) { return {0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)}; }
 
@@ -92,7 +96,7 @@ bool HideSearch::insert_unit(State& s, int unit, int slot, std::uint64_t seed) {
       prepared.push_back(&item);
       start.push_back(st);
     }
-    ParallelSeparation separation(prepared, *pieces_.slots[slot].container, seed, options_.sweep_workers, options_.threads,
+    ParallelSeparation separation(prepared, *pieces_.slots[slot].container, seed, std::min(kHideSweepWorkers, options_.sweep_workers), options_.threads,
                                   options_.run_parallel);
     separation.set_state(start);
     if (!separation.separate(kStrikes, kStale, deadline_)) return false;
@@ -141,7 +145,7 @@ Layout HideSearch::run() {
   State best{start.slot_of, start.state};
   if (options_.on_improvement) options_.on_improvement(layout(best, false));
   const int n_slots = static_cast<int>(pieces_.slots.size());
-  std::vector<int> failures(n_slots, 0);
+  long streak = 0;  // failed moves in a row
   std::vector<char> tried(pieces_.units.size(), 0);
   const std::vector<int> by_value = unit_order_by_value(pieces_);
   for (long round = 1; !options_.iteration_limit || round <= *options_.iteration_limit; ++round) {
@@ -170,40 +174,37 @@ Layout HideSearch::run() {
       if (!success) tried[left_over] = 1;
     } else {
       if (used.size() < 2) break;  // one hide holds everything that fits
-      // Multi-hide: empty the least-filled hide, the least often failed first.
+      if (streak >= kGiveUp * static_cast<long>(used.size())) break;  // no move found for long: done
+      // Multi-hide: move one unit out of a little-filled hide into a fuller one; the least-filled
+      // hide first, the next one after every kPerTarget failures in a row. A hide that loses its
+      // last unit is closed.
       std::vector<int> order = used;
       std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-        if (failures[a] != failures[b]) return failures[a] < failures[b];
         return placed_area(best, a) / pieces_.slots[a].container->usable_area_mm2() <
                placed_area(best, b) / pieces_.slots[b].container->usable_area_mm2();
       });
-      if (failures[order.front()] >= kGiveUp) break;
-      const int target = order.front();
+      const int target = order[static_cast<size_t>(streak / kPerTarget) % order.size()];
       std::vector<int> units;
       for (size_t i = 0; i < best.slot_of.size(); ++i)
         if (best.slot_of[i] == target && std::find(units.begin(), units.end(), pieces_.unit_of[i]) == units.end())
           units.push_back(pieces_.unit_of[i]);
       std::stable_sort(units.begin(), units.end(), [&](int a, int b) { return pieces_.unit_area_mm2[a] > pieces_.unit_area_mm2[b]; });
-      for (int u : units)
-        for (int p : pieces_.units[u]) trial.slot_of[p] = -1;
-      success = true;
-      for (size_t k = 0; k < units.size() && success; ++k) {
-        std::vector<int> destinations;
-        for (int slot : used)
-          if (slot != target) destinations.push_back(slot);
-        std::stable_sort(destinations.begin(), destinations.end(),
-                         [&](int a, int b) { return free_area(trial, a) > free_area(trial, b); });
-        success = insert_anywhere(trial, units[k], destinations, stream_seed(seed, k, 9));
-      }
-      if (!success) ++failures[target];
+      const int unit = units[static_cast<size_t>(streak) % units.size()];
+      for (int p : pieces_.units[unit]) trial.slot_of[p] = -1;
+      std::vector<int> destinations;
+      for (int slot : used)
+        if (slot != target && placed_area(best, slot) / pieces_.slots[slot].container->usable_area_mm2() >=
+                                  placed_area(best, target) / pieces_.slots[target].container->usable_area_mm2())
+          destinations.push_back(slot);
+      std::stable_sort(destinations.begin(), destinations.end(),
+                       [&](int a, int b) { return free_area(trial, a) > free_area(trial, b); });
+      success = insert_anywhere(trial, unit, destinations, seed);
+      streak = success ? 0 : streak + 1;
     }
     if (deadline_.passed()) break;  // a round cut short is not deterministic: drop it
     if (success) {
       best = std::move(trial);
-      if (left_over < 0) {
-        std::fill(failures.begin(), failures.end(), 0);
-        std::fill(tried.begin(), tried.end(), 0);
-      }
+      if (left_over < 0 && used_slots(best).size() < used.size()) std::fill(tried.begin(), tried.end(), 0);
       if (options_.on_improvement) options_.on_improvement(layout(best, false));
     }
   }

@@ -9,13 +9,14 @@
 //
 // Start: the greedy of engine/nest/hide_greedy (units by priority, then area; hides largest usable
 // area first). Then rounds, each one move that is kept only when it ends feasible:
-// - insert: a unit left over (highest value first) goes onto the hide with the most free area (then
-//   the next two, then the first unopened hide): placed at a free sampled spot if there is one,
+// - insert: a unit left over (highest value first) goes onto one of the two hides with the most free
+//   area (the first unopened hide after the used ones): at a free sampled spot if there is one,
 //   otherwise dropped in and the hide separated. A unit that fails is not tried again until a hide
-//   has been emptied (knapsack form).
-// - empty: the least-filled hide (fewest failed attempts first) gives up all its units, largest
-//   first, each inserted as above into the other used hides with the most free area (multi-hide
-//   form: one hide fewer per success).
+//   has been closed (knapsack form).
+// - move: one unit of a little-filled hide (the least filled first; after 4 failures in a row the
+//   next) goes, by the same insertion, onto a hide at least as full; a hide that loses its last unit
+//   is closed (multi-hide form: fewer hides, the others fuller). The search stops when 12 moves per
+//   used hide failed in a row, or at the budget.
 // Pair groups move as one unit and must end near each other (engine/nest/hide_pieces).
 // Deterministic for the seed, sweep workers and iteration budget; the time limit only stops it (a
 // round cut short is dropped). No threads of its own: sweeps go through NestOptions::run_parallel.

@@ -71,8 +71,8 @@ TEST(HideSearch, SameSeedAndRoundsGiveTheSameLayout) {
 TEST(HideSearch, NeverMoreHidesThanTheGreedyAndAtLeastTheAreaBound) {
   NestInstance instance = test::constraint_instance(4);
   instance.items[3].demand = 70;  // 168,000 mm^2 of fillers
-  const Layout search = nest(instance, rounds(8));
-  const Layout greedy = nest(instance, rounds(8, HideMethod::Greedy));
+  const Layout search = nest(instance, rounds(4));
+  const Layout greedy = nest(instance, rounds(4, HideMethod::Greedy));
   EXPECT_TRUE(check_layout(search, instance).empty()) << all(check_layout(search, instance));
   EXPECT_TRUE(check_layout(greedy, instance).empty());
   EXPECT_EQ(search.placements.size(), greedy.placements.size());
