@@ -76,6 +76,23 @@ Box box_of(const Polygon2& p) {
   return b;
 }
 
+// Area centroid of a simple polygon (the shoelace formula).
+Point2 centroid(const Polygon2& polygon) {
+  double a = 0, cx = 0, cy = 0;
+  for (size_t i = 0, n = polygon.points.size(); i < n; ++i) {
+    const Point2& p = polygon.points[i];
+    const Point2& q = polygon.points[(i + 1) % n];
+    const double cross = p.x() * q.y() - q.x() * p.y();
+    a += cross, cx += (p.x() + q.x()) * cross, cy += (p.y() + q.y()) * cross;
+  }
+  return a != 0 ? Point2(cx / (3 * a), cy / (3 * a)) : polygon.points.front();
+}
+
+double diagonal(const NestItem& item) {
+  const Box b = box_of(item.shape);
+  return std::hypot(b.x1 - b.x0, b.y1 - b.y0);
+}
+
 }  // namespace
 
 std::vector<std::string> check_layout(const Layout& layout, const NestInstance& instance, double gap_mm, double margin_mm) {
@@ -92,6 +109,7 @@ std::vector<std::string> check_layout(const Layout& layout, const NestInstance& 
   std::vector<Polygon2> shapes;
   std::vector<const NestItem*> shape_items;
   std::vector<std::pair<int, int>> shape_bins;
+  std::vector<size_t> shape_index;  // placement of each shape
   double extent = 1;
   for (size_t k = 0; k < layout.placements.size(); ++k) {
     const Placement& p = layout.placements[k];
@@ -112,11 +130,14 @@ std::vector<std::string> check_layout(const Layout& layout, const NestInstance& 
       problems.push_back(where + text(": rotation %g deg is not allowed", p.rotation_deg));
     if (p.mirrored && !item.allow_mirror) problems.push_back(where + ": mirrored but mirroring is not allowed");
     if (item.grain_deg) {
-      const double deviation = std::abs(axis_deviation_deg(*placed_grain_deg(item, p)));
+      // The material's grain: the hide's backbone when it has one, its x axis otherwise (strips too).
+      const double material = !strip && bins.count(p.bin) ? bins[p.bin]->backbone_deg.value_or(0) : 0;
+      const double deviation = std::abs(axis_deviation_deg(*placed_grain_deg(item, p) - material));
       if (deviation > item.grain_tolerance_deg + 1e-6)
         problems.push_back(where + text(": grain is %g deg off the material's grain (tolerance %g)", deviation, item.grain_tolerance_deg));
     }
     shapes.push_back(placed_shape(item, p));
+    shape_index.push_back(k);
     shape_items.push_back(&item);
     shape_bins.push_back({p.bin, p.copy});
     for (const Point2& q : shapes.back().points) extent = std::max({extent, std::abs(q.x()), std::abs(q.y())});
@@ -157,6 +178,46 @@ std::vector<std::string> check_layout(const Layout& layout, const NestInstance& 
           area(boolean(ClipperLib::ctIntersection, {s.path(shapes[k])}, {s.path(bin.zones[z].shape)})) > tolerance)
         problems.push_back(where + ": lies on zone " + std::to_string(z) + " of quality " + std::to_string(bin.zones[z].quality) +
                            " but needs " + std::to_string(shape_items[k]->min_quality));
+    for (size_t r = 0; r < shape_items[k]->quality_regions.size(); ++r) {
+      const QualityRegion& region = shape_items[k]->quality_regions[r];
+      Polygon2 placed_region;
+      for (const Point2& q : region.shape.points) placed_region.points.push_back(place_point(q, layout.placements[shape_index[k]]));
+      const Paths region_path{s.path(placed_region)};
+      for (size_t z = 0; z < bin.zones.size(); ++z)
+        if (bin.zones[z].quality < region.min_quality &&
+            area(boolean(ClipperLib::ctIntersection, region_path, {s.path(bin.zones[z].shape)})) > tolerance)
+          problems.push_back(where + ": its quality region " + std::to_string(r) + " lies on zone " + std::to_string(z) +
+                             " of quality " + std::to_string(bin.zones[z].quality) + " but needs " + std::to_string(region.min_quality));
+    }
+  }
+  // Pair groups: all pieces of a group placed or none, on one hide, each near another piece of it.
+  if (!strip) {
+    std::map<std::string, std::vector<size_t>> groups;  // placed shapes per group
+    std::map<std::string, int> demanded;
+    for (const NestItem& item : instance.items)
+      if (!item.pair_group.empty()) demanded[item.pair_group] += item.demand;
+    for (size_t k = 0; k < shapes.size(); ++k)
+      if (!shape_items[k]->pair_group.empty()) groups[shape_items[k]->pair_group].push_back(k);
+    for (const auto& [group, members] : groups) {
+      if (static_cast<int>(members.size()) != demanded[group])
+        problems.push_back("pair group " + group + ": " + std::to_string(members.size()) + " of its " +
+                           std::to_string(demanded[group]) + " pieces placed (all or none)");
+      for (size_t a : members) {
+        if (shape_bins[a] != shape_bins[members.front()])
+          problems.push_back("pair group " + group + ": placement " + std::to_string(shape_index[a]) + " is on another hide");
+        bool near = members.size() < 2;
+        for (size_t b : members) {
+          if (a == b || shape_bins[a] != shape_bins[b]) continue;
+          const double bound = instance.pair_distance_mm > 0
+                                   ? instance.pair_distance_mm
+                                   : 0.5 * (diagonal(*shape_items[a]) + diagonal(*shape_items[b])) + gap;
+          near |= (centroid(shapes[a]) - centroid(shapes[b])).norm() <= bound;
+        }
+        if (!near)
+          problems.push_back("pair group " + group + ": placement " + std::to_string(shape_index[a]) +
+                             " is not near another piece of its group");
+      }
+    }
   }
   // Overlaps and gaps, pairwise on pieces grown by gap / 2.
   std::vector<Paths> grown(shapes.size());

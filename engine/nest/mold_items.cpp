@@ -4,12 +4,55 @@
 #include <cmath>
 
 #include "engine/core/engine_error.hpp"
+#include "engine/nest/clipper_paths.hpp"
+#include "engine/nest/nest_geometry.hpp"
+
+#include <polyclipping/clipper.hpp>
 
 namespace lastcut {
+
+std::optional<QualityRegion> toe_region(const NestItem& item, double fraction, int min_quality) {
+  auto mark = [&](const std::string& name) -> const ItemMark* {
+    for (const ItemMark& m : item.marks)
+      if (m.name == name) return &m;
+    return nullptr;
+  };
+  const ItemMark* toe = mark("toe");
+  const ItemMark* heel = mark("heel");
+  if (!toe || !heel) return std::nullopt;
+  const Point2 axis = toe->from_mm - heel->from_mm;  // heel to toe
+  const double length = axis.norm();
+  if (length <= 0) return std::nullopt;
+  const Point2 u = axis / length, v(-u.y(), u.x());
+  const nest_detail::Box box = nest_detail::bounding_box(item.shape.points);
+  const double reach = 2 * (std::hypot(box.width(), box.height()) + length);
+  // The half plane "within fraction x length of the toe" as a large rectangle beyond the toe.
+  const Point2 cut = toe->from_mm - fraction * length * u;
+  const std::vector<Point2> keep = {cut - reach * v, cut + reach * u - reach * v, cut + reach * u + reach * v, cut + reach * v};
+  double extent = 1;
+  for (const Point2& p : keep) extent = std::max({extent, std::abs(p.x()), std::abs(p.y())});
+  const double scale = 1e9 / extent;
+  ClipperLib::Clipper clipper;
+  clipper.AddPath(nest_detail::to_path(item.shape.points, scale), ClipperLib::ptSubject, true);
+  clipper.AddPath(nest_detail::to_path(keep, scale), ClipperLib::ptClip, true);
+  ClipperLib::Paths parts;
+  clipper.Execute(ClipperLib::ctIntersection, parts, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  const ClipperLib::Path* largest = nullptr;
+  for (const ClipperLib::Path& part : parts)
+    if (!largest || std::abs(ClipperLib::Area(part)) > std::abs(ClipperLib::Area(*largest))) largest = &part;
+  if (!largest || largest->size() < 3) return std::nullopt;
+  QualityRegion region;
+  region.shape.points = nest_detail::from_path(*largest, scale);
+  make_counter_clockwise(region.shape);
+  region.min_quality = min_quality;
+  return region;
+}
 
 std::vector<NestItem> items_from_molds(const std::vector<Mold>& molds, const MoldNestSpec& spec) {
   if (molds.empty()) throw EngineError("no molds to nest");
   if (spec.copies < 1) throw EngineError("at least one copy of every mold is needed");
+  if (spec.toe_region_min_quality > 0 && !(spec.toe_region_fraction > 0 && spec.toe_region_fraction <= 1))
+    throw EngineError("the toe region fraction must be in (0, 1] of the mold length");
   std::vector<NestItem> items;
   int id = 0;
   for (const Mold& mold : molds) {
@@ -34,6 +77,9 @@ std::vector<NestItem> items_from_molds(const std::vector<Mold>& molds, const Mol
         item.grain_deg = 0.0;
         item.grain_tolerance_deg = *spec.grain_tolerance_deg;
       }
+      if (spec.toe_region_min_quality > 0)
+        if (auto region = toe_region(item, spec.toe_region_fraction, spec.toe_region_min_quality))
+          item.quality_regions.push_back(std::move(*region));
       items.push_back(std::move(item));
     }
   }

@@ -13,6 +13,10 @@
 
 namespace lastcut {
 
+// How hides are nested (engine/nest/hide_nester.hpp): the overlap-minimising search, or the older
+// greedy + iterated greedy (kept for comparison).
+enum class HideMethod { Search, Greedy };
+
 struct NestOptions {
   double time_limit_s = 10;              // wall-clock budget of the improvement phase
   std::uint64_t seed = 1;                // worker w of round r draws from a stream seeded by (seed, r, w)
@@ -25,6 +29,7 @@ struct NestOptions {
   std::optional<double> margin_mm;       // overrides NestInstance::margin_mm
   std::optional<long> iteration_limit;   // improvement rounds; unset = until the time limit
   double free_rotation_step_deg = 15;    // step of the rotations tried for freely rotating pieces
+  HideMethod hide_method = HideMethod::Search;
   // Called on the caller's thread with every better layout (anytime: the first one comes early).
   std::function<void(const Layout&)> on_improvement;
   // Runs every task and returns when all are done. Unset: one after the other on the caller's thread.

@@ -71,6 +71,9 @@ struct NestInstance {
   std::vector<NestItem> items;
   double gap_mm = 0;     // minimum distance between two pieces (kerf + clearance)
   double margin_mm = 0;  // minimum distance between a piece and the strip or hide edge and defects
+  // Hides: two pieces of one pair group are near when their centroids are at most this far apart;
+  // 0 = the mean of their bounding box diagonals plus the gap (pieces side by side).
+  double pair_distance_mm = 0;
 };
 
 }  // namespace lastcut

@@ -204,6 +204,20 @@ PreparedItem prepare_item(const NestItem& item, int item_index, double grow_mm, 
   const std::vector<Pole> poles = compute_poles(outline, kMaxPoles);
   const Box box = bounding_box(outline);
   prepared.diameter_mm = std::hypot(box.width(), box.height());
+  struct Region {
+    std::vector<Point2> outline;
+    std::vector<Pole> poles;
+    int min_quality;
+  };
+  std::vector<Region> regions;
+  for (const QualityRegion& region : item.quality_regions) {
+    if (region.min_quality <= item.min_quality || region.shape.points.size() < 3) continue;
+    Polygon2 ccw = region.shape;
+    make_counter_clockwise(ccw);
+    std::vector<Point2> region_outline = conservative_outline(ccw, 0.0, kMaxOutlinePoints);
+    std::vector<Pole> region_poles = compute_poles(region_outline, kMaxPoles);
+    regions.push_back({std::move(region_outline), std::move(region_poles), region.min_quality});
+  }
   for (const Pose& pose : allowed_poses(item, free_step_deg)) {
     OrientedShape oriented;
     oriented.pose = pose;
@@ -214,6 +228,17 @@ PreparedItem prepare_item(const NestItem& item, int item_index, double grow_mm, 
     oriented.box = bounding_box(oriented.outline);
     for (const Pole& pole : poles) oriented.poles.push_back({apply_pose(pole.center, pose), pole.radius_mm});
     oriented.pole_lanes = pole_lanes(oriented.poles);
+    for (const Region& region : regions) {
+      OrientedRegion r;
+      r.min_quality = region.min_quality;
+      for (const Point2& p : region.outline) r.outline.push_back(apply_pose(p, pose));
+      Polygon2 ring{r.outline};
+      make_counter_clockwise(ring);
+      r.outline = std::move(ring.points);
+      r.box = bounding_box(r.outline);
+      for (const Pole& pole : region.poles) r.poles.push_back({apply_pose(pole.center, pose), pole.radius_mm});
+      oriented.regions.push_back(std::move(r));
+    }
     prepared.orientations.push_back(std::move(oriented));
   }
   if (prepared.orientations.empty())

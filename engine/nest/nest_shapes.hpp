@@ -31,6 +31,15 @@ struct PoleLanes {
   std::vector<float> x, y, radius;  // mm
 };
 
+// A part of the item that needs better leather (NestItem::quality_regions) in one pose: its
+// conservative outline (contains the region) and poles, for the hide container's zone test.
+struct OrientedRegion {
+  std::vector<Point2> outline;  // counter-clockwise, mm
+  Box box;
+  std::vector<Pole> poles;
+  int min_quality = 0;
+};
+
 // The item in one pose, before translation.
 struct OrientedShape {
   Pose pose;
@@ -38,6 +47,7 @@ struct OrientedShape {
   Box box;                      // of the outline
   std::vector<Pole> poles;
   PoleLanes pole_lanes;  // the same poles, for pair_overlap
+  std::vector<OrientedRegion> regions;  // only regions stricter than the item's min_quality (hides)
 };
 
 struct PreparedItem {

@@ -1,0 +1,150 @@
+// Hide nesting benchmark: the six Baldacci leather instances (/work/shared/data/nesting/leather) and
+// shoe-mold batches on generated calf hides, each nested by the hide search (the default) and by the
+// old greedy + iterated greedy in the same run at the same limits. Every layout is validated by the
+// independent Clipper checker (engine/nest/layout_check). Per instance: pieces placed / demanded,
+// hides used, the area lower bound (the fewest hides, largest usable area first, whose usable area
+// covers the pieces' area), utilisation of the used hides' usable area (outline minus holes).
+// Usage: hide_bench [--data DIR] [--limits 10,60] [--threads 2] [--workers 4] [--seed 1]
+//                   [--only NAME[,NAME...]] [--methods search,greedy] [--rounds N] [--svg-dir DIR]
+//   --rounds N: N improvement rounds instead of the time limits (a fixed budget: compares two versions on the same work)
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "engine/nest/layout_check.hpp"
+#include "engine/nest/layout_svg.hpp"
+#include "engine/nest/mold_items.hpp"
+#include "engine/nest/nest_json.hpp"
+#include "engine/nest/nester.hpp"
+#include "generated_hides.hpp"
+
+namespace {
+
+void run_threads(std::vector<std::function<void()>>& tasks) {
+  std::vector<std::thread> threads;
+  for (size_t i = 1; i < tasks.size(); ++i) threads.emplace_back(tasks[i]);
+  tasks[0]();
+  for (auto& t : threads) t.join();
+}
+
+std::vector<std::string> split(const std::string& text) {
+  std::vector<std::string> parts;
+  std::stringstream list(text);
+  for (std::string part; std::getline(list, part, ',');) parts.push_back(part);
+  return parts;
+}
+
+// The fewest hides, largest usable area (outline minus holes) first, whose area covers the pieces'.
+int area_bound(const lastcut::NestInstance& instance) {
+  double pieces = 0;
+  for (const auto& item : instance.items) pieces += item.demand * std::abs(lastcut::signed_area(item.shape));
+  std::vector<double> areas;
+  for (const auto& bin : instance.bins) {
+    double a = std::abs(lastcut::signed_area(bin.outer));
+    for (const auto& hole : bin.holes) a -= std::abs(lastcut::signed_area(hole));
+    for (int c = 0; c < bin.stock; ++c) areas.push_back(a);
+  }
+  std::sort(areas.rbegin(), areas.rend());
+  double covered = 0;
+  for (size_t k = 0; k < areas.size(); ++k)
+    if ((covered += areas[k]) >= pieces) return static_cast<int>(k + 1);
+  return static_cast<int>(areas.size()) + 1;  // not even all hides together
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::filesystem::path data = LASTCUT_SHARED_DATA_DIR "/nesting/leather";
+  std::vector<double> limits = {10, 60};
+  std::vector<std::string> methods = {"search", "greedy"};
+  int threads = 2, workers = lastcut::NestOptions{}.sweep_workers;
+  std::uint64_t seed = 1;
+  std::string only;
+  long rounds = 0;
+  std::filesystem::path svg_dir;
+  for (int a = 1; a + 1 < argc; a += 2) {
+    const std::string key = argv[a], value = argv[a + 1];
+    if (key == "--data") data = value;
+    else if (key == "--threads") threads = std::atoi(value.c_str());
+    else if (key == "--workers") workers = std::atoi(value.c_str());
+    else if (key == "--seed") seed = std::strtoull(value.c_str(), nullptr, 10);
+    else if (key == "--only") only = value;
+    else if (key == "--methods") methods = split(value);
+    else if (key == "--rounds") rounds = std::atol(value.c_str());
+    else if (key == "--svg-dir") svg_dir = value;
+    else if (key == "--limits") {
+      limits.clear();
+      for (const std::string& l : split(value)) limits.push_back(std::atof(l.c_str()));
+    } else {
+      std::fprintf(stderr, "unknown option %s\n", key.c_str());
+      return 2;
+    }
+  }
+  std::vector<lastcut::NestInstance> instances;
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(data))
+    if (entry.path().extension() == ".json") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  for (const auto& file : files) instances.push_back(lastcut::read_nest_instance(file));
+  for (int batch = 0; batch < 2; ++batch) instances.push_back(lastcut::bench::shoe_batch(batch));
+  auto selected = [&](const lastcut::NestInstance& instance) {
+    if (only.empty()) return true;
+    for (const std::string& name : split(only))
+      if (instance.name == name) return true;
+    return false;
+  };
+  int invalid = 0;
+  if (rounds > 0) limits = {0};
+  for (double limit : limits) {
+    if (rounds > 0) std::printf("\n## hides, %ld rounds, %d threads, %d sweep workers, seed %llu\n\n", rounds, threads, workers, static_cast<unsigned long long>(seed));
+    else std::printf("\n## hides, %g s, %d threads, %d sweep workers, seed %llu\n\n", limit, threads, workers, static_cast<unsigned long long>(seed));
+    std::printf("| instance | method | placed / demanded | hides used | area bound | utilisation of used hides %% | seconds | valid |\n|---|---|---|---|---|---|---|---|\n");
+    std::vector<int> hides_sum(methods.size(), 0);
+    std::vector<double> utilisation_sum(methods.size(), 0);
+    int bound_sum = 0, count = 0;
+    for (const auto& instance : instances) {
+      if (!selected(instance)) continue;
+      int demanded = 0;
+      for (const auto& item : instance.items) demanded += item.demand;
+      const int bound = area_bound(instance);
+      bound_sum += bound, ++count;
+      for (size_t m = 0; m < methods.size(); ++m) {
+        lastcut::NestOptions options;
+        options.time_limit_s = rounds > 0 ? 1e9 : limit;
+        if (rounds > 0) options.iteration_limit = rounds;
+        options.threads = threads;
+        options.sweep_workers = workers;
+        options.seed = seed;
+        options.run_parallel = run_threads;
+        options.hide_method = methods[m] == "greedy" ? lastcut::HideMethod::Greedy : lastcut::HideMethod::Search;
+        const auto start = std::chrono::steady_clock::now();
+        const lastcut::Layout layout = lastcut::nest(instance, options);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const auto problems = lastcut::check_layout(layout, instance);
+        invalid += problems.empty() ? 0 : 1;
+        hides_sum[m] += lastcut::used_bin_count(layout);
+        utilisation_sum[m] += layout.utilisation;
+        if (!svg_dir.empty())
+          lastcut::write_layout_svg(svg_dir / ("hides-" + instance.name + "-" + methods[m] + ".svg"), layout, instance);
+        std::printf("| %s | %s | %zu / %d | %d | %d | %.2f | %.1f | %s |\n", instance.name.c_str(), methods[m].c_str(),
+                    layout.placements.size(), demanded, lastcut::used_bin_count(layout), bound, 100 * layout.utilisation, seconds,
+                    problems.empty() ? "yes" : problems.front().c_str());
+        std::fflush(stdout);
+      }
+    }
+    for (size_t m = 0; m < methods.size(); ++m)
+      std::printf("| **all** | %s | | %d | %d | %.2f (mean) | | |\n", methods[m].c_str(), hides_sum[m], bound_sum,
+                  count ? 100 * utilisation_sum[m] / count : 0.0);
+  }
+  std::printf("\ninvalid layouts: %d\n", invalid);
+  return invalid == 0 ? 0 : 1;
+}
