@@ -102,11 +102,11 @@ double local_step(const TriangleFrames& frames, const std::vector<double>& corne
   return std::max(energy, 0.0);
 }
 
-// The loop of both entry points below: the global step solves the whole system with `factor`, or, with
-// `subspace`, finds the best map in the lattice subspace around the current one.
-ArapIterationReport iterate(const TriangleFrames& frames, const ReducedLaplacian& laplacian,
-                            const SparseCholesky* factor, const LatticeSubspace* subspace, Eigen::MatrixXd& UV,
-                            int max_iterations, double relative_energy_tolerance, bool flip_guard, bool accelerate) {
+}  // namespace
+
+ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const ReducedLaplacian& laplacian,
+                                        const SparseCholesky& factor, Eigen::MatrixXd& UV, int max_iterations,
+                                        double relative_energy_tolerance, bool flip_guard, bool accelerate) {
   ArapIterationReport report;
   const int vertex_count = static_cast<int>(UV.rows());
   const int pinned = laplacian.pinned;
@@ -129,7 +129,7 @@ ArapIterationReport iterate(const TriangleFrames& frames, const ReducedLaplacian
 
   const std::vector<double> corner = corner_vectors(frames);
   std::vector<double> rhs(2 * static_cast<size_t>(vertex_count));
-  Eigen::MatrixXd reduced_rhs(laplacian.matrix.rows(), 2), reduced_u(laplacian.matrix.rows(), 2);
+  Eigen::MatrixXd reduced_rhs(laplacian.matrix.rows(), 2);
   std::vector<double> spare_rhs(rhs.size());
   Eigen::MatrixXd candidate(UV.rows(), 2), accelerated(UV.rows(), 2);
   AndersonAcceleration anderson(kAndersonDepth);
@@ -152,13 +152,7 @@ ArapIterationReport iterate(const TriangleFrames& frames, const ReducedLaplacian
       reduced_rhs(row, 0) += w * UV(pinned, 0);
       reduced_rhs(row, 1) += w * UV(pinned, 1);
     }
-    Eigen::MatrixXd solution;
-    if (subspace != nullptr) {
-      for (Eigen::Index r = 0; r < reduced_u.rows(); ++r) reduced_u.row(r) = UV.row(laplacian.vertex_of_row[r]);
-      solution = reduced_u + subspace->correction(reduced_rhs - laplacian.matrix * reduced_u);
-    } else {
-      solution = factor->solve(reduced_rhs);
-    }
+    const Eigen::MatrixXd solution = factor.solve(reduced_rhs);
     candidate.row(pinned) = UV.row(pinned);
     for (Eigen::Index r = 0; r < solution.rows(); ++r) candidate.row(laplacian.vertex_of_row[r]) = solution.row(r);
 
@@ -210,21 +204,6 @@ ArapIterationReport iterate(const TriangleFrames& frames, const ReducedLaplacian
   }
   report.energy_final = energy;
   return report;
-}
-
-}  // namespace
-
-ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const ReducedLaplacian& laplacian,
-                                        const SparseCholesky& factor, Eigen::MatrixXd& UV, int max_iterations,
-                                        double relative_energy_tolerance, bool flip_guard, bool accelerate) {
-  return iterate(frames, laplacian, &factor, nullptr, UV, max_iterations, relative_energy_tolerance, flip_guard,
-                 accelerate);
-}
-
-ArapIterationReport run_arap_subspace_iterations(const TriangleFrames& frames, const ReducedLaplacian& laplacian,
-                                                 const LatticeSubspace& subspace, Eigen::MatrixXd& UV,
-                                                 int max_iterations, double relative_energy_tolerance) {
-  return iterate(frames, laplacian, nullptr, &subspace, UV, max_iterations, relative_energy_tolerance, false, true);
 }
 
 }  // namespace lastcut

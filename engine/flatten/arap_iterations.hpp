@@ -13,7 +13,6 @@
 #include <Eigen/Core>
 
 #include "engine/flatten/cotangent_laplacian.hpp"
-#include "engine/flatten/lattice_subspace.hpp"
 #include "engine/flatten/sparse_cholesky.hpp"
 
 namespace lastcut {
@@ -35,12 +34,5 @@ struct ArapIterationReport {
 ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const ReducedLaplacian& laplacian,
                                         const SparseCholesky& factor, Eigen::MatrixXd& UV, int max_iterations,
                                         double relative_energy_tolerance, bool flip_guard, bool accelerate = true);
-
-// The same iteration (Anderson-accelerated, unguarded) with every global step restricted to the lattice
-// subspace around the current map (lattice_subspace.hpp): cheap steps that remove the smooth errors the
-// full steps remove slowly. The pinned vertex stays where it is.
-ArapIterationReport run_arap_subspace_iterations(const TriangleFrames& frames, const ReducedLaplacian& laplacian,
-                                                 const LatticeSubspace& subspace, Eigen::MatrixXd& UV,
-                                                 int max_iterations, double relative_energy_tolerance);
 
 }  // namespace lastcut

@@ -90,19 +90,12 @@ void run_arap(const TriMesh& disk, const TriangleFrames& frames, const MeshTopol
   result.seconds_init += seconds_since(clock);
 
   clock = Clock::now();
-  if (!options.flip_guard && options.lattice_cells > 0) {
-    const LatticeSubspace subspace(disk, laplacian, lattice_cell_mm(frames.area_mm2.sum(), options.lattice_cells));
-    const ArapIterationReport coarse = run_arap_subspace_iterations(
-        frames, laplacian, subspace, UV, options.max_subspace_iterations, options.subspace_energy_tolerance);
-    result.subspace_iterations = coarse.iterations;
-    result.energy_start = coarse.energy_start;
-  }
   const ArapIterationReport report = run_arap_iterations(frames, laplacian, factor, UV, options.max_iterations,
                                                          options.relative_energy_tolerance, options.flip_guard,
                                                          options.anderson_acceleration);
   result.iterations = report.iterations;
   result.converged = report.converged;
-  if (result.subspace_iterations == 0) result.energy_start = report.energy_start;
+  result.energy_start = report.energy_start;
   result.energy_final = report.energy_final;
   if (report.shortened_steps > 0) {
     result.notes.push_back(std::to_string(report.shortened_steps) + " ARAP steps shortened so that no triangle flips");

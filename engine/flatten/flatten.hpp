@@ -56,11 +56,6 @@ struct FlattenOptions {
   ArapStart start = ArapStart::Auto;  // ignored with flip_guard (which starts from the Tutte map)
   // Anderson acceleration of the local/global iteration (Peng et al. 2018): same fixed point, fewer iterations.
   bool anderson_acceleration = true;
-  // Two-level ARAP: before the full steps, steps restricted to a lattice subspace of about this many cubes
-  // (lattice_subspace.hpp) remove the smooth errors the full steps remove slowly; 0 turns them off.
-  int lattice_cells = 1500;
-  int max_subspace_iterations = 100;
-  double subspace_energy_tolerance = 1e-7;  // relative energy change that ends the subspace steps
   // ABF++ (method Abf): Newton iterations at most and the tolerance on ||grad L|| (abf_angles.hpp).
   int abf_max_newton_iterations = 50;
   double abf_gradient_tolerance = 1e-6;
@@ -69,7 +64,6 @@ struct FlattenOptions {
 struct FlattenResult {
   Eigen::MatrixXd UV;              // #V x 2, mm, same vertex order as the input, centred on the vertex mean
   int iterations = 0;              // ARAP global steps (ABF++: Newton steps)
-  int subspace_iterations = 0;     // ARAP global steps in the lattice subspace (before `iterations`)
   int factorizations = 0;          // numeric sparse Cholesky factorizations: 1, +1 if the Tutte map was needed
   double seconds_init = 0;         // checks, frames, pattern, start map (and the Tutte map if it was needed)
   double seconds_factorize = 0;    // symbolic analysis + numeric factorization of the ARAP Laplacian
