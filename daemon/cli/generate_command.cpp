@@ -26,7 +26,7 @@ struct GenerateOptions {
   int holes = 0;
   bool random_pose = false;
   uint64_t seed = 1;
-  std::string surface = "remeshed";
+  std::string surface = "bezier";
 };
 
 bool has_mesh_extension(const std::string& path) {
@@ -62,7 +62,7 @@ int run_generate(const GenerateOptions& options) {
     params.holes = options.holes;
     params.random_pose = options.random_pose;
     params.seed = options.seed;
-    params.surface = options.surface == "bezier" ? LastSurface::Bezier : LastSurface::Remeshed;
+    params.surface = options.surface == "bezier" ? LastSurface::Bezier : LastSurface::Remeshed;  // legacy, remeshed
     const GeneratedLast last = generate_last(params);
     write_mesh(options.output, last.mesh);
     if (!options.pose_output.empty()) write_pose(options.pose_output, last, options);
@@ -97,8 +97,8 @@ void add_generate_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   command->add_flag("--random-pose", options->random_pose, "Rotate and move the scan arbitrarily");
   command->add_option("--seed", options->seed, "Random seed: the same seed gives the same file")->capture_default_str();
-  command->add_option("--surface", options->surface, "remeshed (exact triangle count) or bezier (Bezier surface of a quad mesh)")
-      ->check(CLI::IsMember({"remeshed", "bezier"}))
+  command->add_option("--surface", options->surface, "bezier (C2 Bezier surface, sharp flat top cut) or legacy (remeshed implicit solid; 'remeshed' is the same)")
+      ->check(CLI::IsMember({"bezier", "legacy", "remeshed"}))
       ->capture_default_str();
   command->add_option("--pose-out", options->pose_output, "Also write the canonical-to-scan transform as JSON");
   command->callback([options, &exit_code] { exit_code = run_generate(*options); });

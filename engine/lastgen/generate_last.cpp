@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-#include "engine/lastgen/last_control_mesh.hpp"
+#include "engine/lastgen/bezier_last.hpp"
 #include "engine/lastgen/last_shape.hpp"
 #include "engine/lastgen/scan_artifacts.hpp"
 #include "engine/mesh/isotropic_remesh.hpp"

@@ -1,6 +1,7 @@
 #pragma once
-// The last as a quad control mesh and its bicubic Bezier surface (engine/subdiv), the alternative to
-// marching tetrahedra + isotropic remeshing (LastSurface::Bezier).
+// The last as one closed quad control mesh whose bicubic Bezier surface (engine/subdiv) rounds the top cut
+// (the benchmarks' and reflection pictures' subject; the generator's default keeps the cut sharp with
+// last_side_mesh.hpp).
 //
 // Control mesh: the surface of a box of nx x ny x nz quads (a cube sphere, eight valence-3 vertices at
 // the box corners, all others valence 4), each lattice point sent along its equi-angular cube-map
@@ -19,14 +20,5 @@ namespace lastcut {
 // About `control_quads` quads (box proportional to the last), outward, closed. Throws EngineError
 // when a ray does not leave the solid or the centre is not inside.
 QuadMesh last_control_mesh(const LastShape& shape, const LastParams& params, int control_quads);
-
-// The detail n and control size for ~ target_triangles triangles (2 n^2 per control quad): n = 4
-// (the Catmull-Clark-like density) for the default 50k triangles, fewer for small meshes, at most 8.
-int bezier_detail_for(int target_triangles);
-
-// The triangulated Bezier surface of the last (samples spread evenly at the eight extraordinary
-// vertices, SampleSpread::EvenAtExtraordinary), 2 F n^2 triangles with F within a few % of
-// target_triangles / (2 n^2) (the box's sides are whole numbers of quads).
-TriMesh bezier_last_surface(const LastShape& shape, const LastParams& params);
 
 }  // namespace lastcut

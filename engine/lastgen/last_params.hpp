@@ -11,8 +11,9 @@
 
 namespace lastcut {
 
-// How the surface is made: marching tetrahedra + isotropic remeshing (exact triangle count), or the
-// bicubic Bezier surface of a quad control mesh (engine/lastgen/last_control_mesh.hpp; count within a few %).
+// How the surface is made: the C2 bicubic Bezier surface of a quad control mesh with a sharp, flat top cut
+// (engine/lastgen/bezier_last.hpp; the default), or the older marching tetrahedra + isotropic remeshing
+// onto the solid with its 2 mm top-cut fillet (`lastcut generate --surface legacy`, kept for comparison).
 enum class LastSurface { Remeshed, Bezier };
 
 struct LastParams {
@@ -25,12 +26,12 @@ struct LastParams {
   FootSide side = FootSide::Left;
   bool symmetric = false;       // a straight last for either foot: the plan outline's medial side mirrored
                                 // onto the lateral one, toe and heel centred on the long axis
-  int target_triangles = 50000; // the result has this many (to within 2)
+  int target_triangles = 50000; // the result has this many (Bezier: rounded down to even; legacy: to within 2)
   double noise_mm = 0.0;        // scanner noise, Gaussian sigma along the vertex normal
   int holes = 0;                // small scan holes (a few mm across), never on the top cut
   bool random_pose = false;     // arbitrary rotation + translation of the whole scan
   uint64_t seed = 1;
-  LastSurface surface = LastSurface::Remeshed;
+  LastSurface surface = LastSurface::Bezier;
 
   // Plausible proportions for a medium-width everyday last of EU (Paris point) size 35..47:
   // length = size x 6.667 mm, widths and heights proportional. Throws EngineError outside 35..47.

@@ -84,6 +84,11 @@ double LastShape::inset_mm(double height_above_sole_mm) const {
 }
 
 double LastShape::value(const Eigen::Vector3d& p) const {
+  const double cut = (p.z() - top_cut_z_mm(p.x())) / std::sqrt(1.0 + cut_slope_ * cut_slope_);
+  return round_intersection(body_value(p), cut, kTopCutRadiusMm);
+}
+
+double LastShape::body_value(const Eigen::Vector3d& p) const {
   const double x = p.x(), y = p.y(), z = p.z();
   const double sole_z = sole_z_mm(x);
   const double height = z - sole_z;
@@ -107,30 +112,31 @@ double LastShape::value(const Eigen::Vector3d& p) const {
   // Sole: everything above the sole line.
   const double sole_slope_x = sole_slope(x);
   const double sole = -height / std::sqrt(1.0 + sole_slope_x * sole_slope_x);
-  solid = round_intersection(solid, sole, kFeatherRadiusMm);
-
-  // Flat top cut.
-  const double cut = (z - top_cut_z_mm(x)) / std::sqrt(1.0 + cut_slope_ * cut_slope_);
-  return round_intersection(solid, cut, kTopCutRadiusMm);
+  return round_intersection(solid, sole, kFeatherRadiusMm);
 }
 
-Eigen::Vector3d LastShape::gradient(const Eigen::Vector3d& p) const {
+Eigen::Vector3d LastShape::gradient(const Eigen::Vector3d& p) const { return gradient_of(&LastShape::value, p); }
+Eigen::Vector3d LastShape::body_gradient(const Eigen::Vector3d& p) const { return gradient_of(&LastShape::body_value, p); }
+Eigen::Vector3d LastShape::project(const Eigen::Vector3d& p) const { return project_on(&LastShape::value, p); }
+Eigen::Vector3d LastShape::project_to_body(const Eigen::Vector3d& p) const { return project_on(&LastShape::body_value, p); }
+
+Eigen::Vector3d LastShape::gradient_of(Field field, const Eigen::Vector3d& p) const {
   constexpr double h = 0.2;
   Eigen::Vector3d g;
   for (int axis = 0; axis < 3; ++axis) {
     Eigen::Vector3d step = Eigen::Vector3d::Zero();
     step(axis) = h;
-    g(axis) = (value(p + step) - value(p - step)) / (2 * h);
+    g(axis) = ((this->*field)(p + step) - (this->*field)(p - step)) / (2 * h);
   }
   return g;
 }
 
-Eigen::Vector3d LastShape::project(const Eigen::Vector3d& p) const {
+Eigen::Vector3d LastShape::project_on(Field field, const Eigen::Vector3d& p) const {
   Eigen::Vector3d q = p;
   for (int step = 0; step < 8; ++step) {
-    const double f = value(q);
+    const double f = (this->*field)(q);
     if (std::abs(f) < 1e-4) break;
-    const Eigen::Vector3d g = gradient(q);
+    const Eigen::Vector3d g = gradient_of(field, q);
     const double g2 = g.squaredNorm();
     if (g2 < 1e-12) break;
     Eigen::Vector3d move = -f * g / g2;

@@ -27,6 +27,11 @@ class LastShape {
   Eigen::Vector3d gradient(const Eigen::Vector3d& p) const;
   // Newton steps along the gradient to the zero level set (mm in, mm out).
   Eigen::Vector3d project(const Eigen::Vector3d& p) const;
+  // The same for the body: the solid before the top cut (no cut, no 2 mm fillet). Its zero set
+  // meets the cut plane in the sharp rim the Bezier surface keeps (engine/lastgen/last_side_mesh.hpp).
+  double body_value(const Eigen::Vector3d& p) const;
+  Eigen::Vector3d body_gradient(const Eigen::Vector3d& p) const;
+  Eigen::Vector3d project_to_body(const Eigen::Vector3d& p) const;
 
   // Height of the sole (ground contact line) at x (mm); 0 on the ball tread.
   double sole_z_mm(double x_mm) const;
@@ -37,6 +42,9 @@ class LastShape {
   std::pair<Eigen::Vector3d, Eigen::Vector3d> bounds_mm() const;
 
  private:
+  using Field = double (LastShape::*)(const Eigen::Vector3d&) const;
+  Eigen::Vector3d gradient_of(Field field, const Eigen::Vector3d& p) const;
+  Eigen::Vector3d project_on(Field field, const Eigen::Vector3d& p) const;
   double sole_slope(double x_mm) const;
   double inset_mm(double height_above_sole_mm) const;
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "engine/lastgen/generate_last.hpp"
+#include "engine/lastgen/bezier_last.hpp"
 #include "engine/lastgen/last_control_mesh.hpp"
 #include "engine/subdiv/sample_surface.hpp"
 #include "tests/lastgen/mesh_checks.hpp"

@@ -1,0 +1,29 @@
+#pragma once
+// The Bezier surface of the last with a sharp top cut (LastSurface::Bezier, the default of generate_last):
+// the C2 Bezier side surface of last_side_mesh.hpp sampled with detail n (engine/subdiv), closed by a
+// flat cap meshed to the same rim samples, at exactly the asked triangle count (rounded down to even).
+//
+// Count: a closed triangle mesh has 2 n^2 triangles per control quad, and the box of nx x ny x nz
+// control cells has 2 (nx ny + nx nz + ny nz) quads; the box is chosen near the last's proportions
+// (each side within 3 cells) with the largest count not above the target. The few triangles still
+// missing (typically under 0.5 %) come from splitting that many cap quads into four around their centre:
+// the cap is flat, so no split changes the surface.
+//
+// Cap: the rim samples form four arcs of n u, n v, n u, n v segments (the cap cells of the side mesh);
+// the cap is the (n u) x (n v) grid of those arcs, its inside from the bilinearly blended Coons patch of
+// the four arcs (S. A. Coons, "Surfaces for computer-aided design of space forms", MIT MAC-TR-41, 1967)
+// smoothed by uniform Laplacian steps, all in the cut plane.
+#include "engine/core/tri_mesh.hpp"
+#include "engine/lastgen/last_shape.hpp"
+
+namespace lastcut {
+
+// The detail n for ~ target_triangles triangles: n = 4 (the Catmull-Clark-like density) for the default
+// 50k triangles, fewer for small meshes, at most 8; the control mesh has ~ target / (2 n^2) quads.
+int bezier_detail_for(int target_triangles);
+
+// The last's closed, outward surface (mm) with target_triangles (rounded down to even) triangles.
+// Throws EngineError when the control mesh cannot be built (see last_side_mesh).
+TriMesh bezier_last_surface(const LastShape& shape, const LastParams& params);
+
+}  // namespace lastcut
