@@ -197,7 +197,9 @@ void MqttStatus::set_retained(const std::string& topic, const std::string& paylo
 void MqttStatus::run() {
   std::unique_lock lock(mutex_);
   for (;;) {
-    wake_.wait(lock, [this] { return stopping_ || (connected_ && (republish_all_ || !dirty_.empty() || !events_.empty())); });
+    wake_.wait(lock, [this] {
+      return stopping_ || (connected_ && (republish_all_ || !dirty_.empty() || !events_.empty()));
+    });
     if (stopping_) return;
     if (republish_all_) {
       for (const auto& [topic, payload] : retained_) dirty_.insert(topic);
