@@ -43,7 +43,8 @@ int check_config(const std::string& file) {
   if (config.status.enabled) {
     // A broker that is away is no configuration error (lastcutd retries), so the exit stays 0.
     const lastcut::Status reached = lastcut::daemon::check_broker(config.status, 3.0);
-    const std::string answer = reached ? "reachable, station " + config.status.station : "NOT reachable: " + reached.error();
+    const std::string answer =
+        reached ? "reachable, station " + config.status.station : "NOT reachable: " + reached.error();
     std::printf("status: MQTT broker %s %s\n", config.status.mqtt_url.c_str(), answer.c_str());
   }
   return 0;

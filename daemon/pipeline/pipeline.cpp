@@ -21,7 +21,9 @@ Status Pipeline::start() {
   const auto settings = config();
   spool_ = std::make_unique<Spool>(settings->paths.spool_dir);
   if (Status prepared = spool_->prepare(); !prepared) return prepared;
-  if (observer_) spool_->on_job_written([observer = observer_](const JobState& state) { observer->job_changed(state); });
+  if (observer_) {
+    spool_->on_job_written([observer = observer_](const JobState& state) { observer->job_changed(state); });
+  }
   for (const auto& [name, section] : settings->cutters) {
     dispatchers_[name] = std::make_unique<CutterDispatcher>(name, *spool_, monitor_, [this, cutter = name] {
       const auto current = config();
@@ -29,7 +31,8 @@ Status Pipeline::start() {
       return it != current->cutters.end() ? it->second : CutterSection{};
     });
     if (observer_) {
-      dispatchers_[name]->on_status([observer = observer_](const CutterStatus& status) { observer->cutter_changed(status); });
+      dispatchers_[name]->on_status(
+          [observer = observer_](const CutterStatus& status) { observer->cutter_changed(status); });
     }
   }
   index_hashes();

@@ -197,7 +197,9 @@ void MqttStatus::set_retained(const std::string& topic, const std::string& paylo
 void MqttStatus::run() {
   std::unique_lock lock(mutex_);
   for (;;) {
-    wake_.wait(lock, [this] { return stopping_ || (connected_ && (republish_all_ || !dirty_.empty() || !events_.empty())); });
+    wake_.wait(lock, [this] {
+      return stopping_ || (connected_ && (republish_all_ || !dirty_.empty() || !events_.empty()));
+    });
     if (stopping_) return;
     if (republish_all_) {
       for (const auto& [topic, payload] : retained_) dirty_.insert(topic);
@@ -224,25 +226,29 @@ bool MqttStatus::flush() {
     return mosquitto_publish(client_, nullptr, message.topic.c_str(), static_cast<int>(message.payload.size()),
                              message.payload.data(), kQos, retain) == MOSQ_ERR_SUCCESS;
   };
+  // What was not sent goes back in front of anything queued meanwhile, in order; the limit holds.
+  const auto put_back = [this, &events] {
+    std::lock_guard lock(mutex_);
+    events.insert(events.end(), events_.begin(), events_.end());
+    events_.swap(events);
+    while (events_.size() > static_cast<std::size_t>(config_.queue_limit)) {
+      events_.pop_front();
+      ++dropped_events_;
+    }
+  };
   for (std::size_t i = 0; i < retained.size(); ++i) {
     if (!publish(retained[i], true)) {
-      std::lock_guard lock(mutex_);
-      for (std::size_t j = i; j < retained.size(); ++j) dirty_.insert(retained[j].topic);
-      events.insert(events.end(), events_.begin(), events_.end());
-      events_.swap(events);
+      {
+        std::lock_guard lock(mutex_);
+        for (std::size_t j = i; j < retained.size(); ++j) dirty_.insert(retained[j].topic);
+      }
+      put_back();
       return false;
     }
   }
   while (!events.empty()) {
     if (!publish(events.front(), false)) {
-      std::lock_guard lock(mutex_);
-      // Back in front of anything queued meanwhile, in their order; the limit still holds.
-      events.insert(events.end(), events_.begin(), events_.end());
-      events_.swap(events);
-      while (events_.size() > static_cast<std::size_t>(config_.queue_limit)) {
-        events_.pop_front();
-        ++dropped_events_;
-      }
+      put_back();
       return false;
     }
     events.pop_front();
