@@ -64,25 +64,29 @@ void print_convergence_quality(const std::vector<BenchHalf>& halves, int runs) {
 }
 
 void print_outline_by_iteration(const std::vector<BenchHalf>& halves) {
-  std::printf("\n## Outline distance to the converged map after k iterations (default options otherwise)\n\n"
-              "| half | k | stopped by tolerance | outline max mm | outline rms mm | D_angle | D_area | flipped |\n"
-              "|---|---|---|---|---|---|---|---|\n");
+  std::printf("\n## Outline distance to the converged map after exactly k iterations (no energy tolerance; then the "
+              "default fold repair)\n\n"
+              "| half | k | outline max mm | outline rms mm | D_angle | D_area | flipped |\n"
+              "|---|---|---|---|---|---|---|\n");
   for (const BenchHalf& half : halves) {
     const FlattenResult converged = fully_converged(half.mesh);
     const std::vector<int> loop = check_disk(half.mesh).boundary_loops[0];
     const Eigen::MatrixXd target = outline_of(converged.UV, loop);
-    for (int k = 5; k <= 60; k += 5) {
+    // Up to the iteration count a mold cut to 0.1 mm needs (the first k within 0.05 mm ends the rows).
+    constexpr double kWithinMm = 0.05;
+    for (int k = 5; k <= 120; k += 5) {
       FlattenOptions options;
       options.max_iterations = k;
+      options.relative_energy_tolerance = 0.0;
       const FlattenResult r = flatten(half.mesh, options);
       const Eigen::MatrixXd outline = outline_of(r.UV, loop);
       const DistortionMeasures d = measure_distortion(half.mesh, r.UV);
-      std::printf("| %s | %d | %s | %.4f | %.4f | %.4f | %.4f | %d |\n", half.name.c_str(), k,
-                  r.converged ? "yes" : "no", testing::max_distance_after_rigid_alignment(outline, target),
+      const double max_mm = testing::max_distance_after_rigid_alignment(outline, target);
+      std::printf("| %s | %d | %.4f | %.4f | %.4f | %.4f | %d |\n", half.name.c_str(), k, max_mm,
                   testing::rms_distance_after_rigid_alignment(outline, target), d.D_angle, d.D_area,
                   d.flipped_triangles);
       std::fflush(stdout);
-      if (r.converged) break;
+      if (max_mm <= kWithinMm) break;
     }
   }
 }
