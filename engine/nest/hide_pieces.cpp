@@ -59,7 +59,8 @@ HidePieces prepare_hide_pieces(const NestInstance& instance, const NestOptions& 
       NestItem turned = instance.items[k];
       // Grain g in pose r must lie along the backbone b: (g - b) + r along the x axis.
       if (turned.grain_deg) *turned.grain_deg -= deg;
-      items.push_back(prepare_item(turned, static_cast<int>(k), result.gap_mm / 2, options.free_rotation_step_deg));
+      const PreparedItem* same = result.frames.empty() ? nullptr : &result.frames[0][k];  // outlines do not turn
+      items.push_back(prepare_item(turned, static_cast<int>(k), result.gap_mm / 2, options.free_rotation_step_deg, same));
     }
     result.frames.push_back(std::move(items));
   }
