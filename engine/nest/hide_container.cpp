@@ -16,12 +16,16 @@ using ClipperLib::Path;
 using ClipperLib::Paths;
 
 // Offsets one ring by delta_mm (positive grows it); may split into several rings or vanish.
+// Round joins are chords of the true arcs, up to the arc tolerance short of them: the offset goes
+// that much further, so the result always covers the exact offset (a piece slid up to a grown defect
+// must still clear it by the margin).
 std::vector<std::vector<Point2>> offset_ring(const std::vector<Point2>& ring, double delta_mm, double scale) {
   if (delta_mm == 0) return {ring};
-  ClipperLib::ClipperOffset offset(2.0, std::max(1.0, 0.01 * std::abs(delta_mm) * scale));
+  const double arc_tolerance_mm = 0.01 * std::abs(delta_mm);
+  ClipperLib::ClipperOffset offset(2.0, std::max(1.0, arc_tolerance_mm * scale));
   offset.AddPath(to_path(ring, scale), ClipperLib::jtRound, ClipperLib::etClosedPolygon);
   Paths result;
-  offset.Execute(result, delta_mm * scale);
+  offset.Execute(result, (delta_mm + std::copysign(arc_tolerance_mm + 2.0 / scale, delta_mm)) * scale);
   std::vector<std::vector<Point2>> rings;
   for (const Path& r : result) {
     if (ClipperLib::Area(r) <= 0 || r.size() < 3) continue;  // outer parts only
@@ -133,18 +137,31 @@ void HideContainer::build_grid(bool zones_only, int min_quality) {
   grid.x0 = box_.x0, grid.y0 = box_.y0;
   grid.nx = std::max(1, static_cast<int>(std::ceil(box_.width() / grid.step)));
   grid.ny = std::max(1, static_cast<int>(std::ceil(box_.height() / grid.step)));
-  grid.value.resize(static_cast<size_t>(grid.nx) * grid.ny);
+  // Distances beyond kCapCells cells are capped: each edge only updates the cells near it.
+  constexpr int kCapCells = 8;
+  const double cap = kCapCells * grid.step;
+  grid.value.assign(static_cast<size_t>(grid.nx) * grid.ny, static_cast<float>(cap));
+  for (const Ring& ring : rings_) {
+    if (!relevant(ring, min_quality, zones_only)) continue;
+    for (size_t j = 0, m = ring.points.size(); j < m; ++j) {
+      const Point2& a = ring.points[j];
+      const Point2& b = ring.points[(j + 1) % m];
+      const int x_lo = std::max(0, static_cast<int>(std::floor((std::min(a.x(), b.x()) - cap - grid.x0) / grid.step)));
+      const int x_hi = std::min(grid.nx - 1, static_cast<int>(std::ceil((std::max(a.x(), b.x()) + cap - grid.x0) / grid.step)));
+      const int y_lo = std::max(0, static_cast<int>(std::floor((std::min(a.y(), b.y()) - cap - grid.y0) / grid.step)));
+      const int y_hi = std::min(grid.ny - 1, static_cast<int>(std::ceil((std::max(a.y(), b.y()) + cap - grid.y0) / grid.step)));
+      for (int y = y_lo; y <= y_hi; ++y)
+        for (int x = x_lo; x <= x_hi; ++x) {
+          const Point2 c(grid.x0 + (x + 0.5) * grid.step, grid.y0 + (y + 0.5) * grid.step);
+          float& v = grid.value[static_cast<size_t>(y) * grid.nx + x];
+          v = std::min(v, static_cast<float>(distance_to_segment(c, a, b)));
+        }
+    }
+  }
   for (int y = 0; y < grid.ny; ++y)
     for (int x = 0; x < grid.nx; ++x) {
       const Point2 c(grid.x0 + (x + 0.5) * grid.step, grid.y0 + (y + 0.5) * grid.step);
-      double distance = std::max(box_.width(), box_.height());
-      for (const Ring& ring : rings_) {
-        if (!relevant(ring, min_quality, zones_only)) continue;
-        for (size_t j = 0, m = ring.points.size(); j < m; ++j)
-          distance = std::min(distance, distance_to_segment(c, ring.points[j], ring.points[(j + 1) % m]));
-      }
-      grid.value[static_cast<size_t>(y) * grid.nx + x] =
-          static_cast<float>(usable_point(c, min_quality, zones_only) ? distance : -distance);
+      if (!usable_point(c, min_quality, zones_only)) grid.value[static_cast<size_t>(y) * grid.nx + x] *= -1;
     }
   grids_.push_back(std::move(grid));
 }

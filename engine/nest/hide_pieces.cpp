@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 #include "engine/nest/nest_random.hpp"
@@ -59,7 +60,8 @@ HidePieces prepare_hide_pieces(const NestInstance& instance, const NestOptions& 
       NestItem turned = instance.items[k];
       // Grain g in pose r must lie along the backbone b: (g - b) + r along the x axis.
       if (turned.grain_deg) *turned.grain_deg -= deg;
-      items.push_back(prepare_item(turned, static_cast<int>(k), result.gap_mm / 2, options.free_rotation_step_deg));
+      const PreparedItem* same = result.frames.empty() ? nullptr : &result.frames[0][k];  // outlines do not turn
+      items.push_back(prepare_item(turned, static_cast<int>(k), result.gap_mm / 2, options.free_rotation_step_deg, same));
     }
     result.frames.push_back(std::move(items));
   }
@@ -89,8 +91,10 @@ HidePieces prepare_hide_pieces(const NestInstance& instance, const NestOptions& 
     bool posable = false;
     for (const HideSlot& slot : result.slots) posable |= !result.frames[slot.frame][k].orientations.empty();
     if (!posable) {
-      const std::string reason = item.grain_deg ? "no allowed rotation puts its grain within " +
-                                                      std::to_string(item.grain_tolerance_deg) + " deg of any hide's grain"
+      char tolerance[32];
+      std::snprintf(tolerance, sizeof tolerance, "%g", item.grain_tolerance_deg);
+      const std::string reason = item.grain_deg ? "no allowed rotation puts its grain within " + std::string(tolerance) +
+                                                      " deg of any hide's grain (backbone, or x axis without one)"
                                                 : result.frames[0][k].no_pose_reason;
       result.unplaced.push_back({item.id, item.demand, reason});
       continue;

@@ -195,13 +195,16 @@ PoleLanes pole_lanes(const std::vector<Pole>& poles) {
   return lanes;
 }
 
-PreparedItem prepare_item(const NestItem& item, int item_index, double grow_mm, double free_step_deg) {
+PreparedItem prepare_item(const NestItem& item, int item_index, double grow_mm, double free_step_deg,
+                          const PreparedItem* same_shape) {
   PreparedItem prepared;
   prepared.item_index = item_index;
   prepared.area_mm2 = std::abs(signed_area(item.shape));
   prepared.min_quality = item.min_quality;
-  const std::vector<Point2> outline = conservative_outline(item.shape, grow_mm, kMaxOutlinePoints);
-  const std::vector<Pole> poles = compute_poles(outline, kMaxPoles);
+  prepared.own_outline = same_shape ? same_shape->own_outline : conservative_outline(item.shape, grow_mm, kMaxOutlinePoints);
+  prepared.own_poles = same_shape ? same_shape->own_poles : compute_poles(prepared.own_outline, kMaxPoles);
+  const std::vector<Point2>& outline = prepared.own_outline;
+  const std::vector<Pole>& poles = prepared.own_poles;
   const Box box = bounding_box(outline);
   prepared.diameter_mm = std::hypot(box.width(), box.height());
   struct Region {

@@ -57,6 +57,8 @@ struct PreparedItem {
   int min_quality = 0;
   std::vector<OrientedShape> orientations;  // empty: no allowed pose (see no_pose_reason)
   std::string no_pose_reason;
+  std::vector<Point2> own_outline;  // the conservative outline in the item's own frame
+  std::vector<Pole> own_poles;      // its poles, own frame
 };
 
 // The poses the item may take: its rotation list (or free rotation in free_step_deg steps),
@@ -71,8 +73,10 @@ std::vector<Point2> conservative_outline(const Polygon2& shape, double grow_mm, 
 // Up to max_poles disjoint inscribed circles, largest first, of a counter-clockwise ring.
 std::vector<Pole> compute_poles(const std::vector<Point2>& ring, int max_poles);
 
-// Everything above for one item. grow_mm = gap / 2.
-PreparedItem prepare_item(const NestItem& item, int item_index, double grow_mm, double free_step_deg);
+// Everything above for one item. grow_mm = gap / 2. same_shape: an item prepared before from the
+// same shape and grow_mm (only its poses may differ, e.g. its grain): its outline and poles are reused.
+PreparedItem prepare_item(const NestItem& item, int item_index, double grow_mm, double free_step_deg,
+                          const PreparedItem* same_shape = nullptr);
 
 // The poles as lanes (see PoleLanes).
 PoleLanes pole_lanes(const std::vector<Pole>& poles);

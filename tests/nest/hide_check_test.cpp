@@ -40,13 +40,13 @@ std::vector<std::string> check(const NestInstance& instance, std::vector<Placeme
 // Item 0 turned along the 30 deg backbone: rotation 30 about its own origin, moved to (x, y).
 Placement graded_at(double x, double y, double rotation_deg = 30) { return {0, 10, 0, rotation_deg, false, x, y}; }
 
-TEST(HideCheck, GradedPieceAlongTheBackboneOnGoodLeatherIsAccepted) {
+TEST(NestHideCheck, GradedPieceAlongTheBackboneOnGoodLeatherIsAccepted) {
   const NestInstance instance = test::constraint_instance();
   const auto problems = check(instance, {graded_at(100, 60)});
   EXPECT_TRUE(problems.empty()) << all(problems);
 }
 
-TEST(HideCheck, RefusesAPieceOutsideTheHideOrOnItsMargin) {
+TEST(NestHideCheck, RefusesAPieceOutsideTheHideOrOnItsMargin) {
   const NestInstance instance = test::constraint_instance();
   EXPECT_TRUE(mentions(check(instance, {graded_at(-30, 60)}), "sticks out of hide 10"));
   // The lower edge runs from (0, 30) to (300, 0): the corner (50, 27) of a filler is 1.99 mm from it
@@ -57,14 +57,14 @@ TEST(HideCheck, RefusesAPieceOutsideTheHideOrOnItsMargin) {
   EXPECT_TRUE(check(instance, {filler_ok}).empty()) << all(check(instance, {filler_ok}));
 }
 
-TEST(HideCheck, RefusesAPieceWithinTheMarginOfAHole) {
+TEST(NestHideCheck, RefusesAPieceWithinTheMarginOfAHole) {
   const NestInstance instance = test::constraint_instance();
   // The hole spans x 280..330: a filler ending at x 277 is 3 mm from it (margin 5); at 270 it is 10 mm.
   EXPECT_TRUE(mentions(check(instance, {{3, 10, 0, 0, false, 217, 190}}), "covers defect 0 of hide 10"));
   EXPECT_TRUE(check(instance, {{3, 10, 0, 0, false, 210, 190}}).empty());
 }
 
-TEST(HideCheck, RefusesAPieceOrItsQualityRegionOnPoorLeather) {
+TEST(NestHideCheck, RefusesAPieceOrItsQualityRegionOnPoorLeather) {
   NestInstance instance = test::constraint_instance();
   // Along the backbone the graded piece's region (own x 80..120) ends up upper right. Unrotated
   // placements keep the geometry obvious, so here the grain has no tolerance issue: a 0 deg backbone.
@@ -85,7 +85,7 @@ TEST(HideCheck, RefusesAPieceOrItsQualityRegionOnPoorLeather) {
   EXPECT_TRUE(mentions(check(instance, {{0, 10, 0, 0, false, 230, 260}}), "lies on zone 0 of quality 1 but needs 2"));
 }
 
-TEST(HideCheck, RefusesGrainAcrossTheBackbone) {
+TEST(NestHideCheck, RefusesGrainAcrossTheBackbone) {
   const NestInstance instance = test::constraint_instance();
   const auto along_x = check(instance, {graded_at(100, 60, 0)});  // x axis, 30 deg off the backbone
   EXPECT_TRUE(mentions(along_x, "grain is 30 deg off the material's grain (tolerance 5)")) << all(along_x);
@@ -97,7 +97,7 @@ TEST(HideCheck, RefusesGrainAcrossTheBackbone) {
   EXPECT_TRUE(check(plain, {graded_at(100, 60, 0)}).empty());
 }
 
-TEST(HideCheck, RefusesPairsSplitApartOrHalfPlaced) {
+TEST(NestHideCheck, RefusesPairsSplitApartOrHalfPlaced) {
   const NestInstance two = test::constraint_instance(2);
   const Placement left{1, 10, 0, 0, false, 60, 100};
   // The L's centroid lies 34.17 mm from its leg's outer side: the mirrored piece above the first one

@@ -35,7 +35,7 @@ double line_deviation_deg(double a_deg, double b_deg) {
   return std::min(d, 180.0 - d);
 }
 
-TEST(HideSearch, AllConstraintsHoldOnOneHide) {
+TEST(NestHideSearch, AllConstraintsHoldOnOneHide) {
   const NestInstance instance = test::constraint_instance(2);
   const Layout layout = nest(instance, rounds(10));
   EXPECT_TRUE(check_layout(layout, instance).empty()) << all(check_layout(layout, instance));
@@ -54,7 +54,7 @@ TEST(HideSearch, AllConstraintsHoldOnOneHide) {
   }
 }
 
-TEST(HideSearch, SameSeedAndRoundsGiveTheSameLayout) {
+TEST(NestHideSearch, SameSeedAndRoundsGiveTheSameLayout) {
   NestInstance instance = test::constraint_instance(3);
   instance.items[3].demand = 40;  // more than one hide
   const Layout a = nest(instance, rounds(4));
@@ -68,7 +68,7 @@ TEST(HideSearch, SameSeedAndRoundsGiveTheSameLayout) {
   }
 }
 
-TEST(HideSearch, NeverMoreHidesThanTheGreedyAndAtLeastTheAreaBound) {
+TEST(NestHideSearch, NeverMoreHidesThanTheGreedyAndAtLeastTheAreaBound) {
   NestInstance instance = test::constraint_instance(4);
   instance.items[3].demand = 70;  // 168,000 mm^2 of fillers
   const Layout search = nest(instance, rounds(4));
@@ -83,7 +83,7 @@ TEST(HideSearch, NeverMoreHidesThanTheGreedyAndAtLeastTheAreaBound) {
   EXPECT_GE(used_bin_count(search), static_cast<int>(std::ceil(placed / hide_area)));
 }
 
-TEST(HideSearch, KeepsTheHighestPriorityWhenNotEverythingFits) {
+TEST(NestHideSearch, KeepsTheHighestPriorityWhenNotEverythingFits) {
   NestInstance instance = test::constraint_instance(1);
   instance.items[3].demand = 120;  // far more than one hide holds
   NestItem urgent = test::item(4, test::rectangle(70, 45), 4);
@@ -97,7 +97,7 @@ TEST(HideSearch, KeepsTheHighestPriorityWhenNotEverythingFits) {
   EXPECT_FALSE(layout.unplaced.empty());
 }
 
-TEST(HideSearch, APairThatCannotBeNearIsLeftOutWhole) {
+TEST(NestHideSearch, APairThatCannotBeNearIsLeftOutWhole) {
   NestInstance instance = test::constraint_instance(1);
   instance.pair_distance_mm = 1;  // no two pieces can have centroids 1 mm apart
   const Layout layout = nest(instance, rounds(3));
@@ -112,7 +112,7 @@ TEST(HideSearch, APairThatCannotBeNearIsLeftOutWhole) {
   EXPECT_EQ(listed, 2);
 }
 
-TEST(HideSearch, GreedyMethodHonoursTheSameConstraints) {
+TEST(NestHideSearch, GreedyMethodHonoursTheSameConstraints) {
   const NestInstance instance = test::constraint_instance(2);
   const Layout layout = nest(instance, rounds(3, HideMethod::Greedy));
   EXPECT_TRUE(check_layout(layout, instance).empty()) << all(check_layout(layout, instance));

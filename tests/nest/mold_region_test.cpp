@@ -45,7 +45,7 @@ std::vector<Point2> clip_half_plane(const std::vector<Point2>& ring, const Point
 
 double area(const std::vector<Point2>& ring) { return std::abs(signed_area(Polygon2{ring})); }
 
-TEST(MoldRegion, ToeRegionIsThePartNearTheToeForMoldAndTwin) {
+TEST(NestMoldRegion, ToeRegionIsThePartNearTheToeForMoldAndTwin) {
   const Mold mold = generated_mold(20);
   MoldNestSpec spec;
   spec.mirrored_twins = true;
@@ -70,7 +70,7 @@ TEST(MoldRegion, ToeRegionIsThePartNearTheToeForMoldAndTwin) {
   }
 }
 
-TEST(MoldRegion, NoRegionWithoutTheSettingOrTheNotches) {
+TEST(NestMoldRegion, NoRegionWithoutTheSettingOrTheNotches) {
   Mold mold = generated_mold(0);
   MoldNestSpec spec;
   EXPECT_TRUE(items_from_molds({mold}, spec)[0].quality_regions.empty());
