@@ -16,11 +16,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
+#include "daemon/cli/thread_team.hpp"
 #include "engine/nest/layout_check.hpp"
 #include "engine/nest/layout_svg.hpp"
 #include "engine/nest/nest_json.hpp"
@@ -32,13 +33,6 @@ namespace {
 const std::map<std::string, double> kBestKnown = {{"albano", 89.82}, {"blaz1", 86.22}, {"dagli", 90.17},
                                                   {"fu", 92.40},     {"jakobs1", 89.25}, {"jakobs2", 87.72},
                                                   {"mao", 86.87},    {"marques", 92.02}, {"shapes0", 69.98}};
-
-void run_threads(std::vector<std::function<void()>>& tasks) {
-  std::vector<std::thread> threads;
-  for (size_t i = 1; i < tasks.size(); ++i) threads.emplace_back(tasks[i]);
-  tasks[0]();
-  for (auto& t : threads) t.join();
-}
 
 std::vector<std::filesystem::path> json_files(const std::filesystem::path& folder) {
   std::vector<std::filesystem::path> files;
@@ -60,13 +54,15 @@ int main(int argc, char** argv) {
   long rounds = 0;  // > 0: an iteration limit instead of the time limits
   bool trace = false;
   std::filesystem::path svg_dir;  // when set: a picture of every layout
+  std::unique_ptr<lastcut::ThreadTeam> team;  // started once: a sweep's tasks do not start threads
   auto options_for = [&](double limit) {  // reads the options as parsed so far
+    if (!team) team = std::make_unique<lastcut::ThreadTeam>(static_cast<size_t>(std::max(0, threads - 1)));
     lastcut::NestOptions options;
     options.time_limit_s = limit;
     options.threads = threads;
     options.sweep_workers = workers;
     options.seed = seed;
-    options.run_parallel = run_threads;
+    options.run_parallel = team->runner();
     return options;
   };
   for (int a = 1; a + 1 < argc; a += 2) {

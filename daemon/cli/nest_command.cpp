@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "daemon/cli/commands.hpp"
+#include "daemon/cli/thread_team.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/mold/mold_dxf.hpp"
 #include "engine/nest/layout_svg.hpp"
@@ -37,14 +38,6 @@ struct NestArguments {
   bool mirrored_twins = false;
   std::string output_path, svg_path;
 };
-
-// The engine has no threads of its own: the command runs the workers of a round on std::threads.
-void run_on_threads(std::vector<std::function<void()>>& tasks) {
-  std::vector<std::thread> threads;
-  for (size_t i = 1; i < tasks.size(); ++i) threads.emplace_back(tasks[i]);
-  if (!tasks.empty()) tasks[0]();
-  for (auto& t : threads) t.join();
-}
 
 // A mold DXF's label says which half it is ("medial"); the folder `lastcut flatten` wrote it to says
 // whose last it is ("m-42-left"). The cutting room needs both on the piece.
@@ -111,7 +104,9 @@ int run_nest(const NestArguments& a) {
     options.threads = a.threads > 0 ? a.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     if (a.gap_mm >= 0) options.gap_mm = a.gap_mm;
     if (a.margin_mm >= 0) options.margin_mm = a.margin_mm;
-    options.run_parallel = run_on_threads;
+    // The engine has no threads of its own: a team started once runs the workers of every sweep.
+    ThreadTeam team(static_cast<size_t>(options.threads - 1));
+    options.run_parallel = team.runner();
     const Layout layout = nest(instance, options);
     NestInstance written = instance;  // the layout records the gap and margin it was made with
     written.gap_mm = options.gap_mm.value_or(instance.gap_mm);

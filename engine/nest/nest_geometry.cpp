@@ -1,7 +1,9 @@
 #include "engine/nest/nest_geometry.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 
 namespace lastcut::nest_detail {
 namespace {
@@ -84,12 +86,25 @@ bool rings_collide(const PlacedRing& a, const PlacedRing& b) {
     return std::max(p.x(), q.x()) < common_b.x0 || std::min(p.x(), q.x()) > common_b.x1 ||
            std::max(p.y(), q.y()) < common_b.y0 || std::min(p.y(), q.y()) > common_b.y1;
   };
-  for (size_t i = 0, n = ra.size(); i < n; ++i) {
+  // b's edges in the common box, listed once (a fixed buffer: no allocation in this hot path; rings
+  // longer than it keep every edge).
+  constexpr size_t kListed = 256;
+  std::array<std::uint16_t, kListed> listed;
+  size_t listed_count = 0;
+  const size_t m = rb.size();
+  const bool list_b = m <= kListed;
+  if (list_b) {
+    for (size_t j = 0; j < m; ++j)
+      if (!outside_common(rb[j], rb[(j + 1) % m])) listed[listed_count++] = static_cast<std::uint16_t>(j);
+  }
+  const size_t candidates = list_b ? listed_count : m;
+  for (size_t i = 0, n = candidates == 0 ? 0 : ra.size(); i < n; ++i) {
     const Point2 p = ra[i] + shift, q = ra[(i + 1) % n] + shift;
     if (outside_common(p, q)) continue;
     const double px0 = std::min(p.x(), q.x()), px1 = std::max(p.x(), q.x());
     const double py0 = std::min(p.y(), q.y()), py1 = std::max(p.y(), q.y());
-    for (size_t j = 0, m = rb.size(); j < m; ++j) {
+    for (size_t k = 0; k < candidates; ++k) {
+      const size_t j = list_b ? listed[k] : k;
       const Point2& c = rb[j];
       const Point2& d = rb[(j + 1) % m];
       if (std::max(c.x(), d.x()) < px0 || std::min(c.x(), d.x()) > px1 || std::max(c.y(), d.y()) < py0 ||

@@ -1,6 +1,7 @@
 #include "engine/nest/parallel_separation.hpp"
 
 #include <algorithm>
+#include <atomic>
 
 namespace lastcut::nest_detail {
 
@@ -17,10 +18,14 @@ void ParallelSeparation::sweep_all() {
     return;
   }
   for (size_t w = 1; w < workers_.size(); ++w) workers_[w]->adopt(lead());
+  // Each task takes the next worker not yet taken, so a thread that finishes a short sweep early
+  // takes another instead of waiting for a fixed partner. Which thread sweeps a worker does not
+  // matter: a worker's sweep depends only on its own state and random stream.
+  std::atomic<size_t> next{0};
   std::vector<std::function<void()>> tasks;
   for (size_t t = 0; t < tasks_; ++t)
-    tasks.push_back([this, t] {
-      for (size_t w = t; w < workers_.size(); w += tasks_) workers_[w]->sweep();
+    tasks.push_back([this, &next] {
+      for (size_t w = next++; w < workers_.size(); w = next++) workers_[w]->sweep();
     });
   if (run_parallel_ && tasks.size() > 1) {
     run_parallel_(tasks);

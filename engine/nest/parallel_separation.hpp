@@ -23,8 +23,8 @@ using RunParallel = std::function<void(std::vector<std::function<void()>>&)>;
 class ParallelSeparation {
  public:
   // workers >= 1; worker w draws from a stream seeded by stream_seed(seed, 0, w). Each sweep hands
-  // run_parallel min(tasks, workers) tasks, task t sweeping workers t, t + tasks, ... one after the
-  // other (run_parallel unset: every worker on the caller's thread).
+  // run_parallel min(tasks, workers) tasks, each sweeping the next worker not yet taken until none is
+  // left (run_parallel unset: every worker on the caller's thread).
   ParallelSeparation(const std::vector<const PreparedItem*>& pieces, const Container& container, std::uint64_t seed,
                      int workers, int tasks, RunParallel run_parallel);
 

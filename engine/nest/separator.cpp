@@ -44,6 +44,7 @@ bool shapes_collide(const OrientedShape& a, const Point2& offset_a, const Orient
 Separator::Separator(std::vector<const PreparedItem*> pieces, const Container& container, std::uint64_t seed)
     : pieces_(std::move(pieces)), container_(container), random_(seed), n_(static_cast<int>(pieces_.size())) {
   state_.resize(n_);
+  world_box_.resize(n_);
   overlap_.assign(static_cast<size_t>(n_) * n_, 0.0);
   weight_.assign(static_cast<size_t>(n_) * n_, 1.0);
   exterior_.assign(n_, 0.0);
@@ -66,14 +67,34 @@ double Separator::weighted_cost(int i, const PieceState& candidate, double bound
   double cost = exterior_weight_[i] * scale_[i] * scale_[i] *
                 std::sqrt(container_.exterior_overlap(s, candidate.offset, pieces_[i]->min_quality, eps(i, i)));
   if (cost > bound) return cost;
-  for (int j = 0; j < n_; ++j) {
-    if (j == i || (active && !(*active)[j])) continue;
+  auto loss = [&](int j, double sum) {
     const OrientedShape& t = pieces_[j]->orientations[state_[j].orientation];
-    if (!shapes_collide(s, candidate.offset, t, state_[j].offset)) continue;
     const double w = weight_[static_cast<size_t>(i) * n_ + j] * scale_[i] * scale_[j];
-    const double room = (bound - cost) / w;
-    cost += w * std::sqrt(pair_overlap(s, candidate.offset, t, state_[j].offset, eps(i, j),
-                                       room < kInfinity ? room * room : kInfinity));
+    const double room = (bound - sum) / w;
+    return w * std::sqrt(pair_overlap(s, candidate.offset, t, state_[j].offset, eps(i, j),
+                                      room < kInfinity ? room * room : kInfinity));
+  };
+  // First the pairs whose largest poles meet (sure collisions, no edge test needed): most rejected
+  // samples exceed the bound on these alone, before any exact edge test is paid for.
+  const Box world = s.box.shifted(candidate.offset);
+  near_.clear();
+  double sure = cost;
+  for (int j = 0; j < n_; ++j) {
+    if (j == i || !world.overlaps(world_box_[j]) || (active && !(*active)[j])) continue;
+    const OrientedShape& t = pieces_[j]->orientations[state_[j].orientation];
+    const bool poles_meet = largest_poles_meet(s, candidate.offset, t, state_[j].offset);
+    near_.push_back({j, poles_meet ? loss(j, sure) : -1.0});
+    if (poles_meet && (sure += near_.back().loss) > bound) return sure;
+  }
+  // Then every colliding pair in index order, so the sum does not depend on the order of discovery.
+  for (const NearPiece& near : near_) {
+    if (near.loss < 0) {
+      const OrientedShape& t = pieces_[near.j]->orientations[state_[near.j].orientation];
+      if (!rings_collide(placed(s, candidate.offset), placed(t, state_[near.j].offset))) continue;
+      cost += loss(near.j, cost);
+    } else {
+      cost += near.loss;
+    }
     if (cost > bound) return cost;
   }
   return cost;
@@ -92,6 +113,7 @@ bool Separator::collides_any(int i, const PieceState& candidate, const std::vect
 
 void Separator::update_overlaps(int i) {
   const OrientedShape& s = pieces_[i]->orientations[state_[i].orientation];
+  world_box_[i] = s.box.shifted(state_[i].offset);
   exterior_[i] = scale_[i] * scale_[i] * std::sqrt(container_.exterior_overlap(s, state_[i].offset, pieces_[i]->min_quality, eps(i, i)));
   for (int j = 0; j < n_; ++j) {
     if (j == i) continue;
@@ -104,6 +126,7 @@ void Separator::update_overlaps(int i) {
 }
 
 void Separator::recompute_all() {
+  for (int i = 0; i < n_; ++i) world_box_[i] = pieces_[i]->orientations[state_[i].orientation].box.shifted(state_[i].offset);
   for (int i = 0; i < n_; ++i) update_overlaps(i);
 }
 
@@ -168,6 +191,7 @@ void Separator::sweep() {
 
 void Separator::adopt(const Separator& other) {
   state_ = other.state_;
+  world_box_ = other.world_box_;
   overlap_ = other.overlap_;
   weight_ = other.weight_;
   exterior_ = other.exterior_;

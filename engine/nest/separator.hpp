@@ -82,10 +82,18 @@ class Separator {
   Random random_;
   int n_ = 0;
   std::vector<PieceState> state_;
+  std::vector<Box> world_box_;   // per piece: its outline's box where it stands (kept with state_)
   std::vector<double> overlap_;  // n x n, symmetric, unweighted pair overlap
   std::vector<double> weight_;   // n x n GLS weights (>= 1)
   std::vector<double> exterior_, exterior_weight_;
   std::vector<double> scale_;    // per piece: area^(1/4), so a pair's loss scales like sparrow's (Algorithm 4)
+  // weighted_cost's scratch: the pieces whose boxes meet the candidate's, with their loss when their
+  // largest poles meet (-1: not known yet). One separator is used by one thread at a time.
+  struct NearPiece {
+    int j;
+    double loss;
+  };
+  mutable std::vector<NearPiece> near_;
 };
 
 }  // namespace lastcut::nest_detail
