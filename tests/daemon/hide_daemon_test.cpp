@@ -77,14 +77,15 @@ void write_hide_dxf(const std::filesystem::path& file, double w, double h, bool 
 }
 
 void write_hide_json(const std::filesystem::path& file, double w, double h) {
-  const nlohmann::json hide{{"bins",
-                             {{{"id", 0},
-                               {"shape",
-                                {{"type", "polygon"},
-                                 {"data",
-                                  {{"outer", {{0, 0}, {w, 0}, {w, h}, {0, h}}},
-                                   {"inner", {{{w - 60, 20}, {w - 20, 20}, {w - 20, 50}, {w - 60, 50}}}}}}}}}}}}};
-  write_text(file, hide.dump());
+  nlohmann::json outer = nlohmann::json::array(), hole = nlohmann::json::array();
+  for (const Point2& p : rectangle(0, 0, w, h)) outer.push_back({p.x(), p.y()});
+  for (const Point2& p : rectangle(w - 60, 20, w - 20, 50)) hole.push_back({p.x(), p.y()});
+  nlohmann::json bin;
+  bin["id"] = 0;
+  bin["shape"]["type"] = "polygon";
+  bin["shape"]["data"]["outer"] = outer;
+  bin["shape"]["data"]["inner"] = nlohmann::json::array({hole});
+  write_text(file, nlohmann::json{{"bins", nlohmann::json::array({bin})}}.dump());
 }
 
 // Every placement of the batch's written layout passes the independent checker; returns its placements.
@@ -224,7 +225,7 @@ TEST(DaemonHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
   const auto done = rig.jobs("done");
   const auto work = rig.jobs("work");
   int waiting = 0;
-  for (const std::string& scan : {"o100-left.stl", "o100-right.stl", "o200-pair.stl", "single-b.stl"}) {
+  for (const std::string scan : {"o100-left.stl", "o100-right.stl", "o200-pair.stl", "single-b.stl"}) {
     const auto [id, folder] = find_job(rig, scan);
     if (folder == "done") {
       EXPECT_EQ(done.at(id).value("stage", ""), "cut") << scan;
