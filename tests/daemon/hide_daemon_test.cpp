@@ -6,8 +6,9 @@
 // the written layout, an order's pieces lie on one hide, the pieces that did not fit wait and
 // `lastcut status` says so, and a hide whose cut was interrupted by SIGKILL is held after the
 // restart and never sent again.
-// The hides are sized from the pieces' own areas, so the outcome does not depend on how well the
-// nester packs: a hide holds 1.7-2.5 times what it must take, and less than what it must not.
+// The hides are sized from the pieces' own bounding boxes, so the outcome does not depend on how well
+// the nester packs: each has room for its pieces side by side, and the one that must leave an
+// order waiting has less area than that order's pieces.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -42,6 +43,18 @@ double job_area_mm2(const DaemonRig& rig, const std::string& id) {
   return area;
 }
 
+// The largest length and width (mm) of a job's pieces' bounding boxes, from its items.json.
+std::pair<double, double> piece_box_mm(const DaemonRig& rig, const std::string& id) {
+  double length = 0, width = 0;
+  for (const NestItem& item : items_from_json(read_json_file(rig.spool() / "work" / id / "items.json"), id)) {
+    Point2 low = item.shape.points[0], high = low;
+    for (const Point2& p : item.shape.points) low = low.cwiseMin(p), high = high.cwiseMax(p);
+    length = std::max(length, std::max(high.x() - low.x(), high.y() - low.y()));
+    width = std::max(width, std::min(high.x() - low.x(), high.y() - low.y()));
+  }
+  return {length, width};
+}
+
 // The hide batch holding hide file `file`: batch.json, or null while it is not there.
 nlohmann::json hide_batch(const DaemonRig& rig, const std::string& file) {
   std::error_code error;
@@ -67,19 +80,21 @@ bool all_computed(const DaemonRig& rig, const std::vector<std::string>& scans) {
   return computed == static_cast<int>(scans.size());
 }
 
-// A hide DXF: a w x h rectangle with its corners cut by 40 mm, a hole, and a grade-1 zone.
+// A hide DXF: a w x h rectangle, a 20 x 20 mm hole and (optionally) a 40 x 40 mm grade-1 zone in
+// its right 70 mm, beside the room the pieces need.
 void write_hide_dxf(const std::filesystem::path& file, double w, double h, bool zone) {
   DxfDocument dxf(DxfVersion::R12, {{"HIDE", 7}, {"HOLE", 1}, {"ZONE_1", 3}});
-  dxf.polyline("HIDE", {{40, 0}, {w - 40, 0}, {w, 40}, {w, h - 40}, {w - 40, h}, {40, h}, {0, h - 40}, {0, 40}}, true);
-  dxf.polyline("HOLE", rectangle(w / 2 - 20, h / 2 - 15, w / 2 + 20, h / 2 + 15), true);
-  if (zone) dxf.polyline("ZONE_1", rectangle(w - 160, h - 160, w - 40, h - 40), true);
+  dxf.polyline("HIDE", rectangle(0, 0, w, h), true);
+  dxf.polyline("HOLE", rectangle(w - 45, h / 2 - 10, w - 25, h / 2 + 10), true);
+  if (zone) dxf.polyline("ZONE_1", rectangle(w - 60, 10, w - 20, 50), true);
   write_text(file, dxf.str());
 }
 
+// A hide JSON: a w x h rectangle with a 12 x 12 mm hole near its right edge.
 void write_hide_json(const std::filesystem::path& file, double w, double h) {
   nlohmann::json outer = nlohmann::json::array(), hole = nlohmann::json::array();
   for (const Point2& p : rectangle(0, 0, w, h)) outer.push_back({p.x(), p.y()});
-  for (const Point2& p : rectangle(w - 60, 20, w - 20, 50)) hole.push_back({p.x(), p.y()});
+  for (const Point2& p : rectangle(w - 20, h / 2 - 6, w - 8, h / 2 + 6)) hole.push_back({p.x(), p.y()});
   nlohmann::json bin;
   bin["id"] = 0;
   bin["shape"]["type"] = "polygon";
@@ -131,8 +146,9 @@ TEST(DaemonHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
   drop_last("single-a.stl", 39, "left", "");
   ASSERT_TRUE(wait_until([&] { return all_computed(rig, {"single-a.stl"}); }, 60)) << read_text(rig.daemon_log());
   const std::string single_a = find_job(rig, "single-a.stl").first;
-  const double side_k = std::sqrt(2.5 * job_area_mm2(rig, single_a) + 1200 + 3200);
-  write_hide_dxf(staging / "hide-k.dxf", side_k * 1.3, side_k / 1.3, false);
+  // Room for the two halves side by side (3 mm spacing), plus 70 mm for the hole.
+  const auto [length_a, width_a] = piece_box_mm(rig, single_a);
+  write_hide_dxf(staging / "hide-k.dxf", length_a + 90, 2 * width_a + 30, false);
   drop_hide(staging / "hide-k.dxf", "id = \"K-17\"\ncutter = \"cutter-2\"\nthickness_mm = 1.2\n");
   ASSERT_TRUE(wait_until([&] { return stage_of(rig, "hide-k.dxf") == "sending"; }, 60)) << read_text(rig.daemon_log());
   rig.kill_daemon();
@@ -140,34 +156,33 @@ TEST(DaemonHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
   const std::string log_before = read_text(rig.daemon_log());
   rig.start_daemon();
   ASSERT_TRUE(wait_until([&] { return stage_of(rig, "hide-k.dxf") == "held"; }, 30)) << read_text(rig.daemon_log());
-  EXPECT_EQ(find_job(rig, "single-a.stl").second, "held");
+  EXPECT_TRUE(wait_until([&] { return find_job(rig, "single-a.stl").second == "held"; }, 10));
   EXPECT_NE(hide_batch(rig, "hide-k.dxf").value("reason", "").find("pieces may be partly cut"), std::string::npos);
 
-  // 2. Two orders: 100 as a left and a right last, 200 as one last cut as a mirrored pair.
+  // 2. Order 100 as a left and a right last, and a hide with room for its four halves (2 x 2).
   drop_last("o100-left.stl", 40, "left", "order = \"100\"\n");
   drop_last("o100-right.stl", 40, "right", "order = \"100\"\n");
-  drop_last("o200-pair.stl", 41, "pair", "order = \"200\"\n");
-  const std::vector<std::string> orders = {"o100-left.stl", "o100-right.stl", "o200-pair.stl"};
-  ASSERT_TRUE(wait_until([&] { return all_computed(rig, orders); }, 120)) << read_text(rig.daemon_log());
-  const double o100 = job_area_mm2(rig, find_job(rig, "o100-left.stl").first) +
-                      job_area_mm2(rig, find_job(rig, "o100-right.stl").first);
-  const double o200 = job_area_mm2(rig, find_job(rig, "o200-pair.stl").first);
-  // Room for the larger order with 85 % spare, but not for both: one order waits.
-  ASSERT_LT(1.85 * std::max(o100, o200), o100 + o200);
-  const double side_1 = std::sqrt(1.85 * std::max(o100, o200) + 1200 + 14400 + 3200);  // + hole, zone, corners
-  write_hide_dxf(staging / "hide-1.dxf", side_1 * 1.4, side_1 / 1.4, true);
+  ASSERT_TRUE(wait_until([&] { return all_computed(rig, {"o100-left.stl", "o100-right.stl"}); }, 120))
+      << read_text(rig.daemon_log());
+  const auto [length_1, width_1] = piece_box_mm(rig, find_job(rig, "o100-left.stl").first);
+  const auto [length_1r, width_1r] = piece_box_mm(rig, find_job(rig, "o100-right.stl").first);
+  write_hide_dxf(staging / "hide-1.dxf", 2 * std::max(length_1, length_1r) + 110,
+                 2 * std::max(width_1, width_1r) + 30, true);
   drop_hide(staging / "hide-1.dxf", "id = \"CALF-0001\"\nmaterial = \"leather\"\n");
   ASSERT_TRUE(wait_until([&] { const auto s = stage_of(rig, "hide-1.dxf"); return s == "cut" || s == "empty"; }, 60))
       << read_text(rig.daemon_log());
   ASSERT_EQ(stage_of(rig, "hide-1.dxf"), "cut") << hide_batch(rig, "hide-1.dxf").dump(1);
 
-  // 3. A single foot arrives; the JSON hide holds it but not the waiting order.
+  // 3. Order 200 (one last cut as a mirrored pair: four halves) and a single foot; the JSON hide
+  // has room for two halves and less area than order 200's four: the single is cut, order 200 waits.
+  drop_last("o200-pair.stl", 41, "pair", "order = \"200\"\n");
   drop_last("single-b.stl", 38, "right", "");
-  ASSERT_TRUE(wait_until([&] { return all_computed(rig, {"single-b.stl"}); }, 60)) << read_text(rig.daemon_log());
-  const double single_b = job_area_mm2(rig, find_job(rig, "single-b.stl").first);
-  ASSERT_LT(1.7 * single_b, std::min(o100, o200));
-  const double side_2 = std::sqrt(1.7 * single_b + 1200);
-  write_hide_json(staging / "hide-2.json", side_2 * 1.3, side_2 / 1.3);
+  ASSERT_TRUE(wait_until([&] { return all_computed(rig, {"o200-pair.stl", "single-b.stl"}); }, 120))
+      << read_text(rig.daemon_log());
+  const auto [length_b, width_b] = piece_box_mm(rig, find_job(rig, "single-b.stl").first);
+  const double w2 = length_b + 45, h2 = 2 * width_b + 24;
+  ASSERT_LT(w2 * h2, job_area_mm2(rig, find_job(rig, "o200-pair.stl").first));
+  write_hide_json(staging / "hide-2.json", w2, h2);
   drop_hide(staging / "hide-2.json", "");  // no sidecar: the only hide material, its cutter
   ASSERT_TRUE(wait_until([&] { const auto s = stage_of(rig, "hide-2.json"); return s == "cut" || s == "empty"; }, 60))
       << read_text(rig.daemon_log());
@@ -240,11 +255,14 @@ TEST(DaemonHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
       ++waiting;
     }
   }
-  // The pair of order 100 on one hide (or both waiting); single-b on the JSON hide; one order waits.
-  EXPECT_EQ(find_job(rig, "o100-left.stl").second, find_job(rig, "o100-right.stl").second);
-  EXPECT_EQ(batch_of_job[find_job(rig, "o100-left.stl").first], batch_of_job[find_job(rig, "o100-right.stl").first]);
+  // Order 100 cut on one hide, single-b on the JSON hide, order 200 waits.
+  EXPECT_EQ(find_job(rig, "o100-left.stl").second, "done");
+  EXPECT_EQ(find_job(rig, "o100-right.stl").second, "done");
+  EXPECT_EQ(batch_of_job[find_job(rig, "o100-left.stl").first], hide_batch(rig, "hide-1.dxf").value("id", ""));
+  EXPECT_EQ(batch_of_job[find_job(rig, "o100-right.stl").first], hide_batch(rig, "hide-1.dxf").value("id", ""));
   EXPECT_EQ(batch_of_job[find_job(rig, "single-b.stl").first], hide_batch(rig, "hide-2.json").value("id", ""));
-  EXPECT_EQ(waiting, find_job(rig, "o100-left.stl").second == "work" ? 2 : 1);
+  EXPECT_EQ(find_job(rig, "o200-pair.stl").second, "work");
+  EXPECT_EQ(waiting, 1);
   EXPECT_NE(log_after.find("waiting for a hide of leather: did not fit on hide"), std::string::npos);
 }
 
