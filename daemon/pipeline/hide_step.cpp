@@ -45,6 +45,7 @@ Result<HideMade> build_hide(const std::vector<HideJobInput>& jobs, const std::fi
                           {"area_m2", hide.area_m2},
                           {"usable_area_m2", hide.usable_area_m2},
                           {"machine", profile.name}};
+    if (hide.thickness_mm) report["thickness_mm"] = *hide.thickness_mm;
     if (groups.empty()) {
       report["pieces_placed"] = 0;
       made.report = report;

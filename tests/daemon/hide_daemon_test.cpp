@@ -234,6 +234,7 @@ TEST(DaemonHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
     for (const auto& job : batch["jobs"]) batch_of_job[job.get<std::string>()] = id;
   }
   EXPECT_EQ(hide_batch(rig, "hide-1.dxf")["hide"].value("id", ""), "CALF-0001");
+  EXPECT_EQ(read_json_file(rig.spool() / "batches" / batch_k / "hide-report.json").value("thickness_mm", 0.0), 1.2);
   EXPECT_EQ(hide_batch(rig, "hide-2.json")["hide"].value("id", ""), "hide-2");
 
   // Jobs: cut whole in done/ on exactly the hide whose batch lists them, or still waiting in work/.
