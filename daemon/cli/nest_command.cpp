@@ -82,19 +82,15 @@ struct HideOrInstance {
   double gap_mm = 0, margin_mm = 0;
 };
 
-// A hide file (DXF, or JSON with one hide; hide_file.hpp), or a nest instance JSON with several
-// hides ("bins") and its gap and margin.
+// A hide file (DXF, or a JSON bin object; hide_file.hpp, checked), or a nest instance JSON with
+// "bins" (read as an instance, as before hide files: its gap and margin come along).
 HideOrInstance read_hides(const std::string& path) {
   if (std::filesystem::path(path).extension() == ".json") {
     const nlohmann::json json = read_json_file(path);
-    if (json.is_object() && json.contains("bins") && json["bins"].is_array() && json["bins"].size() > 1) {
+    if (json.is_object() && json.contains("bins")) {
       const NestInstance instance = read_nest_instance(path);
       return {instance.bins, instance.gap_mm, instance.margin_mm};
     }
-    HideOrInstance one{{read_hide_file(path).bin}};
-    one.gap_mm = json.is_object() ? json.value("gap_mm", 0.0) : 0.0;
-    one.margin_mm = json.is_object() ? json.value("margin_mm", 0.0) : 0.0;
-    return one;
   }
   return {{read_hide_file(path).bin}};
 }
