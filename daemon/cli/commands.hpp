@@ -13,6 +13,7 @@ void add_send_command(CLI::App& app, int& exit_code);      // send_command.cpp: 
 void add_spool_commands(CLI::App& app, int& exit_code);    // spool_command.cpp: `status`, `requeue`
 void add_generate_command(CLI::App& app, int& exit_code);  // generate_command.cpp: parametric sample lasts
 void add_subdivide_command(CLI::App& app, int& exit_code); // subdivide_command.cpp: quad mesh -> Bezier surface
+void add_hide_command(CLI::App& app, int& exit_code);     // hide_command.cpp: `hide load` (a stock hide onto a cutter)
 void add_compare_command(CLI::App& app, int& exit_code);   // compare_command.cpp: mold vs reference pattern
 
 }  // namespace lastcut::cli

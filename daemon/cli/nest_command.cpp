@@ -2,7 +2,7 @@
 //  -o LAYOUT.json [--svg PICTURE.svg]`: nests pieces on a strip or on hides and writes a
 // self-contained layout (engine/nest/nest_json.hpp) that `lastcut toolpath` reads.
 // INPUT is a nest instance (JSON), or mold DXFs / folders written by `lastcut flatten` together
-// with --roll-width MM. nest() checks every layout with the independent layout checker before it is written.
+// with --roll-width MM or --hides HIDE... (hide files, docs/hides.md). nest() checks every layout with the independent layout checker before it is written.
 #include <algorithm>
 #include <cstdio>
 #include <functional>
@@ -17,6 +17,8 @@
 #include "daemon/cli/thread_team.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/mold/mold_dxf.hpp"
+#include "engine/nest/hide_batch.hpp"
+#include "engine/nest/hide_file.hpp"
 #include "engine/nest/layout_svg.hpp"
 #include "engine/nest/mold_items.hpp"
 #include "engine/nest/nest_json.hpp"
@@ -32,9 +34,10 @@ struct NestArguments {
   int threads = 0;  // 0: all cores
   double gap_mm = -1, margin_mm = -1;
   double roll_width_mm = 0;
-  std::string hides_path;  // molds on the hides of this instance file instead of a roll
+  std::vector<std::string> hides_paths;  // molds on these hide files (DXF, JSON) instead of a roll
   int copies = 1;
   int min_quality = 0;
+  int rotation_step_deg = 0;  // free
   bool mirrored_twins = false;
   std::string output_path, svg_path;
 };
@@ -67,37 +70,63 @@ std::vector<Mold> read_molds(const std::vector<std::string>& inputs) {
   return molds;
 }
 
-NestInstance load_instance(const NestArguments& a) {
+struct HideOrInstance {
+  std::vector<Bin> bins;
+  double gap_mm = 0, margin_mm = 0;
+};
+
+// A hide file (DXF, or a JSON bin object; hide_file.hpp, checked), or a nest instance JSON with
+// "bins" (read as an instance, as before hide files: its gap and margin come along).
+HideOrInstance read_hides(const std::string& path) {
+  if (std::filesystem::path(path).extension() == ".json") {
+    const nlohmann::json json = read_json_file(path);
+    if (json.is_object() && json.contains("bins")) {
+      const NestInstance instance = read_nest_instance(path);
+      return {instance.bins, instance.gap_mm, instance.margin_mm};
+    }
+  }
+  return {{read_hide_file(path).bin}};
+}
+
+BatchInstance load_instance(const NestArguments& a) {
   const bool single_json = a.inputs.size() == 1 && std::filesystem::path(a.inputs[0]).extension() == ".json";
   if (single_json) {
     if (a.roll_width_mm > 0) throw EngineError("--roll-width is for mold DXFs; a JSON instance carries its own strip or hides");
-    return read_nest_instance(a.inputs[0]);
+    return {read_nest_instance(a.inputs[0]), {}};
   }
-  if (a.roll_width_mm <= 0 && a.hides_path.empty())
-    throw EngineError("nesting molds needs --roll-width MM (the usable width of the roll) or --hides HIDES.json");
-  if (a.roll_width_mm > 0 && !a.hides_path.empty()) throw EngineError("choose a roll (--roll-width) or hides (--hides), not both");
+  if (a.roll_width_mm <= 0 && a.hides_paths.empty())
+    throw EngineError("nesting molds needs --roll-width MM (the usable width of the roll) or --hides HIDE...");
+  if (a.roll_width_mm > 0 && !a.hides_paths.empty()) throw EngineError("choose a roll (--roll-width) or hides (--hides), not both");
   MoldNestSpec spec;
   spec.roll_width_mm = a.roll_width_mm > 0 ? a.roll_width_mm : 1;
   spec.copies = a.copies;
   spec.mirrored_twins = a.mirrored_twins;
   // Named after the one input, or after the layout file when there are several (a batch, not one last).
   const std::filesystem::path name_from = a.inputs.size() == 1 ? a.inputs[0] : a.output_path;
-  NestInstance instance = instance_from_molds(read_molds(a.inputs), spec, name_from.stem().string());
-  if (!a.hides_path.empty()) {
-    const NestInstance hides = read_nest_instance(a.hides_path);
-    if (hides.bins.empty()) throw EngineError(a.hides_path + " has no \"bins\" (hides)");
-    instance.strip_height.reset();
-    instance.bins = hides.bins;
-    instance.gap_mm = hides.gap_mm;
-    instance.margin_mm = hides.margin_mm;
-    for (NestItem& item : instance.items) item.min_quality = a.min_quality;
+  if (a.hides_paths.empty()) return {instance_from_molds(read_molds(a.inputs), spec, name_from.stem().string()), {}};
+  // Hides: the same engine entry as lastcutd (hide_batch.hpp); the molds of this command are one
+  // job, so they go on one hide together (a pair stays a pair).
+  std::vector<Bin> hides;
+  double gap_mm = 0, margin_mm = 0;
+  for (const std::string& path : a.hides_paths) {
+    const HideOrInstance read = read_hides(path);
+    hides.insert(hides.end(), read.bins.begin(), read.bins.end());
+    gap_mm = std::max(gap_mm, read.gap_mm);
+    margin_mm = std::max(margin_mm, read.margin_mm);
   }
-  return instance;
+  PieceGroup group{name_from.stem().string(), "", 0, items_from_molds(read_molds(a.inputs), spec)};
+  for (NestItem& item : group.items) item.min_quality = a.min_quality;
+  BatchSpec batch_spec;
+  batch_spec.rotation_step_deg = a.rotation_step_deg;
+  batch_spec.gap_mm = gap_mm;
+  batch_spec.margin_mm = margin_mm;
+  return hide_batch({group}, hides, batch_spec, name_from.stem().string());
 }
 
 int run_nest(const NestArguments& a) {
   try {
-    const NestInstance instance = load_instance(a);
+    const BatchInstance batch = load_instance(a);
+    const NestInstance& instance = batch.instance;
     NestOptions options;
     options.time_limit_s = a.time_limit_s;
     options.seed = a.seed;
@@ -107,7 +136,9 @@ int run_nest(const NestArguments& a) {
     // The engine has no threads of its own: a team started once runs the workers of every sweep.
     ThreadTeam team(static_cast<size_t>(options.threads - 1));
     options.run_parallel = team.runner();
-    const Layout layout = nest(instance, options);
+    // A mold batch on hides goes through the batch entry (whole jobs, one hide per pair); every
+    // other instance straight to the nester.
+    const Layout layout = batch.group_of_item.empty() ? nest(instance, options) : nest_batch(batch, options);
     NestInstance written = instance;  // the layout records the gap and margin it was made with
     written.gap_mm = options.gap_mm.value_or(instance.gap_mm);
     written.margin_mm = options.margin_mm.value_or(instance.margin_mm);
@@ -142,7 +173,10 @@ void add_nest_command(CLI::App& app, int& exit_code) {
   command->add_option("--gap", arguments->gap_mm, "minimum distance between pieces, mm (kerf + clearance)")->check(CLI::NonNegativeNumber);
   command->add_option("--margin", arguments->margin_mm, "minimum distance from the material edge and defects, mm")->check(CLI::NonNegativeNumber);
   command->add_option("--roll-width", arguments->roll_width_mm, "usable roll width for mold DXFs, mm")->check(CLI::PositiveNumber);
-  command->add_option("--hides", arguments->hides_path, "nest mold DXFs on the hides (\"bins\") of this instance file");
+  command->add_option("--hides", arguments->hides_paths,
+                      "nest mold DXFs on these hide files (DXF or JSON, docs/hides.md) or the hides of an instance file");
+  command->add_option("--rotation-step", arguments->rotation_step_deg, "with --hides: rotations in steps of this, deg (360: none; default: free)")
+      ->check(CLI::Range(1, 360));
   command->add_option("--min-quality", arguments->min_quality, "lowest leather quality the molds may lie on (with --hides)");
   command->add_option("--copies", arguments->copies, "copies of every mold (mold DXFs only)")->check(CLI::PositiveNumber);
   command->add_flag("--mirrored-twins", arguments->mirrored_twins, "add every mold mirrored, for the other foot (mold DXFs only)");

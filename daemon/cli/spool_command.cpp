@@ -99,6 +99,11 @@ void print_status(const nlohmann::json& status, const std::string& spool_dir) {
                   cutter.value("queued_batches", 0));
     }
   }
+  if (daemon_status.contains("waiting_for_hide")) {
+    for (const auto& [material, count] : daemon_status["waiting_for_hide"].items())
+      std::printf("  %d job(s) of %s waiting for a hide (drop one in the hides folder, or lastcut hide load)\n",
+                  count.get<int>(), material.c_str());
+  }
   auto row = [](const nlohmann::json& job) {
     const std::string order = job.value("order", "");
     std::printf("  %-20s %-8s %-9s %-10s %-24s %s\n", job.value("id", "").c_str(), job.value("folder", "").c_str(),

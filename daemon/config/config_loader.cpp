@@ -131,11 +131,15 @@ void read_paths(TableReader& root, const std::filesystem::path& base, DaemonConf
   const toml::table* table = root.subtable("paths", true);
   if (!table) return;
   TableReader paths(*table, "paths", errors);
-  std::string watch, spool, machines;
+  std::string watch, spool, machines, hides, hide_stock;
   paths.text("watch", watch, true);
   paths.text("spool", spool, true);
   paths.text("machines", machines, true);
+  paths.text("hides", hides);
+  paths.text("hide_stock", hide_stock);
   paths.reject_unknown();
+  if (!hides.empty()) config.paths.hides_dir = resolve(base, hides);
+  if (!hide_stock.empty()) config.paths.hide_stock_dir = resolve(base, hide_stock);
   if (!watch.empty()) config.paths.watch_dir = resolve(base, watch);
   if (!spool.empty()) config.paths.spool_dir = resolve(base, spool);
   if (!machines.empty()) config.paths.machines_dir = resolve(base, machines);
@@ -210,8 +214,22 @@ void read_materials(TableReader& root, DaemonConfig& config, std::vector<std::st
     }
     TableReader reader(*value.as_table(), path, errors);
     MaterialConfig material;
-    reader.number("width_mm", material.width_mm, 10, 100000, true);
-    reader.number("length_mm", material.length_mm, 10, 100000, true);
+    std::string kind = "strip";
+    reader.text("kind", kind);
+    if (kind != "strip" && kind != "hide") errors.push_back(path + ".kind: \"" + kind + "\" is not strip or hide");
+    const bool hide = kind == "hide";
+    material.kind = hide ? MaterialKind::Hide : MaterialKind::Strip;
+    if (!hide) {
+      reader.number("width_mm", material.width_mm, 10, 100000, true);
+      reader.number("length_mm", material.length_mm, 10, 100000, true);
+    } else {
+      std::string pairs = "same_hide";
+      reader.text("cutter", material.cutter);
+      reader.text("pairs", pairs);
+      reader.integer("min_quality", material.min_quality, 0, 1000);
+      if (pairs != "same_hide" && pairs != "any") errors.push_back(path + ".pairs: \"" + pairs + "\" is not same_hide or any");
+      material.pairs_same_hide = pairs == "same_hide";
+    }
     reader.number("spacing_mm", material.spacing_mm, 0, 100);
     reader.integer("rotation_step_deg", material.rotation_step_deg, 1, 360);
     reader.reject_unknown();
@@ -387,6 +405,17 @@ void cross_check(DaemonConfig& config, std::vector<std::string>& errors) {
   }
   if (!config.jobs.default_cutter.empty() && !config.cutters.count(config.jobs.default_cutter)) {
     errors.push_back("jobs.default_cutter: \"" + config.jobs.default_cutter + "\" is not a [cutters.*] table");
+  }
+  for (const auto& [name, material] : config.materials) {
+    if (material.kind != MaterialKind::Hide) continue;
+    if (config.paths.hides_dir.empty())
+      errors.push_back("materials." + name + ": kind = \"hide\" needs paths.hides (the folder hide files are dropped in)");
+    if (!material.cutter.empty() && !config.cutters.count(material.cutter))
+      errors.push_back("materials." + name + ".cutter: \"" + material.cutter + "\" is not a [cutters.*] table");
+  }
+  if (!config.paths.hides_dir.empty() &&
+      (config.paths.hides_dir == config.paths.watch_dir || config.paths.hides_dir == config.paths.spool_dir)) {
+    errors.push_back("paths.hides: must be a folder of its own, not the watch or spool folder");
   }
   if (!config.paths.watch_dir.empty() && config.paths.watch_dir == config.paths.spool_dir) {
     errors.push_back("paths.watch: must not be the spool folder itself (use a folder such as spool/incoming)");

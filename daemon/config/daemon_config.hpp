@@ -18,6 +18,8 @@ struct PathsConfig {
   std::filesystem::path watch_dir;     // where scans are dropped (the hot folder)
   std::filesystem::path spool_dir;     // work/, done/, failed/, held/ live here
   std::filesystem::path machines_dir;  // machine profiles (*.toml) for the toolpath module
+  std::filesystem::path hides_dir;       // hide files dropped here lie on a cutter's table ("" = no hides)
+  std::filesystem::path hide_stock_dir;  // digitized hides kept in stock, for `lastcut hide load` ("" = none)
 };
 
 struct WatchConfig {
@@ -51,12 +53,21 @@ struct BatchConfig {
   double nest_time_s = 10;  // time the nester may spend improving one batch's layout
 };
 
-// A rectangular sheet or hide blank the molds are nested on.
+// strip: a roll or rectangular blank (width_mm x length_mm), nested in batches;
+// hide: leather hides, each nested when its file arrives in paths.hides (docs/hides.md).
+enum class MaterialKind { Strip, Hide };
+
+// The material the molds are nested on.
 struct MaterialConfig {
-  double width_mm = 0;
-  double length_mm = 0;
+  MaterialKind kind = MaterialKind::Strip;
+  double width_mm = 0;   // strip only
+  double length_mm = 0;  // strip only
   double spacing_mm = 2;
   int rotation_step_deg = 90;  // allowed rotations: multiples of this (360: none)
+  // Hides only.
+  std::string cutter;           // where a hide goes when its sidecar names no cutter ("" = jobs.default_cutter)
+  bool pairs_same_hide = true;  // pairs = "same_hide": an order's jobs on one hide; "any": each job alone
+  int min_quality = 0;          // lowest leather grade a piece may lie on (zones below are avoided)
 };
 
 // One cutter: how to reach it and talk to it (the driver's own settings type, read key for key

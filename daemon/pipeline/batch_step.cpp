@@ -8,7 +8,7 @@
 #include "engine/core/durable_file.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/nest/nest_json.hpp"
-#include "engine/nest/nester.hpp"
+#include "engine/nest/hide_batch.hpp"
 #include "engine/toolpath/cut_file.hpp"
 #include "engine/toolpath/cut_job.hpp"
 #include "engine/toolpath/svg_writer.hpp"
@@ -16,18 +16,10 @@
 namespace lastcut::daemon {
 namespace {
 
-// The items of one job (its items.json), numbered from next_id on, with the material's rotations.
-// Throws EngineError.
-std::vector<NestItem> job_items(const BatchJobInput& job, const MaterialConfig& material, int& next_id) {
-  std::vector<NestItem> items =
-      items_from_json(read_json_file(job.job_dir / kItemsFile), std::string(kItemsFile) + " of job " + job.job_id);
-  std::vector<double> rotations;
-  for (int angle = 0; angle < 360; angle += material.rotation_step_deg) rotations.push_back(angle);
-  for (NestItem& item : items) {
-    item.id = next_id++;
-    item.allowed_rotations_deg = rotations;
-  }
-  return items;
+// The pieces of one job (its items.json). Throws EngineError.
+PieceGroup job_pieces(const BatchJobInput& job) {
+  return {job.job_id, "", 0,
+          items_from_json(read_json_file(job.job_dir / kItemsFile), std::string(kItemsFile) + " of job " + job.job_id)};
 }
 
 // What the program carries, named in the cut file itself so the machine's own log shows it.
@@ -50,30 +42,29 @@ Result<BatchMade> build_batch(const std::vector<BatchJobInput>& jobs, const Mate
 
     std::set<std::string> active;
     for (const auto& job : jobs) active.insert(job.job_id);
+    BatchSpec spec;
+    spec.rotation_step_deg = material.rotation_step_deg;
+    spec.gap_mm = material.spacing_mm;
+    spec.margin_mm = material.spacing_mm;
     for (;;) {
-      NestInstance instance;
-      instance.name = batch_dir.filename().string();
-      instance.strip_height = material.width_mm;
-      instance.gap_mm = material.spacing_mm;
-      instance.margin_mm = material.spacing_mm;
-      std::map<int, std::string> owner;  // item id -> job id
-      int next_id = 0;
+      std::vector<PieceGroup> groups;
       for (const auto& job : jobs) {
         if (!active.count(job.job_id)) continue;
         try {
-          for (NestItem& item : job_items(job, material, next_id)) {
-            owner[item.id] = job.job_id;
-            instance.items.push_back(std::move(item));
-          }
+          groups.push_back(job_pieces(job));
         } catch (const EngineError& error) {
           outcome.rejected[job.job_id] = error.what();
           active.erase(job.job_id);
         }
       }
-      if (instance.items.empty()) return outcome;
+      if (groups.empty()) return outcome;
+      const BatchInstance batch = strip_batch(groups, material.width_mm, spec, batch_dir.filename().string());
+      const NestInstance& instance = batch.instance;
+      std::map<int, std::string> owner;  // item id -> job id
+      for (size_t i = 0; i < instance.items.size(); ++i) owner[instance.items[i].id] = groups[batch.group_of_item[i]].owner;
       NestOptions options;
       options.time_limit_s = nest_time_s;
-      const Layout layout = nest(instance, options);
+      const Layout layout = nest_batch(batch, options);
       bool removed = false;
       for (const Unplaced& missing : layout.unplaced) {
         const std::string& job_id = owner[missing.item];

@@ -9,6 +9,10 @@
 namespace lastcut::daemon {
 
 void Pipeline::add_to_batcher(const JobState& state) {
+  if (is_hide_material(state.ticket.material)) {
+    add_to_hide_pool(state);  // nested when a hide of this material arrives (hide_intake.cpp)
+    return;
+  }
   const std::string key = state.ticket.material + "|" + state.ticket.cutter;
   auto [it, inserted] = open_batches_.try_emplace(key);
   if (inserted || it->second.job_ids.empty()) it->second.opened = Clock::now();

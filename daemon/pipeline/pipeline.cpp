@@ -39,6 +39,11 @@ Status Pipeline::start() {
   recover();
   hot_folder_ = std::make_unique<HotFolder>(settings->paths.watch_dir, settings->watch);
   if (Status watching = hot_folder_->start(); !watching) return watching;
+  if (!settings->paths.hides_dir.empty()) {
+    hide_folder_ = std::make_unique<HotFolder>(settings->paths.hides_dir, settings->watch, HotFolderContent::Hides);
+    if (Status watching = hide_folder_->start(); !watching) return watching;
+    spdlog::info("hides folder {} ({})", settings->paths.hides_dir.string(), hide_folder_->mode_description());
+  }
   for (auto& [name, dispatcher] : dispatchers_) dispatcher->start();
   for (int i = 0; i < settings->jobs.compute_workers; ++i) workers_.emplace_back([this, i] { compute_worker(i + 1); });
   spdlog::info("watching {} ({}); spool {}; {} cutter(s); duplicates: {}", settings->paths.watch_dir.string(),
@@ -49,6 +54,8 @@ Status Pipeline::start() {
 
 void Pipeline::tick(Clock::time_point now) {
   for (const ReadyScan& ready : hot_folder_->collect_ready(now)) take(ready);
+  if (hide_folder_)
+    for (const ReadyScan& ready : hide_folder_->collect_ready(now)) take_hide(ready);
   std::vector<std::string> computed;
   {
     std::lock_guard lock(computed_mutex_);
@@ -76,12 +83,16 @@ void Pipeline::write_status_file() {
   }
   std::size_t waiting = 0;
   for (const auto& [key, open] : open_batches_) waiting += open.job_ids.size();
+  nlohmann::json waiting_for_hide = nlohmann::json::object();
+  for (const auto& [material, ids] : hide_waiting_)
+    if (!ids.empty()) waiting_for_hide[material] = ids.size();
   const nlohmann::json status{{"pid", static_cast<long>(::getpid())},
                               {"updated_at", utc_now_iso()},
                               {"watch_folder", config()->paths.watch_dir.string()},
                               {"files_being_checked", hot_folder_ ? hot_folder_->pending_count() : 0},
                               {"to_compute", tasks_.size()},
                               {"waiting_for_batch", waiting},
+                              {"waiting_for_hide", waiting_for_hide},
                               {"cutters", cutters}};
   // Not fsync'ed on purpose: it is rewritten every 2 s and worthless after a crash.
   const Status written =
@@ -114,6 +125,7 @@ std::string Pipeline::reload(std::shared_ptr<const DaemonConfig> next) {
   };
   keep(next->paths.watch_dir != current->paths.watch_dir, "paths.watch");
   keep(next->paths.spool_dir != current->paths.spool_dir, "paths.spool");
+  keep(next->paths.hides_dir != current->paths.hides_dir, "paths.hides");
   keep(next->watch.mode != current->watch.mode, "watch.mode");
   keep(next->jobs.compute_workers != current->jobs.compute_workers, "jobs.compute_workers");
   bool same_cutters = next->cutters.size() == current->cutters.size();
@@ -152,6 +164,7 @@ void Pipeline::stop() {
     std::filesystem::remove(spool_->root() / "status.json", error);
   }
   hot_folder_.reset();
+  hide_folder_.reset();
   spool_.reset();
 }
 

@@ -47,6 +47,7 @@ class Pipeline {
   int event_fd() const { return hot_folder_ ? hot_folder_->event_fd() : -1; }
   void read_events() {
     if (hot_folder_) hot_folder_->read_events();
+    if (hide_folder_) hide_folder_->read_events();  // its events are read here; tick() runs every 100 ms anyway
   }
   // Empty while every stage makes progress; otherwise what is stuck (then the watchdog starves).
   std::string stuck(Clock::time_point now) const { return monitor_.stuck(now); }
@@ -89,6 +90,12 @@ class Pipeline {
   void close_due_batches(Clock::time_point now, bool force);
   void close_batch(const std::string& key, OpenBatch& open);
   void enqueue_batch(const BatchState& batch);
+  // hide_intake.cpp
+  bool is_hide_material(const std::string& material) const;
+  void add_to_hide_pool(const JobState& state);
+  void take_hide(const ReadyScan& ready);
+  void fail_hide(BatchState& batch, const std::string& reason);
+  void build_hide_task(BatchState& batch, const std::string& worker);
   void scan_work_folder();
   // spool/status.json for `lastcut status`: cutters' conditions, queue sizes, pid, time.
   void write_status_file();
@@ -98,6 +105,7 @@ class Pipeline {
   std::unique_ptr<Spool> spool_;
   StatusObserver* observer_ = nullptr;
   std::unique_ptr<HotFolder> hot_folder_;
+  std::unique_ptr<HotFolder> hide_folder_;  // paths.hides; null when no hides are configured
   ProgressMonitor monitor_;
   WorkQueue<Task> tasks_;
   std::vector<std::thread> workers_;
@@ -107,6 +115,7 @@ class Pipeline {
   std::set<std::string> known_jobs_;                  // ids in work/ that have been routed
   std::map<std::string, std::string> hash_to_job_;    // sha256 -> first job id with those bytes
   std::map<std::string, OpenBatch> open_batches_;     // "material|cutter" -> collecting
+  std::map<std::string, std::vector<std::string>> hide_waiting_;  // hide material -> jobs waiting, oldest first
   Clock::time_point next_work_scan_{};
   Clock::time_point next_status_file_{};
   std::string status_file_error_;  // last failure writing status.json, "" when it worked

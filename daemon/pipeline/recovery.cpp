@@ -1,6 +1,7 @@
 // Start-up recovery of the spool: whatever a crash or power cut left in work/ and batches/ is
 // brought to a consistent state before any new file is taken.
-//   batch nesting    -> abandoned; its jobs are nested again (computing is at-least-once)
+//   batch nesting    -> abandoned; its jobs are nested again (computing is at-least-once); a hide
+//                       batch whose hide file is in its folder is nested again as it is
 //   batch queued     -> back in its cutter's queue (nothing was sent yet)
 //   batch sending    -> held with its jobs: the cutter may have cut part of it (at-most-once)
 //   batch cut        -> its jobs still in work/ are moved to done/
@@ -83,6 +84,10 @@ void Pipeline::recover_batch(const std::string& batch_id) {
   }
   switch (batch->stage) {
     case BatchStage::Nesting:
+      if (!batch->hide_file.empty() && std::filesystem::exists(spool_->batch_dir(batch_id) / batch->hide_file)) {
+        tasks_.push({true, batch_id});  // the hide is still on the table: nest its jobs again
+        return;
+      }
       batch->stage = BatchStage::Abandoned;
       batch->reason = "lastcutd stopped while nesting; the jobs are nested again";
       if (Status written = spool_->write_batch(*batch); !written) {

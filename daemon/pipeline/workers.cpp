@@ -105,6 +105,10 @@ void Pipeline::build_batch_task(const std::string& batch_id, const std::string& 
   const auto settings = config();
   auto batch = spool_->read_batch(batch_id);
   if (!batch || batch->stage != BatchStage::Nesting || !batch->stage_problem.empty()) return;
+  if (!batch->hide_file.empty()) {
+    build_hide_task(*batch, worker);
+    return;
+  }
   std::vector<BatchJobInput> inputs;
   std::map<std::string, JobState> states;
   for (const std::string& id : batch->job_ids) {

@@ -92,7 +92,7 @@ JobState job_state_from_json(const nlohmann::json& json) {
 }
 
 nlohmann::json to_json(const BatchState& state) {
-  return nlohmann::json{{"id", state.id},
+  nlohmann::json json{{"id", state.id},
                         {"material", state.material},
                         {"cutter", state.cutter},
                         {"jobs", state.job_ids},
@@ -104,6 +104,10 @@ nlohmann::json to_json(const BatchState& state) {
                         {"created_at", state.created_at},
                         {"updated_at", state.updated_at},
                         {"cutter_answer", state.cutter_answer}};
+  if (!state.hide_file.empty()) {
+    json["hide"] = {{"id", state.hide_id}, {"file", state.hide_file}, {"sidecar", state.hide_sidecar}};
+  }
+  return json;
 }
 
 BatchState batch_state_from_json(const nlohmann::json& json) {
@@ -120,6 +124,12 @@ BatchState batch_state_from_json(const nlohmann::json& json) {
   state.created_at = json.value("created_at", "");
   state.updated_at = json.value("updated_at", "");
   if (json.contains("cutter_answer")) state.cutter_answer = json.at("cutter_answer");
+  if (json.contains("hide") && json.at("hide").is_object()) {
+    const nlohmann::json& hide = json.at("hide");
+    state.hide_id = hide.value("id", "");
+    state.hide_file = hide.value("file", "");
+    state.hide_sidecar = hide.value("sidecar", "");
+  }
   return state;
 }
 

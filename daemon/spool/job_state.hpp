@@ -56,6 +56,11 @@ struct BatchState {
   std::string created_at;
   std::string updated_at;
   nlohmann::json cutter_answer = nlohmann::json::array();  // device log lines
+  // A hide batch (docs/hides.md): the hide on the cutter's table, its file (and sidecar) kept in the
+  // batch folder. Empty for strip batches.
+  std::string hide_id;
+  std::string hide_file;
+  std::string hide_sidecar;
 };
 
 nlohmann::json to_json(const BatchState& state);

@@ -36,8 +36,8 @@ std::chrono::milliseconds to_ms(double seconds) {
 
 }  // namespace
 
-HotFolder::HotFolder(std::filesystem::path folder, WatchConfig config)
-    : folder_(std::move(folder)), config_(config) {}
+HotFolder::HotFolder(std::filesystem::path folder, WatchConfig config, HotFolderContent content)
+    : folder_(std::move(folder)), config_(config), content_(content) {}
 
 HotFolder::~HotFolder() {
   if (inotify_fd_ >= 0) ::close(inotify_fd_);
@@ -86,7 +86,7 @@ void HotFolder::read_events() {
 
 bool HotFolder::acceptable_entry(const std::filesystem::path& path) {
   const std::string name = path.filename().string();
-  const FileKind kind = classify_file_name(name);
+  const FileKind kind = content_ == HotFolderContent::Hides ? classify_hide_file_name(name) : classify_file_name(name);
   if (kind == FileKind::Temporary || kind == FileKind::Sidecar) return false;
   std::error_code error;
   const auto status = std::filesystem::symlink_status(path, error);
@@ -94,7 +94,9 @@ bool HotFolder::acceptable_entry(const std::filesystem::path& path) {
   std::string refusal;
   if (std::filesystem::is_symlink(status)) refusal = "is a symbolic link (only real files are taken)";
   else if (!std::filesystem::is_regular_file(status)) refusal = "is not a regular file";
-  else if (kind == FileKind::Unsupported) refusal = "is not a scan (.stl, .obj, .ply or .off); left in place";
+  else if (kind == FileKind::Unsupported)
+    refusal = content_ == HotFolderContent::Hides ? "is not a hide file (.dxf or .json); left in place"
+                                                  : "is not a scan (.stl, .obj, .ply or .off); left in place";
   if (refusal.empty()) return true;
   if (reported_.insert(name).second) spdlog::warn("watch folder: {} {}", name, refusal);
   return false;
@@ -152,7 +154,8 @@ std::vector<ReadyScan> HotFolder::collect_ready(Clock::time_point now) {
       ++it;
       continue;
     }
-    ReadyScan scan{path, find_sidecar(path), scan_incompleteness(path)};
+    ReadyScan scan = content_ == HotFolderContent::Hides ? ReadyScan{path, hide_sidecar(path), {}}
+                                                         : ReadyScan{path, find_sidecar(path), scan_incompleteness(path)};
     if (!scan.incompleteness.empty() && now - candidate.unchanged_since < to_ms(config_.incomplete_grace_s)) {
       ++it;  // maybe the uploader only paused
       continue;

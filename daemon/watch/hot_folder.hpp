@@ -19,6 +19,10 @@
 
 namespace lastcut::daemon {
 
+// What a hot folder takes: scans (with NAME.job.toml sidecars, checked for completeness) or hide
+// files (.dxf, .json, with NAME.toml sidecars; docs/hides.md).
+enum class HotFolderContent { Scans, Hides };
+
 struct ReadyScan {
   std::filesystem::path scan;
   std::filesystem::path sidecar;  // empty when none
@@ -29,7 +33,7 @@ class HotFolder {
  public:
   using Clock = std::chrono::steady_clock;
 
-  HotFolder(std::filesystem::path folder, WatchConfig config);
+  HotFolder(std::filesystem::path folder, WatchConfig config, HotFolderContent content = HotFolderContent::Scans);
   ~HotFolder();
   HotFolder(const HotFolder&) = delete;
   HotFolder& operator=(const HotFolder&) = delete;
@@ -66,6 +70,7 @@ class HotFolder {
 
   std::filesystem::path folder_;
   WatchConfig config_;
+  HotFolderContent content_;
   int inotify_fd_ = -1;
   bool polling_ = false;
   std::string mode_description_;

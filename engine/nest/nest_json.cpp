@@ -231,6 +231,8 @@ NestInstance read_nest_instance(const std::filesystem::path& path) {
   return instance;
 }
 
+Bin bin_from_json(const json& j, const std::string& source) { return bin(j, source); }
+
 json items_to_json(const std::vector<NestItem>& items) {
   json list = json::array();
   for (const NestItem& it : items) list.push_back(item_json(it));

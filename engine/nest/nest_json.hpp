@@ -38,6 +38,9 @@ NestInstance read_nest_instance(const std::filesystem::path& path);
 // The instance in the same layout instance_from_json reads.
 nlohmann::json instance_to_json(const NestInstance& instance);
 
+// One bin (hide) in the instance's bin layout; `source` names it in errors. Throws EngineError.
+Bin bin_from_json(const nlohmann::json& json, const std::string& source);
+
 // Items alone, {"items": [...]} in the instance's item layout: the pieces of one job waiting for a
 // batch (the daemon keeps them in the job folder). items_from_json throws EngineError on bad input.
 nlohmann::json items_to_json(const std::vector<NestItem>& items);

@@ -218,3 +218,52 @@ TEST(DaemonConfig, SyntaxErrorGivesTheLine) {
 
 }  // namespace
 }  // namespace lastcut::daemon
+
+namespace lastcut::daemon {
+namespace {
+
+// [paths] hides and [materials.X] kind = "hide" (docs/hides.md): read, and every mistake refused.
+TEST(DaemonConfig, HideMaterialsAndTheHidesFolder) {
+  const std::string hide_material = "[materials.leather]\nkind = \"hide\"\ncutter = \"a\"\npairs = \"any\"\nmin_quality = 2\n";
+  std::string text = minimal(hide_material);
+  text.replace(text.find("machines = \"machines\"\n"), 22, "machines = \"machines\"\nhides = \"hides\"\nhide_stock = \"stock\"\n");
+  auto result = load_text(text);
+  ASSERT_TRUE(result.config) << result.error;
+  const MaterialConfig& leather = result.config->materials.at("leather");
+  EXPECT_EQ(leather.kind, MaterialKind::Hide);
+  EXPECT_EQ(leather.cutter, "a");
+  EXPECT_FALSE(leather.pairs_same_hide);
+  EXPECT_EQ(leather.min_quality, 2);
+  EXPECT_EQ(result.config->materials.at("calf").kind, MaterialKind::Strip);
+  EXPECT_EQ(result.config->paths.hides_dir.filename(), "hides");
+  EXPECT_TRUE(result.config->paths.hides_dir.is_absolute());
+  EXPECT_EQ(result.config->paths.hide_stock_dir.filename(), "stock");
+
+  const auto refused = [&](const std::string& config_text, const std::string& expected) {
+    const auto loaded = load_text(config_text);
+    ASSERT_FALSE(loaded.config) << expected;
+    EXPECT_NE(loaded.error.find(expected), std::string::npos) << loaded.error;
+  };
+  refused(minimal(hide_material), "materials.leather: kind = \"hide\" needs paths.hides");
+  std::string with_size = text;
+  with_size.replace(with_size.find("kind = \"hide\"\n"), 14, "kind = \"hide\"\nwidth_mm = 800\n");
+  refused(with_size, "materials.leather.width_mm (line");
+  std::string bad_pairs = text;
+  bad_pairs.replace(bad_pairs.find("pairs = \"any\""), 13, "pairs = \"both\"");
+  refused(bad_pairs, "materials.leather.pairs: \"both\" is not same_hide or any");
+  std::string bad_kind = text;
+  bad_kind.replace(bad_kind.find("kind = \"hide\""), 13, "kind = \"roll\"");
+  refused(bad_kind, "materials.leather.kind: \"roll\" is not strip or hide");
+  std::string bad_cutter = text;
+  bad_cutter.replace(bad_cutter.find("cutter = \"a\"\npairs"), 12, "cutter = \"z\"");
+  refused(bad_cutter, "materials.leather.cutter: \"z\" is not a [cutters.*] table");
+  std::string strip_pairs = text;
+  strip_pairs.replace(strip_pairs.find("length_mm = 900\n"), 16, "length_mm = 900\npairs = \"any\"\n");
+  refused(strip_pairs, "materials.calf.pairs (line");
+  std::string same_folder = text;
+  same_folder.replace(same_folder.find("hides = \"hides\""), 15, "hides = \"in\"");
+  refused(same_folder, "paths.hides: must be a folder of its own");
+}
+
+}  // namespace
+}  // namespace lastcut::daemon

@@ -13,7 +13,7 @@ DaemonRig::DaemonRig(const std::string& name, RigOptions options)
     : root_(scratch_folder(name)), options_(std::move(options)) {
   std::filesystem::create_directories(watch());
   std::string toml = "[paths]\nwatch = \"incoming\"\nspool = \"spool\"\nmachines = \"" +
-                     (std::filesystem::path(LASTCUT_SOURCE_DIR) / "config/machines").string() + "\"\n" +
+                     (std::filesystem::path(LASTCUT_SOURCE_DIR) / "config/machines").string() + "\"\n" + options_.extra_paths +
                      "[watch]\nmode = \"inotify\"\nrescan_interval_s = 5\nstable_checks = 2\n"
                      "stable_interval_s = 0.1\nincomplete_grace_s = 0.5\n"
                      "[jobs]\nduplicate_policy = \"" + options_.duplicate_policy + "\"\n"

@@ -22,6 +22,7 @@ struct RigOptions {
   std::string duplicate_policy = "skip";
   double batch_window_s = 0;
   std::string extra_config;                       // appended to the generated TOML
+  std::string extra_paths;                        // appended to its [paths] table (e.g. hides = "hides")
   // When set (the built grbl_sim.exe), the grbl cutters are the real grbl 1.1h firmware behind a
   // pty (tests/peers/run_grbl_firmware.sh) instead of lastcut-sim; they keep a block log, no record.
   std::string grbl_firmware;

@@ -1,0 +1,206 @@
+// Hides (docs/hides.md): the jobs of a hide material wait in a pool per material; a hide file
+// dropped into paths.hides is claimed into the spool as a hide batch (batches/BID/ with the hide
+// file, its sidecar and batch.json), the waiting jobs are nested on it, and the cut goes to the
+// cutter whose table the hide lies on through that cutter's dispatcher, with the same at-most-once
+// stages as a strip batch. Jobs that did not fit go back to the pool with the reason.
+#include <algorithm>
+
+#include <spdlog/spdlog.h>
+
+#include "daemon/pipeline/hide_step.hpp"
+#include "daemon/pipeline/job_outcomes.hpp"
+#include "daemon/pipeline/pipeline.hpp"
+#include "engine/core/durable_file.hpp"
+#include "engine/core/engine_error.hpp"
+#include "engine/nest/hide_file.hpp"
+
+namespace lastcut::daemon {
+
+bool Pipeline::is_hide_material(const std::string& material) const {
+  const auto settings = config();
+  const auto it = settings->materials.find(material);
+  return it != settings->materials.end() && it->second.kind == MaterialKind::Hide;
+}
+
+void Pipeline::add_to_hide_pool(const JobState& state) {
+  auto& pool = hide_waiting_[state.ticket.material];
+  if (std::find(pool.begin(), pool.end(), state.id) == pool.end()) pool.push_back(state.id);
+  std::sort(pool.begin(), pool.end());  // ids sort by claim time: oldest first
+}
+
+void Pipeline::fail_hide(BatchState& batch, const std::string& reason) {
+  batch.stage = BatchStage::Empty;
+  batch.reason = reason;
+  batch.updated_at = utc_now_iso();
+  if (Status written = spool_->write_batch(batch); !written)
+    spdlog::error("hide batch {}: batch.json not written: {}", batch.id, written.error());
+  const auto to = spool_->root() / folder_name(JobFolder::Failed) / batch.id;
+  if (Status moved = move_durably(spool_->batch_dir(batch.id), to); !moved) {
+    spdlog::error("hide file {}: {}; it stays in {} (not moved to failed/: {})", batch.hide_file, reason,
+                  spool_->batch_dir(batch.id).string(), moved.error());
+    return;
+  }
+  spdlog::error("hide file {}: {}; moved to failed/{}", batch.hide_file, reason, batch.id);
+}
+
+void Pipeline::take_hide(const ReadyScan& ready) {
+  const auto settings = config();
+  const std::string name = ready.scan.filename().string();
+  BatchState batch;
+  batch.id = spool_->new_batch_id();
+  batch.stage = BatchStage::Nesting;
+  batch.created_at = batch.updated_at = utc_now_iso();
+  batch.hide_file = name;
+  batch.hide_sidecar = ready.sidecar.empty() ? "" : ready.sidecar.filename().string();
+  const auto dir = spool_->batch_dir(batch.id);
+  std::error_code error;
+  std::filesystem::create_directories(dir, error);
+  // batch.json before the files: a crash in between leaves a batch that recovery abandons, and the
+  // hide file still in the hides folder, taken again.
+  Status claimed = error ? Status::failure("cannot create " + dir.string() + ": " + error.message())
+                         : spool_->write_batch(batch);
+  if (claimed && !batch.hide_sidecar.empty()) claimed = move_durably(ready.sidecar, dir / batch.hide_sidecar);
+  if (claimed) claimed = move_durably(ready.scan, dir / name);
+  hide_folder_->forget(name);
+  if (!batch.hide_sidecar.empty()) hide_folder_->forget(batch.hide_sidecar);
+  if (!claimed) {
+    spdlog::error("hides folder: {} could not be taken into the spool: {}", name, claimed.error());
+    return;
+  }
+  HideFile hide;
+  try {
+    hide = read_hide_file(dir / name);
+  } catch (const EngineError& failure) {
+    fail_hide(batch, failure.what());
+    return;
+  }
+  batch.hide_id = hide.hide_id;
+  batch.material = hide.material;
+  if (batch.material.empty()) {
+    std::vector<std::string> hide_materials;
+    for (const auto& [key, material] : settings->materials)
+      if (material.kind == MaterialKind::Hide) hide_materials.push_back(key);
+    batch.material = hide_materials.size() == 1 ? hide_materials.front() : settings->jobs.default_material;
+  }
+  const auto material = settings->materials.find(batch.material);
+  if (material == settings->materials.end() || material->second.kind != MaterialKind::Hide) {
+    fail_hide(batch, "hide " + hide.hide_id + ": material \"" + batch.material +
+                         "\" is not a configured hide material (kind = \"hide\"); name it in " +
+                         hide_sidecar_path(name).string());
+    return;
+  }
+  batch.cutter = !hide.cutter.empty() ? hide.cutter
+                 : !material->second.cutter.empty() ? material->second.cutter
+                                                    : settings->jobs.default_cutter;
+  if (!settings->cutters.count(batch.cutter)) {
+    fail_hide(batch, "hide " + hide.hide_id + ": cutter \"" + batch.cutter + "\" is not configured");
+    return;
+  }
+  for (const std::string& id : hide_waiting_[batch.material]) {
+    auto state = spool_->read_state(JobFolder::Work, id);
+    if (state && state->stage == JobStage::Computed && state->stage_problem.empty()) batch.job_ids.push_back(id);
+  }
+  hide_waiting_[batch.material].clear();
+  if (Status written = spool_->write_batch(batch); !written) {
+    fail_hide(batch, "hide " + hide.hide_id + ": batch.json not written: " + written.error());
+    return;
+  }
+  for (const std::string& id : batch.job_ids) {
+    auto state = spool_->read_state(JobFolder::Work, id);
+    if (!state) continue;
+    state->batch_id = batch.id;
+    state->reason.clear();
+    state->advance(JobStage::Batched, "nested on hide " + hide.hide_id + " (batch " + batch.id + ")");
+    if (Status written = spool_->write_state(JobFolder::Work, *state); !written) {
+      report_job_problem(*spool_, JobFolder::Work, *state,
+                         "not part of hide batch " + batch.id + ": state not written: " + written.error());
+    }
+  }
+  spdlog::info("hide {} ({}, {:.2f} m^2) lies on cutter {}: nesting {} waiting job(s) of {} in batch {}",
+               hide.hide_id, name, hide.area_m2, batch.cutter, batch.job_ids.size(), batch.material, batch.id);
+  tasks_.push({true, batch.id});
+}
+
+void Pipeline::build_hide_task(BatchState& batch, const std::string& worker) {
+  const auto settings = config();
+  std::vector<HideJobInput> inputs;
+  std::map<std::string, JobState> states;
+  for (const std::string& id : batch.job_ids) {
+    auto state = spool_->read_state(JobFolder::Work, id);
+    if (!state || state->batch_id != batch.id) continue;
+    states.emplace(id, *state);
+  }
+  // batch.job_ids is oldest first: the oldest job gets the highest priority, after the sidecar's own.
+  for (const std::string& id : batch.job_ids) {
+    const auto it = states.find(id);
+    if (it == states.end()) continue;
+    const int age_rank = static_cast<int>(batch.job_ids.size() - inputs.size());
+    inputs.push_back({id, spool_->job_dir(JobFolder::Work, id), it->second.ticket.order,
+                      it->second.ticket.priority * 100000 + age_rank});
+  }
+  const auto material = settings->materials.find(batch.material);
+  const auto cutter = settings->cutters.find(batch.cutter);
+  Result<HideMade> outcome = Status::failure("material " + batch.material + " or cutter " + batch.cutter +
+                                             " is no longer configured");
+  if (material != settings->materials.end() && cutter != settings->cutters.end()) {
+    monitor_.begin(worker, "nesting hide " + batch.hide_id, settings->jobs.compute_timeout_s);
+    outcome = build_hide(inputs, spool_->batch_dir(batch.id), batch.hide_file, material->second, cutter->second,
+                         settings->paths.machines_dir, settings->batch.nest_time_s);
+    monitor_.end(worker);
+  }
+  std::vector<std::string> kept;
+  std::vector<std::string> back_to_pool;
+  for (auto& [id, state] : states) {
+    std::string waits;
+    if (!outcome) {
+      waits = "hide " + batch.hide_id + " could not be nested: " + outcome.error();
+    } else if (auto rejected = outcome->rejected.find(id); rejected != outcome->rejected.end()) {
+      fail_job(*spool_, state, rejected->second);
+      continue;
+    } else if (auto waiting = outcome->waiting.find(id); waiting != outcome->waiting.end()) {
+      waits = waiting->second;
+    } else {
+      kept.push_back(id);
+      continue;
+    }
+    state.batch_id.clear();
+    state.reason = "waiting for a hide of " + batch.material + ": " + waits;
+    state.advance(JobStage::Computed, state.reason);
+    if (Status written = spool_->write_state(JobFolder::Work, state); !written) {
+      report_job_problem(*spool_, JobFolder::Work, state, "state not written: " + written.error());
+    }
+    spdlog::info("{}: {}", state.label(), state.reason);
+    back_to_pool.push_back(id);
+  }
+  {
+    std::lock_guard lock(computed_mutex_);
+    computed_.insert(computed_.end(), back_to_pool.begin(), back_to_pool.end());
+  }
+  batch.job_ids = kept;
+  batch.updated_at = utc_now_iso();
+  if (!outcome || kept.empty()) {
+    batch.stage = BatchStage::Empty;
+    batch.reason = !outcome           ? outcome.error()
+                   : inputs.empty()   ? "no piece of " + batch.material + " was waiting for hide " + batch.hide_id
+                                      : "no waiting job fitted on hide " + batch.hide_id;
+    if (Status written = spool_->write_batch(batch); !written)
+      spdlog::error("hide batch {}: {}, but batch.json not written: {}", batch.id, batch.reason, written.error());
+    spdlog::warn("hide {} (batch {}): {}; nothing is cut", batch.hide_id, batch.id, batch.reason);
+    return;
+  }
+  batch.stage = BatchStage::Queued;
+  batch.cut_file = outcome->cut_file;
+  batch.utilisation = outcome->utilisation;
+  batch.piece_count = outcome->piece_count;
+  if (Status written = spool_->write_batch(batch); !written) {
+    report_batch_problem(*spool_, batch, "nested, but not queued: batch.json not written: " + written.error());
+    return;
+  }
+  spdlog::info("hide {} (batch {}): {} job(s), {} pieces, utilisation of its usable area {:.1f} %, {} job(s) wait; "
+               "queued for {}",
+               batch.hide_id, batch.id, kept.size(), batch.piece_count, 100.0 * batch.utilisation, back_to_pool.size(),
+               batch.cutter);
+  enqueue_batch(batch);
+}
+
+}  // namespace lastcut::daemon

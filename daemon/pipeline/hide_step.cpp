@@ -1,0 +1,118 @@
+// A hide on a cutter's table -> the waiting pieces nested on it -> cut file, preview, report and
+// offcut (see hide_step.hpp).
+#include "daemon/pipeline/hide_step.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "daemon/pipeline/engine_steps.hpp"
+#include "engine/core/durable_file.hpp"
+#include "engine/core/engine_error.hpp"
+#include "engine/nest/hide_batch.hpp"
+#include "engine/nest/hide_file.hpp"
+#include "engine/nest/hide_offcut.hpp"
+#include "engine/nest/nest_json.hpp"
+#include "engine/toolpath/cut_file.hpp"
+#include "engine/toolpath/cut_job.hpp"
+#include "engine/toolpath/svg_writer.hpp"
+
+namespace lastcut::daemon {
+
+Result<HideMade> build_hide(const std::vector<HideJobInput>& jobs, const std::filesystem::path& hide_dir,
+                            const std::string& hide_file, const MaterialConfig& material, const CutterSection& cutter,
+                            const std::filesystem::path& machines_dir, double nest_time_s) {
+  HideMade made;
+  try {
+    const HideFile hide = read_hide_file(hide_dir / hide_file);
+    std::vector<std::filesystem::path> search = {machines_dir};
+    for (const auto& dir : standard_machine_profile_dirs()) search.push_back(dir);
+    const MachineProfile profile = load_machine_profile(cutter.machine, search);
+
+    std::vector<PieceGroup> groups;
+    for (const HideJobInput& job : jobs) {
+      try {
+        PieceGroup group{job.job_id, job.order, job.priority,
+                         items_from_json(read_json_file(job.job_dir / kItemsFile),
+                                         std::string(kItemsFile) + " of job " + job.job_id)};
+        for (NestItem& item : group.items) item.min_quality = std::max(item.min_quality, material.min_quality);
+        groups.push_back(std::move(group));
+      } catch (const EngineError& error) {
+        made.rejected[job.job_id] = error.what();
+      }
+    }
+    nlohmann::json report{{"hide", hide.hide_id},
+                          {"file", hide_file},
+                          {"area_m2", hide.area_m2},
+                          {"usable_area_m2", hide.usable_area_m2},
+                          {"machine", profile.name}};
+    if (hide.thickness_mm) report["thickness_mm"] = *hide.thickness_mm;
+    if (groups.empty()) {
+      report["pieces_placed"] = 0;
+      made.report = report;
+      if (Status written = write_file_durably(hide_dir / kHideReportFile, report.dump(2) + "\n"); !written) return written;
+      return made;
+    }
+    BatchSpec spec;
+    spec.rotation_step_deg = material.rotation_step_deg;
+    spec.pairs = material.pairs_same_hide ? PairPolicy::SameHide : PairPolicy::Any;
+    spec.gap_mm = material.spacing_mm;
+    spec.margin_mm = material.spacing_mm;
+    const BatchInstance batch = hide_batch(groups, {hide.bin}, spec, hide_dir.filename().string());
+    NestOptions options;
+    options.time_limit_s = nest_time_s;
+    const Layout layout = nest_batch(batch, options);
+
+    std::vector<bool> placed(groups.size(), false);
+    for (int g : placed_groups(batch, layout)) placed[g] = true;
+    nlohmann::json waiting = nlohmann::json::array();
+    for (size_t g = 0; g < groups.size(); ++g) {
+      if (placed[g]) {
+        made.placed.push_back(groups[g].owner);
+        continue;
+      }
+      std::string reason = "did not fit on hide " + hide.hide_id;
+      for (const Unplaced& u : layout.unplaced)
+        for (size_t i = 0; i < batch.instance.items.size(); ++i)
+          if (batch.instance.items[i].id == u.item && batch.group_of_item[i] == static_cast<int>(g))
+            reason = "did not fit on hide " + hide.hide_id + " (" + u.reason + ")";
+      made.waiting[groups[g].owner] = reason;
+      waiting.push_back({{"job", groups[g].owner}, {"order", groups[g].order}, {"reason", reason}});
+    }
+    made.piece_count = static_cast<int>(layout.placements.size());
+    made.utilisation = layout.utilisation;
+    report["pieces_placed"] = made.piece_count;
+    report["jobs_placed"] = made.placed;
+    report["jobs_waiting"] = waiting;
+    report["utilisation_of_usable_area"] = layout.utilisation;
+    if (made.placed.empty()) {
+      made.report = report;
+      if (Status written = write_file_durably(hide_dir / kHideReportFile, report.dump(2) + "\n"); !written) return written;
+      return made;
+    }
+    if (Status written = write_file_durably(hide_dir / kLayoutFile, layout_to_json(layout, batch.instance).dump(1));
+        !written) {
+      return written;
+    }
+    CutFileRequest request;
+    request.sheet = SheetRef{0, 0};
+    request.notes = {"lastcut hide " + hide.hide_id + " batch " + hide_dir.filename().string()};
+    for (const std::string& id : made.placed) request.notes.push_back("lastcut job " + id);
+    const CutFile cut = make_cut_file(layout, batch.instance, profile, request);
+    made.cut_file = "cut" + cut_file_extension(cut.format);
+    if (Status written = write_file_durably(hide_dir / made.cut_file, cut.text); !written) return written;
+    if (Status written = write_file_durably(hide_dir / kPreviewFile, write_svg(cut.program)); !written) return written;
+    const Offcut offcut = hide_offcut(layout, batch.instance, 0);
+    if (Status written = write_file_durably(hide_dir / kOffcutFile, offcut_dxf(offcut)); !written) return written;
+    report["offcut_file"] = kOffcutFile;
+    report["offcut_area_m2"] = offcut.area_mm2 * 1e-6;
+    report["cut_file"] = made.cut_file;
+    report["cut_length_mm"] = cut.stats.cut_length_mm;
+    made.report = report;
+    if (Status written = write_file_durably(hide_dir / kHideReportFile, report.dump(2) + "\n"); !written) return written;
+    return made;
+  } catch (const EngineError& error) {
+    return Status::failure(error.what());
+  }
+}
+
+}  // namespace lastcut::daemon

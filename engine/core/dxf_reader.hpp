@@ -1,0 +1,53 @@
+#pragma once
+// Reading ASCII DXF drawings: the polylines (LWPOLYLINE, POLYLINE + VERTEX + SEQEND), LINEs and
+// TEXTs of the ENTITIES section with their layers, and the drawing unit ($INSUNITS). Shared by the
+// pattern reader (engine/compare) and the hide reader (engine/nest/hide_file.hpp), which each apply
+// their own layer rules. Coordinates stay in drawing units; dxf_millimetres_per_unit converts.
+// Every refusal is an EngineError of one line that names the file.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "engine/core/polygon.hpp"
+
+namespace lastcut {
+
+struct DxfVertex {
+  Point2 point = Point2::Zero();  // drawing units
+  double bulge = 0.0;             // tan(arc angle / 4) of the segment to the next vertex; 0 = straight
+};
+
+struct DxfPolyline {
+  std::string layer;
+  std::vector<DxfVertex> vertices;
+  bool closed = false;  // flag 70 bit 1, or the last vertex repeats the first (then dropped)
+};
+
+struct DxfLine {
+  std::string layer;
+  Point2 from = Point2::Zero(), to = Point2::Zero();  // drawing units
+};
+
+struct DxfText {
+  std::string layer;
+  std::string text;
+};
+
+struct DxfDrawing {
+  int insunits = 0;  // $INSUNITS; 0 when absent
+  std::vector<DxfPolyline> polylines;
+  std::vector<DxfLine> lines;
+  std::vector<DxfText> texts;
+};
+
+// Reads the file. Throws EngineError when it cannot be read or is not a DXF file.
+DxfDrawing read_dxf_drawing(const std::filesystem::path& path);
+
+// mm per drawing unit: $INSUNITS 4 mm, 5 cm, 6 m, 1 inch, 0 (unitless) read as mm. Any other unit
+// is refused: "<path>: drawing units $INSUNITS 2 are not supported; save the <what> in mm, cm, m or inches".
+double dxf_millimetres_per_unit(const std::filesystem::path& path, int insunits, const std::string& what);
+
+// The closed polyline as points (drawing units), bulge arcs flattened within `tolerance` (drawing units).
+std::vector<Point2> flatten_dxf_polyline(const DxfPolyline& polyline, double tolerance);
+
+}  // namespace lastcut

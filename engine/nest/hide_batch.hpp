@@ -1,0 +1,65 @@
+#pragma once
+// The one way a batch of cutting-room orders becomes a nest instance and a layout, for every front
+// door: the daemon (a strip batch, or the waiting pieces on the hide that lies on a cutter's table)
+// and `lastcut nest molds/ --hides HIDE...`. Nothing outside the engine builds nest items for a
+// batch or calls a nester variant: the caller gives the pieces grouped by job and gets back a layout
+// checked by the independent checker (layout_check.hpp).
+//
+// Rules (docs/hides.md):
+//   rotations  every piece may turn in steps of rotation_step_deg (0, step, 2 step, ... < 360), or
+//              freely when the step is 0
+//   priority   an older job first: the group's priority is copied onto its items (NestItem::priority)
+//   pairs      on hides, a job's pieces are cut together or not at all, and with PairPolicy::SameHide
+//              all jobs of one order (the left and right lasts of a pair) share one pair group, so
+//              they lie on one hide; with PairPolicy::Any only a job's own pieces stay together
+// A pair group the nester cuts only in part (a piece unplaced, or its pieces on different hides) is
+// taken out whole, the lowest priority first, and the rest nested again, so what is cut is always
+// whole jobs, whatever the nester does with pair groups.
+#include <string>
+#include <vector>
+
+#include "engine/nest/layout.hpp"
+#include "engine/nest/nest_options.hpp"
+#include "engine/nest/nest_problem.hpp"
+
+namespace lastcut {
+
+// The pieces of one job (the daemon) or one set of molds (the command line).
+struct PieceGroup {
+  std::string owner;  // job id; names the group in reasons
+  std::string order;  // the workshop's order; "" = the job stands alone
+  int priority = 0;   // higher is placed first (the daemon: older jobs higher)
+  std::vector<NestItem> items;  // ids are renumbered by the batch
+};
+
+enum class PairPolicy { SameHide, Any };
+
+struct BatchSpec {
+  int rotation_step_deg = 90;  // 1..360 (360 = no rotation); 0 = free rotation
+  PairPolicy pairs = PairPolicy::SameHide;
+  double gap_mm = 0;     // between pieces
+  double margin_mm = 0;  // to the material edge and defects
+};
+
+struct BatchInstance {
+  NestInstance instance;
+  std::vector<int> group_of_item;  // instance.items[i] belongs to groups[group_of_item[i]]
+};
+
+// The pieces on a strip of strip_height_mm. Throws EngineError on bad spec or empty groups.
+BatchInstance strip_batch(const std::vector<PieceGroup>& groups, double strip_height_mm, const BatchSpec& spec,
+                          const std::string& name);
+// The pieces on `hides` (ids renumbered 0..). Throws EngineError on bad spec, no hides or empty groups.
+BatchInstance hide_batch(const std::vector<PieceGroup>& groups, const std::vector<Bin>& hides, const BatchSpec& spec,
+                         const std::string& name);
+
+// nest() on the instance. On hides, while a pair group is cut only in part, the lowest-priority such
+// group is taken out (its pieces listed as unplaced with the reason) and the others nested again
+// (one more nest() each, so at most groups x time_limit_s); the final layout is checked again by
+// the independent checker. Throws EngineError as nest().
+Layout nest_batch(const BatchInstance& batch, const NestOptions& options);
+
+// Indices of the groups with every piece placed.
+std::vector<int> placed_groups(const BatchInstance& batch, const Layout& layout);
+
+}  // namespace lastcut

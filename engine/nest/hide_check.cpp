@@ -1,0 +1,113 @@
+// The plausibility checks of a hide read from a file (hide_file.hpp): the rings must be simple,
+// holes and zones must lie inside the outline, and the area must be that of a hide.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <polyclipping/clipper.hpp>
+
+#include "engine/core/engine_error.hpp"
+#include "engine/nest/clipper_paths.hpp"
+#include "engine/nest/hide_file.hpp"
+
+namespace lastcut {
+namespace {
+
+double cross(const Point2& o, const Point2& a, const Point2& b) {
+  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+}
+
+bool on_segment(const Point2& p, const Point2& a, const Point2& b) {
+  return std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) && std::min(a.y(), b.y()) <= p.y() &&
+         p.y() <= std::max(a.y(), b.y());
+}
+
+// Closed segments a-b and c-d share a point.
+bool segments_meet(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+  const double d1 = cross(c, d, a), d2 = cross(c, d, b), d3 = cross(a, b, c), d4 = cross(a, b, d);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
+  return (d1 == 0 && on_segment(a, c, d)) || (d2 == 0 && on_segment(b, c, d)) || (d3 == 0 && on_segment(c, a, b)) ||
+         (d4 == 0 && on_segment(d, a, b));
+}
+
+// True when two edges that are not neighbours along the ring meet (a sweep over x keeps this near
+// n log n for the thousands of points of a digitized outline).
+bool self_intersects(const Polygon2& ring) {
+  const auto& p = ring.points;
+  const size_t n = p.size();
+  std::vector<size_t> order(n);
+  for (size_t i = 0; i < n; ++i) order[i] = i;
+  const auto low_x = [&](size_t e) { return std::min(p[e].x(), p[(e + 1) % n].x()); };
+  const auto high_x = [&](size_t e) { return std::max(p[e].x(), p[(e + 1) % n].x()); };
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return low_x(a) < low_x(b); });
+  for (size_t i = 0; i < n; ++i) {
+    const size_t e = order[i];
+    for (size_t j = i + 1; j < n && low_x(order[j]) <= high_x(e); ++j) {
+      const size_t f = order[j];
+      const size_t gap = (e > f ? e - f : f - e);
+      if (gap == 1 || gap == n - 1) continue;  // neighbours share their common vertex only
+      if (segments_meet(p[e], p[(e + 1) % n], p[f], p[(f + 1) % n])) return true;
+    }
+  }
+  return false;
+}
+
+// Area (mm^2) of `ring` outside `outer`, by Clipper on a 1 um grid.
+double area_outside_mm2(const Polygon2& ring, const Polygon2& outer) {
+  constexpr double kScale = 1000.0;  // integer units per mm
+  ClipperLib::Clipper clipper;
+  clipper.AddPath(nest_detail::to_path(ring.points, kScale), ClipperLib::ptSubject, true);
+  clipper.AddPath(nest_detail::to_path(outer.points, kScale), ClipperLib::ptClip, true);
+  ClipperLib::Paths outside;
+  clipper.Execute(ClipperLib::ctDifference, outside, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  double area = 0;
+  for (const auto& path : outside) area += std::abs(ClipperLib::Area(path));
+  return area / (kScale * kScale);
+}
+
+void check_ring(const Polygon2& ring, const std::string& source, const std::string& what) {
+  if (ring.points.size() < 3) throw EngineError(source + ": the " + what + " has fewer than 3 points");
+  for (const Point2& p : ring.points)
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y())) throw EngineError(source + ": the " + what + " has a non-finite point");
+  // Before the area: a figure eight crosses itself and may enclose no signed area at all.
+  if (self_intersects(ring))
+    throw EngineError(source + ": the " + what + " crosses itself; redraw it as one simple closed line");
+  if (std::abs(signed_area(ring)) <= 0.0) throw EngineError(source + ": the " + what + " has no area");
+}
+
+constexpr double kMostlyOutside = 0.1;  // share of a hole's or zone's area
+
+void check_inside(const Polygon2& ring, const Polygon2& outer, const std::string& source, const std::string& what) {
+  // Clipper rounds to 1 um: a ring drawn on the outline may stick out by rounding only.
+  // A zone or cut-out drawn a little over the edge is harmless (there is no leather beyond it):
+  // refused only when more than kMostlyOutside of it lies outside (wrong place, wrong units).
+  const double outside_mm2 = area_outside_mm2(ring, outer);
+  if (outside_mm2 > std::max(1.0, kMostlyOutside * std::abs(signed_area(ring))))
+    throw EngineError(source + ": the " + what + " reaches outside the hide outline (" +
+                      std::to_string(static_cast<long>(std::lround(outside_mm2))) + " mm^2 outside)");
+}
+
+}  // namespace
+
+void check_hide(const Bin& bin, const std::string& source) {
+  check_ring(bin.outer, source, "hide outline");
+  const double area_m2 = std::abs(signed_area(bin.outer)) * 1e-6;
+  if (area_m2 < kSmallestHide_m2 || area_m2 > kLargestHide_m2) {
+    char text[160];
+    std::snprintf(text, sizeof text, "the hide outline encloses %.3g m^2, outside %.2f..%.0f m^2; check the drawing's units",
+                  area_m2, kSmallestHide_m2, kLargestHide_m2);
+    throw EngineError(source + ": " + text);
+  }
+  for (size_t h = 0; h < bin.holes.size(); ++h) {
+    const std::string what = "hole " + std::to_string(h + 1);
+    check_ring(bin.holes[h], source, what);
+    check_inside(bin.holes[h], bin.outer, source, what);
+  }
+  for (size_t z = 0; z < bin.zones.size(); ++z) {
+    const std::string what = "zone " + std::to_string(z + 1) + " (grade " + std::to_string(bin.zones[z].quality) + ")";
+    check_ring(bin.zones[z].shape, source, what);
+    check_inside(bin.zones[z].shape, bin.outer, source, what);
+  }
+}
+
+}  // namespace lastcut
