@@ -77,11 +77,12 @@ LastSideMesh last_side_mesh(const LastShape& shape, const LastParams& params, co
   const double centre_x = 0.4 * params.length_mm;
   const double sole = shape.sole_z_mm(centre_x);
   const Eigen::Vector3d centre(centre_x, 0.5 * (low.y() + high.y()), sole + 0.3 * (shape.top_cut_z_mm(centre_x) - sole));
-  low.x() = centre.x() - 0.3 * params.length_mm;
-  low.y() = centre.y() - 0.21 * params.ball_width_mm;
-  high.y() = centre.y() + 0.21 * params.ball_width_mm;
   high.z() = shape.top_cut_z_mm(0.0) - 10.0;
-  const CubeSphere sphere = cast_cube_sphere(shape, centre, low, high, cells);
+  RayBox box{low, high, low, high};
+  box.top_low.x() = centre.x() - 0.3 * params.length_mm;
+  box.top_low.y() = centre.y() - 0.21 * params.ball_width_mm;
+  box.top_high.y() = centre.y() + 0.21 * params.ball_width_mm;
+  const CubeSphere sphere = cast_cube_sphere(shape, centre, box, cells);
 
   LastSideMesh side;
   side.cut_normal = shape.top_cut_normal();
