@@ -36,6 +36,7 @@ TEST(BezierTopCut, TopIsPlanarAndTheRimASharpEdgeAtTheSolidsAngle) {
   ASSERT_EQ(params.surface, LastSurface::Bezier);  // the default
   const LastShape shape(params);
   const TriMesh mesh = generate_last(params).mesh;
+  EXPECT_EQ(mesh.triangle_count(), 50000);
   const Eigen::Vector3d normal = shape.top_cut_normal();
   const Eigen::Vector3d origin(0.0, 0.0, shape.top_cut_z_mm(0.0));
   const auto height = [&](Eigen::Index v) { return (mesh.V.row(v).transpose() - origin).dot(normal); };
