@@ -5,7 +5,7 @@
 // where the surface is C2 and kink where only the position (C0) is shared. Red dots mark the
 // extraordinary (valence-3) control vertices.
 //   build/bin/render_reflection_lines OUT.ppm [control_quads] [view: side|toe|generated]
-// `generated`: left panel the generator's default last (50k triangles, sharp flat top cut, vertex
+// `generated`: left panel the generator's Bezier last (50k triangles, sharp flat top cut, vertex
 // normals averaged on the side and the cut's normal on the cap), right the closed control mesh at n = 4.
 //   convert OUT.ppm docs/pictures/reflection-lines.png
 #include <Eigen/Geometry>
@@ -129,9 +129,10 @@ void render_panel(Image& image, int x0, const QuadMesh& control, int n, const Ca
   }
 }
 
-// The generator's default last (generate_last, 50k triangles): normals averaged over each vertex's faces
+// The generator's Bezier last (generate_last with LastSurface::Bezier, 50k triangles): normals averaged over each vertex's faces
 // on the side, the cut plane's on the cap, so that the rim shows as the crease it is.
-void render_generated(Image& image, int x0, const LastParams& params, const Camera& camera, const Eigen::Vector3d& stripe_axis) {
+void render_generated(Image& image, int x0, LastParams params, const Camera& camera, const Eigen::Vector3d& stripe_axis) {
+  params.surface = LastSurface::Bezier;
   const LastShape shape(params);
   const TriMesh mesh = generate_last(params).mesh;
   const Eigen::Vector3d cut = shape.top_cut_normal(), origin(0.0, 0.0, shape.top_cut_z_mm(0.0));
@@ -151,7 +152,7 @@ void render_generated(Image& image, int x0, const LastParams& params, const Came
   Eigen::MatrixXd corner_normal(3 * mesh.triangle_count(), 3);
   for (int f = 0; f < mesh.triangle_count(); ++f) {
     for (int k = 0; k < 3; ++k) {
-      corner_normal.row(3 * f + k) = on_cap(f) ? Eigen::RowVector3d(cut.transpose()) : vertex_normal.row(mesh.F(f, k)).normalized();
+      corner_normal.row(3 * f + k) = on_cap(f) ? Eigen::RowVector3d(cut.transpose()) : Eigen::RowVector3d(vertex_normal.row(mesh.F(f, k)).normalized());
     }
   }
   rasterise(image, x0, mesh, corner_normal, camera, stripe_axis);
@@ -178,7 +179,7 @@ int main(int argc, char** argv) {
   const Eigen::Vector3d stripe_axis = Eigen::Vector3d(0.3, 0.2, 1.0).normalized();
   Image image(2 * kPanelWidth, kPanelHeight);
   if (generated) {
-    // Left: the default generated last (sharp flat top); right: the closed control mesh at n = 4 (rounded top).
+    // Left: the generated Bezier last (sharp flat top); right: the closed control mesh at n = 4 (rounded top).
     render_generated(image, 0, params, camera, stripe_axis);
   } else {
     render_panel(image, 0, control, 3, camera, stripe_axis);
@@ -188,6 +189,6 @@ int main(int argc, char** argv) {
   out << "P6\n" << image.width << " " << image.height << "\n255\n";
   out.write(reinterpret_cast<const char*>(image.rgb.data()), static_cast<std::streamsize>(image.rgb.size()));
   std::printf("wrote %s: %d control quads, %s (left) and n = 4 (right)\n", argv[1], control.quad_count(),
-              generated ? "the default generated last" : "n = 3");
+              generated ? "the generated Bezier last" : "n = 3");
   return out ? 0 : 1;
 }

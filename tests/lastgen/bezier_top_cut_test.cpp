@@ -1,4 +1,4 @@
-// The generator's default surface (LastSurface::Bezier): the top cut is flat and its rim a sharp edge at
+// The generator's Bezier surface (LastSurface::Bezier, `lastcut generate --surface bezier`): the top cut is flat and its rim a sharp edge at
 // the angle the solid has there, the side surface is C2 away from the rim and the extraordinary vertices,
 // and the triangle count is the asked one (rounded down to even, as every closed triangle mesh has).
 #include <gtest/gtest.h>
@@ -21,6 +21,7 @@ namespace {
 LastParams right_last(int triangles) {
   LastParams params = LastParams::for_eu_size(42, FootSide::Right);  // canonical frame: no mirror
   params.target_triangles = triangles;
+  params.surface = LastSurface::Bezier;
   return params;
 }
 
@@ -33,7 +34,6 @@ Eigen::Vector3d face_normal(const TriMesh& mesh, Eigen::Index f) {
 
 TEST(BezierTopCut, TopIsPlanarAndTheRimASharpEdgeAtTheSolidsAngle) {
   const LastParams params = right_last(50000);
-  ASSERT_EQ(params.surface, LastSurface::Bezier);  // the default
   const LastShape shape(params);
   const TriMesh mesh = generate_last(params).mesh;
   EXPECT_EQ(mesh.triangle_count(), 50000);

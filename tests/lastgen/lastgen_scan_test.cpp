@@ -74,7 +74,7 @@ TEST(SimulatedScan, HolesAreSmallSeparateLoopsAwayFromTheTopCut) {
       EXPECT_LT(p.z(), shape.top_cut_z_mm(p.x()) - 3.0) << "hole on the top cut";
     }
     EXPECT_GT((high - low).norm(), 2.0);
-    EXPECT_LT((high - low).norm(), 16.0);  // one-ring holes; the Bezier surface's toe cells are the largest (~15 mm)
+    EXPECT_LT((high - low).norm(), 12.0);
     centres.push_back(sum / static_cast<double>(loop.size()));
   }
   for (size_t i = 0; i < centres.size(); ++i)

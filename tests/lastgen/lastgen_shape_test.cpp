@@ -63,16 +63,9 @@ TEST_F(GeneratedLastTest, IsAClosedOutwardTwoManifoldSphere) {
 }
 
 TEST_F(GeneratedLastTest, HasTheRequestedTriangleCountAndNoSlivers) {
-  EXPECT_EQ(right_last().mesh.triangle_count(), kTriangles);
-  EXPECT_GT(test::worst_triangle_quality(right_last().mesh), 0.25);
-  // The legacy remeshed surface is isotropic; the Bezier default's cube-sphere cells are not (about 90 : 1
-  // between the toe's and the instep's largest and smallest triangles at 5000, docs/subdivision.md).
-  LastParams legacy = small_params(FootSide::Right);
-  legacy.surface = LastSurface::Remeshed;
-  const TriMesh remeshed = generate_last(legacy).mesh;
-  EXPECT_NEAR(remeshed.triangle_count(), kTriangles, 2);
-  EXPECT_GT(test::worst_triangle_quality(remeshed), 0.3);
-  const Eigen::VectorXd areas = triangle_areas(remeshed);
+  EXPECT_NEAR(right_last().mesh.triangle_count(), kTriangles, 2);
+  EXPECT_GT(test::worst_triangle_quality(right_last().mesh), 0.3);
+  const Eigen::VectorXd areas = triangle_areas(right_last().mesh);
   EXPECT_LT(areas.maxCoeff() / areas.minCoeff(), 8.0);  // roughly uniform sizes
 }
 
@@ -99,11 +92,7 @@ TEST_F(GeneratedLastTest, DimensionsMatchTheParameters) {
 }
 
 TEST_F(GeneratedLastTest, ToeSpringAndHeelHeightMoveTheSole) {
-  // Legacy surface: at 5000 triangles the Bezier default samples only the control points (n = 1) and
-  // its lowest point near the tip moves 11 mm, not 16, for this change (docs/subdivision.md).
-  LastParams flat = small_params(FootSide::Right);
-  flat.surface = LastSurface::Remeshed;
-  LastParams sprung = flat;
+  LastParams flat = small_params(FootSide::Right), sprung = flat;
   flat.toe_spring_mm = 4.0;
   flat.heel_height_mm = 10.0;
   sprung.toe_spring_mm = 20.0;
