@@ -100,6 +100,8 @@ namespace {
 
 TriMesh generated_last(int last_triangles) {
   LastParams params = LastParams::for_eu_size(42, FootSide::Left);
+  // Legacy surface: the figures in docs/ were measured on it (docs/subdivision.md).
+  params.surface = LastSurface::Remeshed;
   params.target_triangles = last_triangles;
   return generate_last(params).mesh;
 }

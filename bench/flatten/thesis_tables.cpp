@@ -115,6 +115,8 @@ void add_halves(const std::string& last_name, const Segmentation& scan, const Se
 
 Segmentation segment_generated(int eu_size, FootSide side, int triangles) {
   LastParams params = LastParams::for_eu_size(eu_size, side);
+  // Legacy surface: the figures in docs/ were measured on it (docs/subdivision.md).
+  params.surface = LastSurface::Remeshed;
   params.target_triangles = triangles;
   params.noise_mm = 0.05;
   return segment_last(orient_last(generate_last(params).mesh));

@@ -23,6 +23,8 @@ using Clock = std::chrono::steady_clock;
 
 lastcut::GeneratedLast scan_of(int eu_size, lastcut::FootSide side, int triangles, std::uint64_t seed) {
   lastcut::LastParams params = lastcut::LastParams::for_eu_size(eu_size, side);
+  // Legacy surface: the figures in docs/ were measured on it (docs/subdivision.md).
+  params.surface = lastcut::LastSurface::Remeshed;
   params.target_triangles = triangles;
   params.noise_mm = 0.2;
   params.holes = 3;

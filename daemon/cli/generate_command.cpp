@@ -26,7 +26,7 @@ struct GenerateOptions {
   int holes = 0;
   bool random_pose = false;
   uint64_t seed = 1;
-  std::string surface = "bezier";
+  std::string surface = "legacy";
 };
 
 bool has_mesh_extension(const std::string& path) {
@@ -97,7 +97,7 @@ void add_generate_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   command->add_flag("--random-pose", options->random_pose, "Rotate and move the scan arbitrarily");
   command->add_option("--seed", options->seed, "Random seed: the same seed gives the same file")->capture_default_str();
-  command->add_option("--surface", options->surface, "bezier (C2 Bezier surface, sharp flat top cut) or legacy (remeshed implicit solid; 'remeshed' is the same)")
+  command->add_option("--surface", options->surface, "legacy (remeshed implicit solid; 'remeshed' is the same) or bezier (C2 Bezier surface, sharp flat top cut)")
       ->check(CLI::IsMember({"bezier", "legacy", "remeshed"}))
       ->capture_default_str();
   command->add_option("--pose-out", options->pose_output, "Also write the canonical-to-scan transform as JSON");

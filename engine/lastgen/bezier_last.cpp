@@ -66,6 +66,12 @@ std::vector<int> boundary_loop(const QuadMesh& quads, int start) {
   return loop;
 }
 
+// 4 sqrt(3) area / (sum of squared edges): 1 for an equilateral triangle, 0 for a degenerate one.
+double triangle_quality(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  const double edges = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
+  return edges > 0.0 ? 2.0 * std::sqrt(3.0) * (b - a).cross(c - a).norm() / edges : 0.0;
+}
+
 }  // namespace
 
 int bezier_detail_for(int target_triangles) {
@@ -139,36 +145,51 @@ TriMesh bezier_last_surface(const LastShape& shape, const LastParams& params) {
   const long long missing = static_cast<long long>(params.target_triangles) - 2LL * (quads.quad_count() + cap_quads);
   const long long splits = std::max(0LL, missing / 2);
   if (splits > cap_quads) throw EngineError("Bezier last: the triangle count is too far from the control mesh's");
-  std::vector<char> split(static_cast<size_t>(cap_quads), 0);
-  for (long long s = 0; s < splits; ++s) split[static_cast<size_t>((2 * s + 1) * cap_quads / (2 * splits))] = 1;
-
-  QuadMesh whole;
-  whole.Q.resize(quads.quad_count() + cap_quads - splits, 4);
-  whole.Q.topRows(quads.quad_count()) = quads.Q;
-  std::vector<Eigen::Vector4i> split_quads;
-  Eigen::Index row = quads.quad_count();
+  // Spread over the cells off the rim (the cap's inner cells are the squarest), all cells if too few.
+  std::vector<int> candidates;
   for (int j = 0; j < nv; ++j) {
     for (int i = 0; i < nu; ++i) {
-      const Eigen::Vector4i quad(g(i, j), g(i, j + 1), g(i + 1, j + 1), g(i + 1, j));
+      if (i > 0 && i < nu - 1 && j > 0 && j < nv - 1) candidates.push_back(i + nu * j);
+    }
+  }
+  if (static_cast<long long>(candidates.size()) < splits) {
+    candidates.resize(static_cast<size_t>(cap_quads));
+    for (int c = 0; c < cap_quads; ++c) candidates[static_cast<size_t>(c)] = c;
+  }
+  std::vector<char> split(static_cast<size_t>(cap_quads), 0);
+  const auto count = static_cast<long long>(candidates.size());
+  for (long long s = 0; s < splits; ++s) split[static_cast<size_t>(candidates[static_cast<size_t>((2 * s + 1) * count / (2 * splits))])] = 1;
+
+  // The side's quads split along their shorter diagonal; the cap's along the diagonal whose worse
+  // triangle is the better one (near the grid's corners the rim can squeeze a cell either way).
+  TriMesh mesh;
+  const TriMesh side_triangles = triangulate_quads(quads);
+  const Eigen::Index side_faces = side_triangles.F.rows();
+  mesh.V.resize(V.rows() + splits, 3);
+  mesh.V.topRows(V.rows()) = V;
+  mesh.F.resize(params.target_triangles - params.target_triangles % 2, 3);
+  mesh.F.topRows(side_faces) = side_triangles.F;
+  Eigen::Index face = side_faces, centre = V.rows();
+  for (int j = 0; j < nv; ++j) {
+    for (int i = 0; i < nu; ++i) {
+      const std::array<int, 4> quad{g(i, j), g(i, j + 1), g(i + 1, j + 1), g(i + 1, j)};
       if (split[static_cast<size_t>(i + nu * j)] != 0) {
-        split_quads.push_back(quad);
+        mesh.V.row(centre) = into_cut(0.25 * (at(quad[0]) + at(quad[1]) + at(quad[2]) + at(quad[3]))).transpose();
+        for (int k = 0; k < 4; ++k) mesh.F.row(face++) << quad[static_cast<size_t>(k)], quad[static_cast<size_t>((k + 1) % 4)], static_cast<int>(centre);
+        ++centre;
+        continue;
+      }
+      const auto q = [&](int a, int b, int c) { return triangle_quality(at(quad[a]), at(quad[b]), at(quad[c])); };
+      if (std::min(q(0, 1, 2), q(0, 2, 3)) >= std::min(q(0, 1, 3), q(1, 2, 3))) {
+        mesh.F.row(face++) << quad[0], quad[1], quad[2];
+        mesh.F.row(face++) << quad[0], quad[2], quad[3];
       } else {
-        whole.Q.row(row++) = quad.transpose();
+        mesh.F.row(face++) << quad[0], quad[1], quad[3];
+        mesh.F.row(face++) << quad[1], quad[2], quad[3];
       }
     }
   }
-  whole.V = V;
-  TriMesh mesh = triangulate_quads(whole);
-  const Eigen::Index first_centre = mesh.V.rows(), first_face = mesh.F.rows();
-  mesh.V.conservativeResize(first_centre + static_cast<Eigen::Index>(split_quads.size()), 3);
-  mesh.F.conservativeResize(first_face + 4 * static_cast<Eigen::Index>(split_quads.size()), 3);
-  for (size_t s = 0; s < split_quads.size(); ++s) {
-    const Eigen::Vector4i& quad = split_quads[s];
-    const Eigen::Vector3d centre = 0.25 * (at(quad(0)) + at(quad(1)) + at(quad(2)) + at(quad(3)));
-    const auto c = static_cast<int>(first_centre + static_cast<Eigen::Index>(s));
-    mesh.V.row(c) = into_cut(centre).transpose();
-    for (int k = 0; k < 4; ++k) mesh.F.row(first_face + 4 * static_cast<Eigen::Index>(s) + k) << quad(k), quad((k + 1) % 4), c;
-  }
+  if (face != mesh.F.rows() || centre != mesh.V.rows()) throw EngineError("Bezier last: the triangle count does not add up");
   return mesh;
 }
 

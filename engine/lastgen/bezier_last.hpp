@@ -1,5 +1,5 @@
 #pragma once
-// The Bezier surface of the last with a sharp top cut (LastSurface::Bezier, the default of generate_last):
+// The Bezier surface of the last with a sharp top cut (LastSurface::Bezier, `lastcut generate --surface bezier`):
 // the C2 Bezier side surface of last_side_mesh.hpp sampled with detail n (engine/subdiv), closed by a
 // flat cap meshed to the same rim samples, at exactly the asked triangle count (rounded down to even).
 //

@@ -39,8 +39,10 @@ std::array<int, 3> cube_cells_for(const Eigen::Vector3d& extent, int control_qua
           std::max(2, static_cast<int>(std::lround(s * extent.z())))};
 }
 
-CubeSphere cast_cube_sphere(const LastShape& shape, const Eigen::Vector3d& centre, const Eigen::Vector3d& low,
-                            const Eigen::Vector3d& high, const std::array<int, 3>& cells) {
+CubeSphere cast_cube_sphere(const LastShape& shape, const Eigen::Vector3d& centre, const RayBox& box,
+                            const std::array<int, 3>& cells) {
+  const Eigen::Vector3d& low = box.low;
+  const Eigen::Vector3d& high = box.high;
   if (shape.value(centre) >= 0.0) throw EngineError("last control mesh: the centre is not inside the last");
   const Eigen::Vector3d extent = high - low;
   // Lattice coordinate -> [-1, 1] with the centre at 0 (the centre is off the box middle).
@@ -53,6 +55,11 @@ CubeSphere cast_cube_sphere(const LastShape& shape, const Eigen::Vector3d& centr
       const double offset = lattice[i] - split[i];
       cube(a) = offset < 0 ? offset / split[i] : offset / (cells[i] - split[i]);
       stretch(a) = offset < 0 ? centre(a) - low(a) : high(a) - centre(a);
+    }
+    const double up = std::max(0.0, cube(2));
+    for (int a = 0; a < 2; ++a) {
+      const double top = cube(a) < 0 ? centre(a) - box.top_low(a) : box.top_high(a) - centre(a);
+      stretch(a) = (1.0 - up) * stretch(a) + up * top;
     }
     Eigen::Vector3d warped;
     for (int a = 0; a < 3; ++a) warped(a) = std::tan(0.25 * std::numbers::pi * cube(a));

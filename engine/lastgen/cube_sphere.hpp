@@ -22,10 +22,17 @@ struct CubeSphere {
 // Cells per axis for about `control_quads` quads on a box proportional to `extent_mm` (at least 2 each).
 std::array<int, 3> cube_cells_for(const Eigen::Vector3d& extent_mm, int control_quads);
 
-// The rays are stretched to the box [low_mm, high_mm] (which must contain centre_mm): the box's sides
-// decide which face of the cube looks at which part of the last. Throws EngineError when `centre_mm`
-// is not inside the solid or a ray does not leave it.
-CubeSphere cast_cube_sphere(const LastShape& shape, const Eigen::Vector3d& centre_mm, const Eigen::Vector3d& low_mm,
-                            const Eigen::Vector3d& high_mm, const std::array<int, 3>& cells);
+// Where the rays point (mm, boxes containing the centre): the lattice is split at the centre in the
+// proportions of [low, high] and each lattice direction stretched to that box's sides, which decides which
+// face of the cube looks at which part of the last. Above the centre the x and y stretch blend linearly
+// (with the cube's z coordinate, 0 at the centre, 1 on the top face) into those of [top_low, top_high],
+// so that the top face can look at a smaller region than the bottom face.
+struct RayBox {
+  Eigen::Vector3d low, high, top_low, top_high;
+};
+
+// Throws EngineError when `centre_mm` is not inside the solid or a ray does not leave it.
+CubeSphere cast_cube_sphere(const LastShape& shape, const Eigen::Vector3d& centre_mm, const RayBox& box,
+                            const std::array<int, 3>& cells);
 
 }  // namespace lastcut

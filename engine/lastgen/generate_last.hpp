@@ -2,7 +2,8 @@
 // generate_last: a realistic synthetic shoe-last scan for samples, tests and benchmarks.
 // The solid (LastShape: plan outline, sole line with heel pitch and toe spring, crowned instep,
 // flat top cut, rounded feather line) is polygonised by marching tetrahedra and remeshed
-// isotropically onto the exact surface to the requested triangle count; then a simulated
+// isotropically onto the exact surface to the requested triangle count (or, with LastSurface::Bezier,
+// built as a C2 Bezier surface with a sharp flat top cut: bezier_last.hpp); then a simulated
 // scanner adds normal noise, small holes and an arbitrary pose. Deterministic for the params.
 //
 //   #include "engine/lastgen/generate_last.hpp"

@@ -16,7 +16,7 @@ QuadMesh last_control_mesh(const LastShape& shape, const LastParams& params, int
   const double centre_x = 0.4 * params.length_mm;
   const double sole = shape.sole_z_mm(centre_x);
   const Eigen::Vector3d centre(centre_x, 0.5 * (low.y() + high.y()), sole + 0.3 * (shape.top_cut_z_mm(centre_x) - sole));
-  QuadMesh mesh = cast_cube_sphere(shape, centre, low, high, cube_cells_for(high - low, control_quads)).mesh;
+  QuadMesh mesh = cast_cube_sphere(shape, centre, RayBox{low, high, low, high}, cube_cells_for(high - low, control_quads)).mesh;
 
   // Limit positions onto the surface (n = 1 samples are exactly the patch corners).
   for (int step = 0; step < kFitSteps; ++step) {

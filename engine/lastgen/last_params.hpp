@@ -11,9 +11,10 @@
 
 namespace lastcut {
 
-// How the surface is made: the C2 bicubic Bezier surface of a quad control mesh with a sharp, flat top cut
-// (engine/lastgen/bezier_last.hpp; the default), or the older marching tetrahedra + isotropic remeshing
-// onto the solid with its 2 mm top-cut fillet (`lastcut generate --surface legacy`, kept for comparison).
+// How the surface is made: marching tetrahedra + isotropic remeshing onto the solid with its 2 mm top-cut
+// fillet (the default; `lastcut generate --surface legacy`), or the C2 bicubic Bezier surface of a quad
+// control mesh with a sharp, flat top cut (engine/lastgen/bezier_last.hpp; `--surface bezier`). Bezier is
+// not yet the default: the segmentation tests fail on it (docs/subdivision.md).
 enum class LastSurface { Remeshed, Bezier };
 
 struct LastParams {
@@ -31,7 +32,7 @@ struct LastParams {
   int holes = 0;                // small scan holes (a few mm across), never on the top cut
   bool random_pose = false;     // arbitrary rotation + translation of the whole scan
   uint64_t seed = 1;
-  LastSurface surface = LastSurface::Bezier;
+  LastSurface surface = LastSurface::Remeshed;
 
   // Plausible proportions for a medium-width everyday last of EU (Paris point) size 35..47:
   // length = size x 6.667 mm, widths and heights proportional. Throws EngineError outside 35..47.

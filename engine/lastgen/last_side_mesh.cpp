@@ -13,6 +13,9 @@ namespace lastcut {
 namespace {
 
 constexpr int kSmoothingSteps = 30;
+// Only this many rings of cells around the rim are smoothed: uniform Laplacian steps pull a surface's
+// tips inwards (the toe lost 14 mm when all vertices were smoothed).
+constexpr int kSmoothingRings = 4;
 constexpr int kFitSteps = 16;
 constexpr double kRimSearchStepMm = 1.0;
 
@@ -77,11 +80,12 @@ LastSideMesh last_side_mesh(const LastShape& shape, const LastParams& params, co
   const double centre_x = 0.4 * params.length_mm;
   const double sole = shape.sole_z_mm(centre_x);
   const Eigen::Vector3d centre(centre_x, 0.5 * (low.y() + high.y()), sole + 0.3 * (shape.top_cut_z_mm(centre_x) - sole));
-  low.x() = centre.x() - 0.3 * params.length_mm;
-  low.y() = centre.y() - 0.21 * params.ball_width_mm;
-  high.y() = centre.y() + 0.21 * params.ball_width_mm;
   high.z() = shape.top_cut_z_mm(0.0) - 10.0;
-  const CubeSphere sphere = cast_cube_sphere(shape, centre, low, high, cells);
+  RayBox box{low, high, low, high};
+  box.top_low.x() = centre.x() - 0.3 * params.length_mm;
+  box.top_low.y() = centre.y() - 0.21 * params.ball_width_mm;
+  box.top_high.y() = centre.y() + 0.21 * params.ball_width_mm;
+  const CubeSphere sphere = cast_cube_sphere(shape, centre, box, cells);
 
   LastSideMesh side;
   side.cut_normal = shape.top_cut_normal();
@@ -155,9 +159,28 @@ LastSideMesh last_side_mesh(const LastShape& shape, const LastParams& params, co
   for (Eigen::Index v = 0; v < control.V.rows(); ++v) {
     if (on_rim(v)) control.V.row(v) = onto_rim(control.V.row(v).transpose()).transpose();
   }
+  std::vector<int> ring(static_cast<size_t>(control.vertex_count()), -1), front;
+  for (int v = 0; v < control.vertex_count(); ++v) {
+    if (on_rim(v)) ring[static_cast<size_t>(v)] = 0, front.push_back(v);
+  }
+  for (int r = 1; r <= kSmoothingRings; ++r) {
+    std::vector<int> next_front;
+    for (int q = 0; q < control.quad_count(); ++q) {
+      bool touches = false;
+      for (int k = 0; k < 4; ++k) touches = touches || ring[static_cast<size_t>(control.Q(q, k))] == r - 1;
+      if (!touches) continue;
+      for (int k = 0; k < 4; ++k) {
+        int& mark = ring[static_cast<size_t>(control.Q(q, k))];
+        if (mark < 0) mark = r, next_front.push_back(control.Q(q, k));
+      }
+    }
+    front.swap(next_front);
+  }
   for (int step = 0; step < kSmoothingSteps; ++step) {
     Eigen::MatrixXd moved = control.V;
     for (Eigen::Index v = 0; v < control.V.rows(); ++v) {
+      // The outermost ring stays put, anchoring the smoothed band to the cast layout.
+      if (ring[static_cast<size_t>(v)] < 0 || ring[static_cast<size_t>(v)] == kSmoothingRings) continue;
       Eigen::Vector3d mean = Eigen::Vector3d::Zero();
       for (int u : neighbours[static_cast<size_t>(v)]) mean += control.V.row(u).transpose();
       mean /= static_cast<double>(neighbours[static_cast<size_t>(v)].size());

@@ -1,6 +1,6 @@
 #pragma once
 // The quad control mesh of the last's surface without its flat top: the Bezier path's way of keeping
-// the rim of the top cut a sharp edge, as on a real last (LastSurface::Bezier, the default).
+// the rim of the top cut a sharp edge, as on a real last (LastSurface::Bezier).
 //
 // The rim is made a boundary of the control mesh. With the ghost-point boundary rule of engine/subdiv
 // (p_ghost = 2 v - p_inner, the Catmull-Clark boundary rule; E. Catmull and J. Clark, "Recursively

@@ -1,4 +1,4 @@
-// The generator's default surface (LastSurface::Bezier): the top cut is flat and its rim a sharp edge at
+// The generator's Bezier surface (LastSurface::Bezier, `lastcut generate --surface bezier`): the top cut is flat and its rim a sharp edge at
 // the angle the solid has there, the side surface is C2 away from the rim and the extraordinary vertices,
 // and the triangle count is the asked one (rounded down to even, as every closed triangle mesh has).
 #include <gtest/gtest.h>
@@ -21,6 +21,7 @@ namespace {
 LastParams right_last(int triangles) {
   LastParams params = LastParams::for_eu_size(42, FootSide::Right);  // canonical frame: no mirror
   params.target_triangles = triangles;
+  params.surface = LastSurface::Bezier;
   return params;
 }
 
@@ -33,9 +34,9 @@ Eigen::Vector3d face_normal(const TriMesh& mesh, Eigen::Index f) {
 
 TEST(BezierTopCut, TopIsPlanarAndTheRimASharpEdgeAtTheSolidsAngle) {
   const LastParams params = right_last(50000);
-  ASSERT_EQ(params.surface, LastSurface::Bezier);  // the default
   const LastShape shape(params);
   const TriMesh mesh = generate_last(params).mesh;
+  EXPECT_EQ(mesh.triangle_count(), 50000);
   const Eigen::Vector3d normal = shape.top_cut_normal();
   const Eigen::Vector3d origin(0.0, 0.0, shape.top_cut_z_mm(0.0));
   const auto height = [&](Eigen::Index v) { return (mesh.V.row(v).transpose() - origin).dot(normal); };
@@ -84,7 +85,8 @@ TEST(BezierTopCut, TopIsPlanarAndTheRimASharpEdgeAtTheSolidsAngle) {
   EXPECT_GT(rim_edges, 100);
   EXPECT_GT(rim_length_mm, 200.0);  // the cut is about 40 x 110 mm
   EXPECT_GT(min_turn_deg, 20.0);    // a crease everywhere, never a smooth roll-over
-  EXPECT_LT(worst_deg, 5.0);
+  EXPECT_LT(sum_deg / rim_edges, 2.0);
+  EXPECT_LT(worst_deg, 6.0);  // at the front of the cut, where the instep's dome meets it
 }
 
 // Jet of a patch at parameter s along its edge k (running from corner k to k + 1): position, the
@@ -146,7 +148,8 @@ TEST(BezierTopCut, TriangleCountIsTheAskedOneRoundedDownToEven) {
     EXPECT_EQ(census.inconsistent_edges, 0) << triangles;
     EXPECT_EQ(test::euler_characteristic(mesh), 2) << triangles;
     EXPECT_GT(test::signed_volume_mm3(mesh), 0.0) << triangles;
-    EXPECT_GT(test::worst_triangle_quality(mesh), 0.2) << triangles;
+    // The cap's grid cells at its four corners are the worst (a harmonic grid at a straight angle).
+    EXPECT_GT(test::worst_triangle_quality(mesh), 0.15) << triangles;
   }
 }
 
