@@ -68,6 +68,9 @@ struct MaterialConfig {
   std::string cutter;           // where a hide goes when its sidecar names no cutter ("" = jobs.default_cutter)
   bool pairs_same_hide = true;  // pairs = "same_hide": an order's jobs on one hide; "any": each job alone
   int min_quality = 0;          // lowest leather grade a piece may lie on (zones below are avoided)
+  int toe_min_quality = 0;      // the toe/vamp region of a mold needs this grade or better (0 = off)
+  double toe_fraction = 0.4;    // that region: this share of the toe-heel distance from the toe notch
+  double grain_tolerance_deg = 0;  // heel-to-toe axis along a hide's backbone within this (0 = free)
 };
 
 // One cutter: how to reach it and talk to it (the driver's own settings type, read key for key

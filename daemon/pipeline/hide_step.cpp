@@ -34,7 +34,6 @@ Result<HideMade> build_hide(const std::vector<HideJobInput>& jobs, const std::fi
         PieceGroup group{job.job_id, job.order, job.priority,
                          items_from_json(read_json_file(job.job_dir / kItemsFile),
                                          std::string(kItemsFile) + " of job " + job.job_id)};
-        for (NestItem& item : group.items) item.min_quality = std::max(item.min_quality, material.min_quality);
         groups.push_back(std::move(group));
       } catch (const EngineError& error) {
         made.rejected[job.job_id] = error.what();
@@ -57,6 +56,10 @@ Result<HideMade> build_hide(const std::vector<HideJobInput>& jobs, const std::fi
     spec.pairs = material.pairs_same_hide ? PairPolicy::SameHide : PairPolicy::Any;
     spec.gap_mm = material.spacing_mm;
     spec.margin_mm = material.spacing_mm;
+    spec.min_quality = material.min_quality;
+    spec.toe_min_quality = material.toe_min_quality;
+    spec.toe_fraction = material.toe_fraction;
+    if (material.grain_tolerance_deg > 0) spec.grain_tolerance_deg = material.grain_tolerance_deg;
     const BatchInstance batch = hide_batch(groups, {hide.bin}, spec, hide_dir.filename().string());
     NestOptions options;
     options.time_limit_s = nest_time_s;

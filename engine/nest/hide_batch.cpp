@@ -1,10 +1,12 @@
 #include "engine/nest/hide_batch.hpp"
 
+#include <algorithm>
 #include <map>
 #include <set>
 
 #include "engine/core/engine_error.hpp"
 #include "engine/nest/layout_check.hpp"
+#include "engine/nest/mold_items.hpp"
 #include "engine/nest/nester.hpp"
 
 namespace lastcut {
@@ -54,9 +56,29 @@ BatchInstance strip_batch(const std::vector<PieceGroup>& groups, double strip_he
 BatchInstance hide_batch(const std::vector<PieceGroup>& groups, const std::vector<Bin>& hides, const BatchSpec& spec,
                          const std::string& name) {
   if (hides.empty()) throw EngineError("batch " + name + ": no hide to nest on");
+  if (spec.toe_min_quality > 0 && !(spec.toe_fraction > 0 && spec.toe_fraction <= 1))
+    throw EngineError("batch " + name + ": the toe fraction must be in (0, 1]");
+  if (spec.grain_tolerance_deg && !(*spec.grain_tolerance_deg >= 0 && *spec.grain_tolerance_deg <= 90))
+    throw EngineError("batch " + name + ": the grain tolerance must be 0..90 deg");
   BatchInstance batch = common_batch(groups, spec, name, true);
   batch.instance.bins = hides;
-  for (size_t b = 0; b < hides.size(); ++b) batch.instance.bins[b].id = static_cast<int>(b);
+  bool every_hide_has_backbone = true;
+  for (size_t b = 0; b < hides.size(); ++b) {
+    batch.instance.bins[b].id = static_cast<int>(b);
+    every_hide_has_backbone = every_hide_has_backbone && hides[b].backbone_deg.has_value();
+  }
+  for (NestItem& item : batch.instance.items) {
+    item.min_quality = std::max(item.min_quality, spec.min_quality);
+    if (spec.toe_min_quality > 0) {
+      if (auto region = toe_region(item, spec.toe_fraction, spec.toe_min_quality)) item.quality_regions.push_back(*region);
+    }
+    // Without a backbone the nester would hold the grain to the hide's x axis, a direction that
+    // means nothing on leather.
+    if (spec.grain_tolerance_deg && every_hide_has_backbone) {
+      item.grain_deg = 0.0;
+      item.grain_tolerance_deg = *spec.grain_tolerance_deg;
+    }
+  }
   return batch;
 }
 

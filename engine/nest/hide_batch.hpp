@@ -9,12 +9,15 @@
 //   rotations  every piece may turn in steps of rotation_step_deg (0, step, 2 step, ... < 360), or
 //              freely when the step is 0
 //   priority   an older job first: the group's priority is copied onto its items (NestItem::priority)
+//   leather    on hides, spec.min_quality for the whole piece, spec.toe_min_quality for its toe region,
+//              grain along the hide's backbone within spec.grain_tolerance_deg
 //   pairs      on hides, a job's pieces are cut together or not at all, and with PairPolicy::SameHide
 //              all jobs of one order (the left and right lasts of a pair) share one pair group, so
 //              they lie on one hide; with PairPolicy::Any only a job's own pieces stay together
 // A pair group the nester cuts only in part (a piece unplaced, or its pieces on different hides) is
 // taken out whole, the lowest priority first, and the rest nested again, so what is cut is always
 // whole jobs, whatever the nester does with pair groups.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,6 +42,15 @@ struct BatchSpec {
   PairPolicy pairs = PairPolicy::SameHide;
   double gap_mm = 0;     // between pieces
   double margin_mm = 0;  // to the material edge and defects
+  // Hides only (leather grades: docs/hides.md).
+  int min_quality = 0;  // every piece lies on this grade or better
+  // The toe and vamp show on the finished shoe: a mold's region within toe_fraction of its toe-heel
+  // distance from the toe notch (toe_region in mold_items.hpp) lies on this grade or better (0 = off).
+  int toe_min_quality = 0;
+  double toe_fraction = 0.4;
+  // A piece's heel-to-toe axis (the mold's x axis) within this of the backbone, on hides that have
+  // one (hides without a backbone leave the grain free). nullopt = off.
+  std::optional<double> grain_tolerance_deg;
 };
 
 struct BatchInstance {

@@ -120,6 +120,21 @@ NestItem item(const json& j, const std::string& source) {
     if (!j["marks"].is_array()) fail(where, "\"marks\" must be a list");
     for (const json& m : j["marks"]) it.marks.push_back(mark(m, where + " mark"));
   }
+  if (j.contains("quality_regions")) {
+    if (!j["quality_regions"].is_array()) fail(where, "\"quality_regions\" must be a list");
+    for (const json& r : j["quality_regions"]) {
+      QualityRegion region;
+      region.min_quality = integer(field(r, "min_quality", where + " quality region"), where + " quality region min_quality");
+      region.shape = shape(field(r, "shape", where + " quality region"), where + " quality region shape").outer;
+      make_counter_clockwise(region.shape);
+      it.quality_regions.push_back(std::move(region));
+    }
+  }
+  if (j.contains("pair_group")) {
+    if (!j["pair_group"].is_string()) fail(where, "\"pair_group\" must be text");
+    it.pair_group = j["pair_group"].get<std::string>();
+  }
+  if (j.contains("priority")) it.priority = integer(j["priority"], where + " priority");
   return it;
 }
 
@@ -152,6 +167,11 @@ Bin bin(const json& j, const std::string& source) {
   if (j.contains("stock")) b.stock = integer(j["stock"], where + " stock");
   if (b.stock < 0) fail(where, "stock is negative");
   if (j.contains("cost")) b.cost = number(j["cost"], where + " cost");
+  if (j.contains("name") && !j["name"].is_null()) {
+    if (!j["name"].is_string()) fail(where, "\"name\" must be text");
+    b.name = j["name"].get<std::string>();
+  }
+  if (j.contains("backbone_deg") && !j["backbone_deg"].is_null()) b.backbone_deg = number(j["backbone_deg"], where + " backbone_deg");
   return b;
 }
 
@@ -175,6 +195,13 @@ json item_json(const NestItem& it) {
   for (const ItemMark& m : it.marks)
     marks.push_back({{"name", m.name}, {"from", {m.from_mm.x(), m.from_mm.y()}}, {"to", {m.to_mm.x(), m.to_mm.y()}}});
   j["marks"] = marks;
+  if (!it.quality_regions.empty()) {
+    json regions = json::array();
+    for (const QualityRegion& r : it.quality_regions) regions.push_back({{"min_quality", r.min_quality}, {"shape", ring_json(r.shape)}});
+    j["quality_regions"] = regions;
+  }
+  if (!it.pair_group.empty()) j["pair_group"] = it.pair_group;
+  if (it.priority != 0) j["priority"] = it.priority;
   return j;
 }
 
@@ -182,7 +209,10 @@ json bin_json(const Bin& b) {
   json holes = json::array(), zones = json::array();
   for (const Polygon2& h : b.holes) holes.push_back(ring_json(h));
   for (const QualityZone& z : b.zones) zones.push_back({{"quality", z.quality}, {"shape", ring_json(z.shape)}});
-  return {{"id", b.id}, {"outer", ring_json(b.outer)}, {"holes", holes}, {"zones", zones}, {"stock", b.stock}, {"cost", b.cost}};
+  json j = {{"id", b.id}, {"outer", ring_json(b.outer)}, {"holes", holes}, {"zones", zones}, {"stock", b.stock}, {"cost", b.cost}};
+  if (!b.name.empty()) j["name"] = b.name;
+  if (b.backbone_deg) j["backbone_deg"] = *b.backbone_deg;
+  return j;
 }
 
 double optional_number(const json& j, const char* key, const std::string& where) {
@@ -208,7 +238,9 @@ NestInstance instance_from_json(const json& j, const std::string& source) {
   if (instance.strip_height && !instance.bins.empty()) fail(source, "both \"strip_height\" and \"bins\": choose a strip or hides");
   instance.gap_mm = optional_number(j, "gap_mm", source);
   instance.margin_mm = optional_number(j, "margin_mm", source);
+  instance.pair_distance_mm = optional_number(j, "pair_distance_mm", source);
   if (instance.gap_mm < 0 || instance.margin_mm < 0) fail(source, "gap and margin must not be negative");
+  if (instance.pair_distance_mm < 0) fail(source, "pair_distance_mm must not be negative");
   check_unique_ids(instance, source);
   return instance;
 }
@@ -250,6 +282,7 @@ std::vector<NestItem> items_from_json(const json& j, const std::string& source) 
 
 json instance_to_json(const NestInstance& instance) {
   json j = {{"name", instance.name}, {"gap_mm", instance.gap_mm}, {"margin_mm", instance.margin_mm}};
+  if (instance.pair_distance_mm > 0) j["pair_distance_mm"] = instance.pair_distance_mm;
   j["items"] = items_to_json(instance.items).at("items");
   if (instance.strip_height) {
     j["strip_height"] = *instance.strip_height;

@@ -234,6 +234,9 @@ TEST(DaemonConfig, HideMaterialsAndTheHidesFolder) {
   EXPECT_EQ(leather.cutter, "a");
   EXPECT_FALSE(leather.pairs_same_hide);
   EXPECT_EQ(leather.min_quality, 2);
+  EXPECT_EQ(leather.toe_min_quality, 0) << "the toe rule is off unless asked for";
+  EXPECT_DOUBLE_EQ(leather.toe_fraction, 0.4);
+  EXPECT_DOUBLE_EQ(leather.grain_tolerance_deg, 0);
   EXPECT_EQ(result.config->materials.at("calf").kind, MaterialKind::Strip);
   EXPECT_EQ(result.config->paths.hides_dir.filename(), "hides");
   EXPECT_TRUE(result.config->paths.hides_dir.is_absolute());
@@ -263,6 +266,20 @@ TEST(DaemonConfig, HideMaterialsAndTheHidesFolder) {
   std::string same_folder = text;
   same_folder.replace(same_folder.find("hides = \"hides\""), 15, "hides = \"in\"");
   refused(same_folder, "paths.hides: must be a folder of its own");
+  std::string leather_rules = text;
+  leather_rules.replace(leather_rules.find("min_quality = 2\n"), 16,
+                        "min_quality = 2\ntoe_min_quality = 3\ntoe_fraction = 0.3\ngrain_tolerance_deg = 15\n");
+  const auto with_rules = load_text(leather_rules);
+  ASSERT_TRUE(with_rules.config) << with_rules.error;
+  EXPECT_EQ(with_rules.config->materials.at("leather").toe_min_quality, 3);
+  EXPECT_DOUBLE_EQ(with_rules.config->materials.at("leather").toe_fraction, 0.3);
+  EXPECT_DOUBLE_EQ(with_rules.config->materials.at("leather").grain_tolerance_deg, 15);
+  std::string bad_grain = text;
+  bad_grain.replace(bad_grain.find("min_quality = 2\n"), 16, "min_quality = 2\ngrain_tolerance_deg = 120\n");
+  refused(bad_grain, "materials.leather.grain_tolerance_deg");
+  std::string strip_toe = text;
+  strip_toe.replace(strip_toe.find("length_mm = 900\n"), 16, "length_mm = 900\ntoe_min_quality = 3\n");
+  refused(strip_toe, "materials.calf.toe_min_quality (line");
 }
 
 }  // namespace

@@ -80,13 +80,18 @@ bool all_computed(const DaemonRig& rig, const std::vector<std::string>& scans) {
   return computed == static_cast<int>(scans.size());
 }
 
-// A hide DXF: a w x h rectangle, a 20 x 20 mm hole and (optionally) a 40 x 40 mm grade-1 zone in
-// its right 70 mm, beside the room the pieces need.
-void write_hide_dxf(const std::filesystem::path& file, double w, double h, bool zone) {
-  DxfDocument dxf(DxfVersion::R12, {{"HIDE", 7}, {"HOLE", 1}, {"ZONE_1", 3}});
+// A hide DXF: a w x h rectangle, a 20 x 20 mm hole and (optionally) a 40 x 40 mm grade-1 zone, a
+// 40 x 40 mm grade-2 zone (good enough for a piece, not for its toe) and a backbone along x, in its
+// right 70 mm, beside the room the pieces need.
+void write_hide_dxf(const std::filesystem::path& file, double w, double h, bool zones) {
+  DxfDocument dxf(DxfVersion::R12, {{"HIDE", 7}, {"HOLE", 1}, {"ZONE_1", 3}, {"ZONE_2", 4}, {"BACKBONE", 5}});
   dxf.polyline("HIDE", rectangle(0, 0, w, h), true);
   dxf.polyline("HOLE", rectangle(w - 45, h / 2 - 10, w - 25, h / 2 + 10), true);
-  if (zone) dxf.polyline("ZONE_1", rectangle(w - 60, 10, w - 20, 50), true);
+  if (zones) {
+    dxf.polyline("ZONE_1", rectangle(w - 60, 10, w - 20, 50), true);
+    dxf.polyline("ZONE_2", rectangle(w - 60, h - 50, w - 20, h - 10), true);
+    dxf.polyline("BACKBONE", {{10, h / 2}, {w - 10, h / 2}}, false);
+  }
   write_text(file, dxf.str());
 }
 
@@ -110,9 +115,17 @@ std::size_t check_written_layout(const DaemonRig& rig, const std::string& batch_
   const Layout layout = layout_from_json(json);
   const auto problems = check_layout(layout, instance);
   EXPECT_TRUE(problems.empty()) << batch_id << ": " << problems.front();
-  for (const NestItem& item : instance.items) EXPECT_EQ(item.min_quality, 2) << "the material's min_quality";
   EXPECT_EQ(instance.bins.size(), 1u);
-  EXPECT_EQ(instance.bins[0].zones.size(), zones) << "the low-grade zone is checked";
+  const bool backbone = instance.bins[0].backbone_deg.has_value();
+  for (const NestItem& item : instance.items) {
+    EXPECT_EQ(item.min_quality, 2) << "the material's min_quality";
+    ASSERT_EQ(item.quality_regions.size(), 1u) << "the toe region of every mold";
+    EXPECT_EQ(item.quality_regions[0].min_quality, 3) << "the material's toe_min_quality";
+    // Grain only where the hide has a backbone; the checker measures it against the backbone.
+    EXPECT_EQ(item.grain_deg.has_value(), backbone);
+    if (backbone) EXPECT_EQ(item.grain_tolerance_deg, 10);
+  }
+  EXPECT_EQ(instance.bins[0].zones.size(), zones) << "the low-grade zones are checked";
   EXPECT_EQ(instance.bins[0].holes.size(), 1u) << "the hole is checked";
   return layout.placements.size();
 }
@@ -123,7 +136,8 @@ TEST(DaemonHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
   options.sim_faults = {{"cutter-2", "stall-at-line=20"}};  // the hide's cut hangs: lastcutd is killed meanwhile
   options.extra_paths = "hides = \"hides\"\n";
   options.extra_config = "[materials.leather]\nkind = \"hide\"\ncutter = \"cutter-1\"\npairs = \"same_hide\"\n"
-                         "min_quality = 2\nspacing_mm = 3\nrotation_step_deg = 90\n";
+                         "min_quality = 2\ntoe_min_quality = 3\ngrain_tolerance_deg = 10\nspacing_mm = 3\n"
+                         "rotation_step_deg = 90\n";
   DaemonRig rig("hides-e2e", options);
   const auto hides = rig.root() / "hides";
   const auto staging = rig.root() / "staging";
@@ -222,7 +236,7 @@ TEST(DaemonHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
     EXPECT_EQ(count_occurrences(on_cutter_1, cut), 1) << file;
     EXPECT_EQ(count_occurrences(on_cutter_2, cut), 0) << file;
     EXPECT_EQ(batch.value("cutter", ""), "cutter-1");
-    EXPECT_EQ(static_cast<int>(check_written_layout(rig, id, std::string(file) == "hide-1.dxf" ? 1 : 0)),
+    EXPECT_EQ(static_cast<int>(check_written_layout(rig, id, std::string(file) == "hide-1.dxf" ? 2 : 0)),
               batch.value("pieces", -1))
         << file;
     const auto report = read_json_file(rig.spool() / "batches" / id / "hide-report.json");
@@ -234,6 +248,11 @@ TEST(DaemonHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
     for (const auto& job : batch["jobs"]) batch_of_job[job.get<std::string>()] = id;
   }
   EXPECT_EQ(hide_batch(rig, "hide-1.dxf")["hide"].value("id", ""), "CALF-0001");
+  EXPECT_TRUE(instance_from_layout_json(read_json_file(rig.spool() / "batches" / hide_batch(rig, "hide-1.dxf").value("id", "") /
+                                                       "layout.json"))
+                  .bins[0]
+                  .backbone_deg.has_value())
+      << "hide-1's backbone reaches the layout, so the grain is checked";
   EXPECT_EQ(read_json_file(rig.spool() / "batches" / batch_k / "hide-report.json").value("thickness_mm", 0.0), 1.2);
   EXPECT_EQ(hide_batch(rig, "hide-2.json")["hide"].value("id", ""), "hide-2");
 

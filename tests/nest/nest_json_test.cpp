@@ -99,6 +99,32 @@ void expect_refused(const std::string& text, const std::string& words) {
   }
 }
 
+TEST(NestJson, HideFieldsSurviveTheLayoutFile) {
+  NestInstance instance = test::small_hide();
+  instance.items[0].quality_regions.push_back({Polygon2{{{0, 0}, {10, 0}, {10, 5}}}, 3});
+  instance.items[0].pair_group = "order 12";
+  instance.items[1].pair_group = "order 12";
+  instance.items[1].priority = 4;
+  instance.bins[0].name = "H-0815";
+  instance.bins[0].backbone_deg = 12.5;
+  instance.pair_distance_mm = 250;
+  Layout layout;
+  layout.instance = instance.name;
+  const NestInstance embedded = instance_from_layout_json(nlohmann::json::parse(layout_to_json(layout, instance).dump()));
+  ASSERT_EQ(embedded.items[0].quality_regions.size(), 1u);
+  EXPECT_EQ(embedded.items[0].quality_regions[0].min_quality, 3);
+  EXPECT_EQ(embedded.items[0].quality_regions[0].shape.points[2], Point2(10, 5));
+  EXPECT_EQ(embedded.items[1].pair_group, "order 12");
+  EXPECT_EQ(embedded.items[1].priority, 4);
+  EXPECT_EQ(embedded.items[0].priority, 0);
+  EXPECT_EQ(embedded.bins[0].name, "H-0815");
+  ASSERT_TRUE(embedded.bins[0].backbone_deg.has_value());
+  EXPECT_DOUBLE_EQ(*embedded.bins[0].backbone_deg, 12.5);
+  EXPECT_DOUBLE_EQ(embedded.pair_distance_mm, 250);
+  expect_refused(R"({"strip_height": 10, "items": [{"id": 0, "pair_group": 7, "shape": [[0,0],[1,0],[0,1]]}]})", "pair_group");
+  expect_refused(R"({"strip_height": 10, "items": [{"id": 0, "quality_regions": [{"shape": [[0,0],[1,0],[0,1]]}], "shape": [[0,0],[1,0],[0,1]]}]})", "min_quality");
+}
+
 TEST(NestJson, RefusesBadInstances) {
   expect_refused(R"({"items": []})", "neither");
   expect_refused(R"({"strip_height": 10, "items": [{"id": 0, "shape": [[0,0],[1,0]]}]})", "at least 3");
