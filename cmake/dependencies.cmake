@@ -15,6 +15,8 @@ pkg_check_modules(MODBUS REQUIRED IMPORTED_TARGET libmodbus)
 pkg_check_modules(SERIALPORT REQUIRED IMPORTED_TARGET libserialport)
 pkg_check_modules(POLYCLIPPING REQUIRED IMPORTED_TARGET polyclipping)
 pkg_check_modules(SYSTEMD REQUIRED IMPORTED_TARGET libsystemd)
+# The multi-station job ledger (daemon/ledger) talks to PostgreSQL through libpqxx.
+pkg_check_modules(PQXX REQUIRED IMPORTED_TARGET libpqxx)
 
 # CHOLMOD (SuiteSparse) ships no CMake config in bookworm: find it by hand.
 find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)

@@ -12,6 +12,8 @@ DEBIAN_PACKAGES=(
   libeigen3-dev libopenmesh-dev libsuitesparse-dev libpolyclipping-dev nlohmann-json3-dev
   # drivers, daemon, command line
   libserialport-dev libmodbus-dev libspdlog-dev libfmt-dev libtomlplusplus-dev libcli11-dev libsystemd-dev
+  # the multi-station job ledger (daemon/ledger) and the PostgreSQL server its tests start themselves
+  libpqxx-dev postgresql
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # independent interpreters and tools the tests run against our output
