@@ -5,7 +5,7 @@
 //   lastcutd --config /etc/lastcut/lastcut.toml      run (under systemd: Type=notify)
 //   lastcutd --check-config FILE                      validate a configuration and exit
 //
-// Exit codes: 0 clean stop, 1 start failed, 78 (EX_CONFIG) bad configuration.
+// Exit codes: 0 clean stop, 1 start failed (--check-config: [ledger] unusable), 78 (EX_CONFIG) bad configuration.
 #include <poll.h>
 
 #include <chrono>
@@ -17,6 +17,7 @@
 #include <spdlog/spdlog.h>
 
 #include "daemon/config/config_loader.hpp"
+#include "daemon/ledger/ledger_check.hpp"
 #include "daemon/pipeline/pipeline.hpp"
 #include "daemon/service/operator_log.hpp"
 #include "daemon/service/signal_events.hpp"
@@ -36,6 +37,14 @@ int check_config(const std::string& file) {
   std::printf("%s: valid; watch %s, spool %s, %zu material(s), %zu cutter(s)\n", file.c_str(),
               config.paths.watch_dir.c_str(), config.paths.spool_dir.c_str(), config.materials.size(),
               config.cutters.size());
+  if (config.ledger) {
+    const auto ledger = lastcut::ledger::check_ledger(config.ledger->url, config.ledger->node);
+    if (!ledger) {
+      std::fprintf(stderr, "%s\n", ledger.error().c_str());
+      return 1;
+    }
+    std::printf("%s\n", ledger->c_str());
+  }
   return 0;
 }
 
