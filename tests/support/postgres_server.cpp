@@ -134,7 +134,8 @@ std::string PostgresServer::start() {
     // A restart keeps its port (clients reconnect to the same URL) unless someone took it.
     if (port_ == 0 || attempt > 0) port_ = free_port();
     const std::string options = "-p " + std::to_string(port_) + " -k " + folder_.string() +
-                                " -c listen_addresses=127.0.0.1 -c fsync=off -c max_connections=60";
+                                " -c listen_addresses=127.0.0.1 -c max_connections=60" +
+                                (durable_ ? "" : " -c fsync=off -c synchronous_commit=off");
     last_failure = run({(bin / "pg_ctl").string(), "-D", (folder_ / "data").string(), "-l",
                         (folder_ / "server.log").string(), "-w", "-t", "60", "-o", options, "start"});
     if (last_failure.empty()) {
