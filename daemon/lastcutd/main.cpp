@@ -69,6 +69,14 @@ int run(const std::string& file) {
     std::fprintf(stderr, "lastcutd: configuration refused:\n%s\n", loaded.error.c_str());
     return kExitConfig;
   }
+  if (loaded.config->ledger) {
+    // The ledger's client and schema exist (--check-config uses them), but the pipeline still
+    // claims from the file spool only: running it beside a shared ledger would let two stations
+    // nest the same scan. Refused rather than half-applied (docs/multi-station.md).
+    std::fprintf(stderr, "lastcutd: configuration refused: %s: [ledger] is not run by this lastcutd yet (the pipeline "
+                 "works on the file spool only); remove [ledger] to run this node on its own spool\n", file.c_str());
+    return kExitConfig;
+  }
   lastcut::daemon::setup_operator_log(loaded.config->log.level);
   spdlog::info("lastcutd starting with {}", file);
   lastcut::daemon::SystemdNotifier notifier;

@@ -15,6 +15,7 @@
 // connection is re-opened by the next call (unreachable() tells such failures apart).
 #include <memory>
 #include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -81,6 +82,20 @@ struct JobRow {
   int attempts = 0;
 };
 
+struct LedgerOverview {
+  struct Node {
+    std::string name, roles;  // roles "compute,station"
+    double heartbeat_age_s = 0;
+  };
+  struct Cutter {
+    std::string name, station;
+    long long queued_batches = 0;
+  };
+  std::vector<std::pair<std::string, long long>> jobs_per_state;  // by state name; states without jobs absent
+  std::vector<Node> nodes;
+  std::vector<Cutter> cutters;
+};
+
 class LedgerClient {
  public:
   // Opens a connection to `url` (libpq URL or key=value string) as node `node`.
@@ -122,11 +137,12 @@ class LedgerClient {
 
   Result<SweepOutcome> sweep_expired(int max_attempts);
 
-  // The operator's `lastcut requeue`: a held job goes back to the queue (ready), with a new
-  // attempt count. Fails with the reason for a job that is not held.
+  // The operator's `lastcut requeue`: a held or failed job goes back to the queue (ready), with
+  // a new attempt count. Fails with the reason for a job in any other state.
   Status requeue_held(long long job_id);
-  // The newest `limit` jobs, for `lastcut status`.
-  Result<std::vector<JobRow>> recent_jobs(int limit);
+  Result<LedgerOverview> overview();
+  // The newest `limit` jobs (of one state when `state` is not empty), for `lastcut status`.
+  Result<std::vector<JobRow>> recent_jobs(int limit, const std::string& state = "");
 
  private:
   LedgerClient(std::string url, std::string node);

@@ -185,27 +185,29 @@ Status LedgerClient::requeue_held(long long job_id) {
            const pqxx::result row = tx.exec_params("SELECT state FROM jobs WHERE id = $1 FOR UPDATE", job_id);
            if (row.empty()) return Status::failure("no " + what + " in the ledger");
            const std::string state = row[0][0].as<std::string>();
-           if (state != "held") return Status::failure(what + " is " + state + ", not held: nothing to requeue");
+           if (state != "held" && state != "failed") {
+             return Status::failure(what + " is " + state + ", neither held nor failed: nothing to requeue");
+           }
            // Computed again from its scan: the molds of an interrupted batch are not trusted blindly.
            tx.exec_params(
                "UPDATE jobs SET state = 'ready', batch_id = NULL, attempts = 0, reason = NULL, updated_at = now()"
                " WHERE id = $1",
                job_id);
-           add_event(tx, job_id, node_, "requeued", "by the operator");
+           add_event(tx, job_id, node_, "requeued", "by the operator (was " + state + ")");
            return true;
          })
       .status();
 }
 
-Result<std::vector<JobRow>> LedgerClient::recent_jobs(int limit) {
+Result<std::vector<JobRow>> LedgerClient::recent_jobs(int limit, const std::string& state) {
   using Rows = std::vector<JobRow>;
   return transact<Rows>("listing jobs", [&](pqxx::work& tx) -> Result<Rows> {
     const pqxx::result found = tx.exec_params(
         "SELECT j.id, j.scan_name, j.state, j.cutter, j.material, j.origin, coalesce(j.reason, ''),"
         " coalesce(l.holder, ''), coalesce(j.batch_id, 0), j.attempts"
         " FROM jobs j LEFT JOIN leases l ON l.kind = 'job' AND l.object_id = j.id"
-        " ORDER BY j.id DESC LIMIT $1",
-        limit);
+        " WHERE $2 = '' OR j.state = $2 ORDER BY j.id DESC LIMIT $1",
+        limit, state);
     Rows rows;
     for (const pqxx::row& r : found) {
       rows.push_back({r[0].as<long long>(), r[1].as<std::string>(), r[2].as<std::string>(), r[3].as<std::string>(),

@@ -106,7 +106,7 @@ TEST_F(EnqueueClaimTest, OperatorRequeuesOnlyHeldJobs) {
   ASSERT_TRUE(entered.ok());
   Status refused = a->requeue_held(entered->job_id);
   ASSERT_FALSE(refused.ok());
-  EXPECT_EQ(refused.error(), "job " + std::to_string(entered->job_id) + " is ready, not held: nothing to requeue");
+  EXPECT_EQ(refused.error(), "job " + std::to_string(entered->job_id) + " is ready, neither held nor failed: nothing to requeue");
   Status missing = a->requeue_held(999);
   EXPECT_EQ(missing.error(), "no job 999 in the ledger");
 }
