@@ -11,8 +11,9 @@
 //    was claimed again gets "lease lost" and must drop the work;
 //  - sweep_expired() (any node runs it) hands expired job leases back to the queue; a batch whose
 //    station vanished while `sending` is `held` for an operator, never queued again (at most once).
-// Not thread-safe: one client per thread. No method throws; failures are one line. A lost
-// connection is re-opened by the next call (unreachable() tells such failures apart).
+// Not thread-safe: one client per thread. No method throws; failures are one line. A connection
+// found dead is opened again within the call; while the server is down, calls fail with a line
+// starting "ledger unreachable" (unreachable() tells such failures apart).
 #include <memory>
 #include <optional>
 #include <utility>

@@ -28,6 +28,10 @@ std::string redact_url(const std::string& url) {
   return url.substr(0, colon + 1) + "***" + url.substr(at);
 }
 
+bool connection_lost(const std::string& sqlstate) {
+  return sqlstate.rfind("08", 0) == 0 || sqlstate.rfind("57P", 0) == 0;
+}
+
 bool unreachable(const Status& status) { return status.error().rfind("ledger unreachable", 0) == 0; }
 
 }  // namespace lastcut::ledger

@@ -10,18 +10,27 @@
 
 namespace lastcut::ledger {
 
+// A connection found dead (the server restarted since the last call) is opened again and the
+// transaction run once more: nothing of it was committed (a commit whose outcome is unknown is
+// pqxx::in_doubt_error, never retried).
 template <typename T, typename Body>
 Result<T> LedgerClient::transact(const std::string& doing, Body body) {
   return guarded<T>(doing, [&]() -> Result<T> {
-    if (Status opened = open(); !opened) return opened;
-    try {
-      pqxx::work tx(*connection_);
-      Result<T> result = body(tx);
-      if (result) tx.commit();
-      return result;
-    } catch (const pqxx::broken_connection&) {
-      connection_.reset();  // the next call connects again
-      throw;
+    for (int attempt = 1;; ++attempt) {
+      if (Status opened = open(); !opened) return opened;
+      try {
+        pqxx::work tx(*connection_);
+        Result<T> result = body(tx);
+        if (result) tx.commit();
+        return result;
+      } catch (const pqxx::broken_connection&) {
+        connection_.reset();
+        if (attempt == 2) throw;
+      } catch (const pqxx::sql_error& e) {
+        if (!connection_lost(e.sqlstate())) throw;
+        connection_.reset();
+        if (attempt == 2) throw;
+      }
     }
   });
 }
