@@ -17,6 +17,8 @@ pkg_check_modules(POLYCLIPPING REQUIRED IMPORTED_TARGET polyclipping)
 pkg_check_modules(SYSTEMD REQUIRED IMPORTED_TARGET libsystemd)
 # Live status over MQTT (daemon/status); the tests start the mosquitto broker itself.
 pkg_check_modules(MOSQUITTO REQUIRED IMPORTED_TARGET libmosquitto)
+# The multi-station job ledger (daemon/ledger) talks to PostgreSQL through libpqxx.
+pkg_check_modules(PQXX REQUIRED IMPORTED_TARGET libpqxx)
 
 # CHOLMOD (SuiteSparse) ships no CMake config in bookworm: find it by hand.
 find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)

@@ -14,6 +14,8 @@ DEBIAN_PACKAGES=(
   libserialport-dev libmodbus-dev libspdlog-dev libfmt-dev libtomlplusplus-dev libcli11-dev libsystemd-dev
   # live status over MQTT (the tests start the mosquitto broker themselves)
   libmosquitto-dev mosquitto
+  # the multi-station job ledger (daemon/ledger) and the PostgreSQL server its tests start themselves
+  libpqxx-dev postgresql
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # independent interpreters and tools the tests run against our output

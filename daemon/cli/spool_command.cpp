@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "daemon/cli/commands.hpp"
+#include "daemon/cli/ledger_status.hpp"
 #include "daemon/config/config_loader.hpp"
 #include "daemon/pipeline/engine_steps.hpp"
 #include "daemon/spool/spool.hpp"
@@ -158,6 +159,7 @@ void add_spool_commands(CLI::App& app, int& exit_code) {
   status->add_option("--recent", recent_count, "how many recent jobs to list");
   status->add_flag("--json", as_json, "print JSON instead of text");
   status->callback([&exit_code] {
+    if (ledger_status(config_file, spool_dir, recent_count, as_json, exit_code)) return;
     const Result<std::string> found = spool_from(config_file, spool_dir);
     if (!found) {
       std::fprintf(stderr, "lastcut status: %s\n", found.error().c_str());
@@ -179,6 +181,7 @@ void add_spool_commands(CLI::App& app, int& exit_code) {
   requeue_command->add_option("--spool", spool_dir, "spool folder (instead of reading the configuration)");
   requeue_command->add_flag("--again", again, "also requeue a job that was already cut (cut it once more)");
   requeue_command->callback([&exit_code] {
+    if (ledger_requeue(config_file, spool_dir, job_id, exit_code)) return;
     const Result<std::string> found = spool_from(config_file, spool_dir);
     if (!found) {
       std::fprintf(stderr, "lastcut requeue: %s\n", found.error().c_str());

@@ -3,6 +3,8 @@
 // with its path and line (a typo must not silently fall back to a default).
 #include "daemon/config/config_loader.hpp"
 
+#include "daemon/config/ledger_config_reader.hpp"
+
 #include <optional>
 #include <set>
 #include <sstream>
@@ -470,6 +472,7 @@ ConfigLoadResult load_daemon_config(const std::filesystem::path& file) {
     read_review(reader, config, errors);
     read_log(reader, config, errors);
     read_status(reader, base, config, errors);
+    if (const toml::table* ledger = reader.subtable("ledger", false)) read_ledger_table(*ledger, base, config.ledger, errors);
     reader.reject_unknown();
   }
   cross_check(config, errors);

@@ -3,9 +3,11 @@
 // every key). Plain values, already validated by load_daemon_config(); units are in the names.
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "daemon/config/ledger_config.hpp"
 #include "drivers/cutter_settings.hpp"
 
 namespace lastcut::daemon {
@@ -116,6 +118,7 @@ struct DaemonConfig {
   ReviewConfig review;
   LogConfig log;
   StatusConfig status;
+  std::optional<LedgerConfig> ledger;  // [ledger]: several nodes share one PostgreSQL job ledger
 };
 
 std::string to_string(DuplicatePolicy policy);

@@ -5,7 +5,7 @@
 //   lastcutd --config /etc/lastcut/lastcut.toml      run (under systemd: Type=notify)
 //   lastcutd --check-config FILE                      validate a configuration and exit
 //
-// Exit codes: 0 clean stop, 1 start failed, 78 (EX_CONFIG) bad configuration.
+// Exit codes: 0 clean stop, 1 start failed (--check-config: [ledger] unusable), 78 (EX_CONFIG) bad configuration.
 #include <poll.h>
 
 #include <chrono>
@@ -19,6 +19,7 @@
 #include <spdlog/spdlog.h>
 
 #include "daemon/config/config_loader.hpp"
+#include "daemon/ledger/ledger_check.hpp"
 #include "daemon/pipeline/pipeline.hpp"
 #include "daemon/service/operator_log.hpp"
 #include "daemon/service/signal_events.hpp"
@@ -46,6 +47,14 @@ int check_config(const std::string& file) {
     const std::string answer =
         reached ? "reachable, station " + config.status.station : "NOT reachable: " + reached.error();
     std::printf("status: MQTT broker %s %s\n", config.status.mqtt_url.c_str(), answer.c_str());
+  }
+  if (config.ledger) {
+    const auto ledger = lastcut::ledger::check_ledger(config.ledger->url, config.ledger->node);
+    if (!ledger) {
+      std::fprintf(stderr, "%s\n", ledger.error().c_str());
+      return 1;
+    }
+    std::printf("%s\n", ledger->c_str());
   }
   return 0;
 }
@@ -78,6 +87,14 @@ int run(const std::string& file) {
   const auto loaded = lastcut::daemon::load_daemon_config(file);
   if (!loaded.config) {
     std::fprintf(stderr, "lastcutd: configuration refused:\n%s\n", loaded.error.c_str());
+    return kExitConfig;
+  }
+  if (loaded.config->ledger) {
+    // The ledger's client and schema exist (--check-config uses them), but the pipeline still
+    // claims from the file spool only: running it beside a shared ledger would let two stations
+    // nest the same scan. Refused rather than half-applied (docs/multi-station.md).
+    std::fprintf(stderr, "lastcutd: configuration refused: %s: [ledger] is not run by this lastcutd yet (the pipeline "
+                 "works on the file spool only); remove [ledger] to run this node on its own spool\n", file.c_str());
     return kExitConfig;
   }
   lastcut::daemon::setup_operator_log(loaded.config->log.level);

@@ -1,0 +1,121 @@
+// The batch half of the ledger queue: computed jobs grouped per cutter and material, claimed by
+// the station that owns the cutter, marked sending before the first byte, then cut or held.
+#include <pqxx/pqxx>
+
+#include "daemon/ledger/ledger_transaction.hpp"
+
+namespace lastcut::ledger {
+namespace {
+
+Status batch_in(pqxx::work& tx, long long batch_id, const std::string& expected) {
+  const std::string state =
+      tx.exec_params1("SELECT state FROM batches WHERE id = $1 FOR UPDATE", batch_id)[0].as<std::string>();
+  if (state != expected) {
+    return Status::failure("batch " + std::to_string(batch_id) + " is " + state + ", not " + expected);
+  }
+  return Status::success();
+}
+
+std::vector<long long> jobs_of(pqxx::work& tx, long long batch_id) {
+  std::vector<long long> ids;
+  for (const pqxx::row& r : tx.exec_params("SELECT id FROM jobs WHERE batch_id = $1 ORDER BY id", batch_id)) {
+    ids.push_back(r[0].as<long long>());
+  }
+  return ids;
+}
+
+}  // namespace
+
+Result<std::optional<long long>> LedgerClient::make_batch(int max_jobs) {
+  using Made = std::optional<long long>;
+  return transact<Made>("making a batch", [&](pqxx::work& tx) -> Result<Made> {
+    const pqxx::result oldest = tx.exec(
+        "SELECT cutter, material FROM jobs WHERE state = 'computed' ORDER BY created_at, id LIMIT 1"
+        " FOR UPDATE SKIP LOCKED");
+    if (oldest.empty()) return Made();
+    const std::string cutter = oldest[0][0].as<std::string>();
+    const std::string material = oldest[0][1].as<std::string>();
+    std::vector<long long> ids;
+    for (const pqxx::row& r : tx.exec_params(
+             "SELECT id FROM jobs WHERE state = 'computed' AND cutter = $1 AND material = $2"
+             " ORDER BY created_at, id LIMIT $3 FOR UPDATE SKIP LOCKED",
+             cutter, material, max_jobs)) {
+      ids.push_back(r[0].as<long long>());
+    }
+    const long long batch_id =
+        tx.exec_params1(
+              "INSERT INTO batches (cutter, material, state, created_by) VALUES ($1, $2, 'queued', $3) RETURNING id",
+              cutter, material, node_)[0]
+            .as<long long>();
+    tx.exec_params("UPDATE jobs SET state = 'batched', batch_id = $1, updated_at = now() WHERE id = ANY($2::bigint[])",
+                   batch_id, id_array(ids));
+    for (long long id : ids) add_event(tx, id, node_, "batched", "batch " + std::to_string(batch_id) + " for " + cutter);
+    return Made(batch_id);
+  });
+}
+
+Result<std::optional<BatchClaim>> LedgerClient::claim_batch(double lease_s) {
+  using Claim = std::optional<BatchClaim>;
+  return transact<Claim>("claiming a batch", [&](pqxx::work& tx) -> Result<Claim> {
+    // Only the station a cutter is cabled to sends to it.
+    const pqxx::result found = tx.exec_params(
+        "SELECT b.id, b.cutter, b.material FROM batches b JOIN cutters c ON c.name = b.cutter"
+        " WHERE b.state = 'queued' AND c.station = $1 ORDER BY b.created_at, b.id LIMIT 1"
+        " FOR UPDATE OF b SKIP LOCKED",
+        node_);
+    if (found.empty()) return Claim();
+    BatchClaim claim;
+    claim.batch_id = found[0][0].as<long long>();
+    claim.cutter = found[0][1].as<std::string>();
+    claim.material = found[0][2].as<std::string>();
+    tx.exec_params("UPDATE batches SET state = 'claimed', updated_at = now() WHERE id = $1", claim.batch_id);
+    claim.lease = {LeaseKind::Batch, claim.batch_id, take_lease(tx, node_, LeaseKind::Batch, claim.batch_id, lease_s)};
+    claim.job_ids = jobs_of(tx, claim.batch_id);
+    return Claim(std::move(claim));
+  });
+}
+
+Status LedgerClient::mark_sending(const Lease& lease) {
+  return transact<bool>("marking batch " + std::to_string(lease.object_id) + " sending",
+                        [&](pqxx::work& tx) -> Result<bool> {
+                          if (Status held = check_lease(tx, node_, lease); !held) return held;
+                          if (Status claimed = batch_in(tx, lease.object_id, "claimed"); !claimed) return claimed;
+                          tx.exec_params("UPDATE batches SET state = 'sending', updated_at = now() WHERE id = $1",
+                                         lease.object_id);
+                          for (long long id : jobs_of(tx, lease.object_id)) add_event(tx, id, node_, "sending");
+                          return true;
+                        })
+      .status();
+}
+
+Status LedgerClient::mark_cut(const Lease& lease) {
+  return transact<bool>("marking batch " + std::to_string(lease.object_id) + " cut",
+                        [&](pqxx::work& tx) -> Result<bool> {
+                          if (Status held = check_lease(tx, node_, lease); !held) return held;
+                          if (Status sending = batch_in(tx, lease.object_id, "sending"); !sending) return sending;
+                          tx.exec_params("UPDATE batches SET state = 'cut', updated_at = now() WHERE id = $1",
+                                         lease.object_id);
+                          tx.exec_params("UPDATE jobs SET state = 'done', updated_at = now() WHERE batch_id = $1",
+                                         lease.object_id);
+                          for (long long id : jobs_of(tx, lease.object_id)) add_event(tx, id, node_, "cut");
+                          release_lease(tx, lease);
+                          return true;
+                        })
+      .status();
+}
+
+Status LedgerClient::hold_batch(const Lease& lease, const std::string& reason) {
+  return transact<bool>("holding batch " + std::to_string(lease.object_id), [&](pqxx::work& tx) -> Result<bool> {
+           if (Status held = check_lease(tx, node_, lease); !held) return held;
+           tx.exec_params("UPDATE batches SET state = 'held', reason = $2, updated_at = now() WHERE id = $1",
+                          lease.object_id, reason);
+           tx.exec_params("UPDATE jobs SET state = 'held', reason = $2, updated_at = now() WHERE batch_id = $1",
+                          lease.object_id, reason);
+           for (long long id : jobs_of(tx, lease.object_id)) add_event(tx, id, node_, "held", reason);
+           release_lease(tx, lease);
+           return true;
+         })
+      .status();
+}
+
+}  // namespace lastcut::ledger

@@ -1,0 +1,162 @@
+#pragma once
+// LedgerClient: one lastcutd node's view of the shared PostgreSQL job ledger (docs/multi-station.md).
+//
+// Queue rules, all enforced inside PostgreSQL so that any number of nodes may call at once:
+//  - a scan enters once: its SHA-256 is unique, enqueue() of known bytes returns the existing job;
+//  - claims take the oldest waiting row with FOR UPDATE SKIP LOCKED (two nodes never get the same
+//    row, and neither waits for the other) and give the claimer a lease: holder = this node,
+//    expires_at = now() + lease_s by the database's clock, epoch = previous epoch + 1;
+//  - every later state change runs in one transaction that first locks the lease row and checks
+//    holder = me AND epoch = mine (fencing): a node back from a long pause whose lease expired and
+//    was claimed again gets "lease lost" and must drop the work;
+//  - sweep_expired() (any node runs it) hands expired job leases back to the queue; a batch whose
+//    station vanished while `sending` is `held` for an operator, never queued again (at most once).
+// Not thread-safe: one client per thread. No method throws; failures are one line. A connection
+// found dead is opened again within the call; while the server is down, calls fail with a line
+// starting "ledger unreachable" (unreachable() tells such failures apart).
+#include <memory>
+#include <optional>
+#include <utility>
+#include <string>
+#include <vector>
+
+#include "daemon/ledger/schema.hpp"
+#include "engine/core/status.hpp"
+
+namespace pqxx {
+class connection_base;  // libpqxx 6: the base of every connection type
+}  // namespace pqxx
+
+namespace lastcut::ledger {
+
+enum class LeaseKind { Job, Batch };
+
+// What fences a claim: the row's epoch when this node claimed it.
+struct Lease {
+  LeaseKind kind = LeaseKind::Job;
+  long long object_id = 0;
+  long long epoch = 0;
+};
+
+// A scan as it enters the ledger (its bytes live in the shared folder under scan_sha256).
+struct ScanEntry {
+  std::string scan_sha256;  // 64 lowercase hex digits
+  std::string scan_name;    // file name as dropped, for the operator
+  std::string ticket;       // the sidecar's text (TOML or JSON), "" for none
+  std::string material;
+  std::string cutter;
+};
+
+struct Enqueued {
+  long long job_id = 0;
+  bool duplicate = false;  // the same bytes were already a job; nothing was added
+  std::string state;       // the job's state now
+  std::string origin;      // the node that first enqueued it
+};
+
+struct JobClaim {
+  long long job_id = 0;
+  ScanEntry scan;
+  int attempts = 0;  // this claim included
+  Lease lease;
+};
+
+struct BatchClaim {
+  long long batch_id = 0;
+  std::string cutter;
+  std::string material;
+  std::vector<long long> job_ids;  // ascending
+  Lease lease;
+};
+
+struct SweepOutcome {
+  std::vector<long long> jobs_requeued;   // lease expired while computing: ready again
+  std::vector<long long> jobs_failed;     // ... for the max_attempts-th time: failed
+  std::vector<long long> batches_requeued;  // claimed, nothing sent yet: queued again
+  std::vector<long long> batches_held;    // expired while sending: held with their jobs
+};
+
+struct JobRow {
+  long long job_id = 0;
+  std::string scan_name, state, cutter, material, origin, reason, holder;  // holder: "" when unclaimed
+  long long batch_id = 0;                                                  // 0: none
+  int attempts = 0;
+};
+
+struct LedgerOverview {
+  struct Node {
+    std::string name, roles;  // roles "compute,station"
+    double heartbeat_age_s = 0;
+  };
+  struct Cutter {
+    std::string name, station;
+    long long queued_batches = 0;
+  };
+  std::vector<std::pair<std::string, long long>> jobs_per_state;  // by state name; states without jobs absent
+  std::vector<Node> nodes;
+  std::vector<Cutter> cutters;
+};
+
+class LedgerClient {
+ public:
+  // Opens a connection to `url` (libpq URL or key=value string) as node `node`.
+  static Result<std::unique_ptr<LedgerClient>> connect(const std::string& url, const std::string& node);
+  ~LedgerClient();
+  LedgerClient(const LedgerClient&) = delete;
+  LedgerClient& operator=(const LedgerClient&) = delete;
+
+  const std::string& node() const { return node_; }
+
+  Result<MigrationOutcome> migrate();
+  Result<int> schema_version();
+
+  // Announces this node and the cutters cabled to it, and recovers what an earlier run of this
+  // node left: its jobs in computation go back to the queue, its claimed batches are queued
+  // again (failed at max_attempts, as in sweep_expired), its batches in `sending` are held (the
+  // cutter may have cut part of them). Refuses a cutter cabled to another running station.
+  Result<SweepOutcome> register_node(const std::vector<std::string>& roles, const std::vector<std::string>& cutters,
+                                     int max_attempts);
+  Status heartbeat();
+
+  Result<Enqueued> enqueue(const ScanEntry& scan);
+  // The oldest ready job, now `computing` under a lease of lease_s; nullopt when none waits.
+  Result<std::optional<JobClaim>> claim_job(double lease_s);
+  // Extends a lease by lease_s from now; "lease lost ..." when another node holds it now.
+  Status renew(const Lease& lease, double lease_s);
+  Status mark_computed(const Lease& lease);
+  Status mark_failed(const Lease& lease, const std::string& reason);
+
+  // Groups up to max_jobs computed jobs of one cutter and material into a queued batch (the
+  // oldest computed job decides which); nullopt when no job is computed.
+  Result<std::optional<long long>> make_batch(int max_jobs);
+  // The oldest queued batch of a cutter this node owns, now `claimed`.
+  Result<std::optional<BatchClaim>> claim_batch(double lease_s);
+  // Before the first byte goes to the cutter: from here the batch ends cut or held.
+  Status mark_sending(const Lease& lease);
+  Status mark_cut(const Lease& lease);
+  Status hold_batch(const Lease& lease, const std::string& reason);
+
+  Result<SweepOutcome> sweep_expired(int max_attempts);
+
+  // The operator's `lastcut requeue`: a held or failed job goes back to the queue (ready), with
+  // a new attempt count. Fails with the reason for a job in any other state.
+  Status requeue_held(long long job_id);
+  Result<LedgerOverview> overview();
+  // The newest `limit` jobs (of one state when `state` is not empty), for `lastcut status`.
+  Result<std::vector<JobRow>> recent_jobs(int limit, const std::string& state = "");
+
+ private:
+  LedgerClient(std::string url, std::string node);
+  Status open();
+  // Runs `body` in one transaction on a live connection (re-opened if lost); commits when it succeeds.
+  template <typename T, typename Body>
+  Result<T> transact(const std::string& doing, Body body);
+
+  std::string url_;
+  std::string node_;
+  std::unique_ptr<pqxx::connection_base> connection_;
+};
+
+std::string to_string(LeaseKind kind);
+
+}  // namespace lastcut::ledger

@@ -1,0 +1,221 @@
+// The ledger client: connecting, node registration, and the job half of the queue (enqueue,
+// claim, renew, computed/failed, the operator's requeue, the status listing).
+#include <pqxx/pqxx>
+
+#include "daemon/ledger/ledger_transaction.hpp"
+
+namespace lastcut::ledger {
+
+std::string to_string(LeaseKind kind) { return kind == LeaseKind::Job ? "job" : "batch"; }
+
+std::string id_array(const std::vector<long long>& ids) {
+  std::string out = "{";
+  for (std::size_t i = 0; i < ids.size(); ++i) out += (i ? "," : "") + std::to_string(ids[i]);
+  return out + "}";
+}
+
+Status check_lease(pqxx::work& tx, const std::string& node, const Lease& lease) {
+  const std::string what = to_string(lease.kind) + " " + std::to_string(lease.object_id);
+  const pqxx::result row = tx.exec_params(
+      "SELECT holder, epoch FROM leases WHERE kind = $1 AND object_id = $2 FOR UPDATE", to_string(lease.kind),
+      lease.object_id);
+  if (row.empty()) return Status::failure("lease lost: " + what + " was never claimed");
+  const long long epoch = row[0][1].as<long long>();
+  if (row[0][0].is_null()) {
+    return Status::failure("lease lost: " + what + " went back to the queue after this node's lease expired");
+  }
+  const std::string holder = row[0][0].as<std::string>();
+  if (holder != node || epoch != lease.epoch) {
+    return Status::failure("lease lost: " + what + " is now held by " + holder + " (epoch " + std::to_string(epoch) +
+                           ", this node's claim was epoch " + std::to_string(lease.epoch) + ")");
+  }
+  return Status::success();
+}
+
+long long take_lease(pqxx::work& tx, const std::string& node, LeaseKind kind, long long object_id, double lease_s) {
+  return tx
+      .exec_params1(
+          "INSERT INTO leases (kind, object_id, holder, epoch, expires_at)"
+          " VALUES ($1, $2, $3, 1, now() + make_interval(secs => $4))"
+          " ON CONFLICT (kind, object_id) DO UPDATE"
+          " SET holder = EXCLUDED.holder, epoch = leases.epoch + 1, expires_at = EXCLUDED.expires_at"
+          " RETURNING epoch",
+          to_string(kind), object_id, node, lease_s)[0]
+      .as<long long>();
+}
+
+void release_lease(pqxx::work& tx, const Lease& lease) {
+  tx.exec_params("UPDATE leases SET holder = NULL, expires_at = NULL WHERE kind = $1 AND object_id = $2",
+                 to_string(lease.kind), lease.object_id);
+}
+
+void add_event(pqxx::work& tx, long long job_id, const std::string& node, const std::string& event,
+               const std::string& detail) {
+  tx.exec_params("INSERT INTO job_events (job_id, node, event, detail) VALUES ($1, $2, $3, $4)", job_id, node, event,
+                 detail);
+}
+
+Result<std::unique_ptr<LedgerClient>> LedgerClient::connect(const std::string& url, const std::string& node) {
+  std::unique_ptr<LedgerClient> client(new LedgerClient(url, node));
+  if (Status opened = client->open(); !opened) return opened;
+  return client;
+}
+
+LedgerClient::LedgerClient(std::string url, std::string node) : url_(std::move(url)), node_(std::move(node)) {}
+
+LedgerClient::~LedgerClient() = default;
+
+Status LedgerClient::open() {
+  if (connection_ && connection_->is_open()) return Status::success();
+  connection_.reset();
+  return guarded<bool>("connecting to " + redact_url(url_), [&]() -> Result<bool> {
+           connection_ = std::make_unique<pqxx::connection>(url_);
+           return true;
+         })
+      .status();
+}
+
+Result<MigrationOutcome> LedgerClient::migrate() {
+  if (Status opened = open(); !opened) return opened;
+  return apply_migrations(*connection_);
+}
+
+Result<int> LedgerClient::schema_version() {
+  if (Status opened = open(); !opened) return opened;
+  return read_schema_version(*connection_);
+}
+
+Status LedgerClient::heartbeat() {
+  return transact<bool>("recording this node's heartbeat", [&](pqxx::work& tx) -> Result<bool> {
+           tx.exec_params("UPDATE nodes SET heartbeat_at = now() WHERE name = $1", node_);
+           return true;
+         })
+      .status();
+}
+
+Result<Enqueued> LedgerClient::enqueue(const ScanEntry& scan) {
+  return transact<Enqueued>("entering scan " + scan.scan_name, [&](pqxx::work& tx) -> Result<Enqueued> {
+    // ON CONFLICT waits for a node inserting the same bytes at this moment, then finds its row.
+    const pqxx::result inserted = tx.exec_params(
+        "INSERT INTO jobs (scan_sha256, scan_name, ticket, material, cutter, state, origin)"
+        " VALUES ($1, $2, $3, $4, $5, 'ready', $6) ON CONFLICT (scan_sha256) DO NOTHING RETURNING id",
+        scan.scan_sha256, scan.scan_name, scan.ticket, scan.material, scan.cutter, node_);
+    Enqueued out;
+    if (!inserted.empty()) {
+      out.job_id = inserted[0][0].as<long long>();
+      out.state = "ready";
+      out.origin = node_;
+      add_event(tx, out.job_id, node_, "entered", scan.scan_name);
+      return out;
+    }
+    const pqxx::row known =
+        tx.exec_params1("SELECT id, state, origin FROM jobs WHERE scan_sha256 = $1", scan.scan_sha256);
+    out.job_id = known[0].as<long long>();
+    out.state = known[1].as<std::string>();
+    out.origin = known[2].as<std::string>();
+    out.duplicate = true;
+    add_event(tx, out.job_id, node_, "duplicate", scan.scan_name + " dropped again");
+    return out;
+  });
+}
+
+Result<std::optional<JobClaim>> LedgerClient::claim_job(double lease_s) {
+  using Claim = std::optional<JobClaim>;
+  return transact<Claim>("claiming a job", [&](pqxx::work& tx) -> Result<Claim> {
+    const pqxx::result found = tx.exec(
+        "SELECT id, scan_sha256, scan_name, ticket, material, cutter FROM jobs WHERE state = 'ready'"
+        " ORDER BY created_at, id LIMIT 1 FOR UPDATE SKIP LOCKED");
+    if (found.empty()) return Claim();
+    JobClaim claim;
+    claim.job_id = found[0][0].as<long long>();
+    claim.scan = {found[0][1].as<std::string>(), found[0][2].as<std::string>(), found[0][3].as<std::string>(),
+                  found[0][4].as<std::string>(), found[0][5].as<std::string>()};
+    claim.attempts = tx.exec_params1(
+                           "UPDATE jobs SET state = 'computing', attempts = attempts + 1, updated_at = now()"
+                           " WHERE id = $1 RETURNING attempts",
+                           claim.job_id)[0]
+                         .as<int>();
+    claim.lease = {LeaseKind::Job, claim.job_id, take_lease(tx, node_, LeaseKind::Job, claim.job_id, lease_s)};
+    add_event(tx, claim.job_id, node_, "claimed", "attempt " + std::to_string(claim.attempts));
+    return Claim(std::move(claim));
+  });
+}
+
+Status LedgerClient::renew(const Lease& lease, double lease_s) {
+  return transact<bool>("renewing a lease", [&](pqxx::work& tx) -> Result<bool> {
+           if (Status held = check_lease(tx, node_, lease); !held) return held;
+           tx.exec_params(
+               "UPDATE leases SET expires_at = now() + make_interval(secs => $3) WHERE kind = $1 AND object_id = $2",
+               to_string(lease.kind), lease.object_id, lease_s);
+           return true;
+         })
+      .status();
+}
+
+Status LedgerClient::mark_computed(const Lease& lease) {
+  return transact<bool>("marking job " + std::to_string(lease.object_id) + " computed",
+                        [&](pqxx::work& tx) -> Result<bool> {
+                          if (Status held = check_lease(tx, node_, lease); !held) return held;
+                          tx.exec_params("UPDATE jobs SET state = 'computed', updated_at = now() WHERE id = $1",
+                                         lease.object_id);
+                          release_lease(tx, lease);
+                          add_event(tx, lease.object_id, node_, "computed");
+                          return true;
+                        })
+      .status();
+}
+
+Status LedgerClient::mark_failed(const Lease& lease, const std::string& reason) {
+  return transact<bool>("marking job " + std::to_string(lease.object_id) + " failed",
+                        [&](pqxx::work& tx) -> Result<bool> {
+                          if (Status held = check_lease(tx, node_, lease); !held) return held;
+                          tx.exec_params(
+                              "UPDATE jobs SET state = 'failed', reason = $2, updated_at = now() WHERE id = $1",
+                              lease.object_id, reason);
+                          release_lease(tx, lease);
+                          add_event(tx, lease.object_id, node_, "failed", reason);
+                          return true;
+                        })
+      .status();
+}
+
+Status LedgerClient::requeue_held(long long job_id) {
+  const std::string what = "job " + std::to_string(job_id);
+  return transact<bool>("requeueing " + what, [&](pqxx::work& tx) -> Result<bool> {
+           const pqxx::result row = tx.exec_params("SELECT state FROM jobs WHERE id = $1 FOR UPDATE", job_id);
+           if (row.empty()) return Status::failure("no " + what + " in the ledger");
+           const std::string state = row[0][0].as<std::string>();
+           if (state != "held" && state != "failed") {
+             return Status::failure(what + " is " + state + ", neither held nor failed: nothing to requeue");
+           }
+           // Computed again from its scan: the molds of an interrupted batch are not trusted blindly.
+           tx.exec_params(
+               "UPDATE jobs SET state = 'ready', batch_id = NULL, attempts = 0, reason = NULL, updated_at = now()"
+               " WHERE id = $1",
+               job_id);
+           add_event(tx, job_id, node_, "requeued", "by the operator (was " + state + ")");
+           return true;
+         })
+      .status();
+}
+
+Result<std::vector<JobRow>> LedgerClient::recent_jobs(int limit, const std::string& state) {
+  using Rows = std::vector<JobRow>;
+  return transact<Rows>("listing jobs", [&](pqxx::work& tx) -> Result<Rows> {
+    const pqxx::result found = tx.exec_params(
+        "SELECT j.id, j.scan_name, j.state, j.cutter, j.material, j.origin, coalesce(j.reason, ''),"
+        " coalesce(l.holder, ''), coalesce(j.batch_id, 0), j.attempts"
+        " FROM jobs j LEFT JOIN leases l ON l.kind = 'job' AND l.object_id = j.id"
+        " WHERE $2 = '' OR j.state = $2 ORDER BY j.id DESC LIMIT $1",
+        limit, state);
+    Rows rows;
+    for (const pqxx::row& r : found) {
+      rows.push_back({r[0].as<long long>(), r[1].as<std::string>(), r[2].as<std::string>(), r[3].as<std::string>(),
+                      r[4].as<std::string>(), r[5].as<std::string>(), r[6].as<std::string>(), r[7].as<std::string>(),
+                      r[8].as<long long>(), r[9].as<int>()});
+    }
+    return rows;
+  });
+}
+
+}  // namespace lastcut::ledger

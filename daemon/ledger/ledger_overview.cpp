@@ -1,0 +1,29 @@
+// The shop at a glance for `lastcut status` on a ledger node: job counts per state, the nodes
+// with the age of their heartbeat, the cutters with their station and queue, the held jobs.
+#include <pqxx/pqxx>
+
+#include "daemon/ledger/ledger_transaction.hpp"
+
+namespace lastcut::ledger {
+
+Result<LedgerOverview> LedgerClient::overview() {
+  return transact<LedgerOverview>("reading the ledger's overview", [&](pqxx::work& tx) -> Result<LedgerOverview> {
+    LedgerOverview out;
+    for (const pqxx::row& r : tx.exec("SELECT state, count(*) FROM jobs GROUP BY state ORDER BY state")) {
+      out.jobs_per_state.emplace_back(r[0].as<std::string>(), r[1].as<long long>());
+    }
+    for (const pqxx::row& r : tx.exec(
+             "SELECT name, array_to_string(roles, ','), extract(epoch FROM now() - heartbeat_at)::float8"
+             " FROM nodes ORDER BY name")) {
+      out.nodes.push_back({r[0].as<std::string>(), r[1].as<std::string>(), r[2].as<double>()});
+    }
+    for (const pqxx::row& r : tx.exec(
+             "SELECT c.name, c.station, (SELECT count(*) FROM batches b WHERE b.cutter = c.name AND b.state = 'queued')"
+             " FROM cutters c ORDER BY c.name")) {
+      out.cutters.push_back({r[0].as<std::string>(), r[1].as<std::string>(), r[2].as<long long>()});
+    }
+    return out;
+  });
+}
+
+}  // namespace lastcut::ledger

@@ -1,0 +1,116 @@
+// Leases nobody renews any more: those that expired (sweep_expired, any node) and those an
+// earlier run of this node left behind (register_node at start). Jobs in computation go back to
+// the queue; batches not yet sending are queued again; a batch that was sending is held with its
+// jobs, never re-sent (the cutter may have cut part of it).
+#include <pqxx/pqxx>
+
+#include "daemon/ledger/ledger_transaction.hpp"
+
+namespace lastcut::ledger {
+namespace {
+
+// A station that has not renewed its heartbeat this long may lose its cutters to another node.
+constexpr double kStationSilentS = 60;
+
+// {"a","b"}: a PostgreSQL text[] literal.
+std::string text_array(const std::vector<std::string>& items) {
+  std::string out = "{";
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    out += i ? ",\"" : "\"";
+    for (char c : items[i]) {
+      if (c == '"' || c == '\\') out += '\\';
+      out += c;
+    }
+    out += '"';
+  }
+  return out + "}";
+}
+
+// Releases every lease matching `condition` (SQL over leases; $1 is `parameter`) that no other
+// transaction is acting on right now, and moves the rows they covered.
+SweepOutcome release_matching(pqxx::work& tx, const std::string& node, const std::string& condition,
+                              const std::string& parameter, int max_attempts) {
+  const pqxx::result released = tx.exec_params(
+      "WITH old AS (SELECT kind, object_id, holder FROM leases WHERE holder IS NOT NULL AND (" + condition +
+          ") FOR UPDATE SKIP LOCKED)"
+          " UPDATE leases l SET holder = NULL, expires_at = NULL FROM old"
+          " WHERE l.kind = old.kind AND l.object_id = old.object_id RETURNING old.kind, old.object_id, old.holder",
+      parameter);
+  SweepOutcome out;
+  for (const pqxx::row& r : released) {
+    const std::string kind = r[0].as<std::string>();
+    const long long id = r[1].as<long long>();
+    const std::string holder = r[2].as<std::string>();
+    if (kind == "job") {
+      const pqxx::result job = tx.exec_params(
+          "UPDATE jobs SET state = CASE WHEN attempts >= $2 THEN 'failed' ELSE 'ready' END,"
+          " reason = CASE WHEN attempts >= $2 THEN $3 ELSE reason END, updated_at = now()"
+          " WHERE id = $1 AND state = 'computing' RETURNING state",
+          id, max_attempts,
+          "the computation was interrupted " + std::to_string(max_attempts) + " times (last on " + holder + ")");
+      if (job.empty()) continue;
+      const bool failed = job[0][0].as<std::string>() == "failed";
+      (failed ? out.jobs_failed : out.jobs_requeued).push_back(id);
+      add_event(tx, id, node, failed ? "failed" : "requeued", "lease of " + holder + " ended without a result");
+      continue;
+    }
+    const pqxx::result batch = tx.exec_params("SELECT state FROM batches WHERE id = $1 FOR UPDATE", id);
+    if (batch.empty()) continue;
+    const std::string state = batch[0][0].as<std::string>();
+    if (state == "claimed") {
+      tx.exec_params("UPDATE batches SET state = 'queued', updated_at = now() WHERE id = $1", id);
+      out.batches_requeued.push_back(id);
+    } else if (state == "sending") {
+      const std::string reason = "station " + holder + " stopped answering while sending batch " + std::to_string(id) +
+                                 ": check the cutter's table, then lastcut requeue";
+      tx.exec_params("UPDATE batches SET state = 'held', reason = $2, updated_at = now() WHERE id = $1", id, reason);
+      for (const pqxx::row& j : tx.exec_params(
+               "UPDATE jobs SET state = 'held', reason = $2, updated_at = now() WHERE batch_id = $1 RETURNING id", id,
+               reason)) {
+        add_event(tx, j[0].as<long long>(), node, "held", reason);
+      }
+      out.batches_held.push_back(id);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+Result<SweepOutcome> LedgerClient::sweep_expired(int max_attempts) {
+  return transact<SweepOutcome>("returning expired leases", [&](pqxx::work& tx) -> Result<SweepOutcome> {
+    // $1 is unused by this condition but keeps one query shape for both sweeps.
+    return release_matching(tx, node_, "expires_at < now() AND $1::text IS NOT NULL", "", max_attempts);
+  });
+}
+
+Result<SweepOutcome> LedgerClient::register_node(const std::vector<std::string>& roles,
+                                                 const std::vector<std::string>& cutters,
+                                                 int max_attempts) {
+  return transact<SweepOutcome>("registering node " + node_, [&](pqxx::work& tx) -> Result<SweepOutcome> {
+    tx.exec_params(
+        "INSERT INTO nodes (name, roles) VALUES ($1, $2::text[]) ON CONFLICT (name) DO UPDATE"
+        " SET roles = EXCLUDED.roles, started_at = now(), heartbeat_at = now()",
+        node_, text_array(roles));
+    for (const std::string& cutter : cutters) {
+      // A cutter is re-cabled to this node only when its former station has been silent for a
+      // while; two live stations naming one cutter is a configuration mistake.
+      const pqxx::result owner = tx.exec_params(
+          "SELECT c.station FROM cutters c JOIN nodes n ON n.name = c.station WHERE c.name = $1 AND c.station <> $2"
+          " AND n.heartbeat_at > now() - make_interval(secs => $3) FOR UPDATE OF c",
+          cutter, node_, kStationSilentS);
+      if (!owner.empty()) {
+        return Status::failure("cutter " + cutter + " is cabled to station " + owner[0][0].as<std::string>() +
+                               ", which is running: remove [cutters." + cutter + "] from one of the two configurations");
+      }
+      tx.exec_params(
+          "INSERT INTO cutters (name, station) VALUES ($1, $2) ON CONFLICT (name) DO UPDATE"
+          " SET station = EXCLUDED.station, updated_at = now()",
+          cutter, node_);
+    }
+    // A previous run of this node is gone: nothing it held is being worked on any more.
+    return release_matching(tx, node_, "holder = $1", node_, max_attempts);
+  });
+}
+
+}  // namespace lastcut::ledger
