@@ -119,11 +119,15 @@ std::size_t check_written_layout(const DaemonRig& rig, const std::string& batch_
   const bool backbone = instance.bins[0].backbone_deg.has_value();
   for (const NestItem& item : instance.items) {
     EXPECT_EQ(item.min_quality, 2) << "the material's min_quality";
-    ASSERT_EQ(item.quality_regions.size(), 1u) << "the toe region of every mold";
-    EXPECT_EQ(item.quality_regions[0].min_quality, 3) << "the material's toe_min_quality";
     // Grain only where the hide has a backbone; the checker measures it against the backbone.
     EXPECT_EQ(item.grain_deg.has_value(), backbone);
-    if (backbone) EXPECT_EQ(item.grain_tolerance_deg, 10);
+    if (backbone) {
+      EXPECT_EQ(item.grain_tolerance_deg, 10);
+    }
+    EXPECT_EQ(item.quality_regions.size(), 1u) << "the toe region of every mold";
+    if (!item.quality_regions.empty()) {
+      EXPECT_EQ(item.quality_regions[0].min_quality, 3) << "the material's toe_min_quality";
+    }
   }
   EXPECT_EQ(instance.bins[0].zones.size(), zones) << "the low-grade zones are checked";
   EXPECT_EQ(instance.bins[0].holes.size(), 1u) << "the hole is checked";
