@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "daemon/config/config_loader.hpp"
+#include "tests/support/minimal_daemon_config.hpp"
 #include "daemon_harness.hpp"
 #include "drivers/cutter.hpp"
 
@@ -12,22 +13,7 @@ namespace {
 const std::filesystem::path kSource = LASTCUT_SOURCE_DIR;
 
 std::string minimal(const std::string& extra_cutter_keys = "", const std::string& extra_top = "") {
-  return extra_top + R"(
-[paths]
-watch = "in"
-spool = "spool"
-machines = "machines"
-[jobs]
-default_material = "calf"
-default_cutter = "a"
-[materials.calf]
-width_mm = 500
-length_mm = 900
-[cutters.a]
-protocol = "grbl"
-port = "/dev/ttyUSB0"
-machine = "grbl-drag-knife"
-)" + extra_cutter_keys;
+  return extra_top + "\n" + lastcut::testing::kMinimalDaemonConfig + extra_cutter_keys;
 }
 
 ConfigLoadResult load_text(const std::string& text) {

@@ -7,26 +7,12 @@
 #include <fstream>
 
 #include "daemon/config/config_loader.hpp"
+#include "tests/support/minimal_daemon_config.hpp"
 
 namespace lastcut::daemon {
 namespace {
 
-const std::string kBase = R"(
-[paths]
-watch = "in"
-spool = "spool"
-machines = "machines"
-[jobs]
-default_material = "calf"
-default_cutter = "a"
-[materials.calf]
-width_mm = 500
-length_mm = 900
-[cutters.a]
-protocol = "grbl"
-port = "/dev/ttyUSB0"
-machine = "grbl-drag-knife"
-)";
+const std::string kBase = "\n" + lastcut::testing::kMinimalDaemonConfig;
 
 class LedgerConfigTest : public ::testing::Test {
  protected:

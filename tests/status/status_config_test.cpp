@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "daemon/config/config_loader.hpp"
+#include "tests/support/minimal_daemon_config.hpp"
 #include "daemon/config/mqtt_url.hpp"
 #include "daemon/status/status_topics.hpp"
 
@@ -14,21 +15,7 @@ namespace lastcut::daemon {
 namespace {
 
 // A valid configuration of 14 lines; a [status] table appended starts on line 15.
-const std::string kBase = R"([paths]
-watch = "in"
-spool = "spool"
-machines = "machines"
-[jobs]
-default_material = "calf"
-default_cutter = "a"
-[materials.calf]
-width_mm = 500
-length_mm = 900
-[cutters.a]
-protocol = "grbl"
-port = "/dev/ttyUSB0"
-machine = "grbl-drag-knife"
-)";
+const std::string kBase = lastcut::testing::kMinimalDaemonConfig;
 
 ConfigLoadResult load_with(const std::string& extra) {
   const auto folder = std::filesystem::path(LASTCUT_BINARY_DIR) / "test-scratch" /
