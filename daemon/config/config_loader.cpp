@@ -1,9 +1,10 @@
-// Validation of the daemon configuration: each table is read through a TableReader that
+// Validation of the daemon configuration: each table is read through a TableReader (table_reader.hpp) that
 // remembers which keys it consumed, so every key nobody asked for is reported as unknown
 // with its path and line (a typo must not silently fall back to a default).
 #include "daemon/config/config_loader.hpp"
 
 #include "daemon/config/ledger_config_reader.hpp"
+#include "daemon/config/table_reader.hpp"
 
 #include <optional>
 #include <set>
@@ -18,115 +19,6 @@
 
 namespace lastcut::daemon {
 namespace {
-
-std::string where(const std::string& key_path, const toml::node& node) {
-  std::ostringstream out;
-  out << key_path;
-  if (node.source().begin.line > 0) out << " (line " << node.source().begin.line << ")";
-  return out.str();
-}
-
-class TableReader {
- public:
-  TableReader(const toml::table& table, std::string path, std::vector<std::string>& errors)
-      : table_(table), path_(std::move(path)), errors_(errors) {}
-
-  ~TableReader() = default;
-  TableReader(const TableReader&) = delete;
-  TableReader& operator=(const TableReader&) = delete;
-
-  std::string key_path(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
-
-  const toml::node* node(const std::string& key) {
-    used_.insert(key);
-    return table_.get(key);
-  }
-
-  void text(const std::string& key, std::string& value, bool required = false) {
-    const toml::node* found = node(key);
-    if (!found) {
-      if (required) errors_.push_back(key_path(key) + ": missing (required)");
-      return;
-    }
-    if (auto s = found->value<std::string>(); s && found->is_string()) {
-      value = *s;
-    } else {
-      errors_.push_back(where(key_path(key), *found) + ": must be a text in quotes");
-    }
-  }
-
-  void number(const std::string& key, double& value, double min_value, double max_value, bool required = false) {
-    const toml::node* found = node(key);
-    if (!found) {
-      if (required) errors_.push_back(key_path(key) + ": missing (required)");
-      return;
-    }
-    if (!found->is_number()) {
-      errors_.push_back(where(key_path(key), *found) + ": must be a number");
-      return;
-    }
-    const double v = *found->value<double>();
-    if (v < min_value || v > max_value) {
-      std::ostringstream out;
-      out << where(key_path(key), *found) << ": " << v << " is outside " << min_value << " .. " << max_value;
-      errors_.push_back(out.str());
-      return;
-    }
-    value = v;
-  }
-
-  void integer(const std::string& key, int& value, int min_value, int max_value, bool required = false) {
-    const toml::node* found = node(key);
-    if (!found) {
-      if (required) errors_.push_back(key_path(key) + ": missing (required)");
-      return;
-    }
-    if (!found->is_integer()) {
-      errors_.push_back(where(key_path(key), *found) + ": must be a whole number");
-      return;
-    }
-    const auto v = *found->value<int64_t>();
-    if (v < min_value || v > max_value) {
-      std::ostringstream out;
-      out << where(key_path(key), *found) << ": " << v << " is outside " << min_value << " .. " << max_value;
-      errors_.push_back(out.str());
-      return;
-    }
-    value = static_cast<int>(v);
-  }
-
-  const toml::table* subtable(const std::string& key, bool required) {
-    const toml::node* found = node(key);
-    if (!found) {
-      if (required) errors_.push_back(key_path(key) + ": missing table [" + key_path(key) + "]");
-      return nullptr;
-    }
-    if (!found->is_table()) {
-      errors_.push_back(where(key_path(key), *found) + ": must be a table [" + key_path(key) + "]");
-      return nullptr;
-    }
-    return found->as_table();
-  }
-
-  // Reports every key of the table that no read asked for.
-  void reject_unknown() {
-    for (auto&& [key, value] : table_) {
-      const std::string name(key.str());
-      if (!used_.count(name)) errors_.push_back(where(key_path(name), value) + ": unknown key");
-    }
-  }
-
- private:
-  const toml::table& table_;
-  std::string path_;
-  std::vector<std::string>& errors_;
-  std::set<std::string> used_;
-};
-
-std::filesystem::path resolve(const std::filesystem::path& base, const std::string& value) {
-  std::filesystem::path path(value);
-  return path.is_absolute() ? path.lexically_normal() : (base / path).lexically_normal();
-}
 
 void read_paths(TableReader& root, const std::filesystem::path& base, DaemonConfig& config,
                 std::vector<std::string>& errors) {

@@ -6,15 +6,10 @@
 #include <set>
 #include <sstream>
 
+#include "daemon/config/table_reader.hpp"
+
 namespace lastcut::daemon {
 namespace {
-
-std::string at(const std::string& key, const toml::node& node) {
-  std::ostringstream out;
-  out << "ledger." << key;
-  if (node.source().begin.line > 0) out << " (line " << node.source().begin.line << ")";
-  return out.str();
-}
 
 bool valid_node_name(const std::string& name) {
   return !name.empty() && name.size() <= 63 && std::all_of(name.begin(), name.end(), [](char c) {
@@ -33,43 +28,24 @@ void read_ledger_table(const toml::table& table, const std::filesystem::path& ba
                        std::vector<std::string>& errors) {
   LedgerConfig config;
   const std::size_t errors_before = errors.size();
-  const auto text = [&](const char* key, std::string& value) {
-    const toml::node* node = table.get(key);
-    if (!node) errors.push_back(std::string("ledger.") + key + ": missing (required)");
-    else if (!node->is_string()) errors.push_back(at(key, *node) + ": must be a text in quotes");
-    else value = *node->value<std::string>();
-    return node;
+  TableReader reader(table, "ledger", errors);
+  // The key's node when it is present and a text (read into value), else nullptr.
+  const auto text = [&](const char* key, std::string& value) -> const toml::node* {
+    const std::size_t before = errors.size();
+    reader.text(key, value, true);
+    return errors.size() == before ? table.get(key) : nullptr;
   };
-  const auto number = [&](const char* key, double& value, double min_value, double max_value) {
-    const toml::node* node = table.get(key);
-    if (!node) return;
-    if (!node->is_number()) {
-      errors.push_back(at(key, *node) + ": must be a number");
-      return;
-    }
-    const double v = *node->value<double>();
-    if (v < min_value || v > max_value) {
-      std::ostringstream why;
-      why << at(key, *node) << ": " << v << " is outside " << min_value << " .. " << max_value;
-      errors.push_back(why.str());
-      return;
-    }
-    value = v;
-  };
-
+  const auto at = [&](const std::string& key, const toml::node& node) { return where(reader.key_path(key), node); };
   if (const toml::node* url = text("url", config.url);
       url && !config.url.empty() && config.url.rfind("postgresql://", 0) != 0 && config.url.rfind("postgres://", 0) != 0) {
     errors.push_back(at("url", *url) + ": must be a PostgreSQL URL, postgresql://user@host:5432/database");
   }
-  if (const toml::node* node = text("node", config.node); node && node->is_string() && !valid_node_name(config.node)) {
+  if (const toml::node* node = text("node", config.node); node && !valid_node_name(config.node)) {
     errors.push_back(at("node", *node) + ": \"" + config.node + "\" must be 1 to 63 letters, digits, '-', '_' or '.'");
   }
   std::string shared;
-  if (text("shared_dir", shared) && !shared.empty()) {
-    const std::filesystem::path path(shared);
-    config.shared_dir = (path.is_absolute() ? path : base / path).lexically_normal();
-  }
-  if (const toml::node* roles = table.get("roles"); !roles) {
+  if (text("shared_dir", shared) && !shared.empty()) config.shared_dir = resolve(base, shared);
+  if (const toml::node* roles = reader.node("roles"); !roles) {
     errors.push_back("ledger.roles: missing (required), e.g. [\"compute\", \"station\"]");
   } else if (!roles->is_array() || roles->as_array()->empty()) {
     errors.push_back(at("roles", *roles) + ": must be a list of one or both of \"compute\", \"station\"");
@@ -86,18 +62,15 @@ void read_ledger_table(const toml::table& table, const std::filesystem::path& ba
       }
     }
   }
-  number("lease_s", config.lease_s, 1, 3600);
-  number("heartbeat_s", config.heartbeat_s, 0.1, 1800);
+  reader.number("lease_s", config.lease_s, 1, 3600);
+  reader.number("heartbeat_s", config.heartbeat_s, 0.1, 1800);
   if (config.heartbeat_s > config.lease_s / 2) {
     std::ostringstream why;
     why << "ledger.heartbeat_s: " << config.heartbeat_s << " must be at most half of lease_s (" << config.lease_s
         << "), or a busy node loses its claims";
     errors.push_back(why.str());
   }
-  const std::set<std::string> known{"url", "node", "roles", "shared_dir", "lease_s", "heartbeat_s"};
-  for (auto&& [key, value] : table) {
-    if (!known.count(std::string(key.str()))) errors.push_back(at(std::string(key.str()), value) + ": unknown key");
-  }
+  reader.reject_unknown();
   if (errors.size() == errors_before) out = std::move(config);
 }
 
