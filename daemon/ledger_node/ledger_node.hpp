@@ -91,6 +91,8 @@ class LedgerNode {
   std::mutex pause_mutex_;
   std::condition_variable pause_wake_;
   std::atomic<int> cuts_in_progress_{0};
+  std::mutex ledger_condition_mutex_;
+  bool ledger_down_ = false;  // as last logged by note_trouble(), for the whole node
 
   // Main thread only.
   Clock::time_point next_sweep_{};
