@@ -97,6 +97,19 @@ void LedgerNode::stop() {
   keeper_.reset();  // kept leases simply run out; the next start of this node hands them back at once
 }
 
+bool LedgerNode::connect_worker(std::unique_ptr<ledger::LedgerClient>& client, std::string& trouble,
+                                const std::string& worker) {
+  if (client) return true;
+  auto connected = ledger::LedgerClient::connect(ledger().url, ledger().node);
+  if (!connected) {
+    note_trouble(trouble, connected.error(), worker);
+    pause(ledger().heartbeat_s);
+    return false;
+  }
+  client = std::move(*connected);
+  return true;
+}
+
 void LedgerNode::pause(double seconds) {
   std::unique_lock lock(pause_mutex_);
   pause_wake_.wait_for(lock, std::chrono::duration<double>(seconds), [this] { return stopping_.load(); });
