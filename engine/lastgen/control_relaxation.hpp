@@ -5,7 +5,7 @@
 // control vertex towards the area-weighted mean of its quads' centres, within the surface's tangent
 // plane, and puts it back on the surface: the tangential "area-equalising" relaxation of isotropic
 // remeshing (M. Botsch, L. Kobbelt, "A remeshing approach to multiresolution modeling", SGP 2004;
-// area weights as in Botsch et al., "Polygon Mesh Processing", AK Peters 2010, section 6.5.3), here
+// area weights as in Botsch et al., "Polygon Mesh Processing", AK Peters 2010, chapter 6), here
 // on quads. A big cell pulls its corners towards itself, which shrinks it; the vertices never leave
 // the surface, so the shape is kept.
 #include <functional>
