@@ -1,7 +1,8 @@
 #pragma once
-// Even control cells for the Bezier last: the cube sphere's rays (cube_sphere.hpp) leave one point
-// inside an elongated last, so its cells are small where the surface is near that point (the instep)
-// and large where it is far (the toe: about 90 : 1 in area at 5000 triangles). Each step moves every
+// Even control cells for the Bezier last: a box lattice cast onto the last (cube_sphere.hpp) has cells
+// of uneven size (cast from one point inside it, small on the instep near that point and large at the
+// toe: 84 : 1 in triangle area at 5000 triangles; from a spine, still large on the cap and small where
+// the toe fan starts). Each step moves every
 // control vertex towards the area-weighted mean of its quads' centres, within the surface's tangent
 // plane, and puts it back on the surface: the tangential "area-equalising" relaxation of isotropic
 // remeshing (M. Botsch, L. Kobbelt, "A remeshing approach to multiresolution modeling", SGP 2004;
