@@ -65,11 +65,32 @@ LedgerClient::LedgerClient(std::string url, std::string node) : url_(std::move(u
 
 LedgerClient::~LedgerClient() = default;
 
+namespace {
+
+// A database host that vanishes (a cut cable, not a refused port) must not hang a node for TCP's
+// quarter of an hour: bounded connects, and keepalives plus a user timeout that end a call on a
+// dead peer within about 10 s. Settings the URL gives itself are kept.
+std::string with_time_limits(const std::string& url) {
+  static const std::pair<const char*, const char*> kLimits[] = {
+      {"connect_timeout", "5"}, {"keepalives", "1"},        {"keepalives_idle", "5"},
+      {"keepalives_interval", "2"}, {"keepalives_count", "3"}, {"tcp_user_timeout", "10000"}};
+  const bool uri = url.find("://") != std::string::npos;
+  std::string out = url;
+  for (const auto& [key, value] : kLimits) {
+    if (url.find(std::string(key) + "=") != std::string::npos) continue;
+    if (uri) out += (out.find('?') == std::string::npos ? "?" : "&") + std::string(key) + "=" + value;
+    else out += " " + std::string(key) + "=" + value;
+  }
+  return out;
+}
+
+}  // namespace
+
 Status LedgerClient::open() {
   if (connection_ && connection_->is_open()) return Status::success();
   connection_.reset();
   return guarded<bool>("connecting to " + redact_url(url_), [&]() -> Result<bool> {
-           connection_ = std::make_unique<pqxx::connection>(url_);
+           connection_ = std::make_unique<pqxx::connection>(with_time_limits(url_));
            return true;
          })
       .status();
