@@ -17,9 +17,9 @@
 #include <numbers>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
+#include "bench_options.hpp"
 #include "engine/nest/layout_check.hpp"
 #include "engine/nest/layout_svg.hpp"
 #include "engine/nest/mold_items.hpp"
@@ -28,20 +28,6 @@
 #include "generated_hides.hpp"
 
 namespace {
-
-void run_threads(std::vector<std::function<void()>>& tasks) {
-  std::vector<std::thread> threads;
-  for (size_t i = 1; i < tasks.size(); ++i) threads.emplace_back(tasks[i]);
-  tasks[0]();
-  for (auto& t : threads) t.join();
-}
-
-std::vector<std::string> split(const std::string& text) {
-  std::vector<std::string> parts;
-  std::stringstream list(text);
-  for (std::string part; std::getline(list, part, ',');) parts.push_back(part);
-  return parts;
-}
 
 // The fewest hides, largest usable area (outline minus holes) first, whose area covers the pieces'.
 int area_bound(const lastcut::NestInstance& instance) {
@@ -63,32 +49,24 @@ int area_bound(const lastcut::NestInstance& instance) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::filesystem::path data = LASTCUT_SHARED_DATA_DIR "/nesting/leather";
-  std::vector<double> limits = {10, 60};
+  lastcut::bench::BenchOptions bench;
+  bench.data = LASTCUT_SHARED_DATA_DIR "/nesting/leather";
   std::vector<std::string> methods = {"search", "greedy"};
-  int threads = 2, workers = lastcut::NestOptions{}.sweep_workers;
-  std::uint64_t seed = 1;
-  std::string only;
-  long rounds = 0;
-  std::filesystem::path svg_dir;
   for (int a = 1; a + 1 < argc; a += 2) {
     const std::string key = argv[a], value = argv[a + 1];
-    if (key == "--data") data = value;
-    else if (key == "--threads") threads = std::atoi(value.c_str());
-    else if (key == "--workers") workers = std::atoi(value.c_str());
-    else if (key == "--seed") seed = std::strtoull(value.c_str(), nullptr, 10);
-    else if (key == "--only") only = value;
-    else if (key == "--methods") methods = split(value);
-    else if (key == "--rounds") rounds = std::atol(value.c_str());
-    else if (key == "--svg-dir") svg_dir = value;
-    else if (key == "--limits") {
-      limits.clear();
-      for (const std::string& l : split(value)) limits.push_back(std::atof(l.c_str()));
-    } else {
+    if (bench.parse(key, value)) continue;
+    if (key == "--methods") methods = lastcut::bench::split_list(value);
+    else {
       std::fprintf(stderr, "unknown option %s\n", key.c_str());
       return 2;
     }
   }
+  const std::filesystem::path& data = bench.data;
+  std::vector<double>& limits = bench.limits;
+  const int threads = bench.threads, workers = bench.workers;
+  const std::uint64_t seed = bench.seed;
+  const long rounds = bench.rounds;
+  const std::filesystem::path& svg_dir = bench.svg_dir;
   std::vector<lastcut::NestInstance> instances;
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::directory_iterator(data))
@@ -96,12 +74,7 @@ int main(int argc, char** argv) {
   std::sort(files.begin(), files.end());
   for (const auto& file : files) instances.push_back(lastcut::read_nest_instance(file));
   for (int batch = 0; batch < 2; ++batch) instances.push_back(lastcut::bench::shoe_batch(batch));
-  auto selected = [&](const lastcut::NestInstance& instance) {
-    if (only.empty()) return true;
-    for (const std::string& name : split(only))
-      if (instance.name == name) return true;
-    return false;
-  };
+  auto selected = [&](const lastcut::NestInstance& instance) { return bench.selected(instance.name); };
   int invalid = 0;
   if (rounds > 0) limits = {0};
   for (double limit : limits) {
@@ -118,13 +91,8 @@ int main(int argc, char** argv) {
       const int bound = area_bound(instance);
       bound_sum += bound, ++count;
       for (size_t m = 0; m < methods.size(); ++m) {
-        lastcut::NestOptions options;
-        options.time_limit_s = rounds > 0 ? 1e9 : limit;
-        if (rounds > 0) options.iteration_limit = rounds;
-        options.threads = threads;
-        options.sweep_workers = workers;
-        options.seed = seed;
-        options.run_parallel = run_threads;
+        lastcut::NestOptions options = bench.nest_options(limit);
+        if (rounds > 0) options.time_limit_s = 1e9, options.iteration_limit = rounds;
         options.hide_method = methods[m] == "greedy" ? lastcut::HideMethod::Greedy : lastcut::HideMethod::Search;
         const auto start = std::chrono::steady_clock::now();
         const lastcut::Layout layout = lastcut::nest(instance, options);

@@ -16,12 +16,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
-#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "daemon/cli/thread_team.hpp"
+#include "bench_options.hpp"
 #include "engine/nest/layout_check.hpp"
 #include "engine/nest/layout_svg.hpp"
 #include "engine/nest/nest_json.hpp"
@@ -45,79 +44,45 @@ std::vector<std::filesystem::path> json_files(const std::filesystem::path& folde
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::filesystem::path data = LASTCUT_SHARED_DATA_DIR "/nesting";
-  std::vector<double> limits = {10, 60};
-  int threads = 2;
-  int workers = lastcut::NestOptions{}.sweep_workers;  // strips: sweeps compared per separation step
-  std::uint64_t seed = 1;
-  std::string only;
-  long rounds = 0;  // > 0: an iteration limit instead of the time limits
+  lastcut::bench::BenchOptions bench;
+  bench.data = LASTCUT_SHARED_DATA_DIR "/nesting";
   bool trace = false;
-  std::filesystem::path svg_dir;  // when set: a picture of every layout
-  std::unique_ptr<lastcut::ThreadTeam> team;  // started once: a sweep's tasks do not start threads
-  auto options_for = [&](double limit) {  // reads the options as parsed so far
-    if (!team) team = std::make_unique<lastcut::ThreadTeam>(static_cast<size_t>(std::max(0, threads - 1)));
-    lastcut::NestOptions options;
-    options.time_limit_s = limit;
-    options.threads = threads;
-    options.sweep_workers = workers;
-    options.seed = seed;
-    options.run_parallel = team->runner();
-    return options;
-  };
   for (int a = 1; a + 1 < argc; a += 2) {
     const std::string key = argv[a], value = argv[a + 1];
-    if (key == "--data") data = value;
-    else if (key == "--threads") threads = std::atoi(value.c_str());
-    else if (key == "--workers") workers = std::atoi(value.c_str());
-    else if (key == "--seed") seed = std::strtoull(value.c_str(), nullptr, 10);
-    else if (key == "--only") only = value;
-    else if (key == "--rounds") rounds = std::atol(value.c_str());
-    else if (key == "--svg-dir") svg_dir = value;
-    else if (key == "--trace") trace = value != "0";
+    if (bench.parse(key, value)) continue;
+    if (key == "--trace") trace = value != "0";
     else if (key == "--instance") {  // one instance file (strip or hides), one run per limit, with its picture
       const lastcut::NestInstance instance = lastcut::read_nest_instance(value);
-      for (double limit : limits) {
-        const lastcut::NestOptions options = options_for(limit);
+      for (double limit : bench.limits) {
+        const lastcut::NestOptions options = bench.nest_options(limit);
         const lastcut::Layout layout = lastcut::nest(instance, options);
         const auto problems = lastcut::check_layout(layout, instance);
         std::printf("%s %g s: %zu placed, %zu unplaced entries, %d hides, length %.1f, utilisation %.2f %%, %s\n", instance.name.c_str(), limit,
                     layout.placements.size(), layout.unplaced.size(), lastcut::used_bin_count(layout), layout.strip_length.value_or(0),
                     100 * layout.utilisation, problems.empty() ? "valid" : problems.front().c_str());
-        if (!svg_dir.empty()) lastcut::write_layout_svg(svg_dir / ("nest-" + instance.name + ".svg"), layout, instance);
+        if (!bench.svg_dir.empty()) lastcut::write_layout_svg(bench.svg_dir / ("nest-" + instance.name + ".svg"), layout, instance);
         if (!problems.empty()) return 1;
       }
       return 0;
-    }
-    else if (key == "--limits") {
-      limits.clear();
-      std::stringstream list(value);
-      for (std::string item; std::getline(list, item, ',');) limits.push_back(std::atof(item.c_str()));
     } else {
       std::fprintf(stderr, "unknown option %s\n", key.c_str());
       return 2;
     }
   }
-  // --only: a comma-separated list of instance names (file stems).
-  auto selected = [&only](const std::filesystem::path& file) {
-    if (only.empty()) return true;
-    std::stringstream list(only);
-    for (std::string name; std::getline(list, name, ',');)
-      if (file.stem() == name) return true;
-    return false;
-  };
+  auto selected = [&bench](const std::filesystem::path& file) { return bench.selected(file.stem().string()); };
+  auto options_for = [&bench](double limit) { return bench.nest_options(limit); };
   int invalid = 0;
-  for (double limit : limits) {
-    std::printf("\n## strip packing, %g s, %d threads, %d sweep workers, seed %llu\n\n", limit, threads, workers,
-                static_cast<unsigned long long>(seed));
+  for (double limit : bench.limits) {
+    std::printf("\n## strip packing, %g s, %d threads, %d sweep workers, seed %llu\n\n", limit, bench.threads, bench.workers,
+                static_cast<unsigned long long>(bench.seed));
     std::printf("| instance | pieces | utilisation %% | strip length | best-known %% | gap (points) | valid |\n|---|---|---|---|---|---|---|\n");
     double gap_sum = 0, worst_gap = 0;
     int count = 0;
-    for (const auto& file : json_files(data / "esicup")) {
+    for (const auto& file : json_files(bench.data / "esicup")) {
       if (!selected(file)) continue;
       const lastcut::NestInstance instance = lastcut::read_nest_instance(file);
       lastcut::NestOptions options = options_for(limit);
-      if (rounds > 0) options.time_limit_s = 1e9, options.iteration_limit = rounds;
+      if (bench.rounds > 0) options.time_limit_s = 1e9, options.iteration_limit = bench.rounds;
       const auto start = std::chrono::steady_clock::now();
       if (trace)
         options.on_improvement = [&start, name = file.stem().string()](const lastcut::Layout& l) {
@@ -126,12 +91,12 @@ int main(int argc, char** argv) {
                        l.strip_length.value_or(0), 100 * l.utilisation);
         };
       const lastcut::Layout layout = lastcut::nest(instance, options);
-      if (rounds > 0)
-        std::printf("%s: %ld rounds in %.2f s\n", instance.name.c_str(), rounds,
+      if (bench.rounds > 0)
+        std::printf("%s: %ld rounds in %.2f s\n", instance.name.c_str(), bench.rounds,
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
       const auto problems = lastcut::check_layout(layout, instance);
       invalid += problems.empty() ? 0 : 1;
-      if (!svg_dir.empty()) lastcut::write_layout_svg(svg_dir / ("nest-" + instance.name + ".svg"), layout, instance);
+      if (!bench.svg_dir.empty()) lastcut::write_layout_svg(bench.svg_dir / ("nest-" + instance.name + ".svg"), layout, instance);
       const double best = kBestKnown.count(file.stem()) ? kBestKnown.at(file.stem()) : 0;
       const double gap = best - 100 * layout.utilisation;
       gap_sum += gap, worst_gap = std::max(worst_gap, gap), ++count;
@@ -142,16 +107,16 @@ int main(int argc, char** argv) {
     }
     if (count) std::printf("| **average** | | | | | %.2f (worst %.2f) | |\n", gap_sum / count, worst_gap);
 
-    std::printf("\n## leather hides, %g s, %d threads, seed %llu\n\n", limit, threads, static_cast<unsigned long long>(seed));
+    std::printf("\n## leather hides, %g s, %d threads, seed %llu\n\n", limit, bench.threads, static_cast<unsigned long long>(bench.seed));
     std::printf("| instance | pieces placed / demanded | hides used / available | utilisation of used hides %% | valid |\n|---|---|---|---|---|\n");
-    for (const auto& file : json_files(data / "leather")) {
+    for (const auto& file : json_files(bench.data / "leather")) {
       if (!selected(file)) continue;
       const lastcut::NestInstance instance = lastcut::read_nest_instance(file);
       const lastcut::NestOptions options = options_for(limit);
       const lastcut::Layout layout = lastcut::nest(instance, options);
       const auto problems = lastcut::check_layout(layout, instance);
       invalid += problems.empty() ? 0 : 1;
-      if (!svg_dir.empty()) lastcut::write_layout_svg(svg_dir / ("nest-" + instance.name + ".svg"), layout, instance);
+      if (!bench.svg_dir.empty()) lastcut::write_layout_svg(bench.svg_dir / ("nest-" + instance.name + ".svg"), layout, instance);
       int demanded = 0, available = 0;
       for (const auto& item : instance.items) demanded += item.demand;
       for (const auto& bin : instance.bins) available += bin.stock;

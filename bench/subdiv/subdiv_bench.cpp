@@ -50,27 +50,17 @@ int main(int argc, char** argv) {
     std::printf("| %d | %d | %d | %.4f s |\n", n, surface.quads.quad_count(), surface.quads.vertex_count(), times[2]);
   }
 
-  // Sample segments along every control edge, read from the sampled mesh (corners first, then n - 1
-  // samples per edge in the order of QuadTopology's edges, running along the edge's representative half-edge).
   const QuadTopology topology = build_quad_topology(control);
   std::printf("\n| n | spread | l_1 / mean l at valence 3: min / mean / max | at valence 4: min / mean / max |\n|---|---|---|---|\n");
   for (int n : {3, 4, 8}) {
     for (SampleSpread spread : {SampleSpread::Uniform, SampleSpread::EvenAtExtraordinary}) {
       const SubdividedSurface surface = subdivide_bezier(control, n, spread);
       RatioStats extraordinary, regular;
-      for (int e = 0; e < topology.edge_count(); ++e) {
-        const int h = topology.edge_half_edge[static_cast<size_t>(e)];
-        const int from = control.Q(h / 4, h % 4), to = control.Q(h / 4, (h + 1) % 4);
-        std::vector<Eigen::Vector3d> points{surface.quads.V.row(from).transpose()};
-        for (int s = 1; s < n; ++s) points.push_back(surface.quads.V.row(control.vertex_count() + e * (n - 1) + s - 1).transpose());
-        points.push_back(surface.quads.V.row(to).transpose());
-        double mean = 0.0;
-        for (int s = 0; s < n; ++s) mean += (points[static_cast<size_t>(s + 1)] - points[static_cast<size_t>(s)]).norm() / n;
-        const double first = (points[1] - points[0]).norm(), last = (points[static_cast<size_t>(n)] - points[static_cast<size_t>(n - 1)]).norm();
-        for (const auto& [vertex, length] : {std::pair{from, first}, std::pair{to, last}}) {
+      for (const EdgeEndSpacing& edge : edge_end_spacing(control, surface, n)) {
+        for (const auto& [vertex, ratio] : {std::pair{edge.from, edge.first_ratio}, std::pair{edge.to, edge.last_ratio}}) {
           const int valence = topology.valence(vertex);
-          if (valence == 3) extraordinary.add(length / mean);
-          if (valence == 4) regular.add(length / mean);
+          if (valence == 3) extraordinary.add(ratio);
+          if (valence == 4) regular.add(ratio);
         }
       }
       std::printf("| %d | %s | %.3f / %.3f / %.3f (%d edges) | %.3f / %.3f / %.3f (%d edges) |\n", n,

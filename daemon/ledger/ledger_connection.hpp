@@ -14,7 +14,9 @@ namespace lastcut::ledger {
 // libpq's multi-line messages folded to one line, trailing blanks removed.
 std::string one_line(const std::string& text);
 
-// The URL with its password replaced by "***", for logs and --check-config.
+// The connection string with every secret replaced by "***", for logs, `lastcut status` and
+// --check-config: in a URI the user's password and the query parameters password= and
+// sslpassword=, in a keyword/value string ("host=h password=x") the values of those keywords.
 std::string redact_url(const std::string& url);
 
 // Whether a SQLSTATE says the connection is gone (classes 08 and 57P).

@@ -8,32 +8,11 @@
 #include <unordered_map>
 #include <vector>
 
+#include "engine/core/segment_predicates.hpp"
+
 namespace lastcut {
 
 namespace {
-
-double cross(const Point2& o, const Point2& a, const Point2& b) {
-  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
-}
-
-bool on_segment(const Point2& p, const Point2& a, const Point2& b) {
-  return std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) && std::min(a.y(), b.y()) <= p.y() &&
-         p.y() <= std::max(a.y(), b.y());
-}
-
-// Closed segments ab and cd share at least one point (crossing, touching or overlapping).
-bool segments_touch(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
-  const double d1 = cross(c, d, a);
-  const double d2 = cross(c, d, b);
-  const double d3 = cross(a, b, c);
-  const double d4 = cross(a, b, d);
-  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
-  if (d1 == 0 && on_segment(a, c, d)) return true;
-  if (d2 == 0 && on_segment(b, c, d)) return true;
-  if (d3 == 0 && on_segment(c, a, b)) return true;
-  if (d4 == 0 && on_segment(d, a, b)) return true;
-  return false;
-}
 
 bool adjacent(int i, int j, int n) { return i == j || (i + 1) % n == j || (j + 1) % n == i; }
 

@@ -7,28 +7,12 @@
 #include <polyclipping/clipper.hpp>
 
 #include "engine/core/engine_error.hpp"
+#include "engine/core/segment_predicates.hpp"
 #include "engine/nest/clipper_paths.hpp"
 #include "engine/nest/hide_file.hpp"
 
 namespace lastcut {
 namespace {
-
-double cross(const Point2& o, const Point2& a, const Point2& b) {
-  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
-}
-
-bool on_segment(const Point2& p, const Point2& a, const Point2& b) {
-  return std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) && std::min(a.y(), b.y()) <= p.y() &&
-         p.y() <= std::max(a.y(), b.y());
-}
-
-// Closed segments a-b and c-d share a point.
-bool segments_meet(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
-  const double d1 = cross(c, d, a), d2 = cross(c, d, b), d3 = cross(a, b, c), d4 = cross(a, b, d);
-  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
-  return (d1 == 0 && on_segment(a, c, d)) || (d2 == 0 && on_segment(b, c, d)) || (d3 == 0 && on_segment(c, a, b)) ||
-         (d4 == 0 && on_segment(d, a, b));
-}
 
 // True when two edges that are not neighbours along the ring meet (a sweep over x keeps this near
 // n log n for the thousands of points of a digitized outline).
@@ -46,7 +30,7 @@ bool self_intersects(const Polygon2& ring) {
       const size_t f = order[j];
       const size_t gap = (e > f ? e - f : f - e);
       if (gap == 1 || gap == n - 1) continue;  // neighbours share their common vertex only
-      if (segments_meet(p[e], p[(e + 1) % n], p[f], p[(f + 1) % n])) return true;
+      if (segments_touch(p[e], p[(e + 1) % n], p[f], p[(f + 1) % n])) return true;
     }
   }
   return false;

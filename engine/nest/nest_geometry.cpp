@@ -8,18 +8,6 @@
 namespace lastcut::nest_detail {
 namespace {
 
-double cross(const Point2& o, const Point2& a, const Point2& b) {
-  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
-}
-
-int sign(double v) { return (v > 0) - (v < 0); }
-
-// p is collinear with ab: does it lie within the segment's box?
-bool on_segment(const Point2& a, const Point2& b, const Point2& p) {
-  return std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) && std::min(a.y(), b.y()) <= p.y() &&
-         p.y() <= std::max(a.y(), b.y());
-}
-
 void simplify_span(const std::vector<Point2>& ring, size_t first, size_t last, double tolerance,
                    std::vector<char>& keep) {
   const size_t n = ring.size();
@@ -47,26 +35,6 @@ Box bounding_box(const std::vector<Point2>& points) {
     box.y1 = std::max(box.y1, p.y());
   }
   return box;
-}
-
-bool point_in_ring(const Point2& point, const std::vector<Point2>& ring) {
-  bool inside = false;
-  for (size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-    const Point2& a = ring[i];
-    const Point2& b = ring[j];
-    if ((a.y() > point.y()) != (b.y() > point.y()) &&
-        point.x() < (b.x() - a.x()) * (point.y() - a.y()) / (b.y() - a.y()) + a.x())
-      inside = !inside;
-  }
-  return inside;
-}
-
-bool segments_touch(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
-  const int d1 = sign(cross(c, d, a)), d2 = sign(cross(c, d, b));
-  const int d3 = sign(cross(a, b, c)), d4 = sign(cross(a, b, d));
-  if (d1 * d2 < 0 && d3 * d4 < 0) return true;
-  return (d1 == 0 && on_segment(c, d, a)) || (d2 == 0 && on_segment(c, d, b)) || (d3 == 0 && on_segment(a, b, c)) ||
-         (d4 == 0 && on_segment(a, b, d));
 }
 
 bool rings_collide(const PlacedRing& a, const PlacedRing& b) {

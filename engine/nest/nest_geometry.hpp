@@ -1,10 +1,12 @@
 #pragma once
-// Exact predicates on small polygons for the nester's collision detection: bounding boxes,
-// segment intersection, point in polygon, polygon overlap. Touching counts as colliding, so
-// every layout the nester accepts keeps its pieces strictly apart (conservative by design).
+// Exact predicates on small polygons for the nester's collision detection: bounding boxes and
+// polygon overlap, on the segment and point-in-ring predicates of engine/core/segment_predicates.hpp.
+// Touching counts as colliding, so every layout the nester accepts keeps its pieces strictly apart
+// (conservative by design).
 #include <vector>
 
 #include "engine/core/polygon.hpp"
+#include "engine/core/segment_predicates.hpp"
 
 namespace lastcut::nest_detail {
 
@@ -19,11 +21,6 @@ struct Box {
 
 // Bounding box of points #P (mm); points must not be empty.
 Box bounding_box(const std::vector<Point2>& points);
-// Crossing-number test; points on the boundary may go either way.
-bool point_in_ring(const Point2& point, const std::vector<Point2>& ring);
-// Closed segments ab and cd share at least one point.
-bool segments_touch(const Point2& a, const Point2& b, const Point2& c, const Point2& d);
-
 // A polygon placed by translation: ring in its own (already rotated) frame plus offset.
 struct PlacedRing {
   const std::vector<Point2>* ring = nullptr;  // #P points, counter-clockwise

@@ -156,6 +156,31 @@ SubdividedSurface subdivide_bezier(const QuadMesh& control, int n, SampleSpread 
   return surface;
 }
 
+std::vector<EdgeEndSpacing> edge_end_spacing(const QuadMesh& control, const SubdividedSurface& surface, int n) {
+  const QuadTopology topology = build_quad_topology(control);
+  // The output ids subdivide_bezier gives: used control vertices first, then n - 1 per edge.
+  std::vector<int> corner_id(static_cast<size_t>(control.vertex_count()), -1);
+  int used = 0;
+  for (int v = 0; v < control.vertex_count(); ++v) {
+    if (topology.faces_at(v) > 0) corner_id[static_cast<size_t>(v)] = used++;
+  }
+  const auto sample = [&surface](long long id) -> Eigen::Vector3d { return surface.quads.V.row(id).transpose(); };
+  std::vector<EdgeEndSpacing> spacing(static_cast<size_t>(topology.edge_count()));
+  for (int e = 0; e < topology.edge_count(); ++e) {
+    const int h = topology.edge_half_edge[static_cast<size_t>(e)];
+    EdgeEndSpacing& edge = spacing[static_cast<size_t>(e)];
+    edge.from = control.Q(h / 4, h % 4), edge.to = control.Q(h / 4, (h + 1) % 4);
+    std::vector<Eigen::Vector3d> points{sample(corner_id[static_cast<size_t>(edge.from)])};
+    for (int s = 1; s < n; ++s) points.push_back(sample(used + static_cast<long long>(e) * (n - 1) + s - 1));
+    points.push_back(sample(corner_id[static_cast<size_t>(edge.to)]));
+    double mean = 0.0;
+    for (int s = 0; s < n; ++s) mean += (points[static_cast<size_t>(s) + 1] - points[static_cast<size_t>(s)]).norm() / n;
+    edge.first_ratio = (points[1] - points[0]).norm() / mean;
+    edge.last_ratio = (points[static_cast<size_t>(n)] - points[static_cast<size_t>(n) - 1]).norm() / mean;
+  }
+  return spacing;
+}
+
 TriMesh triangulate_quads(const QuadMesh& quads) {
   TriMesh mesh;
   mesh.V = quads.V;

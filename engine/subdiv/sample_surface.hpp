@@ -39,6 +39,17 @@ struct SubdividedSurface {
 // kMaxSubdividedQuads, or the control mesh is not an oriented 2-manifold of quads.
 SubdividedSurface subdivide_bezier(const QuadMesh& control, int n, SampleSpread spread = SampleSpread::Uniform);
 
+// How evenly a sampled surface spreads its samples along one control edge: the control vertices at
+// the edge's ends (`from` starts its representative half-edge, QuadTopology::edge_half_edge) and the
+// lengths (mm) of the edge's first and last sample segments over the mean of its n segments (both 1
+// when the samples are evenly spaced along the sampled curve).
+struct EdgeEndSpacing {
+  int from = 0, to = 0;
+  double first_ratio = 0.0, last_ratio = 0.0;
+};
+// One per control edge, in QuadTopology's edge order; `surface` is subdivide_bezier(control, n, ...).
+std::vector<EdgeEndSpacing> edge_end_spacing(const QuadMesh& control, const SubdividedSurface& surface, int n);
+
 // Each quad split into two triangles along its shorter diagonal (same vertices, counter-clockwise).
 TriMesh triangulate_quads(const QuadMesh& quads);
 

@@ -23,12 +23,12 @@ bool box_fits(const Point2& center_mm, double width_mm, double height_mm, const 
   const Point2 corners[4] = {center_mm + Point2(-half.x(), -half.y()), center_mm + Point2(half.x(), -half.y()),
                              center_mm + Point2(half.x(), half.y()), center_mm + Point2(-half.x(), half.y())};
   for (const Point2& corner : corners) {
-    if (!point_in_polygon(corner, outline)) return false;
+    if (!point_in_ring(corner, outline.points)) return false;
   }
   const auto& p = outline.points;
   for (size_t i = 0; i < p.size(); ++i) {
     for (int side = 0; side < 4; ++side) {
-      if (segments_intersect(p[i], p[(i + 1) % p.size()], corners[side], corners[(side + 1) % 4])) return false;
+      if (segments_touch(p[i], p[(i + 1) % p.size()], corners[side], corners[(side + 1) % 4])) return false;
     }
   }
   return true;
@@ -71,7 +71,7 @@ std::optional<PlacedText> place_text(const std::string& text, const Polygon2& ou
   for (int i = 1; i < kGrid; ++i) {
     for (int j = 1; j < kGrid; ++j) {
       const Point2 center = low + Point2((high.x() - low.x()) * i / kGrid, (high.y() - low.y()) * j / kGrid);
-      if (point_in_polygon(center, outline)) candidates.emplace_back(distance_to_boundary(center, outline), center);
+      if (point_in_ring(center, outline.points)) candidates.emplace_back(distance_to_boundary(center, outline), center);
     }
   }
   std::sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) {

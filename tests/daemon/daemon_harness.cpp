@@ -1,68 +1,13 @@
 #include "daemon_harness.hpp"
 
-#include <csignal>
-#include <fcntl.h>
 #include <fstream>
 #include <sstream>
-#include <stdexcept>
-#include <sys/wait.h>
 #include <thread>
-#include <unistd.h>
 
 namespace lastcut::daemon::testing {
 
 std::filesystem::path binary(const std::string& name) {
   return std::filesystem::path(LASTCUT_BINARY_DIR) / "bin" / name;
-}
-
-Process::Process(const std::vector<std::string>& argv, const std::filesystem::path& log_file) {
-  pid_ = ::fork();
-  if (pid_ < 0) throw std::runtime_error("fork failed");
-  if (pid_ == 0) {
-    const int fd = ::open(log_file.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-    if (fd >= 0) {
-      ::dup2(fd, 1);
-      ::dup2(fd, 2);
-    }
-    // Test processes must not inherit a blocked signal mask or the journal of the test runner.
-    sigset_t none;
-    sigemptyset(&none);
-    sigprocmask(SIG_SETMASK, &none, nullptr);
-    ::unsetenv("JOURNAL_STREAM");
-    ::unsetenv("NOTIFY_SOCKET");
-    std::vector<char*> args;
-    for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
-    args.push_back(nullptr);
-    ::execv(args[0], args.data());
-    ::_exit(127);
-  }
-}
-
-Process::~Process() {
-  if (running()) {
-    ::kill(pid_, SIGKILL);
-    wait(5);
-  }
-}
-
-void Process::signal(int number) const {
-  if (pid_ > 0) ::kill(pid_, number);
-}
-
-bool Process::running() {
-  if (exited_ || pid_ <= 0) return false;
-  int status = 0;
-  if (::waitpid(pid_, &status, WNOHANG) == pid_) {
-    exited_ = true;
-    status_ = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    return false;
-  }
-  return true;
-}
-
-int Process::wait(double timeout_s) {
-  wait_until([this] { return !running(); }, timeout_s);
-  return exited_ ? status_ : -1;
 }
 
 bool wait_until(const std::function<bool()>& done, double timeout_s) {
@@ -75,8 +20,7 @@ bool wait_until(const std::function<bool()>& done, double timeout_s) {
 }
 
 int run_command(const std::vector<std::string>& argv, const std::filesystem::path& log_file) {
-  Process process(argv, log_file);
-  return process.wait(300);
+  return lastcut::test::run_to_exit(argv, log_file, 300);
 }
 
 std::string read_text(const std::filesystem::path& file) {

@@ -7,29 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/child_process.hpp"
+
 namespace lastcut::daemon::testing {
 
 std::filesystem::path binary(const std::string& name);  // LASTCUT_BINARY_DIR/bin/<name>
 
 // A child process; killed (SIGKILL) in the destructor if still running.
-class Process {
- public:
-  Process(const std::vector<std::string>& argv, const std::filesystem::path& log_file);
-  ~Process();
-  Process(const Process&) = delete;
-  Process& operator=(const Process&) = delete;
-
-  int pid() const { return pid_; }
-  void signal(int number) const;
-  // Waits for the exit; returns the exit status (or 128 + signal), -1 on timeout.
-  int wait(double timeout_s);
-  bool running();
-
- private:
-  int pid_ = -1;
-  int status_ = -1;
-  bool exited_ = false;
-};
+using Process = lastcut::test::ChildProcess;
 
 // Polls `done` every 50 ms until it is true or timeout_s passes; returns its last value.
 bool wait_until(const std::function<bool()>& done, double timeout_s);

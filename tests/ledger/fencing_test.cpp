@@ -13,16 +13,11 @@ using FencingTest = LedgerTest;
 
 constexpr double kShortLease_s = 0.3;
 
-void outlive_lease() { std::this_thread::sleep_for(std::chrono::milliseconds(600)); }
-
 TEST_F(FencingTest, NodeWhoseLeaseWasTakenOverIsRefused) {
-  auto a = client("node-a");
-  auto b = client("node-b");
-  ASSERT_TRUE(a && b);
-  ASSERT_TRUE(a->enqueue(scan(1)).ok());
-  auto claim_a = a->claim_job(kShortLease_s);
-  ASSERT_TRUE(claim_a.ok() && claim_a->has_value()) << claim_a.error();
-  const ledger::Lease lease_a = (*claim_a)->lease;
+  HeldJob held;
+  ASSERT_NO_FATAL_FAILURE(hold_one_job(kShortLease_s, held));
+  auto& [a, b, claim_a] = held;
+  const ledger::Lease lease_a = claim_a.lease;
 
   // Before expiry nobody else may take it.
   auto early = b->sweep_expired(3);
@@ -32,8 +27,7 @@ TEST_F(FencingTest, NodeWhoseLeaseWasTakenOverIsRefused) {
   ASSERT_TRUE(nothing.ok());
   EXPECT_FALSE(nothing->has_value());
 
-  outlive_lease();  // node-a "pauses" past its lease
-  auto swept = b->sweep_expired(3);
+  auto swept = sweep_after_expiry(*b, kShortLease_s);  // node-a "pauses" past its lease
   ASSERT_TRUE(swept.ok()) << swept.error();
   EXPECT_EQ(swept->jobs_requeued, std::vector<long long>{lease_a.object_id});
   auto claim_b = b->claim_job(30);
@@ -57,33 +51,26 @@ TEST_F(FencingTest, NodeWhoseLeaseWasTakenOverIsRefused) {
 }
 
 TEST_F(FencingTest, RenewedLeaseSurvivesTheSweep) {
-  auto a = client("node-a");
-  auto b = client("node-b");
-  ASSERT_TRUE(a && b);
-  ASSERT_TRUE(a->enqueue(scan(1)).ok());
-  auto claim = a->claim_job(kShortLease_s);
-  ASSERT_TRUE(claim.ok() && claim->has_value());
+  HeldJob held;
+  ASSERT_NO_FATAL_FAILURE(hold_one_job(kShortLease_s, held));
+  auto& [a, b, claim] = held;
   for (int beat = 0; beat < 4; ++beat) {
     std::this_thread::sleep_for(std::chrono::milliseconds(150));
-    ASSERT_TRUE(a->renew((*claim)->lease, kShortLease_s).ok());
+    ASSERT_TRUE(a->renew(claim.lease, kShortLease_s).ok());
     auto swept = b->sweep_expired(3);
     ASSERT_TRUE(swept.ok());
     EXPECT_TRUE(swept->jobs_requeued.empty()) << "beat " << beat;
   }
-  EXPECT_TRUE(a->mark_computed((*claim)->lease).ok());
+  EXPECT_TRUE(a->mark_computed(claim.lease).ok());
 }
 
 TEST_F(FencingTest, ExpiredAndSweptWithoutNewClaimStillRefusesTheOldHolder) {
-  auto a = client("node-a");
-  auto b = client("node-b");
-  ASSERT_TRUE(a && b);
-  ASSERT_TRUE(a->enqueue(scan(1)).ok());
-  auto claim = a->claim_job(kShortLease_s);
-  ASSERT_TRUE(claim.ok() && claim->has_value());
-  outlive_lease();
-  ASSERT_TRUE(b->sweep_expired(3).ok());
-  EXPECT_EQ(a->mark_computed((*claim)->lease).error(),
-            "lease lost: job " + std::to_string((*claim)->job_id) + " went back to the queue after this node's lease expired");
+  HeldJob held;
+  ASSERT_NO_FATAL_FAILURE(hold_one_job(kShortLease_s, held));
+  auto& [a, b, claim] = held;
+  ASSERT_TRUE(sweep_after_expiry(*b, kShortLease_s).ok());
+  EXPECT_EQ(a->mark_computed(claim.lease).error(),
+            "lease lost: job " + std::to_string(claim.job_id) + " went back to the queue after this node's lease expired");
   EXPECT_EQ(query("SELECT state FROM jobs"), "ready");
 }
 
@@ -96,8 +83,7 @@ TEST_F(FencingTest, ScanInterruptedMaxAttemptsTimesFails) {
     auto claim = a->claim_job(kShortLease_s);
     ASSERT_TRUE(claim.ok() && claim->has_value());
     EXPECT_EQ((*claim)->attempts, attempt);
-    outlive_lease();
-    auto swept = b->sweep_expired(2);
+    auto swept = sweep_after_expiry(*b, kShortLease_s, 2);
     ASSERT_TRUE(swept.ok());
     EXPECT_EQ(swept->jobs_requeued.size(), attempt == 1 ? 1u : 0u);
     EXPECT_EQ(swept->jobs_failed.size(), attempt == 2 ? 1u : 0u);
@@ -109,12 +95,9 @@ TEST_F(FencingTest, ScanInterruptedMaxAttemptsTimesFails) {
 TEST_F(FencingTest, RestartedNodeHandsBackWhatItsLastRunHeld) {
   long long job_id = 0;
   {
-    auto crashed = client("node-a");
-    ASSERT_TRUE(crashed);
-    ASSERT_TRUE(crashed->enqueue(scan(1)).ok());
-    auto claim = crashed->claim_job(3600);  // a long lease: only the restart can free it
-    ASSERT_TRUE(claim.ok() && claim->has_value());
-    job_id = (*claim)->job_id;
+    HeldJob crashed;
+    ASSERT_NO_FATAL_FAILURE(hold_one_job(3600, crashed));  // a long lease: only the restart can free it
+    job_id = crashed.claim.job_id;
   }
   auto restarted = client("node-a");
   ASSERT_TRUE(restarted);

@@ -30,41 +30,36 @@ struct Lines {
 void sleep_s(double s) { std::this_thread::sleep_for(std::chrono::duration<double>(s)); }
 
 TEST_F(LeaseKeeperTest, KeptLeaseOutlivesLeaseTimeDroppedOneRunsOut) {
-  auto a = client("node-a");
-  auto b = client("node-b");
-  ASSERT_TRUE(a && b);
-  ASSERT_TRUE(a->enqueue(scan(1)).ok());
-  auto claim = a->claim_job(0.5);
-  ASSERT_TRUE(claim.ok() && claim->has_value());
+  constexpr double kLease_s = 0.5;
+  HeldJob held;
+  ASSERT_NO_FATAL_FAILURE(hold_one_job(kLease_s, held));
+  auto& [a, b, claim] = held;
   Lines log;
   {
-    ledger::LeaseKeeper keeper(url_, "node-a", 0.5, 0.1, log.sink());
-    keeper.keep((*claim)->lease);
+    ledger::LeaseKeeper keeper(url_, "node-a", kLease_s, 0.1, log.sink());
+    keeper.keep(claim.lease);
     for (int i = 0; i < 6; ++i) {
       sleep_s(0.25);
       auto swept = b->sweep_expired(3);
       ASSERT_TRUE(swept.ok()) << swept.error();
       EXPECT_TRUE(swept->jobs_requeued.empty()) << "after " << (i + 1) * 0.25 << " s";
     }
-    EXPECT_FALSE(keeper.lost((*claim)->lease));
-    keeper.drop((*claim)->lease);
-    sleep_s(0.8);
-    auto swept = b->sweep_expired(3);
+    EXPECT_FALSE(keeper.lost(claim.lease));
+    keeper.drop(claim.lease);
+    auto swept = sweep_after_expiry(*b, kLease_s);
     ASSERT_TRUE(swept.ok());
-    EXPECT_EQ(swept->jobs_requeued, std::vector<long long>{(*claim)->job_id});
+    EXPECT_EQ(swept->jobs_requeued, std::vector<long long>{claim.job_id});
   }
   EXPECT_TRUE(log.copy().empty());
 }
 
 TEST_F(LeaseKeeperTest, LeaseTakenOverIsReportedLost) {
-  auto a = client("node-a");
-  ASSERT_TRUE(a);
-  ASSERT_TRUE(a->enqueue(scan(1)).ok());
-  auto claim = a->claim_job(30);
-  ASSERT_TRUE(claim.ok() && claim->has_value());
+  HeldJob held;
+  ASSERT_NO_FATAL_FAILURE(hold_one_job(30, held));
+  auto& [a, b, claim] = held;
   Lines log;
   ledger::LeaseKeeper keeper(url_, "node-a", 30, 0.1, log.sink());
-  keeper.keep((*claim)->lease);
+  keeper.keep(claim.lease);
   {
     // Another node's claim, as if node-a had paused past its lease.
     pqxx::connection connection(url_);
@@ -72,21 +67,19 @@ TEST_F(LeaseKeeperTest, LeaseTakenOverIsReportedLost) {
     tx.exec("UPDATE leases SET holder = 'node-b', epoch = epoch + 1");
     tx.commit();
   }
-  for (int i = 0; i < 50 && !keeper.lost((*claim)->lease); ++i) sleep_s(0.05);
-  EXPECT_TRUE(keeper.lost((*claim)->lease));
-  EXPECT_EQ(log.copy(), std::vector<std::string>{"lease lost: job " + std::to_string((*claim)->job_id) +
+  for (int i = 0; i < 50 && !keeper.lost(claim.lease); ++i) sleep_s(0.05);
+  EXPECT_TRUE(keeper.lost(claim.lease));
+  EXPECT_EQ(log.copy(), std::vector<std::string>{"lease lost: job " + std::to_string(claim.job_id) +
                                                  " is now held by node-b (epoch 2, this node's claim was epoch 1)"});
 }
 
 TEST_F(LeaseKeeperTest, OutageIsLoggedOnceEachWayAndRenewalsResume) {
-  auto a = client("node-a");
-  ASSERT_TRUE(a);
-  ASSERT_TRUE(a->enqueue(scan(1)).ok());
-  auto claim = a->claim_job(30);
-  ASSERT_TRUE(claim.ok() && claim->has_value());
+  HeldJob held;
+  ASSERT_NO_FATAL_FAILURE(hold_one_job(30, held));
+  auto& [a, b, claim] = held;
   Lines log;
   ledger::LeaseKeeper keeper(url_, "node-a", 2, 0.1, log.sink());
-  keeper.keep((*claim)->lease);
+  keeper.keep(claim.lease);
   sleep_s(0.3);
   ASSERT_TRUE(server_.stop().empty());
   sleep_s(1.5);  // several heartbeats and retries while down
@@ -94,7 +87,7 @@ TEST_F(LeaseKeeperTest, OutageIsLoggedOnceEachWayAndRenewalsResume) {
   ASSERT_TRUE(server_.start().empty());
   for (int i = 0; i < 100 && !keeper.reachable(); ++i) sleep_s(0.05);
   EXPECT_TRUE(keeper.reachable());
-  EXPECT_FALSE(keeper.lost((*claim)->lease));
+  EXPECT_FALSE(keeper.lost(claim.lease));
   const auto lines = log.copy();
   ASSERT_EQ(lines.size(), 2u);
   EXPECT_EQ(lines[0].rfind("leases not renewed, retrying: ledger unreachable while ", 0), 0u)
@@ -102,7 +95,7 @@ TEST_F(LeaseKeeperTest, OutageIsLoggedOnceEachWayAndRenewalsResume) {
   EXPECT_EQ(lines[1], "ledger reachable again, leases renewed");
   // The renewed lease still fences: node-a can finish the job.
   // (node-a's own connection died with the server: the call connects again by itself.)
-  const Status computed = a->mark_computed((*claim)->lease);
+  const Status computed = a->mark_computed(claim.lease);
   EXPECT_TRUE(computed.ok()) << computed.error();
 }
 

@@ -2,9 +2,11 @@
 // A fresh PostgreSQL server and database per test, and ledger clients on it (migrated).
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <memory>
 #include <optional>
 #include <string>
+#include <thread>
 
 #include <pqxx/pqxx>
 
@@ -41,6 +43,22 @@ class LedgerTest : public ::testing::Test {
     return r.empty() || r[0][0].is_null() ? "" : r[0][0].as<std::string>();
   }
 
+  // The start of the lease tests: nodes node-a (holder) and node-b (other), scan 1 entered by node-a
+  // and claimed by it with a lease of lease_s. Call inside ASSERT_NO_FATAL_FAILURE.
+  struct HeldJob {
+    std::unique_ptr<ledger::LedgerClient> holder, other;
+    ledger::JobClaim claim;
+  };
+  void hold_one_job(double lease_s, HeldJob& held);
+
+  // Waits until a lease of lease_s taken or renewed now has run out (twice its length: the database
+  // decides by its own clock), then lets `sweeper` hand expired leases back: its outcome.
+  static Result<ledger::SweepOutcome> sweep_after_expiry(ledger::LedgerClient& sweeper, double lease_s,
+                                                         int max_attempts = 3) {
+    std::this_thread::sleep_for(std::chrono::duration<double>(2 * lease_s));
+    return sweeper.sweep_expired(max_attempts);
+  }
+
   PostgresServer server_;
   std::string url_;
 };
@@ -64,6 +82,16 @@ inline std::optional<long long> nest_batch(ledger::LedgerClient& compute, int ma
       compute.mark_nested((*made)->lease, {"batches/" + std::to_string(id) + "/cut.nc", 1, {}});
   EXPECT_TRUE(nested.ok()) << nested.error();
   return id;
+}
+
+inline void LedgerTest::hold_one_job(double lease_s, HeldJob& held) {
+  held.holder = client("node-a");
+  held.other = client("node-b");
+  ASSERT_TRUE(held.holder && held.other);
+  ASSERT_TRUE(held.holder->enqueue(scan(1)).ok());
+  auto claimed = held.holder->claim_job(lease_s);
+  ASSERT_TRUE(claimed.ok() && claimed->has_value()) << claimed.error();
+  held.claim = **claimed;
 }
 
 }  // namespace lastcut::test

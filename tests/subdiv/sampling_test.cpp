@@ -52,21 +52,14 @@ TEST(BezierSampling, OddDetailsGiveExactCountsAndAWatertightSurfaceOnThePatches)
 }
 
 // Mean of l_1 / mean(l) over the control edges' ends at valence-3 vertices: l_1 the sample segment at
-// the vertex, read from the output (corners first, then n - 1 samples per edge in topology order).
+// the vertex.
 double first_segment_ratio_at_valence_3(const QuadMesh& control, const SubdividedSurface& surface, int n) {
   const QuadTopology topology = build_quad_topology(control);
   double sum = 0.0;
   int count = 0;
-  for (int e = 0; e < topology.edge_count(); ++e) {
-    const int h = topology.edge_half_edge[static_cast<size_t>(e)];
-    const int from = control.Q(h / 4, h % 4), to = control.Q(h / 4, (h + 1) % 4);
-    std::vector<Eigen::Vector3d> points{surface.quads.V.row(from).transpose()};
-    for (int s = 1; s < n; ++s) points.push_back(surface.quads.V.row(control.vertex_count() + e * (n - 1) + s - 1).transpose());
-    points.push_back(surface.quads.V.row(to).transpose());
-    double mean = 0.0;
-    for (int s = 0; s < n; ++s) mean += (points[static_cast<size_t>(s + 1)] - points[static_cast<size_t>(s)]).norm() / n;
-    if (topology.valence(from) == 3) sum += (points[1] - points[0]).norm() / mean, ++count;
-    if (topology.valence(to) == 3) sum += (points[static_cast<size_t>(n)] - points[static_cast<size_t>(n - 1)]).norm() / mean, ++count;
+  for (const EdgeEndSpacing& edge : edge_end_spacing(control, surface, n)) {
+    if (topology.valence(edge.from) == 3) sum += edge.first_ratio, ++count;
+    if (topology.valence(edge.to) == 3) sum += edge.last_ratio, ++count;
   }
   EXPECT_EQ(count, 24);  // 8 corners x 3 edges
   return sum / count;
@@ -98,6 +91,45 @@ TEST(BezierSampling, EvenSpreadLengthensTheCrampedSegmentsAtExtraordinaryVertice
   // the face's far edges, minus the corner itself).
   EXPECT_GT(moved, 0);
   EXPECT_LE(moved, 8 * 3 * (n * n - 1));
+}
+
+TEST(BezierSampling, EdgeEndSpacingIsOneWhereAPlaneIsSampledEvenly) {
+  // A flat regular grid: where a face's whole 4 x 4 neighbourhood is regular its patch is the affine
+  // map of the parameters, so the uniform samples along an interior edge are exactly evenly spaced.
+  QuadMesh control = test::height_grid(6, 6, 3);
+  control.V.col(2).setZero();
+  const int n = 5;
+  int checked = 0;
+  for (const EdgeEndSpacing& edge : edge_end_spacing(control, subdivide_bezier(control, n), n)) {
+    const Eigen::Vector3d a = control.V.row(edge.from).transpose(), b = control.V.row(edge.to).transpose();
+    EXPECT_NEAR((a - b).norm(), 1.0, 1e-12);  // from and to are the edge's ends
+    if (a.head<2>().minCoeff() < 2 || a.head<2>().maxCoeff() > 4 || b.head<2>().minCoeff() < 2 || b.head<2>().maxCoeff() > 4) continue;
+    EXPECT_NEAR(edge.first_ratio, 1.0, 1e-12);
+    EXPECT_NEAR(edge.last_ratio, 1.0, 1e-12);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 12);  // the 3 x 3 vertices of [2, 4]^2: 2 x 3 x 2 edges
+}
+
+TEST(BezierSampling, EdgeEndSpacingSkipsControlVerticesNoFaceUses) {
+  // The same sphere with an unused vertex in front: the output ids of corners and edge samples move,
+  // the spacing must not.
+  const QuadMesh control = test::cube_sphere(3, 25.0);
+  QuadMesh padded;
+  padded.V.resize(control.vertex_count() + 1, 3);
+  padded.V.row(0) << 1e3, 1e3, 1e3;
+  padded.V.bottomRows(control.vertex_count()) = control.V;
+  padded.Q = control.Q.array() + 1;
+  const int n = 4;
+  const auto plain = edge_end_spacing(control, subdivide_bezier(control, n, SampleSpread::EvenAtExtraordinary), n);
+  const auto shifted = edge_end_spacing(padded, subdivide_bezier(padded, n, SampleSpread::EvenAtExtraordinary), n);
+  ASSERT_EQ(plain.size(), shifted.size());
+  for (size_t e = 0; e < plain.size(); ++e) {
+    EXPECT_EQ(shifted[e].from, plain[e].from + 1);
+    EXPECT_EQ(shifted[e].to, plain[e].to + 1);
+    EXPECT_NEAR(shifted[e].first_ratio, plain[e].first_ratio, 1e-12);
+    EXPECT_NEAR(shifted[e].last_ratio, plain[e].last_ratio, 1e-12);
+  }
 }
 
 TEST(BezierSampling, DetailOneReturnsTheLimitCornersOnTheControlConnectivity) {

@@ -1,15 +1,12 @@
 #include "mosquitto_broker.hpp"
 
 #include <arpa/inet.h>
-#include <fcntl.h>
 #include <mosquitto.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
-#include <csignal>
 #include <fstream>
 #include <sstream>
 #include <thread>
@@ -69,33 +66,18 @@ MosquittoBroker::MosquittoBroker(std::filesystem::path folder, const std::string
   if (::geteuid() == 0) config << "user root\n";
 }
 
-MosquittoBroker::~MosquittoBroker() {
-  if (running()) {
-    ::kill(pid_, SIGKILL);
-    ::waitpid(pid_, nullptr, 0);
-  }
-}
+MosquittoBroker::~MosquittoBroker() = default;  // the ChildProcess kills a running broker
 
 std::string MosquittoBroker::start() {
   if (::access(kMosquitto, X_OK) != 0) {
     return std::string(kMosquitto) + " not found: install the Debian package mosquitto (scripts/setup.sh)";
   }
   if (port_ == 0) return "no free port on 127.0.0.1";
-  const std::string config = (folder_ / "mosquitto.conf").string();
-  const std::string log = log_file().string();
-  pid_ = ::fork();
-  if (pid_ < 0) return "fork failed";
-  if (pid_ == 0) {
-    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-    if (fd >= 0) {
-      ::dup2(fd, 1);
-      ::dup2(fd, 2);
-    }
-    sigset_t none;
-    sigemptyset(&none);
-    sigprocmask(SIG_SETMASK, &none, nullptr);
-    ::execl(kMosquitto, kMosquitto, "-c", config.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
+  try {
+    process_ = std::make_unique<ChildProcess>(
+        std::vector<std::string>{kMosquitto, "-c", (folder_ / "mosquitto.conf").string()}, log_file());
+  } catch (const std::exception& e) {
+    return e.what();
   }
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
   while (std::chrono::steady_clock::now() < deadline) {
@@ -108,24 +90,11 @@ std::string MosquittoBroker::start() {
 }
 
 void MosquittoBroker::stop() {
-  if (!running()) return;
-  ::kill(pid_, SIGTERM);
-  for (int i = 0; i < 100 && running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  if (running()) {
-    ::kill(pid_, SIGKILL);
-    ::waitpid(pid_, nullptr, 0);
-  }
-  pid_ = -1;
+  if (process_) process_->stop(5);
+  process_.reset();
 }
 
-bool MosquittoBroker::running() {
-  if (pid_ <= 0) return false;
-  if (::waitpid(pid_, nullptr, WNOHANG) == pid_) {
-    pid_ = -1;
-    return false;
-  }
-  return true;
-}
+bool MosquittoBroker::running() { return process_ && process_->running(); }
 
 MqttSubscriber::MqttSubscriber(int port, std::string filter) : filter_(std::move(filter)) {
   static std::once_flag once;

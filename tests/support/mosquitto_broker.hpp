@@ -11,10 +11,13 @@
 // (again after every reconnection), keeping every message in arrival order with its retain flag.
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "tests/support/child_process.hpp"
 
 struct mosquitto;
 struct mosquitto_message;
@@ -42,7 +45,7 @@ class MosquittoBroker {
  private:
   std::filesystem::path folder_;
   int port_ = 0;
-  int pid_ = -1;
+  std::unique_ptr<ChildProcess> process_;
 };
 
 struct MqttMessage {

@@ -1,11 +1,12 @@
 // A throw-away PostgreSQL server per test program (see postgres_server.hpp).
 #include "tests/support/postgres_server.hpp"
 
+#include "tests/support/child_process.hpp"
+
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <pwd.h>
 #include <sys/socket.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -68,25 +69,16 @@ std::string PostgresServer::run(const std::vector<std::string>& argv) const {
   if (as_root()) full = {"runuser", "-u", "postgres", "--"};
   full.insert(full.end(), argv.begin(), argv.end());
   const fs::path output = folder_ / "command.out";
-  const pid_t pid = ::fork();
-  if (pid < 0) return "fork failed";
-  if (pid == 0) {
-    // The child: output to a file in the folder, then the command (runuser needs no terminal).
-    std::FILE* out = std::fopen(output.c_str(), "w");
-    if (out) {
-      ::dup2(::fileno(out), 1);
-      ::dup2(::fileno(out), 2);
-    }
-    std::vector<char*> args;
-    for (const std::string& arg : full) args.push_back(const_cast<char*>(arg.c_str()));
-    args.push_back(nullptr);
-    ::execvp(args[0], args.data());
-    std::fprintf(stderr, "cannot run %s\n", args[0]);
-    ::_exit(127);
+  std::error_code ec;
+  fs::remove(output, ec);  // the child appends: only this command's output
+  // runuser needs no terminal; pg_ctl itself waits at most 60 s (-t 60) for the server.
+  int status = -1;
+  try {
+    status = run_to_exit(full, output, 180);
+  } catch (const std::exception& e) {
+    return e.what();
   }
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
+  if (status == 0) return "";
   std::ifstream in(output);
   std::stringstream text;
   text << in.rdbuf();

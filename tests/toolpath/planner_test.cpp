@@ -112,7 +112,7 @@ TEST(ToolpathPieceLabel, TextFromTheItemLabelInsideThePiece) {
   for (const Stroke& stroke : program.strokes) {
     if (stroke.tool != ToolRole::Pen) continue;
     for (const Point2& point : stroke.points_mm) {
-      EXPECT_TRUE(point_in_polygon(point, program.pieces[stroke.piece].outline_mm));
+      EXPECT_TRUE(point_in_ring(point, program.pieces[stroke.piece].outline_mm.points));
       EXPECT_GT(distance_to_boundary(point, program.pieces[stroke.piece].outline_mm), 0.5);
     }
   }

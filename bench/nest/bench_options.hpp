@@ -1,0 +1,41 @@
+#pragma once
+// The options nest_bench and hide_bench share (--data --limits --threads --workers --seed --only
+// --rounds --svg-dir) and the NestOptions they make, with one ThreadTeam (daemon/cli/thread_team.hpp)
+// started once for all runs: a sweep's tasks do not start threads.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "daemon/cli/thread_team.hpp"
+#include "engine/nest/nest_options.hpp"
+
+namespace lastcut::bench {
+
+struct BenchOptions {
+  std::filesystem::path data;           // instance folder
+  std::vector<double> limits = {10, 60};  // time limits, s: one run each
+  int threads = 2;
+  int workers = NestOptions{}.sweep_workers;  // strips: sweeps compared per separation step
+  std::uint64_t seed = 1;
+  std::string only;                     // comma-separated instance names; empty: all
+  long rounds = 0;                      // > 0: this many improvement rounds instead of the time limits
+  std::filesystem::path svg_dir;        // when set: a picture of every layout
+
+  // Takes one `--key value` pair if it is one of the shared options; false for any other key.
+  bool parse(const std::string& key, const std::string& value);
+  // --only lets the instance named `name` run.
+  bool selected(const std::string& name) const;
+  // NestOptions for one run with time limit limit_s on the team's threads (--rounds is the caller's:
+  // nest_bench bounds only its strip runs by rounds).
+  NestOptions nest_options(double limit_s);
+
+ private:
+  std::unique_ptr<ThreadTeam> team_;
+};
+
+// "a,b,c" -> {"a", "b", "c"}.
+std::vector<std::string> split_list(const std::string& text);
+
+}  // namespace lastcut::bench

@@ -1,0 +1,94 @@
+// A child process for tests (see child_process.hpp).
+#include "tests/support/child_process.hpp"
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+#include <thread>
+
+namespace lastcut::test {
+
+ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::filesystem::path& log_file) {
+  if (argv.empty()) throw std::invalid_argument("ChildProcess: no program given");
+  // Built before fork: the child only calls async-signal-safe functions until exec.
+  std::vector<char*> args;
+  for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
+  args.push_back(nullptr);
+  const std::string log = log_file.string();
+  pid_ = ::fork();
+  if (pid_ < 0) throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
+  if (pid_ == 0) {
+    const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+    if (fd >= 0) {
+      ::dup2(fd, 1);
+      ::dup2(fd, 2);
+      if (fd > 2) ::close(fd);
+    }
+    // Test processes must not inherit a blocked signal mask or the journal of the test runner.
+    sigset_t none;
+    sigemptyset(&none);
+    sigprocmask(SIG_SETMASK, &none, nullptr);
+    ::unsetenv("JOURNAL_STREAM");
+    ::unsetenv("NOTIFY_SOCKET");
+    ::execvp(args[0], args.data());
+    const char* message = "exec failed: ";
+    (void)!::write(2, message, std::strlen(message));
+    (void)!::write(2, args[0], std::strlen(args[0]));
+    (void)!::write(2, "\n", 1);
+    ::_exit(127);
+  }
+}
+
+ChildProcess::~ChildProcess() {
+  if (running()) {
+    ::kill(pid_, SIGKILL);
+    wait(5);
+  }
+}
+
+void ChildProcess::signal(int number) const {
+  if (pid_ > 0 && !exited_) ::kill(pid_, number);
+}
+
+bool ChildProcess::running() {
+  if (exited_ || pid_ <= 0) return false;
+  int status = 0;
+  if (::waitpid(pid_, &status, WNOHANG) == pid_) {
+    exited_ = true;
+    status_ = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    return false;
+  }
+  return true;
+}
+
+int ChildProcess::wait(double timeout_s) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  while (running() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  return running() ? -1 : status_;
+}
+
+int ChildProcess::stop(double kill_after_s) {
+  signal(SIGTERM);
+  if (wait(kill_after_s) < 0) {
+    signal(SIGKILL);
+    wait(5);
+  }
+  return exited_ ? status_ : -1;
+}
+
+int run_to_exit(const std::vector<std::string>& argv, const std::filesystem::path& log_file, double timeout_s) {
+  ChildProcess child(argv, log_file);
+  const int status = child.wait(timeout_s);
+  if (status < 0) child.stop(0);
+  return status;
+}
+
+}  // namespace lastcut::test

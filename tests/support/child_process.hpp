@@ -1,0 +1,39 @@
+#pragma once
+// ChildProcess: a real program a test (or benchmark) starts with fork/exec, its stdout and stderr
+// appended to a log file, signalled and waited for with a deadline; killed (SIGKILL) by the
+// destructor if still running. Used by the daemon harness (lastcutd, lastcut, lastcut-sim), the
+// mosquitto broker and the PostgreSQL server of the tests.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace lastcut::test {
+
+class ChildProcess {
+ public:
+  // argv[0] is the program: a path, or a name looked up on PATH. The child starts with an empty
+  // signal mask and without the test runner's JOURNAL_STREAM and NOTIFY_SOCKET. When exec fails the
+  // child exits with 127 (the log says why).
+  ChildProcess(const std::vector<std::string>& argv, const std::filesystem::path& log_file);
+  ~ChildProcess();
+  ChildProcess(const ChildProcess&) = delete;
+  ChildProcess& operator=(const ChildProcess&) = delete;
+
+  int pid() const { return pid_; }
+  void signal(int number) const;
+  // Waits for the exit; returns the exit status (or 128 + signal), -1 on timeout.
+  int wait(double timeout_s);
+  // SIGTERM, then wait (SIGKILL after kill_after_s); returns the exit status as wait() does.
+  int stop(double kill_after_s = 5);
+  bool running();
+
+ private:
+  int pid_ = -1;
+  int status_ = -1;
+  bool exited_ = false;
+};
+
+// Runs argv to completion (at most timeout_s, then SIGKILL); returns the exit status, -1 on timeout.
+int run_to_exit(const std::vector<std::string>& argv, const std::filesystem::path& log_file, double timeout_s);
+
+}  // namespace lastcut::test
