@@ -207,6 +207,23 @@ TEST(LedgerMultiNode, SixtyScansOnThreeNodesEachCutOnceThroughKillsAndRestarts) 
     return jobs_in("WHERE cutter = 'cutter-b' AND state = 'done'") == 18 &&
            shop.count("SELECT count(*) FROM batches WHERE cutter = 'cutter-b' AND state NOT IN ('cut', 'held')") == 0;
   }, 150)) << shop.log_tails();
+  // Each of them was told over MQTT as it was cut, by the station that cut it (the watcher was
+  // connected all along until here).
+  for (const Scan& scan : scans) {
+    if (scan.wave != 1 || scan.cutter != "cutter-b") continue;
+    int cut_events = 0;
+    for (const auto& message : watcher.messages()) {
+      if (message.topic.rfind("lastcut/job/", 0) != 0) continue;
+      const auto event = nlohmann::json::parse(message.payload, nullptr, false);
+      if (event.is_object() && event.value("stage", "") == "cut" && event.value("scan", "") == scan.name) {
+        ++cut_events;
+        EXPECT_EQ(message.topic, "lastcut/job/" + event.value("job", "") + "/event");
+        EXPECT_EQ(event.value("station", ""), "station-b") << scan.name;
+        EXPECT_EQ(event.value("cutter", ""), "cutter-b") << scan.name;
+      }
+    }
+    EXPECT_GE(cut_events, 1) << "no MQTT event for the cut of " << scan.name;  // QoS 1: at least once
+  }
   ASSERT_EQ(shop.postgres().stop(), "");
   dropped += drop_wave(shop, scans, staging, 2);
   std::this_thread::sleep_for(std::chrono::seconds(2));
