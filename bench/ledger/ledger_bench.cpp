@@ -45,6 +45,15 @@ std::string hash_of(int node, int scan) {
   return hex;
 }
 
+// A compute node's part of a batch, nothing nested: group computed jobs (no window), hand the
+// batch to its station.
+lastcut::Status make_nested_batch(LedgerClient& client) {
+  auto made = client.make_batch(5, 0, 30);
+  if (!made) return made.status();
+  if (!made->has_value()) return lastcut::Status::success();
+  return client.mark_nested((*made)->lease, {"batches/" + std::to_string((*made)->batch_id) + "/cut.nc", 1, {}});
+}
+
 void run_node(const std::string& url, int node, int nodes, int scans, Shared& shared) {
   auto connected = LedgerClient::connect(url, "node-" + std::to_string(node));
   if (!connected) return shared.fail(connected.error());
@@ -77,7 +86,7 @@ void run_node(const std::string& url, int node, int nodes, int scans, Shared& sh
       }
       ++shared.claims;
       if (Status done = client.mark_computed((*claim)->lease); !done) return shared.fail(done.error());
-      if (auto batch = client.make_batch(5); !batch) return shared.fail(batch.error());
+      if (Status made = make_nested_batch(client); !made) return shared.fail(made.error());
     }
     auto batch = client.claim_batch(30);
     if (!batch) return shared.fail(batch.error());
@@ -88,8 +97,8 @@ void run_node(const std::string& url, int node, int nodes, int scans, Shared& sh
     }
     if (dropped == scans && !claim->has_value() && !batch->has_value()) {
       // Nothing for this node now: finished when no job anywhere is short of done.
-      auto left = client.make_batch(5);  // a last partial group
-      if (!left) return shared.fail(left.error());
+      // A last partial group.
+      if (Status made = make_nested_batch(client); !made) return shared.fail(made.error());
       pqxx::connection look(url);
       pqxx::read_transaction tx(look);
       if (tx.exec("SELECT count(*) FROM jobs WHERE state <> 'done'")[0][0].as<long long>() == 0) return;

@@ -317,6 +317,14 @@ void cross_check(DaemonConfig& config, std::vector<std::string>& errors) {
   if (!config.paths.watch_dir.empty() && config.paths.watch_dir == config.paths.spool_dir) {
     errors.push_back("paths.watch: must not be the spool folder itself (use a folder such as spool/incoming)");
   }
+  if (config.ledger) {
+    for (const std::string& cutter : config.ledger->cutters)
+      if (!config.cutters.count(cutter)) errors.push_back("ledger.cutters: \"" + cutter + "\" is not a [cutters.*] table");
+    for (const auto& [name, material] : config.materials)
+      if (material.kind == MaterialKind::Hide)
+        errors.push_back("materials." + name + ": hides are cut by single-station lastcutd only for now; a ledger node "
+                         "nests strips (remove [ledger] or use kind = \"strip\")");
+  }
 }
 
 }  // namespace

@@ -24,6 +24,10 @@ bool LedgerConfig::has_role(const std::string& role) const {
   return std::find(roles.begin(), roles.end(), role) != roles.end();
 }
 
+bool LedgerConfig::owns_cutter(const std::string& cutter) const {
+  return has_role("station") && (cutters.empty() || std::find(cutters.begin(), cutters.end(), cutter) != cutters.end());
+}
+
 void read_ledger_table(const toml::table& table, const std::filesystem::path& base, std::optional<LedgerConfig>& out,
                        std::vector<std::string>& errors) {
   LedgerConfig config;
@@ -62,6 +66,19 @@ void read_ledger_table(const toml::table& table, const std::filesystem::path& ba
       }
     }
   }
+  if (const toml::node* cutters = reader.node("cutters")) {
+    if (!cutters->is_array()) errors.push_back(at("cutters", *cutters) + ": must be a list of [cutters.*] names");
+    else
+      for (const toml::node& cutter : *cutters->as_array()) {
+        if (!cutter.is_string()) errors.push_back(at("cutters", cutter) + ": each entry must be a cutter's name");
+        else config.cutters.push_back(*cutter.value<std::string>());
+      }
+    if (!config.cutters.empty() && std::find(config.roles.begin(), config.roles.end(), "station") == config.roles.end()) {
+      errors.push_back(at("cutters", *cutters) + ": only a node with the role \"station\" has cutters cabled to it");
+    }
+  }
+  reader.number("batch_window_s", config.batch_window_s, 0, 3600);
+  reader.integer("max_batch_jobs", config.max_batch_jobs, 1, 1000);
   reader.number("lease_s", config.lease_s, 1, 3600);
   reader.number("heartbeat_s", config.heartbeat_s, 0.1, 1800);
   if (config.heartbeat_s > config.lease_s / 2) {

@@ -15,6 +15,13 @@ struct LedgerConfig {
   std::filesystem::path shared_dir;     // scans and outputs by content hash, reached by every node (NFS)
   double lease_s = 30;                  // a claim not renewed this long goes back to the queue
   double heartbeat_s = 5;               // leases and the node's heartbeat are renewed this often
+  // The cutters cabled to this node (station role), each a [cutters.X] of the file; empty = all of
+  // them. The others are listed only for their machine profiles (a compute node writes their cut files).
+  std::vector<std::string> cutters;
+  double batch_window_s = 5;            // a computed job waits at most this long for company before nesting
+  int max_batch_jobs = 8;               // jobs nested together at most
+
+  bool owns_cutter(const std::string& cutter) const;
 
   bool has_role(const std::string& role) const;
 };

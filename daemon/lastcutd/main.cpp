@@ -1,6 +1,7 @@
 // lastcutd: the unattended watch-folder daemon. Scans dropped into the watch folder become
 // molds, nested layouts and cut files, sent to the configured cutters; every job stays in the
-// spool (done/, failed/, held/). See docs/daemon.md.
+// spool (done/, failed/, held/). See docs/daemon.md. With [ledger] it runs as one node of a shop
+// sharing a PostgreSQL job ledger instead (docs/multi-station.md).
 //
 //   lastcutd --config /etc/lastcut/lastcut.toml      run (under systemd: Type=notify)
 //   lastcutd --check-config FILE                      validate a configuration and exit
@@ -20,6 +21,7 @@
 
 #include "daemon/config/config_loader.hpp"
 #include "daemon/ledger/ledger_check.hpp"
+#include "daemon/ledger_node/ledger_node.hpp"
 #include "daemon/pipeline/pipeline.hpp"
 #include "daemon/service/operator_log.hpp"
 #include "daemon/service/signal_events.hpp"
@@ -59,7 +61,10 @@ int check_config(const std::string& file) {
   return 0;
 }
 
-void reload(const std::string& file, lastcut::daemon::Pipeline& pipeline, lastcut::daemon::SystemdNotifier& notifier,
+// The node is a Pipeline (single station, file spool) or a LedgerNode (one station of a shop on a
+// shared PostgreSQL ledger): the main loop drives either the same way.
+template <typename Node>
+void reload(const std::string& file, Node& pipeline, lastcut::daemon::SystemdNotifier& notifier,
             const lastcut::daemon::StatusConfig& running_status) {
   notifier.reloading();
   const auto result = lastcut::daemon::load_daemon_config(file);
@@ -81,38 +86,11 @@ void reload(const std::string& file, lastcut::daemon::Pipeline& pipeline, lastcu
   notifier.ready();
 }
 
-int run(const std::string& file) {
-  // Before any thread starts, so that every thread inherits the blocked signals.
-  lastcut::daemon::SignalEvents signals;
-  const auto loaded = lastcut::daemon::load_daemon_config(file);
-  if (!loaded.config) {
-    std::fprintf(stderr, "lastcutd: configuration refused:\n%s\n", loaded.error.c_str());
-    return kExitConfig;
-  }
-  if (loaded.config->ledger) {
-    // The ledger's client and schema exist (--check-config uses them), but the pipeline still
-    // claims from the file spool only: running it beside a shared ledger would let two stations
-    // nest the same scan. Refused rather than half-applied (docs/multi-station.md).
-    std::fprintf(stderr, "lastcutd: configuration refused: %s: [ledger] is not run by this lastcutd yet (the pipeline "
-                 "works on the file spool only); remove [ledger] to run this node on its own spool\n", file.c_str());
-    return kExitConfig;
-  }
-  lastcut::daemon::setup_operator_log(loaded.config->log.level);
-  spdlog::info("lastcutd starting with {}", file);
-  lastcut::daemon::SystemdNotifier notifier;
-  // Live status first and stopped last, so that it sees recovery and the final state of the cutters.
-  std::unique_ptr<lastcut::daemon::MqttStatus> live_status;
-  if (loaded.config->status.enabled) {
-    std::vector<std::string> cutters;
-    for (const auto& [name, cutter] : loaded.config->cutters) cutters.push_back(name);
-    live_status = std::make_unique<lastcut::daemon::MqttStatus>(loaded.config->status, cutters);
-    if (lastcut::Status started = live_status->start(); !started) {
-      spdlog::critical("lastcutd cannot start: {}", started.error());
-      return 1;
-    }
-  }
-  lastcut::daemon::Pipeline pipeline(std::make_shared<lastcut::daemon::DaemonConfig>(*loaded.config));
-  pipeline.set_observer(live_status.get());
+template <typename Node>
+int serve(const std::string& file, Node& pipeline, lastcut::daemon::SignalEvents& signals,
+          lastcut::daemon::SystemdNotifier& notifier, const lastcut::daemon::StatusConfig& running_status,
+          lastcut::daemon::StatusObserver* observer) {
+  pipeline.set_observer(observer);
   if (lastcut::Status started = pipeline.start(); !started) {
     spdlog::critical("lastcutd cannot start: {}", started.error());
     return 1;
@@ -128,7 +106,7 @@ int run(const std::string& file) {
     bool stop = false;
     for (auto event = signals.read(); event != lastcut::daemon::SignalEvent::None; event = signals.read()) {
       if (event == lastcut::daemon::SignalEvent::Stop) stop = true;
-      else reload(file, pipeline, notifier, loaded.config->status);
+      else reload(file, pipeline, notifier, running_status);
     }
     if (stop) break;
     pipeline.read_events();
@@ -150,9 +128,46 @@ int run(const std::string& file) {
   notifier.stopping();
   spdlog::info("lastcutd stopping: finishing or holding the jobs in hand");
   pipeline.stop();
+  return 0;
+}
+
+int run(const std::string& file) {
+  // Before any thread starts, so that every thread inherits the blocked signals.
+  lastcut::daemon::SignalEvents signals;
+  const auto loaded = lastcut::daemon::load_daemon_config(file);
+  if (!loaded.config) {
+    std::fprintf(stderr, "lastcutd: configuration refused:\n%s\n", loaded.error.c_str());
+    return kExitConfig;
+  }
+  lastcut::daemon::setup_operator_log(loaded.config->log.level);
+  spdlog::info("lastcutd starting with {}", file);
+  lastcut::daemon::SystemdNotifier notifier;
+  // Live status first and stopped last, so that it sees recovery and the final state of the cutters.
+  std::unique_ptr<lastcut::daemon::MqttStatus> live_status;
+  if (loaded.config->status.enabled) {
+    std::vector<std::string> cutters;
+    for (const auto& [name, cutter] : loaded.config->cutters) {
+      // A ledger node shows only the cutters cabled to it; the others belong to their own stations.
+      if (!loaded.config->ledger || loaded.config->ledger->owns_cutter(name)) cutters.push_back(name);
+    }
+    live_status = std::make_unique<lastcut::daemon::MqttStatus>(loaded.config->status, cutters);
+    if (lastcut::Status started = live_status->start(); !started) {
+      spdlog::critical("lastcutd cannot start: {}", started.error());
+      return 1;
+    }
+  }
+  const auto config = std::make_shared<lastcut::daemon::DaemonConfig>(*loaded.config);
+  int code = 0;
+  if (config->ledger) {
+    lastcut::daemon::LedgerNode node(config);
+    code = serve(file, node, signals, notifier, loaded.config->status, live_status.get());
+  } else {
+    lastcut::daemon::Pipeline pipeline(config);
+    code = serve(file, pipeline, signals, notifier, loaded.config->status, live_status.get());
+  }
   if (live_status) live_status->stop();
   spdlog::info("lastcutd stopped");
-  return 0;
+  return code;
 }
 
 }  // namespace

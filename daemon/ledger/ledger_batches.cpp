@@ -1,5 +1,5 @@
-// The batch half of the ledger queue: computed jobs grouped per cutter and material, claimed by
-// the station that owns the cutter, marked sending before the first byte, then cut or held.
+// The batch half of the ledger queue: computed jobs grouped per cutter and material and nested by
+// a compute node, claimed by the station that owns the cutter, marked sending before the first byte, then cut or held.
 #include <pqxx/pqxx>
 
 #include "daemon/ledger/ledger_transaction.hpp"
@@ -24,53 +24,96 @@ std::vector<long long> jobs_of(pqxx::work& tx, long long batch_id) {
   return ids;
 }
 
+// The batch's jobs and their scans into `claim`, ascending.
+void fill_jobs(pqxx::work& tx, BatchClaim& claim) {
+  for (const pqxx::row& r :
+       tx.exec_params("SELECT id, scan_sha256 FROM jobs WHERE batch_id = $1 ORDER BY id", claim.batch_id)) {
+    claim.job_ids.push_back(r[0].as<long long>());
+    claim.job_scans.push_back(r[1].as<std::string>());
+  }
+}
+
 }  // namespace
 
-Result<std::optional<long long>> LedgerClient::make_batch(int max_jobs) {
-  using Made = std::optional<long long>;
-  return transact<Made>("making a batch", [&](pqxx::work& tx) -> Result<Made> {
+Result<std::optional<BatchClaim>> LedgerClient::make_batch(int max_jobs, double window_s, double lease_s) {
+  using Claim = std::optional<BatchClaim>;
+  return transact<Claim>("making a batch", [&](pqxx::work& tx) -> Result<Claim> {
     const pqxx::result oldest = tx.exec(
-        "SELECT cutter, material FROM jobs WHERE state = 'computed' ORDER BY created_at, id LIMIT 1"
-        " FOR UPDATE SKIP LOCKED");
-    if (oldest.empty()) return Made();
-    const std::string cutter = oldest[0][0].as<std::string>();
-    const std::string material = oldest[0][1].as<std::string>();
+        "SELECT cutter, material, updated_at < now() - make_interval(secs => " + std::to_string(window_s) +
+        ") FROM jobs WHERE state = 'computed' ORDER BY created_at, id LIMIT 1 FOR UPDATE SKIP LOCKED");
+    if (oldest.empty()) return Claim();
+    BatchClaim claim;
+    claim.cutter = oldest[0][0].as<std::string>();
+    claim.material = oldest[0][1].as<std::string>();
+    const bool waited_long_enough = oldest[0][2].as<bool>();
     std::vector<long long> ids;
     for (const pqxx::row& r : tx.exec_params(
              "SELECT id FROM jobs WHERE state = 'computed' AND cutter = $1 AND material = $2"
              " ORDER BY created_at, id LIMIT $3 FOR UPDATE SKIP LOCKED",
-             cutter, material, max_jobs)) {
+             claim.cutter, claim.material, max_jobs)) {
       ids.push_back(r[0].as<long long>());
     }
-    const long long batch_id =
+    if (!waited_long_enough && static_cast<int>(ids.size()) < max_jobs) return Claim();
+    claim.batch_id =
         tx.exec_params1(
-              "INSERT INTO batches (cutter, material, state, created_by) VALUES ($1, $2, 'queued', $3) RETURNING id",
-              cutter, material, node_)[0]
+              "INSERT INTO batches (cutter, material, state, created_by) VALUES ($1, $2, 'nesting', $3) RETURNING id",
+              claim.cutter, claim.material, node_)[0]
             .as<long long>();
     tx.exec_params("UPDATE jobs SET state = 'batched', batch_id = $1, updated_at = now() WHERE id = ANY($2::bigint[])",
-                   batch_id, id_array(ids));
-    for (long long id : ids) add_event(tx, id, node_, "batched", "batch " + std::to_string(batch_id) + " for " + cutter);
-    return Made(batch_id);
+                   claim.batch_id, id_array(ids));
+    fill_jobs(tx, claim);
+    for (long long id : claim.job_ids) {
+      add_event(tx, id, node_, "batched", "batch " + std::to_string(claim.batch_id) + " for " + claim.cutter);
+    }
+    claim.lease = {LeaseKind::Batch, claim.batch_id, take_lease(tx, node_, LeaseKind::Batch, claim.batch_id, lease_s)};
+    return Claim(std::move(claim));
   });
 }
 
-Result<std::optional<BatchClaim>> LedgerClient::claim_batch(double lease_s) {
+Status LedgerClient::mark_nested(const Lease& lease, const NestedBatch& nested) {
+  return transact<bool>("marking batch " + std::to_string(lease.object_id) + " nested",
+                        [&](pqxx::work& tx) -> Result<bool> {
+                          if (Status held = check_lease(tx, node_, lease); !held) return held;
+                          if (Status nesting = batch_in(tx, lease.object_id, "nesting"); !nesting) return nesting;
+                          for (const auto& [job_id, reason] : nested.rejected) {
+                            tx.exec_params(
+                                "UPDATE jobs SET state = 'failed', batch_id = NULL, reason = $3, updated_at = now()"
+                                " WHERE id = $1 AND batch_id = $2",
+                                job_id, lease.object_id, reason);
+                            add_event(tx, job_id, node_, "failed", reason);
+                          }
+                          const bool any_left = !jobs_of(tx, lease.object_id).empty() && !nested.cut_file.empty();
+                          tx.exec_params(
+                              "UPDATE batches SET state = $2, cut_file = $3, pieces = $4, updated_at = now()"
+                              " WHERE id = $1",
+                              lease.object_id, any_left ? "queued" : "dissolved", nested.cut_file, nested.pieces);
+                          for (long long id : jobs_of(tx, lease.object_id)) {
+                            add_event(tx, id, node_, "nested", nested.cut_file);
+                          }
+                          release_lease(tx, lease);
+                          return true;
+                        })
+      .status();
+}
+
+Result<std::optional<BatchClaim>> LedgerClient::claim_batch(double lease_s, const std::string& cutter) {
   using Claim = std::optional<BatchClaim>;
   return transact<Claim>("claiming a batch", [&](pqxx::work& tx) -> Result<Claim> {
     // Only the station a cutter is cabled to sends to it.
     const pqxx::result found = tx.exec_params(
-        "SELECT b.id, b.cutter, b.material FROM batches b JOIN cutters c ON c.name = b.cutter"
-        " WHERE b.state = 'queued' AND c.station = $1 ORDER BY b.created_at, b.id LIMIT 1"
-        " FOR UPDATE OF b SKIP LOCKED",
-        node_);
+        "SELECT b.id, b.cutter, b.material, b.cut_file FROM batches b JOIN cutters c ON c.name = b.cutter"
+        " WHERE b.state = 'queued' AND c.station = $1 AND ($2 = '' OR b.cutter = $2) ORDER BY b.created_at, b.id"
+        " LIMIT 1 FOR UPDATE OF b SKIP LOCKED",
+        node_, cutter);
     if (found.empty()) return Claim();
     BatchClaim claim;
     claim.batch_id = found[0][0].as<long long>();
     claim.cutter = found[0][1].as<std::string>();
     claim.material = found[0][2].as<std::string>();
+    claim.cut_file = found[0][3].as<std::string>();
     tx.exec_params("UPDATE batches SET state = 'claimed', updated_at = now() WHERE id = $1", claim.batch_id);
     claim.lease = {LeaseKind::Batch, claim.batch_id, take_lease(tx, node_, LeaseKind::Batch, claim.batch_id, lease_s)};
-    claim.job_ids = jobs_of(tx, claim.batch_id);
+    fill_jobs(tx, claim);
     return Claim(std::move(claim));
   });
 }
@@ -98,6 +141,21 @@ Status LedgerClient::mark_cut(const Lease& lease) {
                           tx.exec_params("UPDATE jobs SET state = 'done', updated_at = now() WHERE batch_id = $1",
                                          lease.object_id);
                           for (long long id : jobs_of(tx, lease.object_id)) add_event(tx, id, node_, "cut");
+                          release_lease(tx, lease);
+                          return true;
+                        })
+      .status();
+}
+
+Status LedgerClient::mark_not_sent(const Lease& lease, const std::string& reason) {
+  return transact<bool>("returning batch " + std::to_string(lease.object_id) + " to the queue",
+                        [&](pqxx::work& tx) -> Result<bool> {
+                          if (Status held = check_lease(tx, node_, lease); !held) return held;
+                          if (Status sending = batch_in(tx, lease.object_id, "sending"); !sending) return sending;
+                          tx.exec_params(
+                              "UPDATE batches SET state = 'queued', reason = $2, updated_at = now() WHERE id = $1",
+                              lease.object_id, reason);
+                          for (long long id : jobs_of(tx, lease.object_id)) add_event(tx, id, node_, "not sent", reason);
                           release_lease(tx, lease);
                           return true;
                         })

@@ -66,13 +66,23 @@ struct BatchClaim {
   std::string cutter;
   std::string material;
   std::vector<long long> job_ids;  // ascending
+  std::vector<std::string> job_scans;  // the scan_sha256 of each job_ids entry
+  std::string cut_file;            // set once nested: the cut file's path inside the shared folder
   Lease lease;
+};
+
+// What a compute node hands over when a batch is nested (mark_nested).
+struct NestedBatch {
+  std::string cut_file;                        // path inside the shared folder; "" when every job was rejected
+  int pieces = 0;                              // pieces placed
+  std::vector<std::pair<long long, std::string>> rejected;  // job id -> why its molds could not be placed
 };
 
 struct SweepOutcome {
   std::vector<long long> jobs_requeued;   // lease expired while computing: ready again
   std::vector<long long> jobs_failed;     // ... for the max_attempts-th time: failed
   std::vector<long long> batches_requeued;  // claimed, nothing sent yet: queued again
+  std::vector<long long> batches_dissolved;  // expired while nesting: their jobs computed again, to be regrouped
   std::vector<long long> batches_held;    // expired while sending: held with their jobs
 };
 
@@ -125,15 +135,24 @@ class LedgerClient {
   Status renew(const Lease& lease, double lease_s);
   Status mark_computed(const Lease& lease);
   Status mark_failed(const Lease& lease, const std::string& reason);
+  // Computed, but held for an operator's review (a mold off its reference pattern).
+  Status mark_held(const Lease& lease, const std::string& reason);
 
-  // Groups up to max_jobs computed jobs of one cutter and material into a queued batch (the
-  // oldest computed job decides which); nullopt when no job is computed.
-  Result<std::optional<long long>> make_batch(int max_jobs);
-  // The oldest queued batch of a cutter this node owns, now `claimed`.
-  Result<std::optional<BatchClaim>> claim_batch(double lease_s);
+  // Groups up to max_jobs computed jobs of one cutter and material into a batch that this node
+  // nests under a lease of lease_s (state `nesting`). The oldest computed job decides which cutter
+  // and material; it waits up to window_s for company unless max_jobs are already computed.
+  // nullopt when no group is due.
+  Result<std::optional<BatchClaim>> make_batch(int max_jobs, double window_s, double lease_s);
+  // The batch is nested and its cut file written: `queued` for its cutter's station. Rejected jobs
+  // are failed with their reason and leave the batch; with none left the batch is `dissolved`.
+  Status mark_nested(const Lease& lease, const NestedBatch& nested);
+  // The oldest queued batch of a cutter this node owns (of `cutter` only, unless empty), now `claimed`.
+  Result<std::optional<BatchClaim>> claim_batch(double lease_s, const std::string& cutter = "");
   // Before the first byte goes to the cutter: from here the batch ends cut or held.
   Status mark_sending(const Lease& lease);
   Status mark_cut(const Lease& lease);
+  // The cutter refused the batch before taking any byte (the driver guarantees it): `queued` again.
+  Status mark_not_sent(const Lease& lease, const std::string& reason);
   Status hold_batch(const Lease& lease, const std::string& reason);
 
   Result<SweepOutcome> sweep_expired(int max_attempts);
@@ -147,6 +166,8 @@ class LedgerClient {
 
  private:
   LedgerClient(std::string url, std::string node);
+  // A claimed job ends in `state` (failed or held) with the reason, under the fencing check.
+  Status end_job(const Lease& lease, const std::string& state, const std::string& reason);
   Status open();
   // Runs `body` in one transaction on a live connection (re-opened if lost); commits when it succeeds.
   template <typename T, typename Body>

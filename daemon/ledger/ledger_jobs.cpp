@@ -166,14 +166,20 @@ Status LedgerClient::mark_computed(const Lease& lease) {
 }
 
 Status LedgerClient::mark_failed(const Lease& lease, const std::string& reason) {
-  return transact<bool>("marking job " + std::to_string(lease.object_id) + " failed",
+  return end_job(lease, "failed", reason);
+}
+
+Status LedgerClient::mark_held(const Lease& lease, const std::string& reason) { return end_job(lease, "held", reason); }
+
+Status LedgerClient::end_job(const Lease& lease, const std::string& state, const std::string& reason) {
+  return transact<bool>("marking job " + std::to_string(lease.object_id) + " " + state,
                         [&](pqxx::work& tx) -> Result<bool> {
                           if (Status held = check_lease(tx, node_, lease); !held) return held;
                           tx.exec_params(
-                              "UPDATE jobs SET state = 'failed', reason = $2, updated_at = now() WHERE id = $1",
-                              lease.object_id, reason);
+                              "UPDATE jobs SET state = $3, reason = $2, updated_at = now() WHERE id = $1",
+                              lease.object_id, reason, state);
                           release_lease(tx, lease);
-                          add_event(tx, lease.object_id, node_, "failed", reason);
+                          add_event(tx, lease.object_id, node_, state, reason);
                           return true;
                         })
       .status();

@@ -1,6 +1,7 @@
 // Leases nobody renews any more: those that expired (sweep_expired, any node) and those an
 // earlier run of this node left behind (register_node at start). Jobs in computation go back to
-// the queue; batches not yet sending are queued again; a batch that was sending is held with its
+// the queue; batches being nested are dissolved (their jobs regrouped), claimed batches not yet
+// sending are queued again; a batch that was sending is held with its
 // jobs, never re-sent (the cutter may have cut part of it).
 #include <pqxx/pqxx>
 
@@ -57,7 +58,16 @@ SweepOutcome release_matching(pqxx::work& tx, const std::string& node, const std
     const pqxx::result batch = tx.exec_params("SELECT state FROM batches WHERE id = $1 FOR UPDATE", id);
     if (batch.empty()) continue;
     const std::string state = batch[0][0].as<std::string>();
-    if (state == "claimed") {
+    if (state == "nesting") {
+      // Nothing was written for the station yet: the jobs go back to be grouped (by any node) anew.
+      for (const pqxx::row& j : tx.exec_params(
+               "UPDATE jobs SET state = 'computed', batch_id = NULL, updated_at = now() WHERE batch_id = $1 RETURNING id",
+               id)) {
+        add_event(tx, j[0].as<long long>(), node, "regrouped", "nesting on " + holder + " ended without a result");
+      }
+      tx.exec_params("UPDATE batches SET state = 'dissolved', updated_at = now() WHERE id = $1", id);
+      out.batches_dissolved.push_back(id);
+    } else if (state == "claimed") {
       tx.exec_params("UPDATE batches SET state = 'queued', updated_at = now() WHERE id = $1", id);
       out.batches_requeued.push_back(id);
     } else if (state == "sending") {

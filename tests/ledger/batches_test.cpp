@@ -35,40 +35,39 @@ class BatchesTest : public LedgerTest {
 };
 
 TEST_F(BatchesTest, OnlyTheOwningStationClaimsAndCutMarksJobsDone) {
-  auto first = compute_->make_batch(10);
-  ASSERT_TRUE(first.ok() && first->has_value()) << first.error();
-  EXPECT_EQ(query("SELECT count(*) FROM jobs WHERE batch_id = " + std::to_string(**first)), "2");
-  auto second = compute_->make_batch(10);
-  ASSERT_TRUE(second.ok() && second->has_value());
-  auto none = compute_->make_batch(10);
-  ASSERT_TRUE(none.ok());
-  EXPECT_FALSE(none->has_value());
+  const std::optional<long long> first = nest_batch(*compute_, 10);
+  ASSERT_TRUE(first.has_value());
+  EXPECT_EQ(query("SELECT count(*) FROM jobs WHERE batch_id = " + std::to_string(*first)), "2");
+  const std::optional<long long> second = nest_batch(*compute_, 10);
+  ASSERT_TRUE(second.has_value());
+  EXPECT_FALSE(nest_batch(*compute_, 10).has_value());
 
   auto by_compute = compute_->claim_batch(30);  // owns no cutter
   ASSERT_TRUE(by_compute.ok());
   EXPECT_FALSE(by_compute->has_value());
   auto claim = station1_->claim_batch(30);
   ASSERT_TRUE(claim.ok() && claim->has_value()) << claim.error();
-  EXPECT_EQ((*claim)->batch_id, **first);
+  EXPECT_EQ((*claim)->batch_id, *first);
   EXPECT_EQ((*claim)->cutter, "cutter-1");
   EXPECT_EQ((*claim)->job_ids.size(), 2u);
+  EXPECT_EQ((*claim)->cut_file, "batches/" + std::to_string(*first) + "/cut.nc");
   auto nothing_more = station1_->claim_batch(30);
   ASSERT_TRUE(nothing_more.ok());
   EXPECT_FALSE(nothing_more->has_value());
 
   EXPECT_EQ(station1_->mark_cut((*claim)->lease).error(),
-            "batch " + std::to_string(**first) + " is claimed, not sending");
+            "batch " + std::to_string(*first) + " is claimed, not sending");
   ASSERT_TRUE(station1_->mark_sending((*claim)->lease).ok());
   ASSERT_TRUE(station1_->mark_cut((*claim)->lease).ok());
   EXPECT_EQ(query("SELECT string_agg(state, ',' ORDER BY id) FROM jobs"), "done,done,batched");
 
   auto other = station2_->claim_batch(30);
   ASSERT_TRUE(other.ok() && other->has_value());
-  EXPECT_EQ((*other)->batch_id, **second);
+  EXPECT_EQ((*other)->batch_id, *second);
 }
 
 TEST_F(BatchesTest, StationVanishedWhileSendingIsHeldNeverRequeued) {
-  ASSERT_TRUE(compute_->make_batch(10).ok());
+  ASSERT_TRUE(nest_batch(*compute_, 10).has_value());
   auto claim = station1_->claim_batch(0.3);
   ASSERT_TRUE(claim.ok() && claim->has_value());
   ASSERT_TRUE(station1_->mark_sending((*claim)->lease).ok());
@@ -98,7 +97,7 @@ TEST_F(BatchesTest, StationVanishedWhileSendingIsHeldNeverRequeued) {
 }
 
 TEST_F(BatchesTest, ClaimedButNotSendingGoesBackToTheQueue) {
-  ASSERT_TRUE(compute_->make_batch(10).ok());
+  ASSERT_TRUE(nest_batch(*compute_, 10).has_value());
   auto claim = station1_->claim_batch(0.3);
   ASSERT_TRUE(claim.ok() && claim->has_value());
   std::this_thread::sleep_for(std::chrono::milliseconds(600));
@@ -108,9 +107,78 @@ TEST_F(BatchesTest, ClaimedButNotSendingGoesBackToTheQueue) {
   auto again = station1_->claim_batch(30);
   ASSERT_TRUE(again.ok() && again->has_value());
   EXPECT_EQ((*again)->batch_id, (*claim)->batch_id);
-  EXPECT_EQ((*again)->lease.epoch, 2);
+  EXPECT_EQ((*again)->lease.epoch, (*claim)->lease.epoch + 1);  // nesting, first claim, this one
   EXPECT_FALSE(station1_->mark_sending((*claim)->lease).ok());  // the old claim's epoch
   EXPECT_TRUE(station1_->mark_sending((*again)->lease).ok());
+}
+
+TEST_F(BatchesTest, AComputedJobWaitsForCompanyUpToTheWindow) {
+  // cutter-1 has 2 computed jobs: fewer than 3, so they wait for the window...
+  auto early = compute_->make_batch(3, 0.5, 30);
+  ASSERT_TRUE(early.ok()) << early.error();
+  EXPECT_FALSE(early->has_value());
+  // ... unless the group is full,
+  auto full = compute_->make_batch(2, 0.5, 30);
+  ASSERT_TRUE(full.ok() && full->has_value());
+  EXPECT_EQ((*full)->job_ids.size(), 2u);
+  EXPECT_EQ((*full)->job_scans, (std::vector<std::string>{scan(1).scan_sha256, scan(2).scan_sha256}));
+  EXPECT_EQ(query("SELECT state FROM batches WHERE id = " + std::to_string((*full)->batch_id)), "nesting");
+  // ... or the oldest has waited long enough (cutter-2's single job).
+  std::this_thread::sleep_for(std::chrono::milliseconds(600));
+  auto late = compute_->make_batch(3, 0.5, 30);
+  ASSERT_TRUE(late.ok() && late->has_value());
+  EXPECT_EQ((*late)->cutter, "cutter-2");
+}
+
+TEST_F(BatchesTest, NestedRejectsFailAloneAndAnEmptyBatchIsDissolved) {
+  auto made = compute_->make_batch(10, 0, 30);
+  ASSERT_TRUE(made.ok() && made->has_value());
+  const auto& ids = (*made)->job_ids;
+  ASSERT_EQ(ids.size(), 2u);
+  ASSERT_TRUE(compute_->mark_nested((*made)->lease, {"batches/x/cut.nc", 3, {{ids[0], "a mold is wider"}}}).ok());
+  EXPECT_EQ(query("SELECT state || ':' || coalesce(batch_id::text, '-') || ':' || coalesce(reason, '') FROM jobs"
+                  " WHERE id = " + std::to_string(ids[0])),
+            "failed:-:a mold is wider");
+  EXPECT_EQ(query("SELECT state || ':' || cut_file || ':' || pieces FROM batches"), "queued:batches/x/cut.nc:3");
+
+  auto alone = compute_->make_batch(10, 0, 30);  // cutter-2's job, which cannot be placed at all
+  ASSERT_TRUE(alone.ok() && alone->has_value());
+  ASSERT_TRUE(compute_->mark_nested((*alone)->lease, {"", 0, {{(*alone)->job_ids[0], "too wide"}}}).ok());
+  EXPECT_EQ(query("SELECT state FROM batches WHERE id = " + std::to_string((*alone)->batch_id)), "dissolved");
+  auto nothing = station2_->claim_batch(30);
+  ASSERT_TRUE(nothing.ok());
+  EXPECT_FALSE(nothing->has_value());
+}
+
+TEST_F(BatchesTest, ANestingNodeThatVanishesLeavesItsJobsToBeRegrouped) {
+  auto made = compute_->make_batch(10, 0, 0.3);
+  ASSERT_TRUE(made.ok() && made->has_value());
+  std::this_thread::sleep_for(std::chrono::milliseconds(600));
+  auto swept = station1_->sweep_expired(3);
+  ASSERT_TRUE(swept.ok()) << swept.error();
+  EXPECT_EQ(swept->batches_dissolved, std::vector<long long>{(*made)->batch_id});
+  EXPECT_EQ(query("SELECT string_agg(state, ',' ORDER BY id) FROM jobs"), "computed,computed,computed");
+  // The late node's result is refused; another node groups the jobs anew.
+  EXPECT_FALSE(compute_->mark_nested((*made)->lease, {"batches/x/cut.nc", 2, {}}).ok());
+  const std::optional<long long> again = nest_batch(*station1_, 10);
+  ASSERT_TRUE(again.has_value());
+  EXPECT_NE(*again, (*made)->batch_id);
+}
+
+TEST_F(BatchesTest, AStationClaimsPerCutterAndABatchNotTakenByTheCutterIsQueuedAgain) {
+  ASSERT_TRUE(station1_->register_node({"station"}, {"cutter-1", "cutter-3"}, 3).ok());
+  ASSERT_TRUE(nest_batch(*compute_, 10).has_value());  // cutter-1
+  auto other_cutter = station1_->claim_batch(30, "cutter-3");
+  ASSERT_TRUE(other_cutter.ok());
+  EXPECT_FALSE(other_cutter->has_value());
+  auto claim = station1_->claim_batch(30, "cutter-1");
+  ASSERT_TRUE(claim.ok() && claim->has_value());
+  ASSERT_TRUE(station1_->mark_sending((*claim)->lease).ok());
+  ASSERT_TRUE(station1_->mark_not_sent((*claim)->lease, "alarm: door open").ok());
+  EXPECT_EQ(query("SELECT state || ': ' || reason FROM batches"), "queued: alarm: door open");
+  auto again = station1_->claim_batch(30, "cutter-1");
+  ASSERT_TRUE(again.ok() && again->has_value());
+  EXPECT_EQ((*again)->batch_id, (*claim)->batch_id);
 }
 
 TEST_F(BatchesTest, ACutterCabledToARunningStationIsRefusedElsewhere) {

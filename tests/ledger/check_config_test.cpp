@@ -1,7 +1,7 @@
 // `lastcutd --check-config` with [ledger], the real binary against a real server: it connects,
 // reports the schema version in one line and changes nothing; an unreachable ledger or a schema
-// newer than the build exits non-zero with one line; running with [ledger] is refused (not yet
-// run by the pipeline) instead of silently using the file spool.
+// newer than the build exits non-zero with one line; a node that cannot reach its ledger does not
+// start (rather than silently using the file spool).
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -94,12 +94,15 @@ TEST_F(CheckConfigTest, NewerSchemaAndUnreachableLedgerFailWithOneLine) {
   EXPECT_EQ(std::count(down.err.begin(), down.err.end(), '\n'), 1) << down.err;
 }
 
-TEST_F(CheckConfigTest, RunningWithLedgerIsRefusedNotSilentlySingleNode) {
+TEST_F(CheckConfigTest, ALedgerNodeThatCannotReachItsLedgerDoesNotStartOnItsOwnSpool) {
+  ASSERT_TRUE(server_.stop().empty());
   DaemonRun run = lastcutd("--config", url_);
-  EXPECT_EQ(run.exit_code, 78);
-  EXPECT_EQ(run.err, "lastcutd: configuration refused: " + config_ +
-                         ": [ledger] is not run by this lastcutd yet (the pipeline works on the file spool only); "
-                         "remove [ledger] to run this node on its own spool\n");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_NE(run.err.find("lastcutd cannot start: ledger unreachable while connecting to " + url_ + ": "),
+            std::string::npos)
+      << run.err;
+  // Not silently a single station: nothing of the file spool's job flow was set up.
+  EXPECT_FALSE(std::filesystem::exists(server_.folder() / "spool" / "work"));
 }
 
 }  // namespace

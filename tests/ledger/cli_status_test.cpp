@@ -33,7 +33,7 @@ class CliStatusTest : public LedgerTest {
       auto claim = compute->claim_job(30);
       ASSERT_TRUE(claim.ok() && claim->has_value());
       ASSERT_TRUE(compute->mark_computed((*claim)->lease).ok());
-      ASSERT_TRUE(compute->make_batch(1).ok());
+      ASSERT_TRUE(nest_batch(*compute, 1).has_value());
       auto batch = station->claim_batch(30);
       ASSERT_TRUE(batch.ok() && batch->has_value());
       ASSERT_TRUE(station->mark_sending((*batch)->lease).ok());

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <pqxx/pqxx>
@@ -49,6 +50,20 @@ inline ledger::ScanEntry scan(int n, const std::string& cutter = "cutter-1", con
   char hex[65];
   std::snprintf(hex, sizeof(hex), "%064x", n);
   return {hex, "scan-" + std::to_string(n) + ".stl", "", material, cutter};
+}
+
+// What a compute node does to a batch (nothing is really nested here): groups the oldest computed
+// jobs (no window) and hands the batch to its station with a cut file named after it. nullopt when
+// nothing is computed; the failure of a ledger call fails the test.
+inline std::optional<long long> nest_batch(ledger::LedgerClient& compute, int max_jobs) {
+  auto made = compute.make_batch(max_jobs, 0, 30);
+  EXPECT_TRUE(made.ok()) << made.error();
+  if (!made || !made->has_value()) return std::nullopt;
+  const long long id = (*made)->batch_id;
+  const Status nested =
+      compute.mark_nested((*made)->lease, {"batches/" + std::to_string(id) + "/cut.nc", 1, {}});
+  EXPECT_TRUE(nested.ok()) << nested.error();
+  return id;
 }
 
 }  // namespace lastcut::test

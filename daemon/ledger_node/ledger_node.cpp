@@ -1,0 +1,123 @@
+// LedgerNode: start and stop in one readable order, the main loop's turn, and the small helpers the
+// roles share. The roles themselves: scan_intake.cpp, ledger_compute.cpp, ledger_station.cpp.
+#include "daemon/ledger_node/ledger_node.hpp"
+
+#include <spdlog/spdlog.h>
+
+namespace lastcut::daemon {
+
+LedgerNode::LedgerNode(std::shared_ptr<const DaemonConfig> config)
+    : config_(std::move(config)), store_(config_->ledger->shared_dir) {}
+
+LedgerNode::~LedgerNode() { stop(); }
+
+Status LedgerNode::start() {
+  if (Status prepared = store_.prepare(); !prepared) return prepared;
+  std::error_code error;
+  std::filesystem::create_directories(config_->paths.spool_dir, error);
+  if (error) return Status::failure("spool folder " + config_->paths.spool_dir.string() + ": " + error.message());
+
+  auto connected = ledger::LedgerClient::connect(ledger().url, ledger().node);
+  if (!connected) return connected.status();
+  client_ = std::move(*connected);
+  const auto migrated = client_->migrate();
+  if (!migrated) return migrated.status();
+  if (migrated->version_after != migrated->version_before) {
+    spdlog::info("ledger schema migrated from version {} to {}", migrated->version_before, migrated->version_after);
+  }
+  std::vector<std::string> cutters;
+  for (const auto& [name, section] : config_->cutters)
+    if (ledger().owns_cutter(name)) cutters.push_back(name);
+  const auto registered = client_->register_node(ledger().roles, cutters, config_->jobs.max_attempts);
+  if (!registered) return registered.status();
+  for (long long id : registered->batches_held)
+    spdlog::error("batch {}: this node stopped while sending it: held for an operator, never re-sent", id);
+  const std::size_t handed_back = registered->jobs_requeued.size() + registered->batches_requeued.size() +
+                                  registered->batches_dissolved.size();
+  if (handed_back) spdlog::warn("{} claim(s) of this node's previous run handed back to the queue", handed_back);
+
+  keeper_ = std::make_unique<ledger::LeaseKeeper>(ledger().url, ledger().node, ledger().lease_s, ledger().heartbeat_s,
+                                                  [](const std::string& line) { spdlog::warn("{}", line); });
+  hot_folder_ = std::make_unique<HotFolder>(config_->paths.watch_dir, config_->watch);
+  if (Status watching = hot_folder_->start(); !watching) return watching;
+  if (ledger().has_role("compute")) {
+    for (int i = 0; i < config_->jobs.compute_workers; ++i) threads_.emplace_back([this, i] { compute_worker(i + 1); });
+  }
+  for (const std::string& cutter : cutters) threads_.emplace_back([this, cutter] { station_worker(cutter); });
+  std::string roles;
+  for (const std::string& role : ledger().roles) roles += (roles.empty() ? "" : "+") + role;
+  spdlog::info("ledger node {} ({}) on {}: watching {} ({}), shared folder {}, {} cutter(s) cabled here", ledger().node,
+               roles, client_->node(), config_->paths.watch_dir.string(), hot_folder_->mode_description(),
+               store_.root().string(), cutters.size());
+  return Status::success();
+}
+
+void LedgerNode::tick(Clock::time_point now) {
+  if (stopping_) return;
+  if (now >= next_intake_) {
+    for (const ReadyScan& ready : hot_folder_->collect_ready(now)) {
+      take(ready);
+      if (next_intake_ > now) break;  // the ledger is away: the rest wait too
+    }
+  }
+  if (now >= next_sweep_) {
+    sweep();
+    next_sweep_ = now + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(ledger().heartbeat_s));
+  }
+}
+
+std::string LedgerNode::status_line() const {
+  return "ledger node " + ledger().node + ": " + std::to_string(entered_) + " scan(s) entered, " +
+         std::to_string(duplicates_) + " duplicate(s), " + std::to_string(refused_) + " refused; " +
+         std::to_string(cuts_in_progress_.load()) + " cut(s) in progress" +
+         (keeper_ && !keeper_->reachable() ? "; ledger unreachable" : "");
+}
+
+std::string LedgerNode::reload(std::shared_ptr<const DaemonConfig>) {
+  return "a ledger node applies a new configuration when lastcutd is restarted";
+}
+
+void LedgerNode::stop() {
+  if (stopping_.exchange(true)) return;
+  {
+    std::lock_guard lock(pause_mutex_);
+    pause_wake_.notify_all();
+  }
+  // A cut in progress may finish within the grace time; then it is interrupted (and held).
+  const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                           std::chrono::duration<double>(config_->jobs.stop_grace_s));
+  while (cuts_in_progress_ > 0 && Clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  if (cuts_in_progress_ > 0) {
+    spdlog::warn("stopping: the cut in progress is interrupted and its batch held");
+    cancel_cut_ = true;
+  }
+  for (std::thread& thread : threads_)
+    if (thread.joinable()) thread.join();
+  threads_.clear();
+  keeper_.reset();  // kept leases simply run out; the next start of this node hands them back at once
+}
+
+void LedgerNode::pause(double seconds) {
+  std::unique_lock lock(pause_mutex_);
+  pause_wake_.wait_for(lock, std::chrono::duration<double>(seconds), [this] { return stopping_.load(); });
+}
+
+void LedgerNode::note_trouble(std::string& last, const std::string& now, const std::string& what) {
+  if (now == last) return;
+  if (now.empty()) spdlog::info("{}: working again", what);
+  else spdlog::warn("{}: {} (retrying; logged again when this changes)", what, now);
+  last = now;
+}
+
+void LedgerNode::job_event(long long job_id, const std::string& scan_name, JobStage stage, const std::string& reason) {
+  if (!observer_) return;
+  JobState state;
+  state.id = std::to_string(job_id);
+  state.scan_name = scan_name;
+  state.stage = stage;
+  state.reason = reason;
+  state.updated_at = utc_now_iso();
+  observer_->job_changed(state);
+}
+
+}  // namespace lastcut::daemon

@@ -1,0 +1,102 @@
+#pragma once
+// LedgerNode: lastcutd as one node of a shop sharing a PostgreSQL job ledger (docs/multi-station.md),
+// in place of the single-station Pipeline when the configuration has [ledger].
+//
+//   watch folder --intake (main thread)--> shared/scans/<sha> + ledger job `ready`
+//   compute role: claim job (lease) -> molds into shared/jobs/<sha> -> `computed`
+//                 group computed jobs (batch_window_s, max_batch_jobs) -> nest -> shared/batches/<id> -> `queued`
+//   station role: one thread per cutter cabled here: claim its queued batch -> `sending` -> cut | held
+//
+// Every claim holds a lease the LeaseKeeper thread renews; a state change is fenced by the lease's
+// epoch, so a node that lost a claim (a long pause, a cut network) only drops its work. The main
+// thread sweeps expired leases of any node each heartbeat: what a vanished node computed is
+// redone elsewhere, what it was sending is held, never re-sent (at most once, as on one station).
+// The database away: intake leaves scans in the watch folder, workers retry, a cut in progress
+// finishes and its end is written when the ledger is back; each change of condition is one log line.
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "daemon/config/daemon_config.hpp"
+#include "daemon/ledger/lease_keeper.hpp"
+#include "daemon/ledger/ledger_client.hpp"
+#include "daemon/ledger_node/shared_store.hpp"
+#include "daemon/pipeline/progress_monitor.hpp"
+#include "daemon/pipeline/status_observer.hpp"
+#include "daemon/watch/hot_folder.hpp"
+
+namespace lastcut::daemon {
+
+class LedgerNode {
+ public:
+  using Clock = std::chrono::steady_clock;
+
+  explicit LedgerNode(std::shared_ptr<const DaemonConfig> config);
+  ~LedgerNode();
+  LedgerNode(const LedgerNode&) = delete;
+  LedgerNode& operator=(const LedgerNode&) = delete;
+
+  void set_observer(StatusObserver* observer) { observer_ = observer; }
+  // Connects, migrates the schema, registers the node and its cutters (handing back what an earlier
+  // run left), starts watching and the worker threads. Fails with one line.
+  Status start();
+  void tick(Clock::time_point now);
+  int event_fd() const { return hot_folder_ ? hot_folder_->event_fd() : -1; }
+  void read_events() {
+    if (hot_folder_) hot_folder_->read_events();
+  }
+  std::string stuck(Clock::time_point now) const { return monitor_.stuck(now); }
+  std::string status_line() const;
+  // A ledger node applies a new configuration at its next start only (the line says so).
+  std::string reload(std::shared_ptr<const DaemonConfig> config);
+  // Stops claiming; a cut in progress may finish for jobs.stop_grace_s, then it is held.
+  void stop();
+
+ private:
+  const LedgerConfig& ledger() const { return *config_->ledger; }
+  // scan_intake.cpp (main thread)
+  void take(const ReadyScan& ready);
+  Status enter(const ReadyScan& ready);
+  void refuse(const ReadyScan& ready, const std::string& reason);
+  void sweep();
+  // ledger_compute.cpp (one thread per jobs.compute_workers)
+  void compute_worker(int index);
+  void compute_job(ledger::LedgerClient& client, const ledger::JobClaim& claim, const std::string& worker);
+  void nest_batch(ledger::LedgerClient& client, const ledger::BatchClaim& claim, const std::string& worker);
+  // ledger_station.cpp (one thread per cutter cabled here)
+  void station_worker(const std::string& cutter);
+  bool cut_batch(ledger::LedgerClient& client, const ledger::BatchClaim& claim, const CutterSection& section);
+  void report_cutter(const CutterStatus& status);
+  // Worker threads: waits up to `seconds` or until stop().
+  void pause(double seconds);
+  // One log line per change of a thread's trouble (the ledger away, a cutter not ready), not per try.
+  void note_trouble(std::string& last, const std::string& now, const std::string& what);
+  void job_event(long long job_id, const std::string& scan_name, JobStage stage, const std::string& reason);
+
+  std::shared_ptr<const DaemonConfig> config_;
+  SharedStore store_;
+  StatusObserver* observer_ = nullptr;
+  std::unique_ptr<HotFolder> hot_folder_;
+  std::unique_ptr<ledger::LedgerClient> client_;  // main thread only
+  std::unique_ptr<ledger::LeaseKeeper> keeper_;
+  ProgressMonitor monitor_;
+  std::vector<std::thread> threads_;
+  std::atomic<bool> stopping_{false};
+  std::atomic<bool> cancel_cut_{false};
+  std::mutex pause_mutex_;
+  std::condition_variable pause_wake_;
+  std::atomic<int> cuts_in_progress_{0};
+
+  // Main thread only.
+  Clock::time_point next_sweep_{};
+  Clock::time_point next_intake_{};
+  std::string intake_trouble_, sweep_trouble_;
+  long long entered_ = 0, duplicates_ = 0, refused_ = 0;
+};
+
+}  // namespace lastcut::daemon

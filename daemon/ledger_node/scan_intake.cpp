@@ -1,0 +1,143 @@
+// Intake on a ledger node (main thread): a ready scan from the watch folder is copied into the
+// shared folder under its hash and entered in the ledger; the same bytes entered on any node are one
+// job. Entered scans move to <spool>/entered/, refused ones (bad sidecar, unknown material or
+// cutter, a cut-off file) to <spool>/failed/ with NAME.reason; while the ledger cannot be reached a
+// scan stays in the watch folder and is offered again.
+#include <spdlog/spdlog.h>
+
+#include "daemon/ledger_node/ledger_node.hpp"
+#include "daemon/spool/job_ticket.hpp"
+#include "daemon/spool/sha256.hpp"
+#include "engine/core/durable_file.hpp"
+
+namespace lastcut::daemon {
+namespace {
+
+// Moves the scan (and its sidecar) into `folder` of the node's spool; false with the log line when it cannot.
+bool move_into(const std::filesystem::path& folder, const ReadyScan& ready) {
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  for (const std::filesystem::path& file : {ready.scan, ready.sidecar}) {
+    if (file.empty()) continue;
+    if (Status moved = move_durably(file, folder / file.filename()); !moved) {
+      spdlog::error("watch folder: {} cannot be moved to {}: {}", file.filename().string(), folder.string(),
+                    moved.error());
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+void LedgerNode::take(const ReadyScan& ready) {
+  const std::string name = ready.scan.filename().string();
+  std::error_code error;
+  if (!std::filesystem::exists(ready.scan, error)) {
+    hot_folder_->forget(name);  // gone between listing and taking; a new event brings it back
+    return;
+  }
+  const Status entered = enter(ready);
+  if (!entered &&
+      (entered.error().rfind("ledger unreachable", 0) == 0 || entered.error().rfind("shared folder unusable", 0) == 0)) {
+    // Not the scan's fault and nothing was entered: it waits in the watch folder.
+    note_trouble(intake_trouble_, entered.error(), "watch folder: scans wait in the watch folder");
+    next_intake_ = Clock::now() + std::chrono::seconds(2);
+    return;
+  }
+  note_trouble(intake_trouble_, "", "watch folder");
+  hot_folder_->forget(name);
+  if (!ready.sidecar.empty()) hot_folder_->forget(ready.sidecar.filename().string());
+  if (!entered) refuse(ready, entered.error());
+}
+
+Status LedgerNode::enter(const ReadyScan& ready) {
+  if (!ready.incompleteness.empty()) return Status::failure(ready.incompleteness);
+  JobTicket ticket;
+  if (!ready.sidecar.empty()) {
+    Result<JobTicket> read = read_job_ticket(ready.sidecar);
+    if (!read) return read.status();
+    ticket = *read;
+  }
+  if (ticket.material.empty()) ticket.material = config_->jobs.default_material;
+  if (ticket.cutter.empty()) ticket.cutter = config_->jobs.default_cutter;
+  if (!config_->materials.count(ticket.material))
+    return Status::failure("the sidecar asks for material \"" + ticket.material + "\", which is not configured");
+  if (!config_->cutters.count(ticket.cutter))
+    return Status::failure("the sidecar asks for cutter \"" + ticket.cutter + "\", which is not configured");
+  const auto hash = sha256_file_hex(ready.scan);
+  if (!hash) return Status::failure("the scan cannot be read (it vanished or is not readable)");
+  const std::string name = ready.scan.filename().string();
+
+  // The bytes first, then the row: a job in the ledger always finds its scan in the shared folder.
+  const std::filesystem::path shared_scan = store_.scan(*hash, name);
+  std::error_code exists_error;
+  if (!std::filesystem::exists(shared_scan, exists_error)) {
+    if (Status copied = copy_file_durably(ready.scan, shared_scan); !copied)
+      return Status::failure("shared folder unusable: " + copied.error());
+  }
+  for (const auto& [mold, file] : ticket.references) {
+    const std::filesystem::path from = ready.sidecar.parent_path() / file;
+    const std::filesystem::path to = store_.references(*hash) / reference_copy_name(mold, file);
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(from, error))
+      return Status::failure("reference pattern " + file + " for the " + mold + " mold is not in the watch folder");
+    std::filesystem::create_directories(to.parent_path(), error);
+    if (Status copied = copy_file_durably(from, to); !copied)
+      return Status::failure("shared folder unusable: reference pattern " + file + " not copied: " + copied.error());
+  }
+  const Result<ledger::Enqueued> job =
+      client_->enqueue({*hash, name, ticket_to_json(ticket).dump(), ticket.material, ticket.cutter});
+  if (!job) return job.status();
+  if (!move_into(config_->paths.spool_dir / "entered", ready)) {
+    // Entered: offering it again would only find the duplicate, so nothing is lost either way.
+    spdlog::warn("watch folder: {} is in the ledger as job {} but stays in the watch folder", name, job->job_id);
+  }
+  if (job->duplicate) {
+    ++duplicates_;
+    spdlog::info("{}: same bytes as job {} (entered by {}, now {}): not entered again", name, job->job_id, job->origin,
+                 job->state);
+  } else {
+    ++entered_;
+    spdlog::info("job {}: {} entered in the ledger (material {}, cutter {})", job->job_id, name, ticket.material,
+                 ticket.cutter);
+    job_event(job->job_id, name, JobStage::Claimed, "");
+  }
+  return Status::success();
+}
+
+void LedgerNode::refuse(const ReadyScan& ready, const std::string& reason) {
+  ++refused_;
+  const std::string name = ready.scan.filename().string();
+  spdlog::error("{}: refused, not entered in the ledger: {}", name, reason);
+  const std::filesystem::path failed = config_->paths.spool_dir / "failed";
+  if (!move_into(failed, ready)) return;
+  if (Status written = write_file_durably(failed / (name + ".reason"), reason + "\n"); !written)
+    spdlog::error("{}: the reason cannot be written next to it in {}: {}", name, failed.string(), written.error());
+}
+
+void LedgerNode::sweep() {
+  const Result<ledger::SweepOutcome> swept = client_->sweep_expired(config_->jobs.max_attempts);
+  if (!swept) {
+    note_trouble(sweep_trouble_, swept.error(), "leases of vanished nodes");
+    return;
+  }
+  note_trouble(sweep_trouble_, "", "leases of vanished nodes");
+  const auto list = [](const std::vector<long long>& ids) {
+    std::string out;
+    for (long long id : ids) out += (out.empty() ? "" : ", ") + std::to_string(id);
+    return out;
+  };
+  if (!swept->jobs_requeued.empty()) spdlog::warn("jobs {}: their node's lease ran out, computed again", list(swept->jobs_requeued));
+  if (!swept->jobs_failed.empty()) spdlog::error("jobs {}: interrupted too often, failed", list(swept->jobs_failed));
+  if (!swept->batches_dissolved.empty())
+    spdlog::warn("batches {}: their node's lease ran out while nesting, jobs regrouped", list(swept->batches_dissolved));
+  if (!swept->batches_requeued.empty())
+    spdlog::warn("batches {}: claimed by a station that vanished before sending, queued again",
+                 list(swept->batches_requeued));
+  if (!swept->batches_held.empty())
+    spdlog::error("batches {}: their station vanished while sending: held for an operator, never re-sent",
+                  list(swept->batches_held));
+}
+
+}  // namespace lastcut::daemon
