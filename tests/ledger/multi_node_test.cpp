@@ -183,9 +183,23 @@ void LedgerMultiNode::restart_station_and_broker() {
   ASSERT_EQ(shop_.start_node("station-a"), "");
   EXPECT_TRUE(watcher_->wait_until([&] { return payload_of(*watcher_, "lastcut/station/station-a/online") == "true"; }, 15));
   dropped_ += drop_wave(shop_, scans_, staging_, 3);
+  const std::size_t heard_before = watcher_->messages().size();
   shop_.broker().stop();
   std::this_thread::sleep_for(std::chrono::seconds(1));
   ASSERT_EQ(shop_.broker().start(), "");
+  // The nodes publish again once they are back (a subscriber already there gets that live, not
+  // retained): wait for it on the watcher, then ask a new subscriber what the broker keeps.
+  const auto heard_again = [&](const std::string& topic) {
+    const auto heard = watcher_->messages();
+    for (std::size_t i = heard_before; i < heard.size(); ++i)
+      if (heard[i].topic == topic) return true;
+    return false;
+  };
+  EXPECT_TRUE(watcher_->wait_until([&] {
+    for (const std::string& node : kNodes)
+      if (!heard_again("lastcut/station/" + node + "/online")) return false;
+    return heard_again("lastcut/cutter/cutter-a/state") && heard_again("lastcut/cutter/cutter-b/state");
+  }, 30)) << "status not published again after the broker's restart";
   MqttSubscriber late(shop_.broker().port());
   ASSERT_TRUE(late.wait_subscribed(10));
   const auto retained = [&](const std::string& topic) {
@@ -198,7 +212,10 @@ void LedgerMultiNode::restart_station_and_broker() {
       if (payload_of(late, topic) != "true" || !retained(topic)) return false;
     }
     return retained("lastcut/cutter/cutter-a/state") && retained("lastcut/cutter/cutter-b/state");
-  }, 30)) << "retained topics after the broker's restart";
+  }, 10)) << "retained topics after the broker's restart: station-a " << payload_of(late, "lastcut/station/station-a/online")
+          << ", station-b " << payload_of(late, "lastcut/station/station-b/online") << ", compute-c "
+          << payload_of(late, "lastcut/station/compute-c/online") << ", cutter-a "
+          << payload_of(late, "lastcut/cutter/cutter-a/state") << ", cutter-b " << payload_of(late, "lastcut/cutter/cutter-b/state");
   for (const auto& [cutter, station] : {std::pair{"cutter-a", "station-a"}, std::pair{"cutter-b", "station-b"}}) {
     const auto state = nlohmann::json::parse(payload_of(late, std::string("lastcut/cutter/") + cutter + "/state"), nullptr, false);
     EXPECT_EQ(state.is_object() ? state.value("station", "") : "", station) << cutter;
