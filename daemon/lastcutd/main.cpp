@@ -61,10 +61,7 @@ int check_config(const std::string& file) {
   return 0;
 }
 
-// The node is a Pipeline (single station, file spool) or a LedgerNode (one station of a shop on a
-// shared PostgreSQL ledger): the main loop drives either the same way.
-template <typename Node>
-void reload(const std::string& file, Node& pipeline, lastcut::daemon::SystemdNotifier& notifier,
+void reload(const std::string& file, lastcut::daemon::JobFlow& pipeline, lastcut::daemon::SystemdNotifier& notifier,
             const lastcut::daemon::StatusConfig& running_status) {
   notifier.reloading();
   const auto result = lastcut::daemon::load_daemon_config(file);
@@ -86,8 +83,9 @@ void reload(const std::string& file, Node& pipeline, lastcut::daemon::SystemdNot
   notifier.ready();
 }
 
-template <typename Node>
-int serve(const std::string& file, Node& pipeline, lastcut::daemon::SignalEvents& signals,
+// The flow is a Pipeline (one station, its own file spool) or a LedgerNode (one node of a shop on a
+// shared PostgreSQL ledger): the loop drives either the same way.
+int serve(const std::string& file, lastcut::daemon::JobFlow& pipeline, lastcut::daemon::SignalEvents& signals,
           lastcut::daemon::SystemdNotifier& notifier, const lastcut::daemon::StatusConfig& running_status,
           lastcut::daemon::StatusObserver* observer) {
   pipeline.set_observer(observer);
@@ -157,14 +155,11 @@ int run(const std::string& file) {
     }
   }
   const auto config = std::make_shared<lastcut::daemon::DaemonConfig>(*loaded.config);
-  int code = 0;
-  if (config->ledger) {
-    lastcut::daemon::LedgerNode node(config);
-    code = serve(file, node, signals, notifier, loaded.config->status, live_status.get());
-  } else {
-    lastcut::daemon::Pipeline pipeline(config);
-    code = serve(file, pipeline, signals, notifier, loaded.config->status, live_status.get());
-  }
+  std::unique_ptr<lastcut::daemon::JobFlow> flow;
+  if (config->ledger) flow = std::make_unique<lastcut::daemon::LedgerNode>(config);
+  else flow = std::make_unique<lastcut::daemon::Pipeline>(config);
+  const int code = serve(file, *flow, signals, notifier, loaded.config->status, live_status.get());
+  flow.reset();
   if (live_status) live_status->stop();
   spdlog::info("lastcutd stopped");
   return code;

@@ -37,15 +37,7 @@ void LedgerNode::compute_worker(int index) {
   std::unique_ptr<ledger::LedgerClient> client;
   std::string trouble;
   while (!stopping_) {
-    if (!client) {
-      auto connected = ledger::LedgerClient::connect(ledger().url, ledger().node);
-      if (!connected) {
-        note_trouble(trouble, connected.error(), worker);
-        pause(ledger().heartbeat_s);
-        continue;
-      }
-      client = std::move(*connected);
-    }
+    if (!connect_worker(client, trouble, worker)) continue;
     const auto job = client->claim_job(ledger().lease_s);
     if (job && job->has_value()) {
       note_trouble(trouble, "", worker);

@@ -46,8 +46,8 @@ Status LedgerNode::start() {
   for (const std::string& cutter : cutters) threads_.emplace_back([this, cutter] { station_worker(cutter); });
   std::string roles;
   for (const std::string& role : ledger().roles) roles += (roles.empty() ? "" : "+") + role;
-  spdlog::info("ledger node {} ({}) on {}: watching {} ({}), shared folder {}, {} cutter(s) cabled here", ledger().node,
-               roles, client_->node(), config_->paths.watch_dir.string(), hot_folder_->mode_description(),
+  spdlog::info("ledger node {} ({}): watching {} ({}), shared folder {}, {} cutter(s) cabled here", ledger().node,
+               roles, config_->paths.watch_dir.string(), hot_folder_->mode_description(),
                store_.root().string(), cutters.size());
   return Status::success();
 }
@@ -97,6 +97,19 @@ void LedgerNode::stop() {
   keeper_.reset();  // kept leases simply run out; the next start of this node hands them back at once
 }
 
+bool LedgerNode::connect_worker(std::unique_ptr<ledger::LedgerClient>& client, std::string& trouble,
+                                const std::string& worker) {
+  if (client) return true;
+  auto connected = ledger::LedgerClient::connect(ledger().url, ledger().node);
+  if (!connected) {
+    note_trouble(trouble, connected.error(), worker);
+    pause(ledger().heartbeat_s);
+    return false;
+  }
+  client = std::move(*connected);
+  return true;
+}
+
 void LedgerNode::pause(double seconds) {
   std::unique_lock lock(pause_mutex_);
   pause_wake_.wait_for(lock, std::chrono::duration<double>(seconds), [this] { return stopping_.load(); });
@@ -104,8 +117,18 @@ void LedgerNode::pause(double seconds) {
 
 void LedgerNode::note_trouble(std::string& last, const std::string& now, const std::string& what) {
   if (now == last) return;
-  if (now.empty()) spdlog::info("{}: working again", what);
-  else spdlog::warn("{}: {} (retrying; logged again when this changes)", what, now);
+  const auto unreachable = [](const std::string& line) { return line.rfind("ledger unreachable", 0) == 0; };
+  if (unreachable(now) || (now.empty() && unreachable(last))) {
+    // Every thread meets the same outage: the node says it once, and once when it is over.
+    std::lock_guard lock(ledger_condition_mutex_);
+    if (unreachable(now) && !ledger_down_) spdlog::warn("{} (work waits and is retried; logged again when it is back)", now);
+    if (now.empty() && ledger_down_) spdlog::info("ledger reachable again");
+    ledger_down_ = !now.empty();
+  } else if (now.empty()) {
+    spdlog::info("{}: working again", what);
+  } else {
+    spdlog::warn("{}: {} (retrying; logged again when this changes)", what, now);
+  }
   last = now;
 }
 

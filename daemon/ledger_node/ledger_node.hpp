@@ -26,36 +26,35 @@
 #include "daemon/ledger/lease_keeper.hpp"
 #include "daemon/ledger/ledger_client.hpp"
 #include "daemon/ledger_node/shared_store.hpp"
+#include "daemon/pipeline/job_flow.hpp"
 #include "daemon/pipeline/progress_monitor.hpp"
 #include "daemon/pipeline/status_observer.hpp"
 #include "daemon/watch/hot_folder.hpp"
 
 namespace lastcut::daemon {
 
-class LedgerNode {
+class LedgerNode : public JobFlow {
  public:
-  using Clock = std::chrono::steady_clock;
-
   explicit LedgerNode(std::shared_ptr<const DaemonConfig> config);
-  ~LedgerNode();
+  ~LedgerNode() override;
   LedgerNode(const LedgerNode&) = delete;
   LedgerNode& operator=(const LedgerNode&) = delete;
 
-  void set_observer(StatusObserver* observer) { observer_ = observer; }
+  void set_observer(StatusObserver* observer) override { observer_ = observer; }
   // Connects, migrates the schema, registers the node and its cutters (handing back what an earlier
-  // run left), starts watching and the worker threads. Fails with one line.
-  Status start();
-  void tick(Clock::time_point now);
-  int event_fd() const { return hot_folder_ ? hot_folder_->event_fd() : -1; }
-  void read_events() {
+  // run left), starts watching and the worker threads.
+  Status start() override;
+  // Intake of ready scans; the sweep of expired leases each heartbeat.
+  void tick(Clock::time_point now) override;
+  int event_fd() const override { return hot_folder_ ? hot_folder_->event_fd() : -1; }
+  void read_events() override {
     if (hot_folder_) hot_folder_->read_events();
   }
-  std::string stuck(Clock::time_point now) const { return monitor_.stuck(now); }
-  std::string status_line() const;
+  std::string stuck(Clock::time_point now) const override { return monitor_.stuck(now); }
+  std::string status_line() const override;
   // A ledger node applies a new configuration at its next start only (the line says so).
-  std::string reload(std::shared_ptr<const DaemonConfig> config);
-  // Stops claiming; a cut in progress may finish for jobs.stop_grace_s, then it is held.
-  void stop();
+  std::string reload(std::shared_ptr<const DaemonConfig> config) override;
+  void stop() override;
 
  private:
   const LedgerConfig& ledger() const { return *config_->ledger; }
@@ -72,6 +71,8 @@ class LedgerNode {
   void station_worker(const std::string& cutter);
   bool cut_batch(ledger::LedgerClient& client, const ledger::BatchClaim& claim, const CutterSection& section);
   void report_cutter(const CutterStatus& status);
+  // Worker threads: each has a connection of its own; false (after a pause) while none can be opened.
+  bool connect_worker(std::unique_ptr<ledger::LedgerClient>& client, std::string& trouble, const std::string& worker);
   // Worker threads: waits up to `seconds` or until stop().
   void pause(double seconds);
   // One log line per change of a thread's trouble (the ledger away, a cutter not ready), not per try.
@@ -91,6 +92,8 @@ class LedgerNode {
   std::mutex pause_mutex_;
   std::condition_variable pause_wake_;
   std::atomic<int> cuts_in_progress_{0};
+  std::mutex ledger_condition_mutex_;
+  bool ledger_down_ = false;  // as last logged by note_trouble(), for the whole node
 
   // Main thread only.
   Clock::time_point next_sweep_{};

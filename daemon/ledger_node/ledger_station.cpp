@@ -21,15 +21,7 @@ void LedgerNode::station_worker(const std::string& cutter) {
   std::string trouble, cutter_trouble;
   report_cutter({cutter, "idle", "", "", 0, 0, 0, 0});
   while (!stopping_) {
-    if (!client) {
-      auto connected = ledger::LedgerClient::connect(ledger().url, ledger().node);
-      if (!connected) {
-        note_trouble(trouble, connected.error(), worker);
-        pause(ledger().heartbeat_s);
-        continue;
-      }
-      client = std::move(*connected);
-    }
+    if (!connect_worker(client, trouble, worker)) continue;
     const drivers::ProbeResult probe = drivers::probe_cutter({section.link, cutter, ""});
     if (!probe.ready) {
       const std::string problem = probe.reason.empty() ? probe.state : probe.reason;

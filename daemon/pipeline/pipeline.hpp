@@ -20,6 +20,7 @@
 
 #include "daemon/config/daemon_config.hpp"
 #include "daemon/pipeline/cutter_dispatcher.hpp"
+#include "daemon/pipeline/job_flow.hpp"
 #include "daemon/pipeline/progress_monitor.hpp"
 #include "daemon/pipeline/status_observer.hpp"
 #include "daemon/pipeline/work_queue.hpp"
@@ -28,37 +29,30 @@
 
 namespace lastcut::daemon {
 
-class Pipeline {
+class Pipeline : public JobFlow {
  public:
-  using Clock = std::chrono::steady_clock;
-
   explicit Pipeline(std::shared_ptr<const DaemonConfig> config);
-  ~Pipeline();
+  ~Pipeline() override;
   Pipeline(const Pipeline&) = delete;
   Pipeline& operator=(const Pipeline&) = delete;
 
-  // Live status (optional, daemon/status): set before start(); must outlive stop().
-  void set_observer(StatusObserver* observer) { observer_ = observer; }
+  void set_observer(StatusObserver* observer) override { observer_ = observer; }
   // Prepares the spool, recovers it, starts watching and the worker threads.
-  Status start();
-  // One turn of the main loop: new files, requeued jobs, finished computations, due batches.
-  void tick(Clock::time_point now);
-  // inotify descriptor to wait on (-1 when polling).
-  int event_fd() const { return hot_folder_ ? hot_folder_->event_fd() : -1; }
-  void read_events() {
+  Status start() override;
+  // New files, requeued jobs, finished computations, due batches.
+  void tick(Clock::time_point now) override;
+  int event_fd() const override { return hot_folder_ ? hot_folder_->event_fd() : -1; }
+  void read_events() override {
     if (hot_folder_) hot_folder_->read_events();
     if (hide_folder_) hide_folder_->read_events();  // its events are read here; tick() runs every 100 ms anyway
   }
-  // Empty while every stage makes progress; otherwise what is stuck (then the watchdog starves).
-  std::string stuck(Clock::time_point now) const { return monitor_.stuck(now); }
-  // One line for systemd's STATUS= and the log.
-  std::string status_line() const;
-  // Applies a new configuration (already validated). Paths, watch mode and the set of cutters
-  // need a restart: the returned line says which of those changed and were kept.
-  std::string reload(std::shared_ptr<const DaemonConfig> config);
-  // SIGTERM: stops taking files, lets computations and cuts in hand finish (cuts for at most
-  // jobs.stop_grace_s, then held). Queued work stays in the spool for the next start.
-  void stop();
+  std::string stuck(Clock::time_point now) const override { return monitor_.stuck(now); }
+  std::string status_line() const override;
+  // Paths, watch mode and the set of cutters need a restart: the returned line says which of
+  // those changed and were kept.
+  std::string reload(std::shared_ptr<const DaemonConfig> config) override;
+  // Queued work stays in the spool for the next start.
+  void stop() override;
 
  private:
   struct Task {

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
+#include <utility>
 #include <numbers>
+#include <vector>
 
 #include "engine/core/engine_error.hpp"
 
@@ -28,6 +31,56 @@ Eigen::Vector3d ray_exit(const LastShape& shape, const Eigen::Vector3d& centre, 
     inside = t;
   }
   throw EngineError("last control mesh: a ray from the centre does not leave the last");
+}
+
+// The box surface's lattice points sent along their rays (origin, direction) to where they leave the solid.
+CubeSphere cast_lattice(const LastShape& shape, const std::array<int, 3>& cells,
+                        const std::function<std::pair<Eigen::Vector3d, Eigen::Vector3d>(const std::array<int, 3>&)>& ray_of) {
+  const auto [shape_low, shape_high] = shape.bounds_mm();
+  const double reach_mm = (shape_high - shape_low).norm();
+  CubeSphere sphere;
+  std::map<std::array<int, 3>, int> ids;
+  std::vector<Eigen::Vector3d> positions;
+  std::vector<Eigen::Vector4i> quads;
+  const auto id_of = [&](const std::array<int, 3>& lattice) {
+    const auto [it, inserted] = ids.emplace(lattice, static_cast<int>(positions.size()));
+    if (inserted) {
+      const auto [origin, direction] = ray_of(lattice);
+      positions.push_back(ray_exit(shape, origin, direction, reach_mm));
+      sphere.lattice.push_back(lattice);
+    }
+    return it->second;
+  };
+  for (int axis = 0; axis < 3; ++axis) {
+    const int b = (axis + 1) % 3, c = (axis + 2) % 3;
+    for (int side : {0, cells[static_cast<size_t>(axis)]}) {
+      for (int j = 0; j < cells[static_cast<size_t>(c)]; ++j) {
+        for (int i = 0; i < cells[static_cast<size_t>(b)]; ++i) {
+          std::array<int, 4> corner{};
+          static constexpr int di[4] = {0, 1, 1, 0}, dj[4] = {0, 0, 1, 1};
+          for (int k = 0; k < 4; ++k) {
+            std::array<int, 3> lattice{};
+            lattice[static_cast<size_t>(axis)] = side;
+            lattice[static_cast<size_t>(b)] = i + di[k];
+            lattice[static_cast<size_t>(c)] = j + dj[k];
+            corner[static_cast<size_t>(k)] = id_of(lattice);
+          }
+          // b x c = +axis: counter-clockwise seen from outside on the far side, reversed on the near side.
+          if (side > 0) {
+            quads.emplace_back(corner[0], corner[1], corner[2], corner[3]);
+          } else {
+            quads.emplace_back(corner[0], corner[3], corner[2], corner[1]);
+          }
+          sphere.face_cell.push_back({axis, side > 0 ? 1 : 0, i, j});
+        }
+      }
+    }
+  }
+  sphere.mesh.V.resize(static_cast<Eigen::Index>(positions.size()), 3);
+  for (size_t v = 0; v < positions.size(); ++v) sphere.mesh.V.row(static_cast<Eigen::Index>(v)) = positions[v].transpose();
+  sphere.mesh.Q.resize(static_cast<Eigen::Index>(quads.size()), 4);
+  for (size_t q = 0; q < quads.size(); ++q) sphere.mesh.Q.row(static_cast<Eigen::Index>(q)) = quads[q].transpose();
+  return sphere;
 }
 
 }  // namespace
@@ -66,50 +119,69 @@ CubeSphere cast_cube_sphere(const LastShape& shape, const Eigen::Vector3d& centr
     return Eigen::Vector3d(warped.normalized().cwiseProduct(stretch));
   };
 
-  const auto [shape_low, shape_high] = shape.bounds_mm();
-  const double reach_mm = (shape_high - shape_low).norm();
-  CubeSphere sphere;
-  std::map<std::array<int, 3>, int> ids;
-  std::vector<Eigen::Vector3d> positions;
-  std::vector<Eigen::Vector4i> quads;
-  const auto id_of = [&](const std::array<int, 3>& lattice) {
-    const auto [it, inserted] = ids.emplace(lattice, static_cast<int>(positions.size()));
-    if (inserted) {
-      positions.push_back(ray_exit(shape, centre, direction_of(lattice), reach_mm));
-      sphere.lattice.push_back(lattice);
-    }
-    return it->second;
-  };
-  for (int axis = 0; axis < 3; ++axis) {
-    const int b = (axis + 1) % 3, c = (axis + 2) % 3;
-    for (int side : {0, cells[static_cast<size_t>(axis)]}) {
-      for (int j = 0; j < cells[static_cast<size_t>(c)]; ++j) {
-        for (int i = 0; i < cells[static_cast<size_t>(b)]; ++i) {
-          std::array<int, 4> corner{};
-          static constexpr int di[4] = {0, 1, 1, 0}, dj[4] = {0, 0, 1, 1};
-          for (int k = 0; k < 4; ++k) {
-            std::array<int, 3> lattice{};
-            lattice[static_cast<size_t>(axis)] = side;
-            lattice[static_cast<size_t>(b)] = i + di[k];
-            lattice[static_cast<size_t>(c)] = j + dj[k];
-            corner[static_cast<size_t>(k)] = id_of(lattice);
-          }
-          // b x c = +axis: counter-clockwise seen from outside on the far side, reversed on the near side.
-          if (side > 0) {
-            quads.emplace_back(corner[0], corner[1], corner[2], corner[3]);
-          } else {
-            quads.emplace_back(corner[0], corner[3], corner[2], corner[1]);
-          }
-          sphere.face_cell.push_back({axis, side > 0 ? 1 : 0, i, j});
-        }
-      }
-    }
+  return cast_lattice(shape, cells, [&](const std::array<int, 3>& lattice) { return std::pair{centre, direction_of(lattice)}; });
+}
+
+
+namespace {
+
+constexpr double kSpineShare = 0.75;            // of the box's x lattice cast straight across from the spine
+constexpr double kSpineBackFraction = 0.15;     // spine ends, fractions of the length
+constexpr double kSpineFrontFraction = 0.85;
+constexpr int kSpineStations = 33;
+
+// Where the solid ends along `direction` from the inside point p (mm), found in 1 mm steps then bisected.
+double reach_from(const LastShape& shape, const Eigen::Vector3d& p, const Eigen::Vector3d& direction) {
+  double inside = 0.0, outside = 1.0;
+  while (shape.value(p + outside * direction) <= 0.0) {
+    inside = outside;
+    outside += 1.0;
+    if (outside > 1000.0) throw EngineError("last control mesh: the section does not close");
   }
-  sphere.mesh.V.resize(static_cast<Eigen::Index>(positions.size()), 3);
-  for (size_t v = 0; v < positions.size(); ++v) sphere.mesh.V.row(static_cast<Eigen::Index>(v)) = positions[v].transpose();
-  sphere.mesh.Q.resize(static_cast<Eigen::Index>(quads.size()), 4);
-  for (size_t q = 0; q < quads.size(); ++q) sphere.mesh.Q.row(static_cast<Eigen::Index>(q)) = quads[q].transpose();
-  return sphere;
+  for (int iteration = 0; iteration < 40; ++iteration) {
+    const double middle = 0.5 * (inside + outside);
+    (shape.value(p + middle * direction) > 0.0 ? outside : inside) = middle;
+  }
+  return 0.5 * (inside + outside);
+}
+
+// The middle of the section at x and its half extents: {x, y centre, z centre, half width, half height}.
+Eigen::Matrix<double, 5, 1> section_at(const LastShape& shape, double x_mm) {
+  const Eigen::Vector3d start(x_mm, 0.0, shape.sole_z_mm(x_mm) + 6.0);
+  if (shape.value(start) >= 0.0) throw EngineError("last control mesh: the spine leaves the last");
+  const double up = reach_from(shape, start, Eigen::Vector3d::UnitZ()), down = reach_from(shape, start, -Eigen::Vector3d::UnitZ());
+  const Eigen::Vector3d middle(x_mm, 0.0, start.z() + 0.5 * (up - down));
+  const double left = reach_from(shape, middle, Eigen::Vector3d::UnitY()), right = reach_from(shape, middle, -Eigen::Vector3d::UnitY());
+  Eigen::Matrix<double, 5, 1> section;
+  section << x_mm, 0.5 * (left - right), middle.z(), 0.5 * (left + right), 0.5 * (up + down);
+  return section;
+}
+
+}  // namespace
+
+CubeSphere cast_along_spine(const LastShape& shape, const LastParams& params, const std::array<int, 3>& cells) {
+  const double x_back = kSpineBackFraction * params.length_mm, x_front = kSpineFrontFraction * params.length_mm;
+  std::vector<Eigen::Matrix<double, 5, 1>> stations;
+  for (int s = 0; s < kSpineStations; ++s) stations.push_back(section_at(shape, x_back + (x_front - x_back) * s / (kSpineStations - 1)));
+  const auto section = [&](double t) {  // t in [0, 1] along the spine
+    const double at = std::clamp(t, 0.0, 1.0) * (kSpineStations - 1);
+    const auto i = std::min(static_cast<size_t>(at), static_cast<size_t>(kSpineStations - 2));
+    const double w = at - static_cast<double>(i);
+    return Eigen::Matrix<double, 5, 1>((1 - w) * stations[i] + w * stations[i + 1]);
+  };
+  // The ends fan out a little beyond the heel back and the toe tip, so their rays meet the end walls.
+  const double reach_back = 1.2 * x_back, reach_front = 1.2 * (params.length_mm - x_front);
+  return cast_lattice(shape, cells, [&](const std::array<int, 3>& lattice) {
+    Eigen::Vector3d cube;
+    for (int a = 0; a < 3; ++a) cube(a) = 2.0 * lattice[static_cast<size_t>(a)] / cells[static_cast<size_t>(a)] - 1.0;
+    const double along = std::clamp(cube.x() / kSpineShare, -1.0, 1.0);
+    const double beyond = (cube.x() - kSpineShare * along) / (1.0 - kSpineShare);  // 0 on the spine's stretch
+    const Eigen::Matrix<double, 5, 1> s = section(0.5 * (along + 1.0));
+    const Eigen::Vector3d origin(s(0), s(1), s(2));
+    const auto warp = [](double c) { return std::tan(0.25 * std::numbers::pi * c); };
+    const Eigen::Vector3d direction(warp(beyond) * (beyond < 0 ? reach_back : reach_front), warp(cube.y()) * s(3), warp(cube.z()) * s(4));
+    return std::pair{origin, direction};
+  });
 }
 
 }  // namespace lastcut

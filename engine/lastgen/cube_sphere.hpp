@@ -35,4 +35,12 @@ struct RayBox {
 CubeSphere cast_cube_sphere(const LastShape& shape, const Eigen::Vector3d& centre_mm, const RayBox& box,
                             const std::array<int, 3>& cells);
 
+// The same box lattice cast from a spine instead of one point: the middle share of the box's x lattice
+// (|cube x| <= kSpineShare) casts from points of a segment along the last (0.15 to 0.85 of its length,
+// at the middle of its section) straight across, to the section's half extents; the rest fans out from
+// the segment's ends over the heel and the toe. Rays from one point give cells small where the surface
+// is near it (the instep) and large far off (the toe: 90 : 1 in area); rays from a spine give cells
+// about as long along the last everywhere. Throws EngineError when a ray does not leave the solid.
+CubeSphere cast_along_spine(const LastShape& shape, const LastParams& params, const std::array<int, 3>& cells);
+
 }  // namespace lastcut

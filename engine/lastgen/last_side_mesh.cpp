@@ -6,47 +6,19 @@
 #include <vector>
 
 #include "engine/core/engine_error.hpp"
+#include "engine/lastgen/control_relaxation.hpp"
 #include "engine/lastgen/cube_sphere.hpp"
 #include "engine/subdiv/sample_surface.hpp"
 
 namespace lastcut {
 namespace {
 
-constexpr int kSmoothingSteps = 30;
-// Only this many rings of cells around the rim are smoothed: uniform Laplacian steps pull a surface's
-// tips inwards (the toe lost 14 mm when all vertices were smoothed).
-constexpr int kSmoothingRings = 4;
+constexpr int kRelaxationSteps = 60;
 constexpr int kFitSteps = 16;
 constexpr double kRimSearchStepMm = 1.0;
 
 Eigen::Vector3d into_plane(const Eigen::Vector3d& p, const Eigen::Vector3d& point, const Eigen::Vector3d& normal) {
   return p - (p - point).dot(normal) * normal;
-}
-
-// Neighbours along the quads' edges; for rim vertices only the two along the rim.
-std::vector<std::vector<int>> smoothing_neighbours(const QuadMesh& mesh, const QuadTopology& topology) {
-  std::vector<std::vector<int>> all(static_cast<size_t>(mesh.vertex_count())), rim(all.size());
-  for (int q = 0; q < mesh.quad_count(); ++q) {
-    for (int k = 0; k < 4; ++k) {
-      const int a = mesh.Q(q, k), b = mesh.Q(q, (k + 1) % 4);
-      const int h = 4 * q + k;
-      if (topology.twin[static_cast<size_t>(h)] < 0) {
-        rim[static_cast<size_t>(a)].push_back(b);
-        rim[static_cast<size_t>(b)].push_back(a);
-      } else if (a < b) {
-        all[static_cast<size_t>(a)].push_back(b);
-        all[static_cast<size_t>(b)].push_back(a);
-      }
-    }
-  }
-  for (size_t v = 0; v < all.size(); ++v) {
-    if (topology.on_boundary[v]) {
-      all[v] = rim[v];
-    } else {
-      std::sort(all[v].begin(), all[v].end());
-    }
-  }
-  return all;
 }
 
 }  // namespace
@@ -71,21 +43,7 @@ Eigen::Vector3d rim_point(const LastShape& shape, const Eigen::Vector3d& cap_cen
 }
 
 LastSideMesh last_side_mesh(const LastShape& shape, const LastParams& params, const std::array<int, 3>& cells) {
-  auto [low, high] = shape.bounds_mm();
-  // The inside point of last_control_mesh. The rays are stretched to a box narrower than the last
-  // behind and across, and lower than the cut, so that the top face of the cube looks at the flat of
-  // the cut with many cells (about 9 x 7 at 50k triangles; with the last's own box it got 2 x 6 and
-  // the rim's control edges were twice the others). Found by trying: the rim angle error fell from a
-  // mean of 6 to 1.1 degrees.
-  const double centre_x = 0.4 * params.length_mm;
-  const double sole = shape.sole_z_mm(centre_x);
-  const Eigen::Vector3d centre(centre_x, 0.5 * (low.y() + high.y()), sole + 0.3 * (shape.top_cut_z_mm(centre_x) - sole));
-  high.z() = shape.top_cut_z_mm(0.0) - 10.0;
-  RayBox box{low, high, low, high};
-  box.top_low.x() = centre.x() - 0.3 * params.length_mm;
-  box.top_low.y() = centre.y() - 0.21 * params.ball_width_mm;
-  box.top_high.y() = centre.y() + 0.21 * params.ball_width_mm;
-  const CubeSphere sphere = cast_cube_sphere(shape, centre, box, cells);
+  const CubeSphere sphere = cast_along_spine(shape, params, cells);
 
   LastSideMesh side;
   side.cut_normal = shape.top_cut_normal();
@@ -152,43 +110,17 @@ LastSideMesh last_side_mesh(const LastShape& shape, const LastParams& params, co
   side.cap_cells_v = i1 - i0;
 
   const QuadTopology topology = build_quad_topology(control);
-  const std::vector<std::vector<int>> neighbours = smoothing_neighbours(control, topology);
   const auto on_rim = [&topology](Eigen::Index v) { return topology.on_boundary[static_cast<size_t>(v)] != 0; };
   const auto onto_rim = [&](const Eigen::Vector3d& p) { return rim_point(shape, cap_centre, side.cut_normal, p); };
 
   for (Eigen::Index v = 0; v < control.V.rows(); ++v) {
     if (on_rim(v)) control.V.row(v) = onto_rim(control.V.row(v).transpose()).transpose();
   }
-  std::vector<int> ring(static_cast<size_t>(control.vertex_count()), -1), front;
-  for (int v = 0; v < control.vertex_count(); ++v) {
-    if (on_rim(v)) ring[static_cast<size_t>(v)] = 0, front.push_back(v);
-  }
-  for (int r = 1; r <= kSmoothingRings; ++r) {
-    std::vector<int> next_front;
-    for (int q = 0; q < control.quad_count(); ++q) {
-      bool touches = false;
-      for (int k = 0; k < 4; ++k) touches = touches || ring[static_cast<size_t>(control.Q(q, k))] == r - 1;
-      if (!touches) continue;
-      for (int k = 0; k < 4; ++k) {
-        int& mark = ring[static_cast<size_t>(control.Q(q, k))];
-        if (mark < 0) mark = r, next_front.push_back(control.Q(q, k));
-      }
-    }
-    front.swap(next_front);
-  }
-  for (int step = 0; step < kSmoothingSteps; ++step) {
-    Eigen::MatrixXd moved = control.V;
-    for (Eigen::Index v = 0; v < control.V.rows(); ++v) {
-      // The outermost ring stays put, anchoring the smoothed band to the cast layout.
-      if (ring[static_cast<size_t>(v)] < 0 || ring[static_cast<size_t>(v)] == kSmoothingRings) continue;
-      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-      for (int u : neighbours[static_cast<size_t>(v)]) mean += control.V.row(u).transpose();
-      mean /= static_cast<double>(neighbours[static_cast<size_t>(v)].size());
-      const Eigen::Vector3d target = 0.5 * (control.V.row(v).transpose() + mean);
-      moved.row(v) = (on_rim(v) ? onto_rim(target) : shape.project_to_body(target)).transpose();
-    }
-    control.V = moved;
-  }
+  RelaxationSurface surface;
+  surface.project = [&shape](const Eigen::Vector3d& p) { return shape.project_to_body(p); };
+  surface.normal = [&shape](const Eigen::Vector3d& p) { return Eigen::Vector3d(shape.body_gradient(p).normalized()); };
+  surface.onto_rim = onto_rim;
+  relax_control_cells(control, topology, surface, kRelaxationSteps);
 
   // Limit positions onto the body and the rim (n = 1 samples are exactly the patch corners, in vertex order).
   for (int step = 0; step < kFitSteps; ++step) {

@@ -12,12 +12,12 @@
 // SIGGRAPH 1994 (a crease curve is a B-spline of the crease polygon alone), with the two sides of the
 // crease built as separate surfaces.
 //
-// Layout: the cube sphere of cube_sphere.hpp whose top box face (stretched so that it looks at the cut
-// from the inside point) is the cap; its cells on the flat of the cut, a rectangle of cap_cells_u x
-// cap_cells_v, are left out, so that the rest is a disk whose boundary loop is the rim. The rim points
-// slide on the rim curve (the body, LastShape::body_value, meets the cut plane) and the others on the
-// body during a few uniform Laplacian smoothing steps that spread the cells evenly up to the rim; then
-// the limit positions are fitted onto the body and the rim as in last_control_mesh.hpp.
+// Layout: the box lattice of cube_sphere.hpp cast from a spine along the last (cast_along_spine), whose
+// top box face is the cap; its cells on the flat of the cut, a rectangle of cap_cells_u x cap_cells_v,
+// are left out, so that the rest is a disk whose boundary loop is the rim. The rim points slide on the
+// rim curve (the body, LastShape::body_value, meets the cut plane) and the others on the body during the
+// area-equalising relaxation of control_relaxation.hpp; then the limit positions are fitted onto the
+// body and the rim as in last_control_mesh.hpp.
 #include <array>
 
 #include "engine/lastgen/last_shape.hpp"
