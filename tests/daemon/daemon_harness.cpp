@@ -62,4 +62,25 @@ void drop(const std::filesystem::path& file, const std::filesystem::path& watch_
   std::filesystem::rename(staging, watch_dir / name);
 }
 
+std::unique_ptr<Process> start_simulator(const std::string& protocol, const std::filesystem::path& link,
+                                         const std::filesystem::path& record, const std::string& fault,
+                                         const std::filesystem::path& log, std::string& error) {
+  std::vector<std::string> argv = {binary("lastcut-sim").string(), protocol, "--link", link.string(),
+                                   "--record", record.string(), "--time-scale", "0"};
+  if (!fault.empty()) {
+    argv.push_back("--fault");
+    argv.push_back(fault);
+  }
+  auto process = std::make_unique<Process>(argv, log);
+  if (!wait_until([&] { return read_text(log).find("ready:") != std::string::npos; }, 20)) {
+    error = "simulator " + link.string() + " did not start: " + read_text(log);
+    return nullptr;
+  }
+  return process;
+}
+
+std::string simulator_received(const std::string& protocol, const std::filesystem::path& record) {
+  return read_text(record / (protocol == "grbl" ? "grbl-received.nc" : "hpgl-received.hpgl"));
+}
+
 }  // namespace lastcut::daemon::testing

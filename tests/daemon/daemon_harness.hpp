@@ -4,6 +4,7 @@
 #include <chrono>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -31,5 +32,14 @@ int count_occurrences(const std::string& haystack, const std::string& needle);
 std::filesystem::path scratch_folder(const std::string& name);
 // Moves a finished file into the watch folder the way uploaders should: write elsewhere, rename.
 void drop(const std::filesystem::path& file, const std::filesystem::path& watch_dir, const std::string& name);
+
+// lastcut-sim `protocol` (grbl | hpgl) on a pseudo-terminal linked at `link`, moving instantly,
+// recording what it receives in the folder `record`, with `--fault fault` unless it is empty;
+// waits (20 s at most) for its "ready:" line in `log`. Null, with the log in `error`, if it did not start.
+std::unique_ptr<Process> start_simulator(const std::string& protocol, const std::filesystem::path& link,
+                                         const std::filesystem::path& record, const std::string& fault,
+                                         const std::filesystem::path& log, std::string& error);
+// The bytes a simulator of `protocol` recorded in the folder `record` (after it stopped).
+std::string simulator_received(const std::string& protocol, const std::filesystem::path& record);
 
 }  // namespace lastcut::daemon::testing

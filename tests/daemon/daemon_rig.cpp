@@ -52,22 +52,19 @@ void DaemonRig::start_cutters() {
           << "the grbl firmware for " << cutter << " did not start: " << read_text(log);
       continue;
     }
-    std::vector<std::string> argv = {binary("lastcut-sim").string(), is_grbl(cutter) ? "grbl" : "hpgl", "--link", (root_ / (cutter + ".tty")).string(),
-                                     "--record", (root_ / ("record-" + cutter)).string(), "--time-scale", "0"};
-    if (auto fault = options_.sim_faults.find(cutter); fault != options_.sim_faults.end()) {
-      argv.push_back("--fault");
-      argv.push_back(fault->second);
-    }
-    const auto log = root_ / ("sim-" + cutter + ".log");
-    cutters_[cutter] = std::make_unique<Process>(argv, log);
-    ASSERT_TRUE(wait_until([&] { return read_text(log).find("ready:") != std::string::npos; }, 20))
-        << "simulator " << cutter << " did not start: " << read_text(log);
+    const auto fault = options_.sim_faults.find(cutter);
+    std::string error;
+    cutters_[cutter] = start_simulator(is_grbl(cutter) ? "grbl" : "hpgl", root_ / (cutter + ".tty"),
+                                       root_ / ("record-" + cutter),
+                                       fault != options_.sim_faults.end() ? fault->second : "",
+                                       root_ / ("sim-" + cutter + ".log"), error);
+    ASSERT_TRUE(cutters_[cutter]) << error;
   }
 }
 
 void DaemonRig::stop_cutters() {
   for (auto& [name, process] : cutters_) {
-    if (process->running()) {
+    if (process && process->running()) {
       process->signal(SIGTERM);
       process->wait(10);
     }
@@ -92,7 +89,7 @@ void DaemonRig::kill_daemon() {
 }
 
 std::string DaemonRig::received(const std::string& cutter) const {
-  return read_text(root_ / ("record-" + cutter) / (is_grbl(cutter) ? "grbl-received.nc" : "hpgl-received.hpgl"));
+  return simulator_received(is_grbl(cutter) ? "grbl" : "hpgl", root_ / ("record-" + cutter));
 }
 
 std::vector<std::string> DaemonRig::firmware_blocks(const std::string& cutter) const {
