@@ -5,7 +5,8 @@
 // hides used, the area lower bound (the fewest hides, largest usable area first, whose usable area
 // covers the pieces' area), utilisation of the used hides' usable area (outline minus holes).
 // Usage: hide_bench [--data DIR] [--limits 10,60] [--threads 2] [--workers 4] [--seed 1]
-//                   [--only NAME[,NAME...]] [--methods search,greedy] [--rounds N] [--svg-dir DIR]
+//                   [--only NAME[,NAME...]] [--methods search,greedy] [--rounds N] [--svg-dir DIR] [--trace 1]
+//   --trace 1: every improvement on stderr (seconds since start, hides used, utilisation)
 //   --rounds N: N improvement rounds instead of the time limits (a fixed budget: compares two versions on the same work)
 #include <algorithm>
 #include <chrono>
@@ -17,9 +18,9 @@
 #include <numbers>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
+#include "daemon/cli/thread_team.hpp"
 #include "engine/nest/layout_check.hpp"
 #include "engine/nest/layout_svg.hpp"
 #include "engine/nest/mold_items.hpp"
@@ -28,13 +29,6 @@
 #include "generated_hides.hpp"
 
 namespace {
-
-void run_threads(std::vector<std::function<void()>>& tasks) {
-  std::vector<std::thread> threads;
-  for (size_t i = 1; i < tasks.size(); ++i) threads.emplace_back(tasks[i]);
-  tasks[0]();
-  for (auto& t : threads) t.join();
-}
 
 std::vector<std::string> split(const std::string& text) {
   std::vector<std::string> parts;
@@ -70,6 +64,7 @@ int main(int argc, char** argv) {
   std::uint64_t seed = 1;
   std::string only;
   long rounds = 0;
+  bool trace = false;
   std::filesystem::path svg_dir;
   for (int a = 1; a + 1 < argc; a += 2) {
     const std::string key = argv[a], value = argv[a + 1];
@@ -81,6 +76,7 @@ int main(int argc, char** argv) {
     else if (key == "--methods") methods = split(value);
     else if (key == "--rounds") rounds = std::atol(value.c_str());
     else if (key == "--svg-dir") svg_dir = value;
+    else if (key == "--trace") trace = value != "0";
     else if (key == "--limits") {
       limits.clear();
       for (const std::string& l : split(value)) limits.push_back(std::atof(l.c_str()));
@@ -102,6 +98,8 @@ int main(int argc, char** argv) {
       if (instance.name == name) return true;
     return false;
   };
+  // Started once: the search hands over tasks hundreds of times a second (as nest_bench does).
+  lastcut::ThreadTeam team(static_cast<size_t>(std::max(0, threads - 1)));
   int invalid = 0;
   if (rounds > 0) limits = {0};
   for (double limit : limits) {
@@ -124,9 +122,15 @@ int main(int argc, char** argv) {
         options.threads = threads;
         options.sweep_workers = workers;
         options.seed = seed;
-        options.run_parallel = run_threads;
+        options.run_parallel = team.runner();
         options.hide_method = methods[m] == "greedy" ? lastcut::HideMethod::Greedy : lastcut::HideMethod::Search;
         const auto start = std::chrono::steady_clock::now();
+        if (trace)
+          options.on_improvement = [&](const lastcut::Layout& better) {
+            std::fprintf(stderr, "%s %s %.1f s: %zu placed, %d hides, %.2f %%\n", instance.name.c_str(), methods[m].c_str(),
+                         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                         better.placements.size(), lastcut::used_bin_count(better), 100 * better.utilisation);
+          };
         const lastcut::Layout layout = lastcut::nest(instance, options);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const auto problems = lastcut::check_layout(layout, instance);

@@ -13,12 +13,19 @@
 //   area (the first unopened hide after the used ones): at a free sampled spot if there is one,
 //   otherwise dropped in and the hide separated. A unit that fails is not tried again until a hide
 //   has been closed (knapsack form).
-// - move: one unit of a little-filled hide (the least filled first; after 4 failures in a row the
-//   next) goes, by the same insertion, onto a hide at least as full; a hide that loses its last unit
-//   is closed (multi-hide form: fewer hides, the others fuller). The search stops when 12 moves per
-//   used hide failed in a row, or at the budget.
+// - move: one unit of a little-filled hide (the least filled first, the smaller hide on a tie; after
+//   4 failed attempts the next hide) goes, by the same insertion, onto a hide at least as full;
+// - swap (once a whole cycle over the hides failed): one unit of a little-filled hide and a smaller
+//   unit of a hide at least as full change places.
+//   Both raise the sum over hides of placed area x fill, so no sequence of them cycles; a hide that
+//   loses its last unit is closed (multi-hide form: fewer hides, the others fuller). Every full cycle
+//   over the used hides without success raises the effort (up to 3 levels: longer separations, one
+//   more destination, the dropped piece at a random pose instead of the hide's centre); a success
+//   resets it. With several threads each round runs one attempt per thread (each separating with one
+//   sweep worker) and keeps the first that succeeds. The search runs until the budget, or until the
+//   used hides are as few as their usable area allows.
 // Pair groups move as one unit and must end near each other (engine/nest/hide_pieces).
-// Deterministic for the seed, sweep workers and iteration budget; the time limit only stops it (a
+// Deterministic for the seed, threads, sweep workers and iteration budget; the time limit only stops it (a
 // round cut short is dropped). No threads of its own: sweeps go through NestOptions::run_parallel.
 #include "engine/nest/hide_pieces.hpp"
 #include "engine/nest/layout.hpp"
