@@ -342,31 +342,30 @@ Layout HideSearch::run() {
       success = insert_anywhere(trial, left_over, destinations, seed, Effort{});
       if (!success) tried[left_over] = 1;
     } else {
-      // Multi-hide: fewer hides. Stops only at the budget, or when the used hides are as few as
-      // their area allows (or one hide holds everything that fits).
+      // Multi-hide: fewer hides, until the budget. When the used hides are as few as their area
+      // allows (or one hide holds everything that fits) only smaller hides are left to try.
       if (used.size() < 2 || used.size() <= area_bound(current)) {
-        // As few hides as their area allows: only smaller hides are left to try.
         if (streak >= kShrinkTries) break;
         success = shrink(trial, streak, seed, Effort{1});
         streak = success ? 0 : streak + 1;
       } else {
-      const long cycles = streak / (kPerTarget * static_cast<long>(used.size()));
-      // Stuck: a new trajectory from a perturbed greedy start. The search's outcome hangs on a few
-      // lucky moves early on, so a trajectory that is behind the best gets one cycle, one as good
-      // as the best every level of effort.
-      if (cycles > (used.size() <= used_slots(best).size() ? kMaxLevel : 0)) {
-        current = restart(++restarts);
-        streak = 0;
-        std::fill(tried.begin(), tried.end(), 0);
-        if (better(current, best)) {
-          best = current;
-          if (options_.on_improvement) options_.on_improvement(layout(best, false));
+        const long cycles = streak / (kPerTarget * static_cast<long>(used.size()));
+        // Stuck: a new trajectory from a perturbed greedy start. The search's outcome hangs on a few
+        // lucky moves early on, so a trajectory that is behind the best gets one cycle, one as good
+        // as the best every level of effort.
+        if (cycles > (used.size() <= used_slots(best).size() ? kMaxLevel : 0)) {
+          current = restart(++restarts);
+          streak = 0;
+          std::fill(tried.begin(), tried.end(), 0);
+          if (better(current, best)) {
+            best = current;
+            if (options_.on_improvement) options_.on_improvement(layout(best, false));
+          }
+          continue;
         }
-        continue;
-      }
-      const Effort effort{static_cast<int>(cycles)};
-      success = move_or_swap(trial, streak, seed, effort);
-      streak = success ? 0 : streak + 1;
+        const Effort effort{static_cast<int>(cycles)};
+        success = move_or_swap(trial, streak, seed, effort);
+        streak = success ? 0 : streak + 1;
       }
     }
     if (deadline_.passed()) break;  // a round cut short is not deterministic: drop it
