@@ -5,6 +5,10 @@
 // largest-first order it is the iterated greedy (engine/nest/hide_greedy) on a small neighbourhood: it
 // fills one hide tighter and leaves another emptier without any separation, which makes it cheap
 // next to the hide search's insertions. Deterministic for the seed.
+// Iterated greedy: Ruiz & Stuetzle, "A simple and effective iterated greedy algorithm for the
+// permutation flowshop scheduling problem", European Journal of Operational Research 177, 2007.
+// The concentration measure follows the bin-packing fitness of Falkenauer & Delchambre, "A genetic
+// algorithm for bin packing and line balancing", IEEE ICRA 1992 (sum of fill^2, here weighted by area).
 #include <cstdint>
 #include <vector>
 
