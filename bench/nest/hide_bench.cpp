@@ -5,7 +5,8 @@
 // hides used, the area lower bound (the fewest hides, largest usable area first, whose usable area
 // covers the pieces' area), utilisation of the used hides' usable area (outline minus holes).
 // Usage: hide_bench [--data DIR] [--limits 10,60] [--threads 2] [--workers 4] [--seed 1]
-//                   [--only NAME[,NAME...]] [--methods search,greedy] [--rounds N] [--svg-dir DIR]
+//                   [--only NAME[,NAME...]] [--methods search,greedy] [--rounds N] [--svg-dir DIR] [--trace 1]
+//   --trace 1: every improvement on stderr (seconds since start, hides used, utilisation)
 //   --rounds N: N improvement rounds instead of the time limits (a fixed budget: compares two versions on the same work)
 #include <algorithm>
 #include <chrono>
@@ -15,7 +16,6 @@
 #include <filesystem>
 #include <functional>
 #include <numbers>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -52,10 +52,12 @@ int main(int argc, char** argv) {
   lastcut::bench::BenchOptions bench;
   bench.data = LASTCUT_SHARED_DATA_DIR "/nesting/leather";
   std::vector<std::string> methods = {"search", "greedy"};
+  bool trace = false;  // every improvement with its time, on stderr
   for (int a = 1; a + 1 < argc; a += 2) {
     const std::string key = argv[a], value = argv[a + 1];
     if (bench.parse(key, value)) continue;
     if (key == "--methods") methods = lastcut::bench::split_list(value);
+    else if (key == "--trace") trace = value != "0";
     else {
       std::fprintf(stderr, "unknown option %s\n", key.c_str());
       return 2;
@@ -95,6 +97,12 @@ int main(int argc, char** argv) {
         if (rounds > 0) options.time_limit_s = 1e9, options.iteration_limit = rounds;
         options.hide_method = methods[m] == "greedy" ? lastcut::HideMethod::Greedy : lastcut::HideMethod::Search;
         const auto start = std::chrono::steady_clock::now();
+        if (trace)
+          options.on_improvement = [&](const lastcut::Layout& better) {
+            std::fprintf(stderr, "%s %s %.1f s: %zu placed, %d hides, %.2f %%\n", instance.name.c_str(), methods[m].c_str(),
+                         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                         better.placements.size(), lastcut::used_bin_count(better), 100 * better.utilisation);
+          };
         const lastcut::Layout layout = lastcut::nest(instance, options);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const auto problems = lastcut::check_layout(layout, instance);

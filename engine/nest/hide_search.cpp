@@ -4,23 +4,33 @@
 #include <numeric>
 
 #include "engine/nest/hide_greedy.hpp"
+#include "engine/nest/hide_repack.hpp"
 #include "engine/nest/nest_random.hpp"
 #include "engine/nest/parallel_separation.hpp"
 
 namespace lastcut::nest_detail {
 namespace {
 
-// Separation budget of one insertion (strikes of `kStale` sweeps without a 2 % improvement) and the
-// sweep workers of a hide's separation: a small budget tried often beat 3 x 40 sweeps and four
-// workers on Test1, Test5 and Test6 at 10 s (docs/benchmarks-nest.md).
+// Separation budget of one insertion at effort level 0 (strikes of `kStale` sweeps without a 2 %
+// improvement): a small budget tried often beat 3 x 40 sweeps on Test1, Test5 and Test6 at 10 s
+// (docs/benchmarks-nest.md). Each level of effort adds kStale sweeps per strike and one destination.
 constexpr int kStrikes = 2, kStale = 15;
+constexpr int kMaxLevel = 2;  // levels of effort before a restart
 constexpr int kPlaceSamples = 240;
 constexpr int kHideSweepWorkers = 2;
-constexpr int kDestinations = 2;  // hides an inserted unit tries, most free area first
-constexpr long kGiveUp = 12;      // failed moves in a row per used hide (and nothing left to insert): stop
-constexpr long kPerTarget = 4;   // failed moves before the next hide is tried
+constexpr int kDestinations = 2;  // hides an inserted unit tries at level 0, most free area first
+constexpr long kShrinkTries = 40;  // failed shrinks in a row that end the search at the area bound
+constexpr long kPerTarget = 4;    // failed attempts on one hide before the next one is tried
 
 Point2 box_centre(const Box& b) { return {0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)}; }
+
+// How hard one insertion tries; grows while no attempt succeeds, back to 0 after a success.
+struct Effort {
+  int level = 0;
+  int strikes() const { return kStrikes; }
+  int stale() const { return kStale * (1 + level); }
+  int destinations() const { return kDestinations + level; }
+};
 
 class HideSearch {
  public:
@@ -40,6 +50,7 @@ class HideSearch {
       if (s.slot_of[i] == slot) a += pieces_.frames[0][pieces_.item_of[i]].area_mm2;
     return a;
   }
+  double fill(const State& s, int slot) const { return placed_area(s, slot) / pieces_.slots[slot].container->usable_area_mm2(); }
   double free_area(const State& s, int slot) const {
     return pieces_.slots[slot].container->usable_area_mm2() - placed_area(s, slot);
   }
@@ -50,8 +61,35 @@ class HideSearch {
     std::sort(used.begin(), used.end());
     return used;
   }
-  bool insert_unit(State& s, int unit, int slot, std::uint64_t seed);
-  bool insert_anywhere(State& s, int unit, const std::vector<int>& destinations, std::uint64_t seed);
+  std::vector<int> units_on(const State& s, int slot) const {
+    std::vector<int> units;
+    for (size_t i = 0; i < s.slot_of.size(); ++i)
+      if (s.slot_of[i] == slot && std::find(units.begin(), units.end(), pieces_.unit_of[i]) == units.end())
+        units.push_back(pieces_.unit_of[i]);
+    std::stable_sort(units.begin(), units.end(), [&](int a, int b) { return pieces_.unit_area_mm2[a] > pieces_.unit_area_mm2[b]; });
+    return units;
+  }
+  // The fewest hides whose usable areas, largest first, cover the placed area: no move goes below.
+  size_t area_bound(const State& s) const;
+  // The used hides, the one to empty first first: least filled, then the smallest.
+  std::vector<int> targets(const State& s) const;
+  bool insert_unit(State& s, int unit, int slot, std::uint64_t seed, const Effort& effort) const;
+  bool insert_anywhere(State& s, int unit, const std::vector<int>& destinations, std::uint64_t seed, const Effort& effort) const;
+  // Attempt k since the last success, on a copy of the best state: one unit of a little-filled hide
+  // onto a hide at least as full (move), or, from level 1 on every other attempt, exchanged for a
+  // smaller unit of such a hide (swap). Both make the little-filled hide emptier.
+  bool move_or_swap(State& s, long k, std::uint64_t seed, const Effort& effort) const;
+  bool swap(State& s, int target, int unit, long k, std::uint64_t seed, const Effort& effort) const;
+  // The target hide and a fuller one packed again by the greedy, the fuller one first, the units of
+  // both in a perturbed largest-first order; kept when the concentration grows.
+  bool repack(State& s, int target, long k, std::uint64_t seed) const;
+  // Every unit of a used hide onto an unused smaller one that has room for their area (the
+  // `index`-th such pair, the lowest resulting fill first; no dearer hide): the same pieces on less leather.
+  bool shrink(State& s, long index, std::uint64_t seed, const Effort& effort) const;
+  // More placed area, then fewer hides, then more concentrated.
+  bool better(const State& a, const State& b) const;
+  // A new trajectory: the greedy in a perturbed order.
+  State restart(long restarts) const;
   Layout layout(const State& s, bool with_reasons) const {
     return finish_hides(instance_, pieces_, s.slot_of, s.state, with_reasons, options_.seed);
   }
@@ -62,7 +100,30 @@ class HideSearch {
   Deadline deadline_;
 };
 
-bool HideSearch::insert_unit(State& s, int unit, int slot, std::uint64_t seed) {
+size_t HideSearch::area_bound(const State& s) const {
+  double placed = 0;
+  for (size_t i = 0; i < s.slot_of.size(); ++i)
+    if (s.slot_of[i] >= 0) placed += pieces_.frames[0][pieces_.item_of[i]].area_mm2;
+  std::vector<double> areas;
+  for (const HideSlot& slot : pieces_.slots) areas.push_back(slot.container->usable_area_mm2());
+  std::sort(areas.rbegin(), areas.rend());
+  double covered = 0;
+  size_t k = 0;
+  while (k < areas.size() && covered < placed * (1 - 1e-12)) covered += areas[k++];
+  return k;
+}
+
+std::vector<int> HideSearch::targets(const State& s) const {
+  std::vector<int> order = used_slots(s);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    const double fa = fill(s, a), fb = fill(s, b);
+    if (std::abs(fa - fb) > 1e-9) return fa < fb;
+    return pieces_.slots[a].container->usable_area_mm2() < pieces_.slots[b].container->usable_area_mm2();
+  });
+  return order;
+}
+
+bool HideSearch::insert_unit(State& s, int unit, int slot, std::uint64_t seed, const Effort& effort) const {
   const std::vector<int>& members = pieces_.units[unit];
   for (int p : members)
     if (!pieces_.fits_frame(p, slot)) return false;
@@ -80,7 +141,9 @@ bool HideSearch::insert_unit(State& s, int unit, int slot, std::uint64_t seed) {
       rest.push_back(p);
   }
   if (!rest.empty()) {
-    // Drop the rest in and separate the hide.
+    // Drop the rest in and separate the hide: at the hide's centre at first, at a random pose and
+    // spot once the plain attempts failed (another start, another outcome of the separation).
+    Random random(stream_seed(seed, 0, 9));
     std::vector<int> local;
     for (size_t i = 0; i < s.slot_of.size(); ++i)
       if (s.slot_of[i] == slot) local.push_back(static_cast<int>(i));
@@ -89,25 +152,25 @@ bool HideSearch::insert_unit(State& s, int unit, int slot, std::uint64_t seed) {
     for (int p : local) prepared.push_back(&pieces_.prepared(p, slot)), start.push_back(s.state[p]);
     for (int p : rest) {
       const PreparedItem& item = pieces_.prepared(p, slot);
-      const Box range = pieces_.slots[slot].container->offset_range(item.orientations[0]);
-      PieceState st{0, box_centre(range)};
+      PieceState st{0, box_centre(pieces_.slots[slot].container->offset_range(item.orientations[0]))};
+      if (effort.level > 0) {
+        st.orientation = random.below(static_cast<int>(item.orientations.size()));
+        const Box range = pieces_.slots[slot].container->offset_range(item.orientations[st.orientation]);
+        st.offset = {random.uniform(range.x0, range.x1), random.uniform(range.y0, range.y1)};
+      }
       if (s.slot_of[members[0]] == slot) st.offset = s.state[members[0]].offset;  // next to its pair
       local.push_back(p);
       prepared.push_back(&item);
       start.push_back(st);
     }
-    ParallelSeparation separation(prepared, *pieces_.slots[slot].container, seed, std::min(kHideSweepWorkers, options_.sweep_workers), options_.threads,
-                                  options_.run_parallel);
+    ParallelSeparation separation(prepared, *pieces_.slots[slot].container, seed, std::min(kHideSweepWorkers, options_.sweep_workers),
+                                  options_.threads, options_.run_parallel);
     separation.set_state(start);
-    if (!separation.separate(kStrikes, kStale, deadline_)) return false;
+    if (!separation.separate(effort.strikes(), effort.stale(), deadline_)) return false;
     for (size_t k = 0; k < local.size(); ++k) s.slot_of[local[k]] = slot, s.state[local[k]] = separation.state()[k];
   }
   // Pairs on this hide must still be near each other: re-place a stray piece next to its first one.
-  std::vector<int> units_here;
-  for (size_t i = 0; i < s.slot_of.size(); ++i)
-    if (s.slot_of[i] == slot && std::find(units_here.begin(), units_here.end(), pieces_.unit_of[i]) == units_here.end())
-      units_here.push_back(pieces_.unit_of[i]);
-  for (int u : units_here) {
+  for (int u : units_on(s, slot)) {
     if (unit_near(pieces_, instance_, u, slot, s.state)) continue;
     const std::vector<int>& group = pieces_.units[u];
     for (size_t m = 1; m < group.size(); ++m) {
@@ -126,86 +189,194 @@ bool HideSearch::insert_unit(State& s, int unit, int slot, std::uint64_t seed) {
   return true;
 }
 
-bool HideSearch::insert_anywhere(State& s, int unit, const std::vector<int>& destinations, std::uint64_t seed) {
+bool HideSearch::insert_anywhere(State& s, int unit, const std::vector<int>& destinations, std::uint64_t seed,
+                                 const Effort& effort) const {
   int tried = 0;
   for (int slot : destinations) {
     if (free_area(s, slot) < pieces_.unit_area_mm2[unit]) continue;
     State trial = s;
-    if (insert_unit(trial, unit, slot, stream_seed(seed, static_cast<std::uint64_t>(slot), 5))) {
+    if (insert_unit(trial, unit, slot, stream_seed(seed, static_cast<std::uint64_t>(slot), 5), effort)) {
       s = std::move(trial);
       return true;
     }
-    if (++tried == kDestinations || deadline_.passed()) break;
+    if (++tried == effort.destinations() || deadline_.passed()) break;
   }
   return false;
+}
+
+bool HideSearch::move_or_swap(State& s, long k, std::uint64_t seed, const Effort& effort) const {
+  const std::vector<int> order = targets(s);
+  const int target = order[static_cast<size_t>(k / kPerTarget) % order.size()];
+  const std::vector<int> units = units_on(s, target);
+  const int unit = units[static_cast<size_t>(effort.level > 0 ? k / 3 : k) % units.size()];
+  if (effort.level > 0 && k % 4 == 1) return swap(s, target, unit, k, seed, effort);
+  if (effort.level > 0 && k % 4 == 2) return repack(s, target, k, seed);
+  if (effort.level > 0 && k % 4 == 3) return shrink(s, k / 4, seed, effort);
+  const double target_fill = fill(s, target);
+  for (int p : pieces_.units[unit]) s.slot_of[p] = -1;
+  std::vector<int> destinations;
+  for (int slot : order)
+    if (slot != target && fill(s, slot) >= target_fill) destinations.push_back(slot);
+  std::stable_sort(destinations.begin(), destinations.end(), [&](int a, int b) { return free_area(s, a) > free_area(s, b); });
+  return insert_anywhere(s, unit, destinations, seed, effort);
+}
+
+bool HideSearch::swap(State& s, int target, int unit, long k, std::uint64_t seed, const Effort& effort) const {
+  // Partner: a hide at least as full holding a smaller unit whose place (plus its free area) the
+  // larger one could take; the partners and their units in turn, largest smaller unit first.
+  const double target_fill = fill(s, target), area = pieces_.unit_area_mm2[unit];
+  std::vector<std::pair<int, int>> candidates;  // (hide, unit)
+  for (int slot : targets(s)) {
+    if (slot == target || fill(s, slot) < target_fill) continue;
+    for (int v : units_on(s, slot))
+      if (pieces_.unit_area_mm2[v] < area && free_area(s, slot) + pieces_.unit_area_mm2[v] >= area)
+        candidates.emplace_back(slot, v);
+  }
+  if (candidates.empty()) return false;
+  const auto [partner, other] = candidates[static_cast<size_t>(k / 3) % candidates.size()];
+  for (int p : pieces_.units[unit]) s.slot_of[p] = -1;
+  for (int p : pieces_.units[other]) s.slot_of[p] = -1;
+  return insert_unit(s, unit, partner, stream_seed(seed, 1, 5), effort) &&
+         insert_unit(s, other, target, stream_seed(seed, 2, 5), effort);
+}
+
+bool HideSearch::repack(State& s, int target, long k, std::uint64_t seed) const {
+  const double before = concentration(pieces_, s.slot_of), target_fill = fill(s, target);
+  std::vector<int> partners;
+  for (int slot : targets(s))
+    if (slot != target && fill(s, slot) >= target_fill) partners.push_back(slot);
+  if (partners.empty()) return false;
+  const int partner = partners[static_cast<size_t>(k / 3) % partners.size()];
+  std::vector<int> units = units_on(s, partner);
+  for (int u : units_on(s, target)) units.push_back(u);
+  Random random(stream_seed(seed, 0, 13));
+  std::vector<double> key(pieces_.units.size(), 0);
+  for (int u : units) key[u] = pieces_.unit_area_mm2[u] * (1 + 0.6 * random.uniform());
+  std::stable_sort(units.begin(), units.end(), [&](int a, int b) { return key[a] > key[b]; });
+  if (!repack_hides(instance_, pieces_, s.slot_of, s.state, {partner, target}, units, seed)) return false;
+  return concentration(pieces_, s.slot_of) > before * (1 + 1e-9);
+}
+
+bool HideSearch::shrink(State& s, long index, std::uint64_t seed, const Effort& effort) const {
+  const std::vector<int> used = used_slots(s);
+  auto usable = [&](int slot) { return pieces_.slots[slot].container->usable_area_mm2(); };
+  auto cost = [&](int slot) { return instance_.bins[pieces_.slots[slot].bin_index].cost; };
+  std::vector<std::pair<int, int>> candidates;  // (used hide, smaller unused hide)
+  for (int from : used)
+    for (int to = 0; to < static_cast<int>(pieces_.slots.size()); ++to)
+      if (std::find(used.begin(), used.end(), to) == used.end() && usable(to) < usable(from) &&
+          usable(to) >= placed_area(s, from) && cost(to) <= cost(from))
+        candidates.emplace_back(from, to);
+  if (candidates.empty()) return false;
+  // The likeliest first: the lowest fill the pieces would have on the smaller hide.
+  std::stable_sort(candidates.begin(), candidates.end(), [&](const auto& a, const auto& b) {
+    return placed_area(s, a.first) / usable(a.second) < placed_area(s, b.first) / usable(b.second);
+  });
+  const auto [from, to] = candidates[static_cast<size_t>(index) % candidates.size()];
+  const std::vector<int> units = units_on(s, from);
+  for (int u : units)
+    for (int p : pieces_.units[u]) s.slot_of[p] = -1;
+  for (int u : units)
+    if (!insert_unit(s, u, to, stream_seed(seed, static_cast<std::uint64_t>(u), 21), effort)) return false;
+  return true;
+}
+
+bool HideSearch::better(const State& a, const State& b) const {
+  double placed_a = 0, placed_b = 0;
+  for (size_t i = 0; i < a.slot_of.size(); ++i) {
+    const double area = pieces_.frames[0][pieces_.item_of[i]].area_mm2;
+    placed_a += a.slot_of[i] >= 0 ? area : 0;
+    placed_b += b.slot_of[i] >= 0 ? area : 0;
+  }
+  if (std::abs(placed_a - placed_b) > 1e-9 * std::max(1.0, placed_a)) return placed_a > placed_b;
+  const size_t used_a = used_slots(a).size(), used_b = used_slots(b).size();
+  if (used_a != used_b) return used_a < used_b;
+  return concentration(pieces_, a.slot_of) > concentration(pieces_, b.slot_of) * (1 + 1e-9);
+}
+
+HideSearch::State HideSearch::restart(long restarts) const {
+  // The greedy in a perturbed largest-first order (priorities first), as the iterated greedy does.
+  Random random(stream_seed(options_.seed, static_cast<std::uint64_t>(restarts), 17));
+  std::vector<double> key(pieces_.units.size());
+  for (size_t u = 0; u < pieces_.units.size(); ++u) key[u] = pieces_.unit_area_mm2[u] * (1 + 0.6 * random.uniform());
+  std::vector<int> order = unit_order_by_value(pieces_);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    if (pieces_.unit_priority[a] != pieces_.unit_priority[b]) return pieces_.unit_priority[a] > pieces_.unit_priority[b];
+    return key[a] > key[b];
+  });
+  const HideAssignment start = greedy_hides(instance_, pieces_, order, random.next());
+  return {start.slot_of, start.state};
 }
 
 Layout HideSearch::run() {
   const HideAssignment start = greedy_hides(instance_, pieces_, unit_order_by_value(pieces_), stream_seed(options_.seed, 0, 0));
   State best{start.slot_of, start.state};
+  State current = best;  // the trajectory searched now; best = the best state of all trajectories
   if (options_.on_improvement) options_.on_improvement(layout(best, false));
   const int n_slots = static_cast<int>(pieces_.slots.size());
-  long streak = 0;  // failed moves in a row
+  long streak = 0, restarts = 0;  // multi-hide attempts since the last success; trajectories started
   std::vector<char> tried(pieces_.units.size(), 0);
   const std::vector<int> by_value = unit_order_by_value(pieces_);
   for (long round = 1; !options_.iteration_limit || round <= *options_.iteration_limit; ++round) {
     if (deadline_.passed()) break;
     const std::uint64_t seed = stream_seed(options_.seed, static_cast<std::uint64_t>(round), 0);
-    const std::vector<int> used = used_slots(best);
-    State trial = best;
+    const std::vector<int> used = used_slots(current);
+    State trial = current;
     bool success = false;
     // Knapsack: a unit left over, most valuable first.
     int left_over = -1;
     for (int u : by_value)
-      if (!tried[u] && best.slot_of[pieces_.units[u].front()] < 0) {
+      if (!tried[u] && current.slot_of[pieces_.units[u].front()] < 0) {
         left_over = u;
         break;
       }
     if (left_over >= 0) {
       std::vector<int> destinations = used;
       std::stable_sort(destinations.begin(), destinations.end(),
-                       [&](int a, int b) { return free_area(best, a) > free_area(best, b); });
+                       [&](int a, int b) { return free_area(current, a) > free_area(current, b); });
       for (int slot = 0; slot < n_slots; ++slot)
         if (std::find(used.begin(), used.end(), slot) == used.end()) {
           destinations.push_back(slot);
           break;
         }
-      success = insert_anywhere(trial, left_over, destinations, seed);
+      success = insert_anywhere(trial, left_over, destinations, seed, Effort{});
       if (!success) tried[left_over] = 1;
     } else {
-      if (used.size() < 2) break;  // one hide holds everything that fits
-      if (streak >= kGiveUp * static_cast<long>(used.size())) break;  // no move found for long: done
-      // Multi-hide: move one unit out of a little-filled hide into a fuller one; the least-filled
-      // hide first, the next one after every kPerTarget failures in a row. A hide that loses its
-      // last unit is closed.
-      std::vector<int> order = used;
-      std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-        return placed_area(best, a) / pieces_.slots[a].container->usable_area_mm2() <
-               placed_area(best, b) / pieces_.slots[b].container->usable_area_mm2();
-      });
-      const int target = order[static_cast<size_t>(streak / kPerTarget) % order.size()];
-      std::vector<int> units;
-      for (size_t i = 0; i < best.slot_of.size(); ++i)
-        if (best.slot_of[i] == target && std::find(units.begin(), units.end(), pieces_.unit_of[i]) == units.end())
-          units.push_back(pieces_.unit_of[i]);
-      std::stable_sort(units.begin(), units.end(), [&](int a, int b) { return pieces_.unit_area_mm2[a] > pieces_.unit_area_mm2[b]; });
-      const int unit = units[static_cast<size_t>(streak) % units.size()];
-      for (int p : pieces_.units[unit]) trial.slot_of[p] = -1;
-      std::vector<int> destinations;
-      for (int slot : used)
-        if (slot != target && placed_area(best, slot) / pieces_.slots[slot].container->usable_area_mm2() >=
-                                  placed_area(best, target) / pieces_.slots[target].container->usable_area_mm2())
-          destinations.push_back(slot);
-      std::stable_sort(destinations.begin(), destinations.end(),
-                       [&](int a, int b) { return free_area(trial, a) > free_area(trial, b); });
-      success = insert_anywhere(trial, unit, destinations, seed);
-      streak = success ? 0 : streak + 1;
+      // Multi-hide: fewer hides, until the budget. When the used hides are as few as their area
+      // allows (or one hide holds everything that fits) only smaller hides are left to try.
+      if (used.size() < 2 || used.size() <= area_bound(current)) {
+        if (streak >= kShrinkTries) break;
+        success = shrink(trial, streak, seed, Effort{1});
+        streak = success ? 0 : streak + 1;
+      } else {
+        const long cycles = streak / (kPerTarget * static_cast<long>(used.size()));
+        // Stuck: a new trajectory from a perturbed greedy start. The search's outcome hangs on a few
+        // lucky moves early on, so a trajectory that is behind the best gets one cycle, one as good
+        // as the best every level of effort.
+        if (cycles > (used.size() <= used_slots(best).size() ? kMaxLevel : 0)) {
+          current = restart(++restarts);
+          streak = 0;
+          std::fill(tried.begin(), tried.end(), 0);
+          if (better(current, best)) {
+            best = current;
+            if (options_.on_improvement) options_.on_improvement(layout(best, false));
+          }
+          continue;
+        }
+        const Effort effort{static_cast<int>(cycles)};
+        success = move_or_swap(trial, streak, seed, effort);
+        streak = success ? 0 : streak + 1;
+      }
     }
     if (deadline_.passed()) break;  // a round cut short is not deterministic: drop it
     if (success) {
-      best = std::move(trial);
-      if (left_over < 0 && used_slots(best).size() < used.size()) std::fill(tried.begin(), tried.end(), 0);
-      if (options_.on_improvement) options_.on_improvement(layout(best, false));
+      const size_t used_before = used.size();
+      current = std::move(trial);
+      if (left_over < 0 && used_slots(current).size() < used_before) std::fill(tried.begin(), tried.end(), 0);
+      if (better(current, best)) {
+        best = current;
+        if (options_.on_improvement) options_.on_improvement(layout(best, false));
+      }
     }
   }
   return layout(best, true);

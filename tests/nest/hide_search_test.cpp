@@ -112,6 +112,35 @@ TEST(NestHideSearch, APairThatCannotBeNearIsLeftOutWhole) {
   EXPECT_EQ(listed, 2);
 }
 
+TEST(NestHideSearch, MovesThePiecesOntoASmallerHideThatHoldsThem) {
+  // The greedy opens the larger hide first (the same price per hide, so cheaper per mm^2); four
+  // 100 x 100 squares (40,000 mm^2) also fit the 400 x 300 hide (120,000 mm^2 less the margin strip).
+  NestInstance instance;
+  instance.name = "two hides";
+  Bin large;
+  large.id = 1;
+  large.outer = test::rectangle(1000, 1000);
+  Bin small = large;
+  small.id = 2;
+  small.outer = test::rectangle(400, 300);
+  instance.bins = {large, small};
+  instance.items.push_back(test::item(0, test::rectangle(100, 100), 4));
+  instance.gap_mm = 2;
+  instance.margin_mm = 5;
+  const Layout greedy = nest(instance, rounds(10, HideMethod::Greedy));
+  const Layout search = nest(instance, rounds(10));
+  EXPECT_TRUE(check_layout(search, instance).empty()) << all(check_layout(search, instance));
+  ASSERT_EQ(search.placements.size(), 4u);
+  ASSERT_EQ(greedy.placements.size(), 4u);
+  for (const Placement& p : greedy.placements) EXPECT_EQ(p.bin, 1);
+  for (const Placement& p : search.placements) EXPECT_EQ(p.bin, 2);
+  // Utilisation of the used hide: the pieces' area over the small hide's area.
+  EXPECT_NEAR(search.utilisation, 4 * 100.0 * 100.0 / (400.0 * 300.0), 1e-9);
+  // A dearer small hide is not taken.
+  instance.bins[1].cost = 2;
+  for (const Placement& p : nest(instance, rounds(10)).placements) EXPECT_EQ(p.bin, 1);
+}
+
 TEST(NestHideSearch, GreedyMethodHonoursTheSameConstraints) {
   const NestInstance instance = test::constraint_instance(2);
   const Layout layout = nest(instance, rounds(3, HideMethod::Greedy));
