@@ -82,7 +82,7 @@ struct SweepOutcome {
   std::vector<long long> jobs_requeued;   // lease expired while computing: ready again
   std::vector<long long> jobs_failed;     // ... for the max_attempts-th time: failed
   std::vector<long long> batches_requeued;  // claimed, nothing sent yet: queued again
-  std::vector<long long> batches_dissolved;  // expired while nesting: their jobs computed again, to be regrouped
+  std::vector<long long> batches_dissolved;  // expired while nesting: their jobs back to `computed`, to be regrouped
   std::vector<long long> batches_held;    // expired while sending: held with their jobs
 };
 
