@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include "daemon/ledger_node/ledger_node.hpp"
+#include "daemon/pipeline/ticket_targets.hpp"
 #include "daemon/spool/job_ticket.hpp"
 #include "daemon/spool/sha256.hpp"
 #include "engine/core/durable_file.hpp"
@@ -59,12 +60,8 @@ Status LedgerNode::enter(const ReadyScan& ready) {
     if (!read) return read.status();
     ticket = *read;
   }
-  if (ticket.material.empty()) ticket.material = config_->jobs.default_material;
-  if (ticket.cutter.empty()) ticket.cutter = config_->jobs.default_cutter;
-  if (!config_->materials.count(ticket.material))
-    return Status::failure("the sidecar asks for material \"" + ticket.material + "\", which is not configured");
-  if (!config_->cutters.count(ticket.cutter))
-    return Status::failure("the sidecar asks for cutter \"" + ticket.cutter + "\", which is not configured");
+  if (const std::string unknown_target = settle_ticket_targets(ticket, *config_); !unknown_target.empty())
+    return Status::failure(unknown_target);
   const auto hash = sha256_file_hex(ready.scan);
   if (!hash) return Status::failure("the scan cannot be read (it vanished or is not readable)");
   const std::string name = ready.scan.filename().string();

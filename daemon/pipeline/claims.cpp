@@ -5,6 +5,7 @@
 
 #include "daemon/pipeline/job_outcomes.hpp"
 #include "daemon/pipeline/pipeline.hpp"
+#include "daemon/pipeline/ticket_targets.hpp"
 #include "daemon/spool/sha256.hpp"
 #include "engine/core/durable_file.hpp"
 
@@ -51,14 +52,9 @@ void Pipeline::take(const ReadyScan& ready) {
     if (ticket) state.ticket = *ticket;
     else problem = ticket.error();
   }
-  if (state.ticket.material.empty()) state.ticket.material = settings->jobs.default_material;
-  if (state.ticket.cutter.empty()) state.ticket.cutter = settings->jobs.default_cutter;
-  if (problem.empty() && !settings->materials.count(state.ticket.material)) {
-    problem = "the sidecar asks for material \"" + state.ticket.material + "\", which is not configured";
-  }
-  if (problem.empty() && !settings->cutters.count(state.ticket.cutter)) {
-    problem = "the sidecar asks for cutter \"" + state.ticket.cutter + "\", which is not configured";
-  }
+  // Settled even for a refused scan: its state in failed/ names where it was meant to go.
+  const std::string unknown_target = settle_ticket_targets(state.ticket, *settings);
+  if (problem.empty()) problem = unknown_target;
   const auto earlier = hash_to_job_.find(state.sha256);
   const bool duplicate = earlier != hash_to_job_.end();
   if (duplicate) state.duplicate_of = earlier->second;
