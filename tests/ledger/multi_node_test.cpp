@@ -202,9 +202,12 @@ void LedgerMultiNode::restart_station_and_broker() {
   }, 30)) << "status not published again after the broker's restart";
   MqttSubscriber late(shop_.broker().port());
   ASSERT_TRUE(late.wait_subscribed(10));
+  // The broker hands a new subscriber the retained copy first; a cutter busy cutting may already
+  // have published live progress after it, so the retained copy is looked for, not the last message.
   const auto retained = [&](const std::string& topic) {
-    const auto message = late.last(topic);
-    return message && message->retained;
+    for (const lastcut::test::MqttMessage& message : late.on(topic))
+      if (message.retained) return true;
+    return false;
   };
   EXPECT_TRUE(late.wait_until([&] {
     for (const std::string& node : kNodes) {
