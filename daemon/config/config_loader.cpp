@@ -320,10 +320,6 @@ void cross_check(DaemonConfig& config, std::vector<std::string>& errors) {
   if (config.ledger) {
     for (const std::string& cutter : config.ledger->cutters)
       if (!config.cutters.count(cutter)) errors.push_back("ledger.cutters: \"" + cutter + "\" is not a [cutters.*] table");
-    for (const auto& [name, material] : config.materials)
-      if (material.kind == MaterialKind::Hide)
-        errors.push_back("materials." + name + ": hides are cut by single-station lastcutd only for now; a ledger node "
-                         "nests strips (remove [ledger] or use kind = \"strip\")");
   }
 }
 

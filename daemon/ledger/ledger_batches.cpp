@@ -24,23 +24,36 @@ std::vector<long long> jobs_of(pqxx::work& tx, long long batch_id) {
   return ids;
 }
 
-// The batch's jobs and their scans into `claim`, ascending.
-void fill_jobs(pqxx::work& tx, BatchClaim& claim) {
-  for (const pqxx::row& r :
-       tx.exec_params("SELECT id, scan_sha256 FROM jobs WHERE batch_id = $1 ORDER BY id", claim.batch_id)) {
-    claim.job_ids.push_back(r[0].as<long long>());
-    claim.job_scans.push_back(r[1].as<std::string>());
-  }
-}
-
 }  // namespace
 
-Result<std::optional<BatchClaim>> LedgerClient::make_batch(int max_jobs, double window_s, double lease_s) {
+// The batch's jobs, their scans and tickets into `claim`, ascending (the hide's too, for a hide batch).
+void fill_jobs(pqxx::work& tx, BatchClaim& claim) {
+  for (const pqxx::row& r : tx.exec_params(
+           "SELECT id, scan_sha256, scan_name, ticket FROM jobs WHERE batch_id = $1 ORDER BY id", claim.batch_id)) {
+    claim.job_ids.push_back(r[0].as<long long>());
+    claim.job_scans.push_back(r[1].as<std::string>());
+    claim.job_names.push_back(r[2].as<std::string>());
+    claim.job_tickets.push_back(r[3].as<std::string>());
+  }
+  const pqxx::result hide = tx.exec_params(
+      "SELECT h.id, h.name, h.hide_file FROM batches b JOIN hides h ON h.id = b.hide_id WHERE b.id = $1",
+      claim.batch_id);
+  if (hide.empty()) return;
+  claim.hide_id = hide[0][0].as<long long>();
+  claim.hide_name = hide[0][1].as<std::string>();
+  claim.hide_file = hide[0][2].as<std::string>();
+}
+
+
+Result<std::optional<BatchClaim>> LedgerClient::make_batch(int max_jobs, double window_s, double lease_s,
+                                                           const std::vector<std::string>& hide_materials) {
   using Claim = std::optional<BatchClaim>;
   return transact<Claim>("making a batch", [&](pqxx::work& tx) -> Result<Claim> {
-    const pqxx::result oldest = tx.exec(
-        "SELECT cutter, material, updated_at < now() - make_interval(secs => " + std::to_string(window_s) +
-        ") FROM jobs WHERE state = 'computed' ORDER BY created_at, id LIMIT 1 FOR UPDATE SKIP LOCKED");
+    const pqxx::result oldest = tx.exec_params(
+        "SELECT cutter, material, updated_at < now() - make_interval(secs => $1) FROM jobs"
+        " WHERE state = 'computed' AND material <> ALL($2::text[]) ORDER BY created_at, id LIMIT 1"
+        " FOR UPDATE SKIP LOCKED",
+        window_s, text_array(hide_materials));
     if (oldest.empty()) return Claim();
     BatchClaim claim;
     claim.cutter = oldest[0][0].as<std::string>();
@@ -82,11 +95,25 @@ Status LedgerClient::mark_nested(const Lease& lease, const NestedBatch& nested) 
                                 job_id, lease.object_id, reason);
                             add_event(tx, job_id, node_, "failed", reason);
                           }
+                          for (const auto& [job_id, reason] : nested.waiting) {
+                            tx.exec_params(
+                                "UPDATE jobs SET state = 'computed', batch_id = NULL, reason = $3, updated_at = now()"
+                                " WHERE id = $1 AND batch_id = $2",
+                                job_id, lease.object_id, reason);
+                            add_event(tx, job_id, node_, "waiting", reason);
+                          }
                           const bool any_left = !jobs_of(tx, lease.object_id).empty() && !nested.cut_file.empty();
+                          const std::string reason =
+                              any_left ? "" : nested.reason.empty() ? "nothing was placed" : nested.reason;
                           tx.exec_params(
-                              "UPDATE batches SET state = $2, cut_file = $3, pieces = $4, updated_at = now()"
-                              " WHERE id = $1",
-                              lease.object_id, any_left ? "queued" : "dissolved", nested.cut_file, nested.pieces);
+                              "UPDATE batches SET state = $2, cut_file = $3, pieces = $4, utilisation = $5,"
+                              " reason = nullif($6, ''), updated_at = now() WHERE id = $1",
+                              lease.object_id, any_left ? "queued" : "dissolved", nested.cut_file, nested.pieces,
+                              nested.utilisation, reason);
+                          tx.exec_params(
+                              "UPDATE hides SET state = $2, reason = nullif($3, ''), updated_at = now()"
+                              " WHERE id = (SELECT hide_id FROM batches WHERE id = $1)",
+                              lease.object_id, any_left ? "used" : "empty", reason);
                           for (long long id : jobs_of(tx, lease.object_id)) {
                             add_event(tx, id, node_, "nested", nested.cut_file);
                           }

@@ -66,9 +66,32 @@ struct BatchClaim {
   std::string cutter;
   std::string material;
   std::vector<long long> job_ids;  // ascending
-  std::vector<std::string> job_scans;  // the scan_sha256 of each job_ids entry
+  std::vector<std::string> job_scans;    // the scan_sha256 of each job_ids entry
+  std::vector<std::string> job_names;    // the scan's file name of each job_ids entry
+  std::vector<std::string> job_tickets;  // the ticket (JSON text) of each job_ids entry
   std::string cut_file;            // set once nested: the cut file's path inside the shared folder
+  // A hide batch (make_hide_batch): the hide it is nested on; 0 and "" for a strip batch.
+  long long hide_id = 0;
+  std::string hide_name;  // the hide's ID, as the digitizer or its sidecar gave it
+  std::string hide_file;  // the hide file's path inside the shared folder (its sidecar beside it)
   Lease lease;
+};
+
+// A hide as it enters the ledger: it lies on `cutter`'s table (its file lives in the shared folder).
+struct HideEntry {
+  std::string name;       // the hide's ID, unique in the shop
+  std::string material;   // a material of kind "hide"
+  std::string cutter;
+  std::string hide_file;  // path inside the shared folder
+  double area_m2 = 0;
+};
+
+struct HideRow {
+  long long hide_id = 0;
+  std::string name, material, cutter, state, reason, entered_by;
+  long long batch_id = 0;  // the newest batch nested on it; 0: none
+  int pieces = 0;
+  double area_m2 = 0, utilisation = 0;  // utilisation of its usable area, 0..1, once nested
 };
 
 // What a compute node hands over when a batch is nested (mark_nested).
@@ -76,6 +99,9 @@ struct NestedBatch {
   std::string cut_file;                        // path inside the shared folder; "" when every job was rejected
   int pieces = 0;                              // pieces placed
   std::vector<std::pair<long long, std::string>> rejected;  // job id -> why its molds could not be placed
+  std::vector<std::pair<long long, std::string>> waiting;   // hides: job id -> why it waits for the next hide
+  double utilisation = 0;  // placed piece area / the material's area (a hide: its usable area), 0..1
+  std::string reason;  // when nothing is to be cut: why (kept with the dissolved batch and its hide)
 };
 
 struct SweepOutcome {
@@ -103,6 +129,7 @@ struct LedgerOverview {
     long long queued_batches = 0;
   };
   std::vector<std::pair<std::string, long long>> jobs_per_state;  // by state name; states without jobs absent
+  std::vector<std::pair<std::string, long long>> computed_per_material;  // computed jobs not yet in a batch
   std::vector<Node> nodes;
   std::vector<Cutter> cutters;
 };
@@ -141,10 +168,18 @@ class LedgerClient {
   // Groups up to max_jobs computed jobs of one cutter and material into a batch that this node
   // nests under a lease of lease_s (state `nesting`). The oldest computed job decides which cutter
   // and material; it waits up to window_s for company unless max_jobs are already computed.
-  // nullopt when no group is due.
-  Result<std::optional<BatchClaim>> make_batch(int max_jobs, double window_s, double lease_s);
+  // nullopt when no group is due. Jobs of `hide_materials` are left alone: they wait for a hide.
+  Result<std::optional<BatchClaim>> make_batch(int max_jobs, double window_s, double lease_s,
+                                               const std::vector<std::string>& hide_materials = {});
+  // The oldest loaded hide (state `nesting` now) with up to max_jobs computed jobs of its material,
+  // oldest first, in a batch for the hide's cutter that this node nests under a lease of lease_s.
+  // Due once a job of the material is computed and none is still ready or computing, or the hide
+  // has waited window_s. nullopt when no hide is due.
+  Result<std::optional<BatchClaim>> make_hide_batch(int max_jobs, double window_s, double lease_s);
   // The batch is nested and its cut file written: `queued` for its cutter's station. Rejected jobs
-  // are failed with their reason and leave the batch; with none left the batch is `dissolved`.
+  // are failed with their reason and leave the batch; waiting ones (hides) go back to `computed`
+  // with theirs; with none left the batch is `dissolved`. A hide ends `used`, or `empty` when
+  // nothing was placed on it.
   Status mark_nested(const Lease& lease, const NestedBatch& nested);
   // The oldest queued batch of a cutter this node owns (of `cutter` only, unless empty), now `claimed`.
   Result<std::optional<BatchClaim>> claim_batch(double lease_s, const std::string& cutter = "");
@@ -156,6 +191,12 @@ class LedgerClient {
   Status hold_batch(const Lease& lease, const std::string& reason);
 
   Result<SweepOutcome> sweep_expired(int max_attempts);
+
+  // A hide now lies on its cutter's table, `loaded`. Refused (one line) while a hide of that name is
+  // loaded, being nested or used; a hide that was left `empty` may be loaded again.
+  Result<long long> enter_hide(const HideEntry& hide);
+  // The newest `limit` hides, for `lastcut status`.
+  Result<std::vector<HideRow>> recent_hides(int limit);
 
   // The operator's `lastcut requeue`: a held or failed job goes back to the queue (ready), with
   // a new attempt count. Fails with the reason for a job in any other state.

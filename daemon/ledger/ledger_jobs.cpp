@@ -14,6 +14,19 @@ std::string id_array(const std::vector<long long>& ids) {
   return out + "}";
 }
 
+std::string text_array(const std::vector<std::string>& items) {
+  std::string out = "{";
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    out += i ? ",\"" : "\"";
+    for (char c : items[i]) {
+      if (c == '"' || c == '\\') out += '\\';  // array-literal quoting
+      out += c;
+    }
+    out += '"';
+  }
+  return out + "}";
+}
+
 Status check_lease(pqxx::work& tx, const std::string& node, const Lease& lease) {
   const std::string what = to_string(lease.kind) + " " + std::to_string(lease.object_id);
   const pqxx::result row = tx.exec_params(

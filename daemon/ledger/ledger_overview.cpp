@@ -12,6 +12,10 @@ Result<LedgerOverview> LedgerClient::overview() {
     for (const pqxx::row& r : tx.exec("SELECT state, count(*) FROM jobs GROUP BY state ORDER BY state")) {
       out.jobs_per_state.emplace_back(r[0].as<std::string>(), r[1].as<long long>());
     }
+    for (const pqxx::row& r :
+         tx.exec("SELECT material, count(*) FROM jobs WHERE state = 'computed' GROUP BY material ORDER BY material")) {
+      out.computed_per_material.emplace_back(r[0].as<std::string>(), r[1].as<long long>());
+    }
     for (const pqxx::row& r : tx.exec(
              "SELECT name, array_to_string(roles, ','), extract(epoch FROM now() - heartbeat_at)::float8"
              " FROM nodes ORDER BY name")) {

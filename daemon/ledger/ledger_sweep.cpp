@@ -13,20 +13,6 @@ namespace {
 // A station that has not renewed its heartbeat this long may lose its cutters to another node.
 constexpr double kStationSilentS = 60;
 
-// {"a","b"}: a PostgreSQL text[] literal.
-std::string text_array(const std::vector<std::string>& items) {
-  std::string out = "{";
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    out += i ? ",\"" : "\"";
-    for (char c : items[i]) {
-      if (c == '"' || c == '\\') out += '\\';
-      out += c;
-    }
-    out += '"';
-  }
-  return out + "}";
-}
-
 // Releases every lease matching `condition` (SQL over leases; $1 is `parameter`) that no other
 // transaction is acting on right now, and moves the rows they covered.
 SweepOutcome release_matching(pqxx::work& tx, const std::string& node, const std::string& condition,
@@ -66,6 +52,11 @@ SweepOutcome release_matching(pqxx::work& tx, const std::string& node, const std
         add_event(tx, j[0].as<long long>(), node, "regrouped", "nesting on " + holder + " ended without a result");
       }
       tx.exec_params("UPDATE batches SET state = 'dissolved', updated_at = now() WHERE id = $1", id);
+      // A hide it was nesting still lies on the cutter's table: it is nested again.
+      tx.exec_params(
+          "UPDATE hides SET state = 'loaded', updated_at = now() WHERE id = (SELECT hide_id FROM batches WHERE id = $1)"
+          " AND state = 'nesting'",
+          id);
       out.batches_dissolved.push_back(id);
     } else if (state == "claimed") {
       tx.exec_params("UPDATE batches SET state = 'queued', updated_at = now() WHERE id = $1", id);

@@ -50,5 +50,10 @@ void add_event(pqxx::work& tx, long long job_id, const std::string& node, const 
 
 // "{1,2,3}": a list of ids as one bigint[] parameter.
 std::string id_array(const std::vector<long long>& ids);
+// {"a","b"}: a list of names as one text[] parameter.
+std::string text_array(const std::vector<std::string>& items);
+
+// The batch's jobs (scans, names, tickets), ascending, and its hide, into `claim` (batch_id set).
+void fill_jobs(pqxx::work& tx, BatchClaim& claim);
 
 }  // namespace lastcut::ledger

@@ -1,6 +1,6 @@
 // The compute role of a ledger node: claim a ready job, make its molds into the shared folder,
-// mark it computed; group computed jobs into a batch, nest it, write its cut file, queue it for the
-// cutter's station. The same engine steps as the single-station pipeline (engine_steps.hpp).
+// mark it computed; when no job waits, nest a hide that lies on a cutter's table or a group of
+// computed jobs (ledger_nesting.cpp). The same engine steps as the single-station pipeline (engine_steps.hpp).
 // Every result is published before the ledger hears of it, and the ledger only takes it from the
 // node that still holds the lease (fencing), so a lost claim costs work, never a wrong state.
 #include <spdlog/spdlog.h>
@@ -13,14 +13,8 @@
 namespace lastcut::daemon {
 namespace {
 
-// The ticket as the intake stored it (ticket_to_json); a row no lastcutd wrote fails its job.
-Result<JobTicket> ticket_of(const ledger::JobClaim& claim) {
-  try {
-    return ticket_from_json(nlohmann::json::parse(claim.scan.ticket));
-  } catch (const std::exception& error) {
-    return Status::failure("the job's ticket in the ledger is unreadable: " + std::string(error.what()));
-  }
-}
+// The most jobs offered to one hide, oldest first (a hide of 5 m^2 holds about 40 pairs of molds).
+constexpr int kHideMaxJobs = 64;
 
 void copy_references(const std::filesystem::path& from, const std::filesystem::path& job_dir) {
   std::error_code error;
@@ -44,8 +38,11 @@ void LedgerNode::compute_worker(int index) {
       compute_job(*client, **job, worker);
       continue;
     }
-    const auto batch = job ? client->make_batch(ledger().max_batch_jobs, ledger().batch_window_s, ledger().lease_s)
-                           : Result<std::optional<ledger::BatchClaim>>(job.status());
+    // A hide on a cutter's table comes before strip batches: the cutter and its operator wait for it.
+    auto batch = job ? client->make_hide_batch(kHideMaxJobs, ledger().batch_window_s, ledger().lease_s)
+                     : Result<std::optional<ledger::BatchClaim>>(job.status());
+    if (batch && !batch->has_value())
+      batch = client->make_batch(ledger().max_batch_jobs, ledger().batch_window_s, ledger().lease_s, hide_materials());
     if (batch && batch->has_value()) {
       note_trouble(trouble, "", worker);
       nest_batch(*client, **batch, worker);
@@ -59,13 +56,13 @@ void LedgerNode::compute_worker(int index) {
 void LedgerNode::compute_job(ledger::LedgerClient& client, const ledger::JobClaim& claim, const std::string& worker) {
   const std::string label = "job " + std::to_string(claim.job_id) + " (" + claim.scan.scan_name + ")";
   keeper_->keep(claim.lease);
-  job_event(claim.job_id, claim.scan.scan_name, JobStage::Claimed, "");
+  job_event(claim.job_id, claim.scan.scan_name, claim.scan.ticket, 0, JobStage::Claimed, "");
   const auto finish = [&](const Status& marked, JobStage stage, const std::string& reason) {
     keeper_->drop(claim.lease);
     if (!marked) spdlog::warn("{}: {}; the work is dropped", label, marked.error());
-    else job_event(claim.job_id, claim.scan.scan_name, stage, reason);
+    else job_event(claim.job_id, claim.scan.scan_name, claim.scan.ticket, 0, stage, reason);
   };
-  const Result<JobTicket> ticket = ticket_of(claim);
+  const Result<JobTicket> ticket = ticket_from_ledger(claim.scan.ticket);
   if (!ticket) {
     spdlog::error("{}: failed: {}", label, ticket.error());
     return finish(client.mark_failed(claim.lease, ticket.error()), JobStage::Failed, ticket.error());
@@ -122,60 +119,6 @@ void LedgerNode::compute_job(ledger::LedgerClient& client, const ledger::JobClai
   }
   spdlog::info("{}: {} molds ready in {:.1f} s", label, made->piece_count, took_s);
   finish(client.mark_computed(claim.lease), JobStage::Computed, "");
-}
-
-void LedgerNode::nest_batch(ledger::LedgerClient& client, const ledger::BatchClaim& claim, const std::string& worker) {
-  const std::string label = "batch " + std::to_string(claim.batch_id);
-  keeper_->keep(claim.lease);
-  std::vector<BatchJobInput> inputs;
-  for (std::size_t i = 0; i < claim.job_ids.size(); ++i) {
-    inputs.push_back({std::to_string(claim.job_ids[i]), store_.job_dir(claim.job_scans[i])});
-  }
-  ledger::NestedBatch nested;
-  const std::filesystem::path final_dir = store_.batch_dir(claim.batch_id);
-  auto scratch = store_.scratch_for(final_dir, ledger().node);
-  const auto material = config_->materials.find(claim.material);
-  const auto cutter = config_->cutters.find(claim.cutter);
-  Result<BatchMade> made = Status::failure("not nested");
-  if (!scratch) made = scratch.status();
-  else if (material == config_->materials.end())
-    made = Status::failure("material " + claim.material + " is not configured on node " + ledger().node);
-  else if (cutter == config_->cutters.end())
-    made = Status::failure("cutter " + claim.cutter + " is not configured on node " + ledger().node);
-  else {
-    monitor_.begin(worker, label, config_->jobs.compute_timeout_s);
-    made = build_batch(inputs, material->second, cutter->second, config_->paths.machines_dir,
-                       config_->batch.nest_time_s, *scratch);
-    monitor_.end(worker);
-  }
-  if (made) {
-    for (const auto& [job_id, reason] : made->rejected) nested.rejected.emplace_back(std::stoll(job_id), reason);
-    if (!made->cut_file.empty()) {
-      nested.cut_file = store_.relative(final_dir / made->cut_file);
-      nested.pieces = made->piece_count;
-      if (Status published = store_.publish(*scratch, final_dir); !published) made = published;
-    }
-  }
-  if (!made) {
-    // Not the jobs' fault (no machine profile, the share full): every job fails with the reason,
-    // so that it is seen; `lastcut requeue` hands them back once the cause is mended.
-    for (long long id : claim.job_ids) nested.rejected.emplace_back(id, "batch could not be made: " + made.error());
-    nested.cut_file.clear();
-  }
-  std::error_code ignored;
-  if (scratch) std::filesystem::remove_all(*scratch, ignored);
-  const Status marked = client.mark_nested(claim.lease, nested);
-  keeper_->drop(claim.lease);
-  if (!marked) {
-    spdlog::warn("{}: {}; the nesting is dropped", label, marked.error());
-    return;
-  }
-  for (const auto& [job_id, reason] : nested.rejected) spdlog::error("job {}: failed: {}", job_id, reason);
-  if (!nested.cut_file.empty()) {
-    spdlog::info("{}: {} job(s), {} pieces nested on {} (utilisation {:.1f} %); queued for {}", label,
-                 claim.job_ids.size() - nested.rejected.size(), nested.pieces, claim.material,
-                 100.0 * made->utilisation, claim.cutter);
-  }
 }
 
 }  // namespace lastcut::daemon

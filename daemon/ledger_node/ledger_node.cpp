@@ -40,6 +40,12 @@ Status LedgerNode::start() {
                                                   [](const std::string& line) { spdlog::warn("{}", line); });
   hot_folder_ = std::make_unique<HotFolder>(config_->paths.watch_dir, config_->watch);
   if (Status watching = hot_folder_->start(); !watching) return watching;
+  if (!config_->paths.hides_dir.empty()) {
+    hide_folder_ = std::make_unique<HotFolder>(config_->paths.hides_dir, config_->watch, HotFolderContent::Hides);
+    if (Status watching = hide_folder_->start(); !watching) return watching;
+    spdlog::info("hides folder {} ({}): hides entered here lie on their cutter's table", config_->paths.hides_dir.string(),
+                 hide_folder_->mode_description());
+  }
   if (ledger().has_role("compute")) {
     for (int i = 0; i < config_->jobs.compute_workers; ++i) threads_.emplace_back([this, i] { compute_worker(i + 1); });
   }
@@ -58,6 +64,12 @@ void LedgerNode::tick(Clock::time_point now) {
     for (const ReadyScan& ready : hot_folder_->collect_ready(now)) {
       take(ready);
       if (next_intake_ > now) break;  // the ledger is away: the rest wait too
+    }
+  }
+  if (hide_folder_ && now >= next_hide_intake_) {
+    for (const ReadyScan& ready : hide_folder_->collect_ready(now)) {
+      take_hide(ready);
+      if (next_hide_intake_ > now) break;  // the ledger is away: the rest wait too
     }
   }
   if (now >= next_sweep_) {
@@ -132,15 +144,32 @@ void LedgerNode::note_trouble(std::string& last, const std::string& now, const s
   last = now;
 }
 
-void LedgerNode::job_event(long long job_id, const std::string& scan_name, JobStage stage, const std::string& reason) {
+Result<JobTicket> ticket_from_ledger(const std::string& text) {
+  try {
+    return ticket_from_json(nlohmann::json::parse(text));
+  } catch (const std::exception& error) {
+    return Status::failure("the job's ticket in the ledger is unreadable: " + std::string(error.what()));
+  }
+}
+
+void LedgerNode::job_event(long long job_id, const std::string& scan_name, const std::string& ticket_json,
+                           long long batch_id, JobStage stage, const std::string& reason) {
   if (!observer_) return;
   JobState state;
   state.id = std::to_string(job_id);
   state.scan_name = scan_name;
+  if (Result<JobTicket> ticket = ticket_from_ledger(ticket_json)) state.ticket = *ticket;
+  state.batch_id = batch_id ? std::to_string(batch_id) : "";
   state.stage = stage;
   state.reason = reason;
   state.updated_at = utc_now_iso();
   observer_->job_changed(state);
+}
+
+void LedgerNode::batch_event(const ledger::BatchClaim& claim, JobStage stage, const std::string& reason) {
+  for (std::size_t i = 0; i < claim.job_ids.size(); ++i) {
+    job_event(claim.job_ids[i], claim.job_names[i], claim.job_tickets[i], claim.batch_id, stage, reason);
+  }
 }
 
 }  // namespace lastcut::daemon

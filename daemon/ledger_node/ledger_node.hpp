@@ -3,8 +3,11 @@
 // in place of the single-station Pipeline when the configuration has [ledger].
 //
 //   watch folder --intake (main thread)--> shared/scans/<sha> + ledger job `ready`
+//   hides folder --intake (main thread)--> shared/hides/<sha> + ledger hide `loaded` on its cutter
 //   compute role: claim job (lease) -> molds into shared/jobs/<sha> -> `computed`
 //                 group computed jobs (batch_window_s, max_batch_jobs) -> nest -> shared/batches/<id> -> `queued`
+//                 a loaded hide + the computed jobs of its material -> nest on it -> shared/batches/<id> -> `queued`
+//                 (the jobs that did not fit: `computed` again, waiting for the next hide, with the reason)
 //   station role: one thread per cutter cabled here: claim its queued batch -> `sending` -> cut | held
 //
 // Every claim holds a lease the LeaseKeeper thread renews; a state change is fenced by the lease's
@@ -29,9 +32,13 @@
 #include "daemon/pipeline/job_flow.hpp"
 #include "daemon/pipeline/progress_monitor.hpp"
 #include "daemon/pipeline/status_observer.hpp"
+#include "daemon/spool/job_ticket.hpp"
 #include "daemon/watch/hot_folder.hpp"
 
 namespace lastcut::daemon {
+
+// A ticket as the intake stored it in the ledger (ticket_to_json); a row no lastcutd wrote is refused.
+Result<JobTicket> ticket_from_ledger(const std::string& text);
 
 class LedgerNode : public JobFlow {
  public:
@@ -49,6 +56,7 @@ class LedgerNode : public JobFlow {
   int event_fd() const override { return hot_folder_ ? hot_folder_->event_fd() : -1; }
   void read_events() override {
     if (hot_folder_) hot_folder_->read_events();
+    if (hide_folder_) hide_folder_->read_events();  // tick() runs every 100 ms anyway
   }
   std::string stuck(Clock::time_point now) const override { return monitor_.stuck(now); }
   std::string status_line() const override;
@@ -58,15 +66,23 @@ class LedgerNode : public JobFlow {
 
  private:
   const LedgerConfig& ledger() const { return *config_->ledger; }
-  // scan_intake.cpp (main thread)
+  // scan_intake.cpp (main thread): scans and hides
   void take(const ReadyScan& ready);
   Status enter(const ReadyScan& ready);
+  void take_hide(const ReadyScan& ready);
+  Status enter_hide(const ReadyScan& ready);
   void refuse(const ReadyScan& ready, const std::string& reason);
   void sweep();
   // ledger_compute.cpp (one thread per jobs.compute_workers)
   void compute_worker(int index);
   void compute_job(ledger::LedgerClient& client, const ledger::JobClaim& claim, const std::string& worker);
+  // ledger_nesting.cpp (compute threads): a strip batch, or the jobs waiting for a hide on that hide
   void nest_batch(ledger::LedgerClient& client, const ledger::BatchClaim& claim, const std::string& worker);
+  Status nest_on_strip(const ledger::BatchClaim& claim, const MaterialConfig& material, const CutterSection& cutter,
+                       const std::filesystem::path& scratch, ledger::NestedBatch& nested);
+  Status nest_on_hide(const ledger::BatchClaim& claim, const MaterialConfig& material, const CutterSection& cutter,
+                      const std::filesystem::path& scratch, ledger::NestedBatch& nested);
+  std::vector<std::string> hide_materials() const;
   // ledger_station.cpp (one thread per cutter cabled here)
   void station_worker(const std::string& cutter);
   bool cut_batch(ledger::LedgerClient& client, const ledger::BatchClaim& claim, const CutterSection& section);
@@ -77,12 +93,16 @@ class LedgerNode : public JobFlow {
   void pause(double seconds);
   // One log line per change of a thread's trouble (the ledger away, a cutter not ready), not per try.
   void note_trouble(std::string& last, const std::string& now, const std::string& what);
-  void job_event(long long job_id, const std::string& scan_name, JobStage stage, const std::string& reason);
+  // A job's change for the status observer (MQTT): its scan, order, cutter, material and batch.
+  void job_event(long long job_id, const std::string& scan_name, const std::string& ticket_json, long long batch_id,
+                 JobStage stage, const std::string& reason);
+  void batch_event(const ledger::BatchClaim& claim, JobStage stage, const std::string& reason);
 
   std::shared_ptr<const DaemonConfig> config_;
   SharedStore store_;
   StatusObserver* observer_ = nullptr;
   std::unique_ptr<HotFolder> hot_folder_;
+  std::unique_ptr<HotFolder> hide_folder_;  // paths.hides; null when no hides folder is configured
   std::unique_ptr<ledger::LedgerClient> client_;  // main thread only
   std::unique_ptr<ledger::LeaseKeeper> keeper_;
   ProgressMonitor monitor_;
@@ -98,7 +118,8 @@ class LedgerNode : public JobFlow {
   // Main thread only.
   Clock::time_point next_sweep_{};
   Clock::time_point next_intake_{};
-  std::string intake_trouble_, sweep_trouble_;
+  Clock::time_point next_hide_intake_{};
+  std::string intake_trouble_, hide_intake_trouble_, sweep_trouble_;
   long long entered_ = 0, duplicates_ = 0, refused_ = 0;
 };
 

@@ -76,7 +76,7 @@ bool LedgerNode::cut_batch(ledger::LedgerClient& client, const ledger::BatchClai
   if (!record([&] { return client.mark_sending(claim.lease); })) return true;
   spdlog::info("{}: cutting ({} jobs)", label, claim.job_ids.size());
   report_cutter({claim.cutter, "sending", id, "", 0, 0, 0, program.str().size()});
-  for (long long job : claim.job_ids) job_event(job, "", JobStage::Sending, "");
+  batch_event(claim, JobStage::Sending, "");
   ++cuts_in_progress_;
   const std::string worker = "cutter " + claim.cutter;
   monitor_.begin(worker, "batch " + id, section.link.timeout_s + 30);
@@ -93,7 +93,7 @@ bool LedgerNode::cut_batch(ledger::LedgerClient& client, const ledger::BatchClai
     case drivers::SendOutcome::Done:
       spdlog::info("{}: cut", label);
       record([&] { return client.mark_cut(claim.lease); });
-      for (long long job : claim.job_ids) job_event(job, "", JobStage::Cut, "");
+      batch_event(claim, JobStage::Cut, "");
       report_cutter({claim.cutter, "idle", "", "", 0, 0, 0, 0});
       return true;
     case drivers::SendOutcome::Failed:
@@ -109,7 +109,7 @@ bool LedgerNode::cut_batch(ledger::LedgerClient& client, const ledger::BatchClai
       "cutter " + claim.cutter + " stopped while cutting batch " + id + ": " + result.reason + "; pieces may be partly cut";
   spdlog::error("{}: held: {}", label, reason);
   record([&] { return client.hold_batch(claim.lease, reason); });
-  for (long long job : claim.job_ids) job_event(job, "", JobStage::Held, reason);
+  batch_event(claim, JobStage::Held, reason);
   report_cutter({claim.cutter, "held", id, reason, 0, 0, 0, 0});
   return true;
 }

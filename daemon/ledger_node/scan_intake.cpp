@@ -3,6 +3,10 @@
 // job. Entered scans move to <spool>/entered/, refused ones (bad sidecar, unknown material or
 // cutter, a cut-off file) to <spool>/failed/ with NAME.reason; while the ledger cannot be reached a
 // scan stays in the watch folder and is offered again.
+// Hides take the same path from the hides folder (docs/hides.md): checked as on one station (an
+// open or self-intersecting outline, a zone outside the hide, unknown units, an absurd size are
+// refused with the one line), copied into hides/<sha256>/ with their sidecar, entered as lying on
+// their cutter's table; entered hide files move to <spool>/hides/.
 #include <spdlog/spdlog.h>
 
 #include "daemon/ledger_node/ledger_node.hpp"
@@ -10,6 +14,8 @@
 #include "daemon/spool/job_ticket.hpp"
 #include "daemon/spool/sha256.hpp"
 #include "engine/core/durable_file.hpp"
+#include "engine/core/engine_error.hpp"
+#include "engine/nest/hide_file.hpp"
 
 namespace lastcut::daemon {
 namespace {
@@ -29,6 +35,11 @@ bool move_into(const std::filesystem::path& folder, const ReadyScan& ready) {
   return true;
 }
 
+// The ledger or the share away: nothing was entered, the file waits where it was dropped.
+bool not_the_files_fault(const Status& entered) {
+  return entered.error().rfind("ledger unreachable", 0) == 0 || entered.error().rfind("shared folder unusable", 0) == 0;
+}
+
 }  // namespace
 
 void LedgerNode::take(const ReadyScan& ready) {
@@ -39,8 +50,7 @@ void LedgerNode::take(const ReadyScan& ready) {
     return;
   }
   const Status entered = enter(ready);
-  if (!entered &&
-      (entered.error().rfind("ledger unreachable", 0) == 0 || entered.error().rfind("shared folder unusable", 0) == 0)) {
+  if (!entered && not_the_files_fault(entered)) {
     // Not the scan's fault and nothing was entered: it waits in the watch folder.
     note_trouble(intake_trouble_, entered.error(), "watch folder: scans wait in the watch folder");
     next_intake_ = Clock::now() + std::chrono::seconds(2);
@@ -98,8 +108,72 @@ Status LedgerNode::enter(const ReadyScan& ready) {
     ++entered_;
     spdlog::info("job {}: {} entered in the ledger (material {}, cutter {})", job->job_id, name, ticket.material,
                  ticket.cutter);
-    job_event(job->job_id, name, JobStage::Claimed, "");
+    job_event(job->job_id, name, ticket_to_json(ticket).dump(), 0, JobStage::Claimed, "");
   }
+  return Status::success();
+}
+
+void LedgerNode::take_hide(const ReadyScan& ready) {
+  const std::string name = ready.scan.filename().string();
+  std::error_code error;
+  if (!std::filesystem::exists(ready.scan, error)) {
+    hide_folder_->forget(name);
+    return;
+  }
+  const Status entered = enter_hide(ready);
+  if (!entered && not_the_files_fault(entered)) {
+    note_trouble(hide_intake_trouble_, entered.error(), "hides folder: hides wait in the hides folder");
+    next_hide_intake_ = Clock::now() + std::chrono::seconds(2);
+    return;
+  }
+  note_trouble(hide_intake_trouble_, "", "hides folder");
+  hide_folder_->forget(name);
+  if (!ready.sidecar.empty()) hide_folder_->forget(ready.sidecar.filename().string());
+  if (!entered) refuse(ready, entered.error());
+}
+
+Status LedgerNode::enter_hide(const ReadyScan& ready) {
+  if (!ready.incompleteness.empty()) return Status::failure(ready.incompleteness);
+  const std::string name = ready.scan.filename().string();
+  HideFile hide;
+  try {
+    hide = read_hide_file(ready.scan);
+  } catch (const EngineError& failure) {
+    return Status::failure(failure.what());
+  }
+  std::string material, cutter;
+  if (const std::string unknown = settle_hide_targets(hide.hide_id, hide.material, hide.cutter,
+                                                      hide_sidecar_path(ready.scan).string(), *config_, material, cutter);
+      !unknown.empty())
+    return Status::failure(unknown);
+  const auto hash = sha256_file_hex(ready.scan);
+  if (!hash) return Status::failure("the hide file cannot be read (it vanished or is not readable)");
+
+  // The files first, then the row: a hide in the ledger always finds its file in the shared folder.
+  const std::filesystem::path shared = store_.hide_dir(*hash);
+  std::error_code exists_error;
+  if (!std::filesystem::exists(shared, exists_error)) {
+    auto scratch = store_.scratch_for(shared, ledger().node);
+    Status copied = scratch.status();
+    for (const std::filesystem::path& file : {ready.scan, ready.sidecar}) {
+      if (copied && !file.empty()) copied = copy_file_durably(file, *scratch / file.filename());
+    }
+    if (copied) copied = store_.publish(*scratch, shared);
+    if (!copied) {
+      std::error_code ignored;
+      if (scratch) std::filesystem::remove_all(*scratch, ignored);
+      return Status::failure("shared folder unusable: " + copied.error());
+    }
+  }
+  const Result<long long> entered =
+      client_->enter_hide({hide.hide_id, material, cutter, store_.relative(shared / name), hide.area_m2});
+  if (!entered) return entered.status();
+  if (!move_into(config_->paths.spool_dir / "hides", ready)) {
+    spdlog::warn("hides folder: {} is in the ledger as hide {} but stays in the hides folder", name, hide.hide_id);
+  }
+  spdlog::info("hide {} ({}, {:.2f} m^2) lies on cutter {}: entered in the ledger; the computed jobs of {} are "
+               "nested on it",
+               hide.hide_id, name, hide.area_m2, cutter, material);
   return Status::success();
 }
 

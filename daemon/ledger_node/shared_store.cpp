@@ -11,7 +11,7 @@
 namespace lastcut::daemon {
 
 Status SharedStore::prepare() const {
-  for (const char* sub : {"scans", "references", "jobs", "batches"}) {
+  for (const char* sub : {"scans", "references", "jobs", "hides", "batches"}) {
     std::error_code error;
     std::filesystem::create_directories(root_ / sub, error);
     if (error) return Status::failure("shared folder " + (root_ / sub).string() + " cannot be created: " + error.message());

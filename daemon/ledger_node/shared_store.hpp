@@ -5,7 +5,9 @@
 //   scans/<sha256><ext>              the scan's bytes as dropped (.stl, .obj, .ply)
 //   references/<sha256>/<copy>       reference patterns its sidecar names (docs/compare.md)
 //   jobs/<sha256>/                   molds/, items.json, report.json of that scan
+//   hides/<sha256>/                  a hide file as dropped (.dxf or .json) and its sidecar <stem>.toml
 //   batches/<id>/                    layout.json, preview.svg, cut.<ext> of ledger batch <id>
+//                                    (a hide batch also hide-report.json and offcut.dxf)
 //
 // Files, not database rows: a scan is megabytes and the database stays small (docs/multi-station.md
 // has the figures). A result is written into a private scratch folder beside its place and renamed
@@ -23,13 +25,14 @@ class SharedStore {
  public:
   explicit SharedStore(std::filesystem::path root) : root_(std::move(root)) {}
 
-  // Creates scans/, references/, jobs/, batches/; fails with one line when the share is not writable.
+  // Creates scans/, references/, jobs/, hides/, batches/; fails with one line when the share is not writable.
   Status prepare() const;
 
   const std::filesystem::path& root() const { return root_; }
   std::filesystem::path scan(const std::string& sha256, const std::string& scan_name) const;
   std::filesystem::path references(const std::string& sha256) const { return root_ / "references" / sha256; }
   std::filesystem::path job_dir(const std::string& sha256) const { return root_ / "jobs" / sha256; }
+  std::filesystem::path hide_dir(const std::string& sha256) const { return root_ / "hides" / sha256; }
   std::filesystem::path batch_dir(long long batch_id) const { return root_ / "batches" / std::to_string(batch_id); }
   // A path inside the store as the ledger keeps it ("batches/12/cut.nc"), and back.
   std::string relative(const std::filesystem::path& path) const;

@@ -10,6 +10,7 @@
 #include "daemon/pipeline/hide_step.hpp"
 #include "daemon/pipeline/job_outcomes.hpp"
 #include "daemon/pipeline/pipeline.hpp"
+#include "daemon/pipeline/ticket_targets.hpp"
 #include "engine/core/durable_file.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/nest/hide_file.hpp"
@@ -75,25 +76,11 @@ void Pipeline::take_hide(const ReadyScan& ready) {
     return;
   }
   batch.hide_id = hide.hide_id;
-  batch.material = hide.material;
-  if (batch.material.empty()) {
-    std::vector<std::string> hide_materials;
-    for (const auto& [key, material] : settings->materials)
-      if (material.kind == MaterialKind::Hide) hide_materials.push_back(key);
-    batch.material = hide_materials.size() == 1 ? hide_materials.front() : settings->jobs.default_material;
-  }
-  const auto material = settings->materials.find(batch.material);
-  if (material == settings->materials.end() || material->second.kind != MaterialKind::Hide) {
-    fail_hide(batch, "hide " + hide.hide_id + ": material \"" + batch.material +
-                         "\" is not a configured hide material (kind = \"hide\"); name it in " +
-                         hide_sidecar_path(name).string());
-    return;
-  }
-  batch.cutter = !hide.cutter.empty() ? hide.cutter
-                 : !material->second.cutter.empty() ? material->second.cutter
-                                                    : settings->jobs.default_cutter;
-  if (!settings->cutters.count(batch.cutter)) {
-    fail_hide(batch, "hide " + hide.hide_id + ": cutter \"" + batch.cutter + "\" is not configured");
+  if (const std::string unknown = settle_hide_targets(hide.hide_id, hide.material, hide.cutter,
+                                                      hide_sidecar_path(name).string(), *settings, batch.material,
+                                                      batch.cutter);
+      !unknown.empty()) {
+    fail_hide(batch, unknown);
     return;
   }
   for (const std::string& id : hide_waiting_[batch.material]) {
