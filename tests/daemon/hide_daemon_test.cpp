@@ -16,16 +16,11 @@
 #include <thread>
 
 #include "daemon_rig.hpp"
-#include "engine/core/dxf_document.hpp"
-#include "engine/nest/layout_check.hpp"
 #include "engine/nest/nest_json.hpp"
+#include "tests/daemon/hide_samples.hpp"
 
 namespace lastcut::daemon::testing {
 namespace {
-
-std::vector<Point2> rectangle(double x0, double y0, double x1, double y1) {
-  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-}
 
 // The job whose scan had this name, in any folder, with its folder.
 std::pair<std::string, std::string> find_job(const DaemonRig& rig, const std::string& scan) {
@@ -33,26 +28,6 @@ std::pair<std::string, std::string> find_job(const DaemonRig& rig, const std::st
     for (const auto& [id, state] : rig.jobs(folder))
       if (state.value("scan", "") == scan) return {id, folder};
   return {};
-}
-
-// Area (mm^2) of a job's pieces, from its items.json in work/.
-double job_area_mm2(const DaemonRig& rig, const std::string& id) {
-  const auto items = items_from_json(read_json_file(rig.spool() / "work" / id / "items.json"), id);
-  double area = 0;
-  for (const NestItem& item : items) area += item.demand * std::abs(signed_area(item.shape));
-  return area;
-}
-
-// The largest length and width (mm) of a job's pieces' bounding boxes, from its items.json.
-std::pair<double, double> piece_box_mm(const DaemonRig& rig, const std::string& id) {
-  double length = 0, width = 0;
-  for (const NestItem& item : items_from_json(read_json_file(rig.spool() / "work" / id / "items.json"), id)) {
-    Point2 low = item.shape.points[0], high = low;
-    for (const Point2& p : item.shape.points) low = low.cwiseMin(p), high = high.cwiseMax(p);
-    length = std::max(length, std::max(high.x() - low.x(), high.y() - low.y()));
-    width = std::max(width, std::min(high.x() - low.x(), high.y() - low.y()));
-  }
-  return {length, width};
 }
 
 // The hide batch holding hide file `file`: batch.json, or null while it is not there.
@@ -71,6 +46,15 @@ std::string stage_of(const DaemonRig& rig, const std::string& file) {
   return batch.is_null() ? "" : batch.value("stage", "");
 }
 
+std::filesystem::path items_of(const DaemonRig& rig, const std::string& id) {
+  return rig.spool() / "work" / id / "items.json";
+}
+
+// Every placement of the batch's written layout passes the independent checker; returns its placements.
+std::size_t check_written_layout(const DaemonRig& rig, const std::string& batch_id, std::size_t zones) {
+  return check_hide_layout(rig.spool() / "batches" / batch_id / "layout.json", zones);
+}
+
 bool all_computed(const DaemonRig& rig, const std::vector<std::string>& scans) {
   const auto work = rig.jobs("work");
   int computed = 0;
@@ -78,60 +62,6 @@ bool all_computed(const DaemonRig& rig, const std::vector<std::string>& scans) {
     for (const std::string& scan : scans)
       if (state.value("scan", "") == scan && state.value("stage", "") == "computed") ++computed;
   return computed == static_cast<int>(scans.size());
-}
-
-// A hide DXF: a w x h rectangle, a 20 x 20 mm hole and (optionally) a 40 x 40 mm grade-1 zone, a
-// 40 x 40 mm grade-2 zone (good enough for a piece, not for its toe) and a backbone along x, in its
-// right 70 mm, beside the room the pieces need.
-void write_hide_dxf(const std::filesystem::path& file, double w, double h, bool zones) {
-  DxfDocument dxf(DxfVersion::R12, {{"HIDE", 7}, {"HOLE", 1}, {"ZONE_1", 3}, {"ZONE_2", 4}, {"BACKBONE", 5}});
-  dxf.polyline("HIDE", rectangle(0, 0, w, h), true);
-  dxf.polyline("HOLE", rectangle(w - 45, h / 2 - 10, w - 25, h / 2 + 10), true);
-  if (zones) {
-    dxf.polyline("ZONE_1", rectangle(w - 60, 10, w - 20, 50), true);
-    dxf.polyline("ZONE_2", rectangle(w - 60, h - 50, w - 20, h - 10), true);
-    dxf.polyline("BACKBONE", {{10, h / 2}, {w - 10, h / 2}}, false);
-  }
-  write_text(file, dxf.str());
-}
-
-// A hide JSON: a w x h rectangle with a 12 x 12 mm hole near its right edge.
-void write_hide_json(const std::filesystem::path& file, double w, double h) {
-  nlohmann::json outer = nlohmann::json::array(), hole = nlohmann::json::array();
-  for (const Point2& p : rectangle(0, 0, w, h)) outer.push_back({p.x(), p.y()});
-  for (const Point2& p : rectangle(w - 20, h / 2 - 6, w - 8, h / 2 + 6)) hole.push_back({p.x(), p.y()});
-  nlohmann::json bin;
-  bin["id"] = 0;
-  bin["shape"]["type"] = "polygon";
-  bin["shape"]["data"]["outer"] = outer;
-  bin["shape"]["data"]["inner"] = nlohmann::json::array({hole});
-  write_text(file, nlohmann::json{{"bins", nlohmann::json::array({bin})}}.dump());
-}
-
-// Every placement of the batch's written layout passes the independent checker; returns its placements.
-std::size_t check_written_layout(const DaemonRig& rig, const std::string& batch_id, std::size_t zones) {
-  const auto json = read_json_file(rig.spool() / "batches" / batch_id / "layout.json");
-  const NestInstance instance = instance_from_layout_json(json);
-  const Layout layout = layout_from_json(json);
-  const auto problems = check_layout(layout, instance);
-  EXPECT_TRUE(problems.empty()) << batch_id << ": " << problems.front();
-  EXPECT_EQ(instance.bins.size(), 1u);
-  const bool backbone = instance.bins[0].backbone_deg.has_value();
-  for (const NestItem& item : instance.items) {
-    EXPECT_EQ(item.min_quality, 2) << "the material's min_quality";
-    // Grain only where the hide has a backbone; the checker measures it against the backbone.
-    EXPECT_EQ(item.grain_deg.has_value(), backbone);
-    if (backbone) {
-      EXPECT_EQ(item.grain_tolerance_deg, 10);
-    }
-    EXPECT_EQ(item.quality_regions.size(), 1u) << "the toe region of every mold";
-    if (!item.quality_regions.empty()) {
-      EXPECT_EQ(item.quality_regions[0].min_quality, 3) << "the material's toe_min_quality";
-    }
-  }
-  EXPECT_EQ(instance.bins[0].zones.size(), zones) << "the low-grade zones are checked";
-  EXPECT_EQ(instance.bins[0].holes.size(), 1u) << "the hole is checked";
-  return layout.placements.size();
 }
 
 TEST(DaemonHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
@@ -165,7 +95,7 @@ TEST(DaemonHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
   ASSERT_TRUE(wait_until([&] { return all_computed(rig, {"single-a.stl"}); }, 60)) << read_text(rig.daemon_log());
   const std::string single_a = find_job(rig, "single-a.stl").first;
   // Room for the two halves side by side (3 mm spacing), plus 70 mm for the hole.
-  const auto [length_a, width_a] = piece_box_mm(rig, single_a);
+  const auto [length_a, width_a] = piece_box_mm(items_of(rig, single_a));
   write_hide_dxf(staging / "hide-k.dxf", length_a + 90, 2 * width_a + 30, false);
   drop_hide(staging / "hide-k.dxf", "id = \"K-17\"\ncutter = \"cutter-2\"\nthickness_mm = 1.2\n");
   ASSERT_TRUE(wait_until([&] { return stage_of(rig, "hide-k.dxf") == "sending"; }, 60)) << read_text(rig.daemon_log());
@@ -182,8 +112,8 @@ TEST(DaemonHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
   drop_last("o100-right.stl", 40, "right", "order = \"100\"\n");
   ASSERT_TRUE(wait_until([&] { return all_computed(rig, {"o100-left.stl", "o100-right.stl"}); }, 120))
       << read_text(rig.daemon_log());
-  const auto [length_1, width_1] = piece_box_mm(rig, find_job(rig, "o100-left.stl").first);
-  const auto [length_1r, width_1r] = piece_box_mm(rig, find_job(rig, "o100-right.stl").first);
+  const auto [length_1, width_1] = piece_box_mm(items_of(rig, find_job(rig, "o100-left.stl").first));
+  const auto [length_1r, width_1r] = piece_box_mm(items_of(rig, find_job(rig, "o100-right.stl").first));
   write_hide_dxf(staging / "hide-1.dxf", 2 * std::max(length_1, length_1r) + 110,
                  2 * std::max(width_1, width_1r) + 30, true);
   drop_hide(staging / "hide-1.dxf", "id = \"CALF-0001\"\nmaterial = \"leather\"\n");
@@ -197,9 +127,9 @@ TEST(DaemonHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
   drop_last("single-b.stl", 38, "right", "");
   ASSERT_TRUE(wait_until([&] { return all_computed(rig, {"o200-pair.stl", "single-b.stl"}); }, 120))
       << read_text(rig.daemon_log());
-  const auto [length_b, width_b] = piece_box_mm(rig, find_job(rig, "single-b.stl").first);
+  const auto [length_b, width_b] = piece_box_mm(items_of(rig, find_job(rig, "single-b.stl").first));
   const double w2 = length_b + 45, h2 = 2 * width_b + 24;
-  ASSERT_LT(w2 * h2, job_area_mm2(rig, find_job(rig, "o200-pair.stl").first));
+  ASSERT_LT(w2 * h2, pieces_area_mm2(items_of(rig, find_job(rig, "o200-pair.stl").first)));
   write_hide_json(staging / "hide-2.json", w2, h2);
   drop_hide(staging / "hide-2.json", "");  // no sidecar: the only hide material, its cutter
   ASSERT_TRUE(wait_until([&] { const auto s = stage_of(rig, "hide-2.json"); return s == "cut" || s == "empty"; }, 60))

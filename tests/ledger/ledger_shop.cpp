@@ -59,13 +59,15 @@ const ShopCutter& LedgerShop::cutter(const std::string& name) const {
 
 std::string LedgerShop::node_config(const ShopNode& node) const {
   std::string toml = "[paths]\nwatch = \"incoming\"\nspool = \"spool\"\nmachines = \"" +
-                     (std::filesystem::path(LASTCUT_SOURCE_DIR) / "config/machines").string() + "\"\n"
+                     (std::filesystem::path(LASTCUT_SOURCE_DIR) / "config/machines").string() + "\"\n" +
+                     options_.extra_paths +
                      "[watch]\nmode = \"inotify\"\nrescan_interval_s = 2\nstable_checks = 2\n"
                      "stable_interval_s = 0.1\nincomplete_grace_s = 0.5\n"
                      "[jobs]\ndefault_material = \"calf\"\ndefault_cutter = \"" + options_.cutters.front().name + "\"\n"
                      "stop_grace_s = 20\n"
                      "[batch]\nnest_time_s = 0.3\n"
-                     "[materials.calf]\nwidth_mm = 800\nlength_mm = 1200\nspacing_mm = 3\n";
+                     "[materials.calf]\nwidth_mm = 800\nlength_mm = 1200\nspacing_mm = 3\n" +
+                     options_.extra_config;
   std::vector<std::string> cabled;
   for (const ShopCutter& c : options_.cutters) {
     const bool here = c.station == node.name;

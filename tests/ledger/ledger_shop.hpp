@@ -38,6 +38,8 @@ struct ShopOptions {
   double heartbeat_s = 0.5;
   double batch_window_s = 1;
   int max_batch_jobs = 4;
+  std::string extra_paths;   // more [paths] keys for every node (e.g. hides = "hides")
+  std::string extra_config;  // more tables for every node (e.g. a [materials.leather] of kind "hide")
 };
 
 class LedgerShop {
