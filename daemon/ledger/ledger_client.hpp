@@ -104,12 +104,19 @@ struct NestedBatch {
   std::string reason;  // when nothing is to be cut: why (kept with the dissolved batch and its hide)
 };
 
+// A job held because its station vanished while sending its batch (for the status events).
+struct HeldJob {
+  long long job_id = 0, batch_id = 0;
+  std::string scan_name, ticket, cutter, reason;
+};
+
 struct SweepOutcome {
   std::vector<long long> jobs_requeued;   // lease expired while computing: ready again
   std::vector<long long> jobs_failed;     // ... for the max_attempts-th time: failed
   std::vector<long long> batches_requeued;  // claimed, nothing sent yet: queued again
   std::vector<long long> batches_dissolved;  // expired while nesting: their jobs back to `computed`, to be regrouped
   std::vector<long long> batches_held;    // expired while sending: held with their jobs
+  std::vector<HeldJob> jobs_held;         // ... those jobs
 };
 
 struct JobRow {

@@ -66,9 +66,12 @@ SweepOutcome release_matching(pqxx::work& tx, const std::string& node, const std
                                  ": check the cutter's table, then lastcut requeue";
       tx.exec_params("UPDATE batches SET state = 'held', reason = $2, updated_at = now() WHERE id = $1", id, reason);
       for (const pqxx::row& j : tx.exec_params(
-               "UPDATE jobs SET state = 'held', reason = $2, updated_at = now() WHERE batch_id = $1 RETURNING id", id,
-               reason)) {
+               "UPDATE jobs SET state = 'held', reason = $2, updated_at = now() WHERE batch_id = $1"
+               " RETURNING id, scan_name, ticket, cutter",
+               id, reason)) {
         add_event(tx, j[0].as<long long>(), node, "held", reason);
+        out.jobs_held.push_back(
+            {j[0].as<long long>(), id, j[1].as<std::string>(), j[2].as<std::string>(), j[3].as<std::string>(), reason});
       }
       out.batches_held.push_back(id);
     }

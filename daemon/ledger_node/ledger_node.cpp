@@ -32,6 +32,10 @@ Status LedgerNode::start() {
   if (!registered) return registered.status();
   for (long long id : registered->batches_held)
     spdlog::error("batch {}: this node stopped while sending it: held for an operator, never re-sent", id);
+  for (const ledger::HeldJob& job : registered->jobs_held) {
+    job_event(job.job_id, job.scan_name, job.ticket, job.batch_id, JobStage::Held, job.reason);
+    held_at_start_[job.cutter] = {job.cutter, "held", std::to_string(job.batch_id), job.reason, 0, 0, 0, 0};
+  }
   const std::size_t handed_back = registered->jobs_requeued.size() + registered->batches_requeued.size() +
                                   registered->batches_dissolved.size();
   if (handed_back) spdlog::warn("{} claim(s) of this node's previous run handed back to the queue", handed_back);

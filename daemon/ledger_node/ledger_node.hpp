@@ -19,6 +19,7 @@
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -114,6 +115,10 @@ class LedgerNode : public JobFlow {
   std::atomic<int> cuts_in_progress_{0};
   std::mutex ledger_condition_mutex_;
   bool ledger_down_ = false;  // as last logged by note_trouble(), for the whole node
+
+  // Cutters whose batch this node's previous run left in `sending` (now held): their first state.
+  // Written by start() before the station threads start, read-only afterwards.
+  std::map<std::string, CutterStatus> held_at_start_;
 
   // Main thread only.
   Clock::time_point next_sweep_{};

@@ -19,7 +19,9 @@ void LedgerNode::station_worker(const std::string& cutter) {
   const CutterSection section = config_->cutters.at(cutter);
   std::unique_ptr<ledger::LedgerClient> client;
   std::string trouble, cutter_trouble;
-  report_cutter({cutter, "idle", "", "", 0, 0, 0, 0});
+  // A batch this station was sending when it died stays the cutter's news until its next batch.
+  const auto held = held_at_start_.find(cutter);
+  report_cutter(held != held_at_start_.end() ? held->second : CutterStatus{cutter, "idle", "", "", 0, 0, 0, 0});
   while (!stopping_) {
     if (!connect_worker(client, trouble, worker)) continue;
     const drivers::ProbeResult probe = drivers::probe_cutter({section.link, cutter, ""});

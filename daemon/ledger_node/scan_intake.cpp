@@ -206,6 +206,8 @@ void LedgerNode::sweep() {
   if (!swept->batches_requeued.empty())
     spdlog::warn("batches {}: claimed by a station that vanished before sending, queued again",
                  list(swept->batches_requeued));
+  for (const ledger::HeldJob& job : swept->jobs_held)
+    job_event(job.job_id, job.scan_name, job.ticket, job.batch_id, JobStage::Held, job.reason);
   if (!swept->batches_held.empty())
     spdlog::error("batches {}: their station vanished while sending: held for an operator, never re-sent",
                   list(swept->batches_held));

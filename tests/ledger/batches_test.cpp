@@ -76,6 +76,10 @@ TEST_F(BatchesTest, StationVanishedWhileSendingIsHeldNeverRequeued) {
   auto swept = compute_->sweep_expired(3);
   ASSERT_TRUE(swept.ok()) << swept.error();
   EXPECT_EQ(swept->batches_held, std::vector<long long>{(*claim)->batch_id});
+  ASSERT_EQ(swept->jobs_held.size(), 2u) << "the held batch's jobs, for the status events";
+  EXPECT_EQ(swept->jobs_held[0].scan_name, "scan-1.stl");
+  EXPECT_EQ(swept->jobs_held[1].batch_id, (*claim)->batch_id);
+  EXPECT_EQ(swept->jobs_held[1].cutter, "cutter-1");
   EXPECT_TRUE(swept->batches_requeued.empty());
   const std::string reason = "station station-1 stopped answering while sending batch " +
                              std::to_string((*claim)->batch_id) + ": check the cutter's table, then lastcut requeue";

@@ -9,7 +9,7 @@
 // lies on one hide; the order that did not fit waits with its reason, in the ledger and in
 // `lastcut status`; a bad hide file is refused with one line into failed/ while the node runs on;
 // a hide whose cut was interrupted by a SIGKILL of its station is held and never sent again; job
-// events over MQTT name the scan, order and batch.
+// events over MQTT name the scan, order and batch, the hold included.
 // The hides are sized from the pieces' own bounding boxes (tests/daemon/hide_samples.hpp), so the
 // outcome does not depend on how well the nester packs.
 #include <gtest/gtest.h>
@@ -233,6 +233,19 @@ TEST_F(LedgerHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
     }
   }
   EXPECT_EQ(told, 2);
+  // ... and the hold of order 200, by whichever node found the station gone (compute-b's sweep or
+  // station-a's restart), with the hide's batch and the reason.
+  int held_told = 0;
+  for (const auto& message : watcher.on("lastcut/job/" + job_of("o200-pair.stl") + "/event")) {
+    const auto event = nlohmann::json::parse(message.payload, nullptr, false);
+    if (event.is_discarded() || event.value("stage", "") != "held") continue;
+    EXPECT_EQ(event.value("scan", ""), "o200-pair.stl");
+    EXPECT_EQ(event.value("order", ""), "200");
+    EXPECT_EQ(event.value("batch", ""), batch_3);
+    EXPECT_NE(event.value("reason", "").find("while sending batch " + batch_3), std::string::npos) << message.payload;
+    ++held_told;
+  }
+  EXPECT_EQ(held_told, 1);
 }
 
 }  // namespace
