@@ -1,6 +1,7 @@
 // Batches: only the station that owns a cutter claims its batches; a cut marks the jobs done; a
 // batch whose station vanished while sending is held with its jobs and never offered again,
 // while one merely claimed goes back to the queue.
+#include <algorithm>
 #include <chrono>
 #include <thread>
 
@@ -77,6 +78,8 @@ TEST_F(BatchesTest, StationVanishedWhileSendingIsHeldNeverRequeued) {
   ASSERT_TRUE(swept.ok()) << swept.error();
   EXPECT_EQ(swept->batches_held, std::vector<long long>{(*claim)->batch_id});
   ASSERT_EQ(swept->jobs_held.size(), 2u) << "the held batch's jobs, for the status events";
+  std::sort(swept->jobs_held.begin(), swept->jobs_held.end(),
+            [](const ledger::HeldJob& a, const ledger::HeldJob& b) { return a.job_id < b.job_id; });
   EXPECT_EQ(swept->jobs_held[0].scan_name, "scan-1.stl");
   EXPECT_EQ(swept->jobs_held[1].batch_id, (*claim)->batch_id);
   EXPECT_EQ(swept->jobs_held[1].cutter, "cutter-1");
