@@ -88,20 +88,18 @@ Status LedgerClient::mark_nested(const Lease& lease, const NestedBatch& nested) 
                         [&](pqxx::work& tx) -> Result<bool> {
                           if (Status held = check_lease(tx, node_, lease); !held) return held;
                           if (Status nesting = batch_in(tx, lease.object_id, "nesting"); !nesting) return nesting;
-                          for (const auto& [job_id, reason] : nested.rejected) {
-                            tx.exec_params(
-                                "UPDATE jobs SET state = 'failed', batch_id = NULL, reason = $3, updated_at = now()"
-                                " WHERE id = $1 AND batch_id = $2",
-                                job_id, lease.object_id, reason);
-                            add_event(tx, job_id, node_, "failed", reason);
-                          }
-                          for (const auto& [job_id, reason] : nested.waiting) {
-                            tx.exec_params(
-                                "UPDATE jobs SET state = 'computed', batch_id = NULL, reason = $3, updated_at = now()"
-                                " WHERE id = $1 AND batch_id = $2",
-                                job_id, lease.object_id, reason);
-                            add_event(tx, job_id, node_, "waiting", reason);
-                          }
+                          // Jobs leaving the batch: rejected ones fail, the ones a hide had no room for wait again.
+                          const auto leave = [&](const auto& jobs, const char* state, const char* event) {
+                            for (const auto& [job_id, reason] : jobs) {
+                              tx.exec_params(
+                                  "UPDATE jobs SET state = $4, batch_id = NULL, reason = $3, updated_at = now()"
+                                  " WHERE id = $1 AND batch_id = $2",
+                                  job_id, lease.object_id, reason, state);
+                              add_event(tx, job_id, node_, event, reason);
+                            }
+                          };
+                          leave(nested.rejected, "failed", "failed");
+                          leave(nested.waiting, "computed", "waiting");
                           const bool any_left = !jobs_of(tx, lease.object_id).empty() && !nested.cut_file.empty();
                           const std::string reason =
                               any_left ? "" : nested.reason.empty() ? "nothing was placed" : nested.reason;

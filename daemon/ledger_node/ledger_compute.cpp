@@ -13,6 +13,15 @@
 namespace lastcut::daemon {
 namespace {
 
+// Removes a job's scratch folder when the computation ends, however it ends.
+struct ScratchRemover {
+  std::filesystem::path folder;
+  ~ScratchRemover() {
+    std::error_code ignored;
+    std::filesystem::remove_all(folder, ignored);
+  }
+};
+
 // The most jobs offered to one hide, oldest first (a hide of 5 m^2 holds about 40 pairs of molds).
 constexpr int kHideMaxJobs = 64;
 
@@ -71,6 +80,7 @@ void LedgerNode::compute_job(ledger::LedgerClient& client, const ledger::JobClai
   const std::filesystem::path final_dir = store_.job_dir(claim.scan.scan_sha256);
   auto scratch = store_.scratch_for(final_dir, ledger().node);
   if (!scratch) return finish(Status::failure(scratch.error()), JobStage::Failed, "");
+  const ScratchRemover remover{*scratch};  // whatever happens below; publishing renames it away first
   copy_references(store_.references(claim.scan.scan_sha256), *scratch);
 
   const auto start = Clock::now();
@@ -80,16 +90,13 @@ void LedgerNode::compute_job(ledger::LedgerClient& client, const ledger::JobClai
                     job_mold_options(*ticket, config_->jobs), config_->jobs.max_hole_across_mm);
   monitor_.end(worker);
   const double took_s = std::chrono::duration<double>(Clock::now() - start).count();
-  std::error_code ignored;
   if (!made) {
-    std::filesystem::remove_all(*scratch, ignored);
     spdlog::error("{}: failed: {}", label, made.error());
     return finish(client.mark_failed(claim.lease, made.error()), JobStage::Failed, made.error());
   }
   const Result<ReferenceCheck> checked =
       check_against_references(*scratch, *ticket, config_->review.corner_tolerance_mm);
   if (!checked) {
-    std::filesystem::remove_all(*scratch, ignored);
     spdlog::error("{}: failed: {}", label, checked.error());
     return finish(client.mark_failed(claim.lease, checked.error()), JobStage::Failed, checked.error());
   }
@@ -99,15 +106,12 @@ void LedgerNode::compute_job(ledger::LedgerClient& client, const ledger::JobClai
                         {"measures", made->measures},      {"timings_s", {{"molds", took_s}}}};
   if (!checked->comparisons.empty()) report["compare"] = checked->comparisons;
   if (Status written = write_file_durably(*scratch / kReportFile, report.dump(1)); !written) {
-    std::filesystem::remove_all(*scratch, ignored);
     return finish(Status::failure("molds made, report not written: " + written.error()), JobStage::Failed, "");
   }
   if (keeper_->lost(claim.lease)) {
-    std::filesystem::remove_all(*scratch, ignored);
     return finish(Status::failure("lease lost while computing: another node has the job now"), JobStage::Claimed, "");
   }
   if (Status published = store_.publish(*scratch, final_dir); !published) {
-    std::filesystem::remove_all(*scratch, ignored);
     return finish(Status::failure("molds made but not published: " + published.error()), JobStage::Claimed, "");
   }
   if (const auto warnings = made->measures.find("warnings"); warnings != made->measures.end()) {

@@ -42,13 +42,13 @@ Status LedgerNode::start() {
 
   keeper_ = std::make_unique<ledger::LeaseKeeper>(ledger().url, ledger().node, ledger().lease_s, ledger().heartbeat_s,
                                                   [](const std::string& line) { spdlog::warn("{}", line); });
-  hot_folder_ = std::make_unique<HotFolder>(config_->paths.watch_dir, config_->watch);
-  if (Status watching = hot_folder_->start(); !watching) return watching;
+  scans_.folder = std::make_unique<HotFolder>(config_->paths.watch_dir, config_->watch);
+  if (Status watching = scans_.folder->start(); !watching) return watching;
   if (!config_->paths.hides_dir.empty()) {
-    hide_folder_ = std::make_unique<HotFolder>(config_->paths.hides_dir, config_->watch, HotFolderContent::Hides);
-    if (Status watching = hide_folder_->start(); !watching) return watching;
+    hides_.folder = std::make_unique<HotFolder>(config_->paths.hides_dir, config_->watch, HotFolderContent::Hides);
+    if (Status watching = hides_.folder->start(); !watching) return watching;
     spdlog::info("hides folder {} ({}): hides entered here lie on their cutter's table", config_->paths.hides_dir.string(),
-                 hide_folder_->mode_description());
+                 hides_.folder->mode_description());
   }
   if (ledger().has_role("compute")) {
     for (int i = 0; i < config_->jobs.compute_workers; ++i) threads_.emplace_back([this, i] { compute_worker(i + 1); });
@@ -57,23 +57,18 @@ Status LedgerNode::start() {
   std::string roles;
   for (const std::string& role : ledger().roles) roles += (roles.empty() ? "" : "+") + role;
   spdlog::info("ledger node {} ({}): watching {} ({}), shared folder {}, {} cutter(s) cabled here", ledger().node,
-               roles, config_->paths.watch_dir.string(), hot_folder_->mode_description(),
+               roles, config_->paths.watch_dir.string(), scans_.folder->mode_description(),
                store_.root().string(), cutters.size());
   return Status::success();
 }
 
 void LedgerNode::tick(Clock::time_point now) {
   if (stopping_) return;
-  if (now >= next_intake_) {
-    for (const ReadyScan& ready : hot_folder_->collect_ready(now)) {
-      take(ready);
-      if (next_intake_ > now) break;  // the ledger is away: the rest wait too
-    }
-  }
-  if (hide_folder_ && now >= next_hide_intake_) {
-    for (const ReadyScan& ready : hide_folder_->collect_ready(now)) {
-      take_hide(ready);
-      if (next_hide_intake_ > now) break;  // the ledger is away: the rest wait too
+  for (Intake* intake : {&scans_, &hides_}) {
+    if (!intake->folder || now < intake->next) continue;
+    for (const ReadyScan& ready : intake->folder->collect_ready(now)) {
+      take(ready, *intake);
+      if (intake->next > now) break;  // the ledger is away: the rest wait too
     }
   }
   if (now >= next_sweep_) {

@@ -54,10 +54,10 @@ class LedgerNode : public JobFlow {
   Status start() override;
   // Intake of ready scans; the sweep of expired leases each heartbeat.
   void tick(Clock::time_point now) override;
-  int event_fd() const override { return hot_folder_ ? hot_folder_->event_fd() : -1; }
+  int event_fd() const override { return scans_.folder ? scans_.folder->event_fd() : -1; }
   void read_events() override {
-    if (hot_folder_) hot_folder_->read_events();
-    if (hide_folder_) hide_folder_->read_events();  // tick() runs every 100 ms anyway
+    if (scans_.folder) scans_.folder->read_events();
+    if (hides_.folder) hides_.folder->read_events();  // tick() runs every 100 ms anyway
   }
   std::string stuck(Clock::time_point now) const override { return monitor_.stuck(now); }
   std::string status_line() const override;
@@ -67,10 +67,17 @@ class LedgerNode : public JobFlow {
 
  private:
   const LedgerConfig& ledger() const { return *config_->ledger; }
+  // One folder files are dropped into: the watch folder (scans) or the hides folder.
+  struct Intake {
+    std::string name;  // "watch folder", "hides folder"
+    std::unique_ptr<HotFolder> folder;
+    Status (LedgerNode::*enter)(const ReadyScan&) = nullptr;
+    Clock::time_point next{};  // while the ledger or the share is away, the next try
+    std::string trouble;       // as last logged
+  };
   // scan_intake.cpp (main thread): scans and hides
-  void take(const ReadyScan& ready);
+  void take(const ReadyScan& ready, Intake& intake);
   Status enter(const ReadyScan& ready);
-  void take_hide(const ReadyScan& ready);
   Status enter_hide(const ReadyScan& ready);
   void refuse(const ReadyScan& ready, const std::string& reason);
   void sweep();
@@ -102,8 +109,8 @@ class LedgerNode : public JobFlow {
   std::shared_ptr<const DaemonConfig> config_;
   SharedStore store_;
   StatusObserver* observer_ = nullptr;
-  std::unique_ptr<HotFolder> hot_folder_;
-  std::unique_ptr<HotFolder> hide_folder_;  // paths.hides; null when no hides folder is configured
+  Intake scans_{"watch folder", nullptr, &LedgerNode::enter};
+  Intake hides_{"hides folder", nullptr, &LedgerNode::enter_hide};  // folder null when paths.hides is not set
   std::unique_ptr<ledger::LedgerClient> client_;  // main thread only
   std::unique_ptr<ledger::LeaseKeeper> keeper_;
   ProgressMonitor monitor_;
@@ -122,9 +129,7 @@ class LedgerNode : public JobFlow {
 
   // Main thread only.
   Clock::time_point next_sweep_{};
-  Clock::time_point next_intake_{};
-  Clock::time_point next_hide_intake_{};
-  std::string intake_trouble_, hide_intake_trouble_, sweep_trouble_;
+  std::string sweep_trouble_;
   long long entered_ = 0, duplicates_ = 0, refused_ = 0;
 };
 

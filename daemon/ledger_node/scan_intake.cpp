@@ -42,23 +42,23 @@ bool not_the_files_fault(const Status& entered) {
 
 }  // namespace
 
-void LedgerNode::take(const ReadyScan& ready) {
+void LedgerNode::take(const ReadyScan& ready, Intake& intake) {
   const std::string name = ready.scan.filename().string();
   std::error_code error;
   if (!std::filesystem::exists(ready.scan, error)) {
-    hot_folder_->forget(name);  // gone between listing and taking; a new event brings it back
+    intake.folder->forget(name);  // gone between listing and taking; a new event brings it back
     return;
   }
-  const Status entered = enter(ready);
+  const Status entered = (this->*intake.enter)(ready);
   if (!entered && not_the_files_fault(entered)) {
-    // Not the scan's fault and nothing was entered: it waits in the watch folder.
-    note_trouble(intake_trouble_, entered.error(), "watch folder: scans wait in the watch folder");
-    next_intake_ = Clock::now() + std::chrono::seconds(2);
+    // Not the file's fault and nothing was entered: it waits where it was dropped.
+    note_trouble(intake.trouble, entered.error(), intake.name + ": files wait in the " + intake.name);
+    intake.next = Clock::now() + std::chrono::seconds(2);
     return;
   }
-  note_trouble(intake_trouble_, "", "watch folder");
-  hot_folder_->forget(name);
-  if (!ready.sidecar.empty()) hot_folder_->forget(ready.sidecar.filename().string());
+  note_trouble(intake.trouble, "", intake.name);
+  intake.folder->forget(name);
+  if (!ready.sidecar.empty()) intake.folder->forget(ready.sidecar.filename().string());
   if (!entered) refuse(ready, entered.error());
 }
 
@@ -111,25 +111,6 @@ Status LedgerNode::enter(const ReadyScan& ready) {
     job_event(job->job_id, name, ticket_to_json(ticket).dump(), 0, JobStage::Claimed, "");
   }
   return Status::success();
-}
-
-void LedgerNode::take_hide(const ReadyScan& ready) {
-  const std::string name = ready.scan.filename().string();
-  std::error_code error;
-  if (!std::filesystem::exists(ready.scan, error)) {
-    hide_folder_->forget(name);
-    return;
-  }
-  const Status entered = enter_hide(ready);
-  if (!entered && not_the_files_fault(entered)) {
-    note_trouble(hide_intake_trouble_, entered.error(), "hides folder: hides wait in the hides folder");
-    next_hide_intake_ = Clock::now() + std::chrono::seconds(2);
-    return;
-  }
-  note_trouble(hide_intake_trouble_, "", "hides folder");
-  hide_folder_->forget(name);
-  if (!ready.sidecar.empty()) hide_folder_->forget(ready.sidecar.filename().string());
-  if (!entered) refuse(ready, entered.error());
 }
 
 Status LedgerNode::enter_hide(const ReadyScan& ready) {
