@@ -3,19 +3,21 @@
 // models at 115200 baud (10 bits per byte), with zero motion time, so the only limits are the
 // wire and the protocol. Character counting vs send-and-wait, measured in the same run.
 // Usage: bench_drivers_grbl_throughput [LINES] [BAUD]
+#include <unistd.h>
+
 #include <atomic>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <string>
-#include <sys/wait.h>
 #include <thread>
-#include <unistd.h>
+#include <vector>
 
 #include "drivers/cutter.hpp"
 #include "drivers/grbl/grbl_job.hpp"
+#include "tests/support/child_process.hpp"
 
 namespace {
 
@@ -29,23 +31,14 @@ std::string make_job(int lines) {
   return program;
 }
 
-pid_t start_sim(const std::string& link, int baud, int rx_buffer) {
-  const std::string binary = std::string(LASTCUT_BINARY_DIR) + "/bin/lastcut-sim";
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    const std::string baud_text = std::to_string(baud), rx_text = std::to_string(rx_buffer);
-    ::execl(binary.c_str(), binary.c_str(), "grbl", "--link", link.c_str(), "--baud", baud_text.c_str(), "--time-scale", "0",
-            "--rx-buffer", rx_text.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
+// The simulator on a new pty link; its output goes to LINK.log.
+std::unique_ptr<lastcut::test::ChildProcess> start_sim(const std::string& link, int baud, int rx_buffer) {
+  auto sim = std::make_unique<lastcut::test::ChildProcess>(
+      std::vector<std::string>{std::string(LASTCUT_BINARY_DIR) + "/bin/lastcut-sim", "grbl", "--link", link, "--baud",
+                               std::to_string(baud), "--time-scale", "0", "--rx-buffer", std::to_string(rx_buffer)},
+      link + ".log", /*end_with_parent=*/true);
   for (int i = 0; i < 500 && !std::filesystem::exists(link); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  return pid;
-}
-
-void stop_sim(pid_t pid) {
-  ::kill(pid, SIGTERM);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
+  return sim;
 }
 
 }  // namespace
@@ -69,7 +62,7 @@ int main(int argc, char** argv) {
   double counting_percent = 0;
   for (const Mode& mode : modes) {
     const std::string link = dir + "/grbl-" + mode.streaming + std::to_string(mode.rx);
-    const pid_t sim = start_sim(link, baud, mode.rx);
+    const auto sim = start_sim(link, baud, mode.rx);
     lastcut::drivers::CutterConfig config;
     config.protocol = "grbl";
     config.port = link;
@@ -79,7 +72,7 @@ int main(int argc, char** argv) {
     const auto start = std::chrono::steady_clock::now();
     const auto result = lastcut::drivers::send_job(config, program, nullptr, never);
     const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    stop_sim(sim);
+    sim->stop();
     if (result.outcome != lastcut::drivers::SendOutcome::Done) {
       std::printf("%-22s FAILED: %s\n", mode.name, result.reason.c_str());
       all_done = false;

@@ -1,20 +1,15 @@
 // SimProcess / TempDir helpers for the driver tests (real processes, real files).
 #include "tests/drivers/sim_process.hpp"
 
-#include <arpa/inet.h>
+#include <unistd.h>
+
+#include <atomic>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <netinet/in.h>
-#include <poll.h>
 #include <sstream>
-#include <sys/prctl.h>
-#include <sys/socket.h>
-#include <sys/wait.h>
 #include <thread>
-#include <unistd.h>
 
 namespace lastcut::drivers::testing {
 
@@ -41,74 +36,38 @@ std::string read_file(const std::filesystem::path& path) {
 SimProcess::SimProcess(std::vector<std::string> args) : SimProcess(sim_binary(), std::move(args)) {}
 
 SimProcess::SimProcess(const std::string& binary, std::vector<std::string> args) {
-  int out[2];
-  if (::pipe(out) != 0) return;
-  const pid_t test_pid = ::getpid();
-  pid_ = ::fork();
-  if (pid_ == 0) {
-    // A test killed by CTest's timeout never reaches its destructors: the simulator must not outlive
-    // it, holding its pty link or TCP port for the next run.
-    ::prctl(PR_SET_PDEATHSIG, SIGTERM);
-    if (::getppid() != test_pid) ::_exit(1);  // the test died before prctl took effect
-    ::dup2(out[1], STDOUT_FILENO);
-    ::close(out[0]);
-    ::close(out[1]);
-    std::vector<char*> argv;
-    argv.push_back(const_cast<char*>(binary.c_str()));
-    for (auto& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    ::execvp(binary.c_str(), argv.data());
-    std::perror(("exec " + binary).c_str());
-    ::_exit(127);
-  }
-  ::close(out[1]);
-  std::string text;
+  static std::atomic<int> started{0};
+  log_ = std::filesystem::temp_directory_path() /
+         ("lastcut-sim-" + std::to_string(::getpid()) + "-" + std::to_string(++started) + ".log");
+  std::vector<std::string> argv{binary};
+  argv.insert(argv.end(), args.begin(), args.end());
+  child_ = std::make_unique<lastcut::test::ChildProcess>(argv, log_, /*end_with_parent=*/true);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-  while (std::chrono::steady_clock::now() < deadline && text.find('\n') == std::string::npos) {
-    pollfd p{out[0], POLLIN, 0};
-    if (::poll(&p, 1, 100) <= 0) continue;
-    char buffer[256];
-    const ssize_t got = ::read(out[0], buffer, sizeof buffer);
-    if (got <= 0) break;
-    text.append(buffer, static_cast<size_t>(got));
+  std::string text;
+  while (std::chrono::steady_clock::now() < deadline) {
+    text = read_file(log_);
+    for (std::size_t start = 0, end; (end = text.find('\n', start)) != std::string::npos; start = end + 1) {
+      if (text.compare(start, 7, "ready: ") != 0) continue;
+      ready_ = true;
+      ready_line_ = text.substr(start, end + 1 - start);
+      return;
+    }
+    if (!child_->running()) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
-  ::close(out[0]);
-  ready_ = text.rfind("ready: ", 0) == 0;
   ready_line_ = text;
 }
 
-int SimProcess::stop() {
-  if (pid_ <= 0) return -1;
-  ::kill(pid_, SIGTERM);
-  int status = 0;
-  for (int i = 0; i < 500; ++i) {
-    if (::waitpid(pid_, &status, WNOHANG) == pid_) {
-      pid_ = -1;
-      return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  ::kill(pid_, SIGKILL);
-  ::waitpid(pid_, &status, 0);
-  pid_ = -1;
-  return -1;
-}
-
 SimProcess::~SimProcess() {
-  if (pid_ > 0) stop();
+  child_.reset();
+  std::error_code ignored;
+  std::filesystem::remove(log_, ignored);
 }
 
-int free_loopback_port() {
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  address.sin_port = 0;
-  ::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address);
-  socklen_t length = sizeof address;
-  ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length);
-  ::close(fd);
-  return ntohs(address.sin_port);
+int SimProcess::stop() {
+  if (!child_ || !child_->running()) return -1;
+  const int status = child_->stop(5);
+  return status >= 0 && status < 128 ? status : -1;
 }
 
 int run_command(const std::string& command, std::string& output) {

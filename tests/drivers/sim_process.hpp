@@ -3,8 +3,12 @@
 // and stops it with SIGTERM (checking it exits cleanly); it also gets SIGTERM when the test process dies
 // without stopping it (a CTest timeout). TempDir: a fresh folder per test.
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
+
+#include "tests/support/child_process.hpp"
+#include "tests/support/loopback_port.hpp"
 
 namespace lastcut::drivers::testing {
 
@@ -30,21 +34,22 @@ class SimProcess {
   SimProcess& operator=(const SimProcess&) = delete;
 
   bool ready() const { return ready_; }
-  int pid() const { return pid_; }
+  int pid() const { return child_ ? child_->pid() : -1; }
+  // Its "ready: ..." line; when it never came, what the program printed instead.
   const std::string& ready_line() const { return ready_line_; }
   // SIGTERM, wait; returns the exit status (0 = clean), -1 if it had to be killed.
   int stop();
 
  private:
-  int pid_ = -1;
+  std::filesystem::path log_;  // the program's stdout and stderr, removed with it
+  std::unique_ptr<lastcut::test::ChildProcess> child_;
   bool ready_ = false;
   std::string ready_line_;
 };
 
 std::string sim_binary();
 std::string read_file(const std::filesystem::path& path);
-// A free TCP port on 127.0.0.1 (bound then released).
-int free_loopback_port();
+using lastcut::test::free_loopback_port;
 // Runs a shell command, returns its exit status and captures stdout+stderr in `output`.
 int run_command(const std::string& command, std::string& output);
 

@@ -2,6 +2,7 @@
 #include "tests/support/child_process.hpp"
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -15,16 +16,22 @@
 
 namespace lastcut::test {
 
-ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::filesystem::path& log_file) {
+ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::filesystem::path& log_file,
+                           bool end_with_parent) {
   if (argv.empty()) throw std::invalid_argument("ChildProcess: no program given");
   // Built before fork: the child only calls async-signal-safe functions until exec.
   std::vector<char*> args;
   for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
   args.push_back(nullptr);
   const std::string log = log_file.string();
+  const pid_t parent = ::getpid();
   pid_ = ::fork();
   if (pid_ < 0) throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
   if (pid_ == 0) {
+    if (end_with_parent) {
+      ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+      if (::getppid() != parent) ::_exit(1);  // the parent died before prctl took effect
+    }
     const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
     if (fd >= 0) {
       ::dup2(fd, 1);

@@ -2,7 +2,8 @@
 // ChildProcess: a real program a test (or benchmark) starts with fork/exec, its stdout and stderr
 // appended to a log file, signalled and waited for with a deadline; killed (SIGKILL) by the
 // destructor if still running. Used by the daemon harness (lastcutd, lastcut, lastcut-sim), the
-// mosquitto broker and the PostgreSQL server of the tests.
+// driver tests' simulators, the mosquitto broker and the PostgreSQL server of the tests, and the
+// grbl throughput bench.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -13,8 +14,12 @@ class ChildProcess {
  public:
   // argv[0] is the program: a path, or a name looked up on PATH. The child starts with an empty
   // signal mask and without the test runner's JOURNAL_STREAM and NOTIFY_SOCKET. When exec fails the
-  // child exits with 127 (the log says why).
-  ChildProcess(const std::vector<std::string>& argv, const std::filesystem::path& log_file);
+  // child exits with 127 (the log says why). With end_with_parent the child gets SIGTERM when the
+  // thread that started it ends (a test killed by CTest's timeout never reaches the destructor: a
+  // simulator must not outlive it holding its pty link or port); start such a child from a thread
+  // that outlives it.
+  ChildProcess(const std::vector<std::string>& argv, const std::filesystem::path& log_file,
+               bool end_with_parent = false);
   ~ChildProcess();
   ChildProcess(const ChildProcess&) = delete;
   ChildProcess& operator=(const ChildProcess&) = delete;

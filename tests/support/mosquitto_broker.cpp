@@ -11,25 +11,12 @@
 #include <sstream>
 #include <thread>
 
+#include "tests/support/loopback_port.hpp"
+
 namespace lastcut::test {
 namespace {
 
 constexpr const char* kMosquitto = "/usr/sbin/mosquitto";
-
-int free_port() {
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  socklen_t length = sizeof address;
-  int port = 0;
-  if (::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0 &&
-      ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length) == 0) {
-    port = ntohs(address.sin_port);
-  }
-  ::close(fd);
-  return port;
-}
 
 bool accepts_connections(int port) {
   const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
@@ -52,7 +39,7 @@ std::string read_all(const std::filesystem::path& file) {
 }  // namespace
 
 MosquittoBroker::MosquittoBroker(std::filesystem::path folder, const std::string& listener_lines)
-    : folder_(std::move(folder)), port_(free_port()) {
+    : folder_(std::move(folder)), port_(free_loopback_port()) {
   std::filesystem::create_directories(folder_);
   std::ofstream config(folder_ / "mosquitto.conf");
   config << "listener " << port_ << " 127.0.0.1\n"

@@ -2,6 +2,7 @@
 #include "tests/support/postgres_server.hpp"
 
 #include "tests/support/child_process.hpp"
+#include "tests/support/loopback_port.hpp"
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -33,23 +34,6 @@ fs::path server_bin_dir() {
     }
   }
   return best;
-}
-
-// A port nobody listens on now (the kernel's choice for port 0); the server binds it right after.
-int free_port() {
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  if (fd < 0) return 0;
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  socklen_t length = sizeof(address);
-  int port = 0;
-  if (::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof(address)) == 0 &&
-      ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length) == 0) {
-    port = ntohs(address.sin_port);
-  }
-  ::close(fd);
-  return port;
 }
 
 bool as_root() { return ::geteuid() == 0; }
@@ -124,7 +108,7 @@ std::string PostgresServer::start() {
   std::string last_failure;
   for (int attempt = 0; attempt < 5; ++attempt) {
     // A restart keeps its port (clients reconnect to the same URL) unless someone took it.
-    if (port_ == 0 || attempt > 0) port_ = free_port();
+    if (port_ == 0 || attempt > 0) port_ = free_loopback_port();
     const std::string options = "-p " + std::to_string(port_) + " -k " + folder_.string() +
                                 " -c listen_addresses=127.0.0.1 -c max_connections=60" +
                                 (durable_ ? "" : " -c fsync=off -c synchronous_commit=off");
