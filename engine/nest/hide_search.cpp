@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <numeric>
+#include <cstdio>
+#include <cstdlib>
 
+#include "engine/nest/hide_eject.hpp"
 #include "engine/nest/hide_greedy.hpp"
 #include "engine/nest/hide_repack.hpp"
 #include "engine/nest/nest_random.hpp"
@@ -16,11 +19,13 @@ namespace {
 // (docs/benchmarks-nest.md). Each level of effort adds kStale sweeps per strike and one destination.
 constexpr int kStrikes = 2, kStale = 15;
 constexpr int kMaxLevel = 2;  // levels of effort before a restart
+constexpr int kChainDestinations = 2, kMaxEjections = 6;  // one ejection chain: hides per unit, units ejected
 constexpr int kPlaceSamples = 240;
 constexpr int kHideSweepWorkers = 2;
 constexpr int kDestinations = 2;  // hides an inserted unit tries at level 0, most free area first
 constexpr long kShrinkTries = 40;  // failed shrinks in a row that end the search at the area bound
 constexpr long kPerTarget = 4;    // failed attempts on one hide before the next one is tried
+constexpr long kChainPeriod = 3;  // every kChainPeriod-th attempt is an ejection chain
 
 Point2 box_centre(const Box& b) { return {0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)}; }
 
@@ -86,6 +91,10 @@ class HideSearch {
   // Every unit of a used hide onto an unused smaller one that has room for their area (the
   // `index`-th such pair, the lowest resulting fill first; no dearer hide): the same pieces on less leather.
   bool shrink(State& s, long index, std::uint64_t seed, const Effort& effort) const;
+  // The `index`-th ejection chain (engine/nest/hide_eject): the used hides to empty in turn, least
+  // filled first; every other turn an unused smaller hide, no dearer, joins the destinations (a big
+  // hide replaced by a smaller one). At the area bound only the replacing turns are tried.
+  bool chain(State& s, long index, std::uint64_t seed, const Effort& effort) const;
   // More placed area, then fewer hides, then more concentrated.
   bool better(const State& a, const State& b) const;
   // A new trajectory: the greedy in a perturbed order.
@@ -281,6 +290,32 @@ bool HideSearch::shrink(State& s, long index, std::uint64_t seed, const Effort& 
   return true;
 }
 
+bool HideSearch::chain(State& s, long index, std::uint64_t seed, const Effort& effort) const {
+  const std::vector<int> order = targets(s);
+  const bool at_bound = order.size() <= area_bound(s);
+  const size_t turn = static_cast<size_t>(index);
+  const int target = order[turn % order.size()];
+  std::vector<int> destinations;
+  for (int slot : order)
+    if (slot != target) destinations.push_back(slot);
+  if (at_bound || (turn / order.size()) % 2 == 1) {
+    auto usable = [&](int slot) { return pieces_.slots[slot].container->usable_area_mm2(); };
+    auto cost = [&](int slot) { return instance_.bins[pieces_.slots[slot].bin_index].cost; };
+    std::vector<int> smaller;
+    for (int slot = 0; slot < static_cast<int>(pieces_.slots.size()); ++slot)
+      if (std::find(order.begin(), order.end(), slot) == order.end() && usable(slot) < usable(target) &&
+          cost(slot) <= cost(target))
+        smaller.push_back(slot);
+    if (smaller.empty()) return false;
+    destinations.push_back(smaller[(turn / (2 * order.size())) % smaller.size()]);
+  }
+  auto env = [](const char* k, int d) { return std::getenv(k) ? std::atoi(std::getenv(k)) : d; };
+  const EjectBudget budget{env("HIDE_STRIKES", effort.strikes()), env("HIDE_STALE", 15) * (1 + effort.level), env("HIDE_DEST", kChainDestinations) + effort.level, env("HIDE_EJ", kMaxEjections)};
+  const bool ok = eject_hide(instance_, pieces_, options_, deadline_, s.slot_of, s.state, target, destinations, seed, budget);
+  if (std::getenv("HIDE_DEBUG")) std::fprintf(stderr, "chain %ld target %d (%zu units, fill %.2f) dest %zu level %d -> %d\n", index, target, units_on(s, target).size(), fill(s, target), destinations.size(), effort.level, ok);
+  return ok;
+}
+
 bool HideSearch::better(const State& a, const State& b) const {
   double placed_a = 0, placed_b = 0;
   for (size_t i = 0; i < a.slot_of.size(); ++i) {
@@ -289,8 +324,13 @@ bool HideSearch::better(const State& a, const State& b) const {
     placed_b += b.slot_of[i] >= 0 ? area : 0;
   }
   if (std::abs(placed_a - placed_b) > 1e-9 * std::max(1.0, placed_a)) return placed_a > placed_b;
-  const size_t used_a = used_slots(a).size(), used_b = used_slots(b).size();
-  if (used_a != used_b) return used_a < used_b;
+  const std::vector<int> used_a = used_slots(a), used_b = used_slots(b);
+  if (used_a.size() != used_b.size()) return used_a.size() < used_b.size();
+  // Then less leather (a higher utilisation of the used hides).
+  double area_a = 0, area_b = 0;
+  for (int slot : used_a) area_a += pieces_.slots[slot].container->usable_area_mm2();
+  for (int slot : used_b) area_b += pieces_.slots[slot].container->usable_area_mm2();
+  if (std::abs(area_a - area_b) > 1e-9 * area_a) return area_a < area_b;
   return concentration(pieces_, a.slot_of) > concentration(pieces_, b.slot_of) * (1 + 1e-9);
 }
 
@@ -346,7 +386,7 @@ Layout HideSearch::run() {
       // allows (or one hide holds everything that fits) only smaller hides are left to try.
       if (used.size() < 2 || used.size() <= area_bound(current)) {
         if (streak >= kShrinkTries) break;
-        success = shrink(trial, streak, seed, Effort{1});
+        success = streak % 2 ? chain(trial, streak / 2, seed, Effort{1}) : shrink(trial, streak / 2, seed, Effort{1});
         streak = success ? 0 : streak + 1;
       } else {
         const long cycles = streak / (kPerTarget * static_cast<long>(used.size()));
@@ -364,7 +404,8 @@ Layout HideSearch::run() {
           continue;
         }
         const Effort effort{static_cast<int>(cycles)};
-        success = move_or_swap(trial, streak, seed, effort);
+        success = streak % kChainPeriod == kChainPeriod - 1 ? chain(trial, streak / kChainPeriod, seed, effort)
+                                                            : move_or_swap(trial, streak, seed, effort);
         streak = success ? 0 : streak + 1;
       }
     }
