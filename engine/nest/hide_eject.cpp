@@ -1,8 +1,6 @@
 #include "engine/nest/hide_eject.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 
 #include "engine/nest/parallel_separation.hpp"
 
@@ -21,7 +19,7 @@ class Chain {
       : instance_(instance), pieces_(pieces), options_(options), deadline_(deadline), slot_of_(slot_of), state_(state),
         budget_(budget) {}
 
-  bool run(int target, const std::vector<int>& destinations, std::uint64_t seed);
+  EjectResult run(int target, const std::vector<int>& destinations, std::uint64_t seed);
 
  private:
   double free_area(int slot) const {
@@ -45,6 +43,8 @@ class Chain {
     const Point2 anchor = box_centre(pieces_.prepared(first, slot).orientations[a.orientation].box.shifted(a.offset));
     return [anchor](const Box& b) { return (box_centre(b) - anchor).norm(); };
   }
+  // The chain stopped with `pool` left over: those units back onto the (emptied) target at free spots.
+  EjectResult settle_back(int target, std::vector<int> pool, std::uint64_t seed);
   // Every piece of `unit` at a free sampled spot of `slot`, near each other; false when not.
   bool place_free(int slot, int unit, std::uint64_t seed);
   // Puts `units` onto `slot` and returns the units that had to leave it (off every hide now).
@@ -64,20 +64,21 @@ class Chain {
   std::vector<int>& slot_of_;
   std::vector<PieceState>& state_;
   const EjectBudget& budget_;
+  std::vector<int> moved_;  // the units this chain has put somewhere: ejected again only as a last resort
 };
 
-bool Chain::run(int target, const std::vector<int>& destinations, std::uint64_t seed) {
+EjectResult Chain::run(int target, const std::vector<int>& destinations, std::uint64_t seed) {
   std::vector<int> pool = units_on(target);
-  if (pool.empty()) return false;
+  if (pool.empty()) return EjectResult::Failed;
   double pool_area = 0, room = 0;
   for (int u : pool) take_off(u), pool_area += pieces_.unit_area_mm2[u];
   for (int d : destinations) room += free_area(d);
-  if (room < pool_area) return false;  // the area alone rules it out
+  if (room < pool_area) return EjectResult::Failed;  // the area alone rules it out
   // Per unit: the hides it was ejected from or failed on (never tried again in this chain).
   std::vector<std::vector<int>> barred(pieces_.units.size(), std::vector<int>{target});
   const size_t max_steps = pool.size() + static_cast<size_t>(budget_.max_ejections);
   for (size_t step = 0; !pool.empty(); ++step) {
-    if (step >= max_steps || deadline_.passed()) return false;
+    if (step >= max_steps || deadline_.passed()) return settle_back(target, pool, seed);
     // The largest unit first: small ones find gaps later.
     auto largest = std::max_element(pool.begin(), pool.end(), [&](int a, int b) {
       return pieces_.unit_area_mm2[a] < pieces_.unit_area_mm2[b];
@@ -102,13 +103,12 @@ bool Chain::run(int target, const std::vector<int>& destinations, std::uint64_t 
     }
     if (free_spot) continue;
     if (candidates.size() > static_cast<size_t>(budget_.destinations)) candidates.resize(budget_.destinations);
-    // Each candidate hide on a copy; the one that ejects the least area (less than the unit's own:
-    // the chain moves ever smaller pieces) is kept, one that ejects nothing at once.
+    // Each candidate hide on a copy; the one that ejects the least area (less than eject_ratio x the
+    // unit's own, so the chain tends to smaller pieces) is kept, one that ejects nothing at once.
     std::vector<int> best_slot_of;
     std::vector<PieceState> best_state;
     std::vector<int> best_ejected;
-    static const double relax = std::getenv("HIDE_RELAX") ? std::atof(std::getenv("HIDE_RELAX")) : 1.0;
-    double best_area = relax * pieces_.unit_area_mm2[unit];
+    double best_area = budget_.eject_ratio * pieces_.unit_area_mm2[unit];
     int best_slot = -1;
     for (int d : candidates) {
       slot_of_ = slot_of0, state_ = state0;
@@ -121,12 +121,23 @@ bool Chain::run(int target, const std::vector<int>& destinations, std::uint64_t 
       }
       if (area == 0 || deadline_.passed()) break;
     }
-    if (std::getenv("HIDE_DEBUG")) std::fprintf(stderr, "  step %zu unit %d area %.2g cands %zu -> slot %d ejected %zu (%.2g)\n", step, unit, pieces_.unit_area_mm2[unit], candidates.size(), best_slot, best_ejected.size(), best_area);
-    if (best_slot < 0) return false;
+    if (best_slot < 0) {
+      pool.push_back(unit);
+      return settle_back(target, pool, seed);
+    }
     slot_of_ = std::move(best_slot_of), state_ = std::move(best_state);
     for (int e : best_ejected) barred[e].push_back(best_slot), pool.push_back(e);
+    moved_.push_back(unit);
   }
-  return true;
+  return EjectResult::Emptied;
+}
+
+EjectResult Chain::settle_back(int target, std::vector<int> pool, std::uint64_t seed) {
+  if (deadline_.passed()) return EjectResult::Failed;
+  std::stable_sort(pool.begin(), pool.end(), [&](int a, int b) { return pieces_.unit_area_mm2[a] > pieces_.unit_area_mm2[b]; });
+  for (size_t k = 0; k < pool.size(); ++k)
+    if (!place_free(target, pool[k], stream_seed(seed, k, 31))) return EjectResult::Failed;
+  return EjectResult::Rearranged;
 }
 
 bool Chain::place_free(int slot, int unit, std::uint64_t seed) {
@@ -183,7 +194,9 @@ std::vector<int> Chain::insert(int slot, const std::vector<int>& units, std::uin
     separation.set_state(start);
     const bool feasible = separation.separate(budget_.strikes, budget_.stale, deadline_);
     const std::vector<PieceState> final = separation.state();
-    if (!feasible) ejected = choose_ejected(slot, local, final, units, seed);
+    std::vector<int> keep = moved_;
+    keep.insert(keep.end(), units.begin(), units.end());
+    if (!feasible) ejected = choose_ejected(slot, local, final, keep, seed);
     for (size_t k = 0; k < local.size(); ++k) slot_of_[local[k]] = slot, state_[local[k]] = final[k];
     for (int u : ejected) take_off(u);
   }
@@ -244,7 +257,30 @@ std::vector<int> Chain::mend_pairs(int slot, std::uint64_t seed) {
 
 }  // namespace
 
-bool eject_hide(const NestInstance& instance, const HidePieces& pieces, const NestOptions& options,
+EjectTurn eject_turn(const NestInstance& instance, const HidePieces& pieces, const std::vector<int>& order, long turn,
+                     bool replace_only) {
+  EjectTurn result;
+  if (order.empty()) return result;
+  const size_t k = static_cast<size_t>(turn), n = order.size();
+  const int target = order[k % n];
+  for (int slot : order)
+    if (slot != target) result.destinations.push_back(slot);
+  if (replace_only || (k / n) % 2 == 1) {
+    auto usable = [&](int slot) { return pieces.slots[slot].container->usable_area_mm2(); };
+    auto cost = [&](int slot) { return instance.bins[pieces.slots[slot].bin_index].cost; };
+    std::vector<int> smaller;  // in the opening order: largest first among equal prices per area
+    for (int slot = 0; slot < static_cast<int>(pieces.slots.size()); ++slot)
+      if (std::find(order.begin(), order.end(), slot) == order.end() && usable(slot) < usable(target) &&
+          cost(slot) <= cost(target))
+        smaller.push_back(slot);
+    if (smaller.empty()) return result;
+    result.destinations.push_back(smaller[(k / (2 * n)) % smaller.size()]);
+  }
+  result.target = target;
+  return result;
+}
+
+EjectResult eject_hide(const NestInstance& instance, const HidePieces& pieces, const NestOptions& options,
                 const Deadline& deadline, std::vector<int>& slot_of, std::vector<PieceState>& state, int target,
                 const std::vector<int>& destinations, std::uint64_t seed, const EjectBudget& budget) {
   return Chain(instance, pieces, options, deadline, slot_of, state, budget).run(target, destinations, seed);

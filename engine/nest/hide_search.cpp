@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <numeric>
-#include <cstdio>
-#include <cstdlib>
 
 #include "engine/nest/hide_eject.hpp"
 #include "engine/nest/hide_greedy.hpp"
@@ -19,13 +17,13 @@ namespace {
 // (docs/benchmarks-nest.md). Each level of effort adds kStale sweeps per strike and one destination.
 constexpr int kStrikes = 2, kStale = 15;
 constexpr int kMaxLevel = 2;  // levels of effort before a restart
-constexpr int kChainDestinations = 2, kMaxEjections = 6;  // one ejection chain: hides per unit, units ejected
+constexpr int kChainDestinations = 3, kMaxEjections = 8;  // one ejection chain: hides per unit, units ejected
 constexpr int kPlaceSamples = 240;
 constexpr int kHideSweepWorkers = 2;
 constexpr int kDestinations = 2;  // hides an inserted unit tries at level 0, most free area first
 constexpr long kShrinkTries = 40;  // failed shrinks in a row that end the search at the area bound
 constexpr long kPerTarget = 4;    // failed attempts on one hide before the next one is tried
-constexpr long kChainPeriod = 3;  // every kChainPeriod-th attempt is an ejection chain
+constexpr long kChainPeriod = 2;  // every other attempt is an ejection chain (3 and 1 measured worse)
 
 Point2 box_centre(const Box& b) { return {0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)}; }
 
@@ -74,8 +72,7 @@ class HideSearch {
     std::stable_sort(units.begin(), units.end(), [&](int a, int b) { return pieces_.unit_area_mm2[a] > pieces_.unit_area_mm2[b]; });
     return units;
   }
-  // The fewest hides whose usable areas, largest first, cover the placed area: no move goes below.
-  size_t area_bound(const State& s) const;
+  size_t area_bound(const State& s) const { return hide_area_bound(pieces_, s.slot_of); }
   // The used hides, the one to empty first first: least filled, then the smallest.
   std::vector<int> targets(const State& s) const;
   bool insert_unit(State& s, int unit, int slot, std::uint64_t seed, const Effort& effort) const;
@@ -108,19 +105,6 @@ class HideSearch {
   const NestOptions& options_;
   Deadline deadline_;
 };
-
-size_t HideSearch::area_bound(const State& s) const {
-  double placed = 0;
-  for (size_t i = 0; i < s.slot_of.size(); ++i)
-    if (s.slot_of[i] >= 0) placed += pieces_.frames[0][pieces_.item_of[i]].area_mm2;
-  std::vector<double> areas;
-  for (const HideSlot& slot : pieces_.slots) areas.push_back(slot.container->usable_area_mm2());
-  std::sort(areas.rbegin(), areas.rend());
-  double covered = 0;
-  size_t k = 0;
-  while (k < areas.size() && covered < placed * (1 - 1e-12)) covered += areas[k++];
-  return k;
-}
 
 std::vector<int> HideSearch::targets(const State& s) const {
   std::vector<int> order = used_slots(s);
@@ -292,28 +276,16 @@ bool HideSearch::shrink(State& s, long index, std::uint64_t seed, const Effort& 
 
 bool HideSearch::chain(State& s, long index, std::uint64_t seed, const Effort& effort) const {
   const std::vector<int> order = targets(s);
-  const bool at_bound = order.size() <= area_bound(s);
-  const size_t turn = static_cast<size_t>(index);
-  const int target = order[turn % order.size()];
-  std::vector<int> destinations;
-  for (int slot : order)
-    if (slot != target) destinations.push_back(slot);
-  if (at_bound || (turn / order.size()) % 2 == 1) {
-    auto usable = [&](int slot) { return pieces_.slots[slot].container->usable_area_mm2(); };
-    auto cost = [&](int slot) { return instance_.bins[pieces_.slots[slot].bin_index].cost; };
-    std::vector<int> smaller;
-    for (int slot = 0; slot < static_cast<int>(pieces_.slots.size()); ++slot)
-      if (std::find(order.begin(), order.end(), slot) == order.end() && usable(slot) < usable(target) &&
-          cost(slot) <= cost(target))
-        smaller.push_back(slot);
-    if (smaller.empty()) return false;
-    destinations.push_back(smaller[(turn / (2 * order.size())) % smaller.size()]);
+  const EjectTurn turn = eject_turn(instance_, pieces_, order, index, order.size() <= area_bound(s));
+  if (turn.target < 0) return false;
+  const double before = concentration(pieces_, s.slot_of);
+  const EjectBudget budget{effort.strikes(), effort.stale(), kChainDestinations + effort.level, kMaxEjections};
+  switch (eject_hide(instance_, pieces_, options_, deadline_, s.slot_of, s.state, turn.target, turn.destinations, seed, budget)) {
+    case EjectResult::Emptied: return true;
+    case EjectResult::Rearranged: return concentration(pieces_, s.slot_of) > before * (1 + 1e-9);
+    case EjectResult::Failed: return false;
   }
-  auto env = [](const char* k, int d) { return std::getenv(k) ? std::atoi(std::getenv(k)) : d; };
-  const EjectBudget budget{env("HIDE_STRIKES", effort.strikes()), env("HIDE_STALE", 15) * (1 + effort.level), env("HIDE_DEST", kChainDestinations) + effort.level, env("HIDE_EJ", kMaxEjections)};
-  const bool ok = eject_hide(instance_, pieces_, options_, deadline_, s.slot_of, s.state, target, destinations, seed, budget);
-  if (std::getenv("HIDE_DEBUG")) std::fprintf(stderr, "chain %ld target %d (%zu units, fill %.2f) dest %zu level %d -> %d\n", index, target, units_on(s, target).size(), fill(s, target), destinations.size(), effort.level, ok);
-  return ok;
+  return false;
 }
 
 bool HideSearch::better(const State& a, const State& b) const {
@@ -405,7 +377,7 @@ Layout HideSearch::run() {
         }
         const Effort effort{static_cast<int>(cycles)};
         success = streak % kChainPeriod == kChainPeriod - 1 ? chain(trial, streak / kChainPeriod, seed, effort)
-                                                            : move_or_swap(trial, streak, seed, effort);
+                                                            : move_or_swap(trial, streak / kChainPeriod, seed, effort);
         streak = success ? 0 : streak + 1;
       }
     }

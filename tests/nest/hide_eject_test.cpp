@@ -1,8 +1,8 @@
 // The ejection chain (engine/nest/hide_eject) on square hides whose answers follow from arithmetic:
 // a hide is emptied into the gaps of another only after that one is separated (no free spot is
 // left for the first piece, four squares fit only as a 2 x 2 block), a piece that needs a hide's
-// room makes a small piece move on to a third hide (an ejection), and a piece that fits no other
-// hide leaves the chain failing. Every result is checked by the independent layout checker.
+// room makes a small piece move on to a third hide (an ejection), and two hides that can only swap
+// their pieces are rearranged, not emptied. Every result is checked by the independent layout checker.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -80,8 +80,7 @@ TEST(HideEject, EmptiesAHideIntoTheGapsOfAnotherBySeparatingIt) {
     EXPECT_FALSE(put(pieces, probe, 2, 0, kHideMm / 2, kHideMm / 2));
   }
   const Deadline deadline(60);
-  const bool emptied = eject_hide(instance, pieces, options, deadline, a.slot_of, a.state, 1, {0}, 1, EjectBudget{});
-  ASSERT_TRUE(emptied);
+  ASSERT_EQ(eject_hide(instance, pieces, options, deadline, a.slot_of, a.state, 1, {0}, 1, EjectBudget{}), EjectResult::Emptied);
   EXPECT_EQ(pieces_on(a, 0), 4);
   EXPECT_EQ(pieces_on(a, 1), 0);
   EXPECT_EQ(problems_of(instance, pieces, a), "");
@@ -110,12 +109,18 @@ TEST(HideEject, ASmallPieceMakesRoomByMovingOnToAThirdHide) {
   const double usable = pieces.slots[0].container->usable_area_mm2();
   ASSERT_GT(usable - 110 * 215 - 50 * 50, usable - 165 * 165);
   const Deadline deadline(60);
-  ASSERT_TRUE(eject_hide(instance, pieces, options, deadline, a.slot_of, a.state, 1, {0, 2}, 1, EjectBudget{}));
+  {  // Without an ejection the chain cannot do it.
+    Assignment b = a;
+    EjectBudget no_ejection;
+    no_ejection.max_ejections = 0;
+    EXPECT_NE(eject_hide(instance, pieces, options, deadline, b.slot_of, b.state, 1, {0, 2}, 1, no_ejection), EjectResult::Emptied);
+  }
+  ASSERT_EQ(eject_hide(instance, pieces, options, deadline, a.slot_of, a.state, 1, {0, 2}, 1, EjectBudget{}), EjectResult::Emptied);
   EXPECT_EQ(a.slot_of, (std::vector<int>{0, 2, 0, 2}));
   EXPECT_EQ(problems_of(instance, pieces, a), "");
 }
 
-TEST(HideEject, FailsWhenThePiecesFitNoOtherHide) {
+TEST(HideEject, TwoHidesThatCanOnlySwapAreRearrangedNotEmptied) {
   // A 200 mm square needs an empty hide (202 + 52 > 222); the other hide holds a 50 mm square and has
   // the area for it, so only the geometry says no.
   NestInstance instance = square_hides(2);
@@ -128,7 +133,49 @@ TEST(HideEject, FailsWhenThePiecesFitNoOtherHide) {
   ASSERT_TRUE(put(pieces, a, 1, 0, kHideMm / 2, kHideMm / 2));
   ASSERT_GE(pieces.slots[0].container->usable_area_mm2() - 50 * 50, 200 * 200);
   const Deadline deadline(60);
-  EXPECT_FALSE(eject_hide(instance, pieces, options, deadline, a.slot_of, a.state, 1, {0}, 1, EjectBudget{}));
+  // The 200 mm square takes hide 0 only by ejecting the 50 mm one (2,500 mm^2, within 1.5 x its own
+  // area), which may not go back to hide 0 and so ends on the emptied hide 1: a swap, no hide saved.
+  EXPECT_EQ(eject_hide(instance, pieces, options, deadline, a.slot_of, a.state, 1, {0}, 1, EjectBudget{}), EjectResult::Rearranged);
+  EXPECT_EQ(a.slot_of, (std::vector<int>{0, 1}));
+  EXPECT_EQ(problems_of(instance, pieces, a), "");
+}
+
+TEST(HideEject, ReplacesABigHideByASmallerUnusedOne) {
+  // Hides (opening order: largest first): 0 is 400 x 400 with two 100 mm squares, 1 is full (four
+  // squares as a 2 x 2 block), 2 is an unused 230 x 130 hide that holds two squares side by side
+  // (2 x 102 <= 222, 102 <= 130 - 8).
+  NestInstance instance = square_hides(3);
+  instance.bins[0].outer = test::rectangle(400, 400);
+  instance.bins[2].outer = test::rectangle(kHideMm, 130);
+  instance.items.push_back(test::item(0, test::rectangle(100, 100), 6));
+  NestOptions options;
+  const HidePieces pieces = prepare_hide_pieces(instance, options);
+  ASSERT_EQ(pieces.slots[0].bin_index, 0);
+  ASSERT_EQ(pieces.slots[2].bin_index, 2);
+  Assignment a{std::vector<int>(6, -1), std::vector<PieceState>(6)};
+  ASSERT_TRUE(put(pieces, a, 0, 0, 0, 0));
+  ASSERT_TRUE(put(pieces, a, 1, 0, 400, 400));
+  for (int k = 0; k < 4; ++k) ASSERT_TRUE(put(pieces, a, 2 + k, 1, k % 2 ? kHideMm : 0, k / 2 ? kHideMm : 0));
+  ASSERT_EQ(problems_of(instance, pieces, a), "");
+  // The turns: hide 0 then hide 1 as the target; the smaller hide 2 joins on the second round.
+  EXPECT_EQ(eject_turn(instance, pieces, {0, 1}, 0, false).destinations, (std::vector<int>{1}));
+  EXPECT_EQ(eject_turn(instance, pieces, {0, 1}, 1, false).target, 1);
+  const EjectTurn replace = eject_turn(instance, pieces, {0, 1}, 2, false);
+  EXPECT_EQ(replace.target, 0);
+  EXPECT_EQ(replace.destinations, (std::vector<int>{1, 2}));
+  EXPECT_EQ(eject_turn(instance, pieces, {0, 1}, 0, true).destinations, (std::vector<int>{1, 2}));
+  const double used_before = hide_layout(instance, pieces, a.slot_of, a.state, {}).utilisation;
+  const Deadline deadline(60);
+  ASSERT_EQ(eject_hide(instance, pieces, options, deadline, a.slot_of, a.state, replace.target, replace.destinations, 1,
+                       EjectBudget{}),
+            EjectResult::Emptied);
+  EXPECT_EQ(pieces_on(a, 0), 0);
+  EXPECT_EQ(pieces_on(a, 1), 4);
+  EXPECT_EQ(pieces_on(a, 2), 2);
+  EXPECT_EQ(problems_of(instance, pieces, a), "");
+  // Utilisation of the used hides: six squares over two 230 mm hides' areas instead of 400^2 + 230^2.
+  EXPECT_NEAR(used_before, 6e4 / (400.0 * 400 + kHideMm * kHideMm), 1e-9);
+  EXPECT_NEAR(hide_layout(instance, pieces, a.slot_of, a.state, {}).utilisation, 6e4 / (kHideMm * kHideMm + kHideMm * 130), 1e-9);
 }
 
 }  // namespace
