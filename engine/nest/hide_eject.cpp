@@ -74,7 +74,7 @@ EjectResult Chain::run(int target, const std::vector<int>& destinations, std::ui
   for (int u : pool) take_off(u), pool_area += pieces_.unit_area_mm2[u];
   for (int d : destinations) room += free_area(d);
   if (room < pool_area) return EjectResult::Failed;  // the area alone rules it out
-  // Per unit: the hides it was ejected from or failed on (never tried again in this chain).
+  // Per unit: the target and the hides it was ejected from (never tried again in this chain).
   std::vector<std::vector<int>> barred(pieces_.units.size(), std::vector<int>{target});
   const size_t max_steps = pool.size() + static_cast<size_t>(budget_.max_ejections);
   for (size_t step = 0; !pool.empty(); ++step) {
