@@ -144,6 +144,19 @@ bool unit_near(const HidePieces& pieces, const NestInstance& instance, int unit,
   return true;
 }
 
+size_t hide_area_bound(const HidePieces& pieces, const std::vector<int>& slot_of) {
+  double placed = 0;
+  for (size_t i = 0; i < slot_of.size(); ++i)
+    if (slot_of[i] >= 0) placed += pieces.frames[0][pieces.item_of[i]].area_mm2;
+  std::vector<double> areas;
+  for (const HideSlot& slot : pieces.slots) areas.push_back(slot.container->usable_area_mm2());
+  std::sort(areas.rbegin(), areas.rend());
+  double covered = 0;
+  size_t k = 0;
+  while (k < areas.size() && covered < placed * (1 - 1e-12)) covered += areas[k++];
+  return k;
+}
+
 Layout hide_layout(const NestInstance& instance, const HidePieces& pieces, const std::vector<int>& slot_of,
                    const std::vector<PieceState>& state, std::vector<Unplaced> unplaced) {
   Layout layout;

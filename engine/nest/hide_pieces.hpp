@@ -53,6 +53,10 @@ double pair_bound_mm(const NestInstance& instance, double gap_mm, const NestItem
 bool unit_near(const HidePieces& pieces, const NestInstance& instance, int unit, int slot,
                const std::vector<PieceState>& state);
 
+// The fewest hides whose usable areas, largest first, cover the placed area of slot_of (per piece,
+// -1 = not placed): no hide search move goes below it.
+size_t hide_area_bound(const HidePieces& pieces, const std::vector<int>& slot_of);
+
 // The layout of an assignment: slot_of per piece (-1: not placed), state per piece in its slot's frame.
 Layout hide_layout(const NestInstance& instance, const HidePieces& pieces, const std::vector<int>& slot_of,
                    const std::vector<PieceState>& state, std::vector<Unplaced> unplaced);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "engine/nest/hide_eject.hpp"
 #include "engine/nest/hide_greedy.hpp"
 #include "engine/nest/hide_repack.hpp"
 #include "engine/nest/nest_random.hpp"
@@ -16,11 +17,13 @@ namespace {
 // (docs/benchmarks-nest.md). Each level of effort adds kStale sweeps per strike and one destination.
 constexpr int kStrikes = 2, kStale = 15;
 constexpr int kMaxLevel = 2;  // levels of effort before a restart
+constexpr int kChainDestinations = 3, kMaxEjections = 8;  // one ejection chain: hides per unit, units ejected
 constexpr int kPlaceSamples = 240;
 constexpr int kHideSweepWorkers = 2;
 constexpr int kDestinations = 2;  // hides an inserted unit tries at level 0, most free area first
 constexpr long kShrinkTries = 40;  // failed shrinks in a row that end the search at the area bound
 constexpr long kPerTarget = 4;    // failed attempts on one hide before the next one is tried
+constexpr long kChainPeriod = 2;  // every other attempt is an ejection chain (3 and 1 measured worse)
 
 Point2 box_centre(const Box& b) { return {0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)}; }
 
@@ -69,8 +72,7 @@ class HideSearch {
     std::stable_sort(units.begin(), units.end(), [&](int a, int b) { return pieces_.unit_area_mm2[a] > pieces_.unit_area_mm2[b]; });
     return units;
   }
-  // The fewest hides whose usable areas, largest first, cover the placed area: no move goes below.
-  size_t area_bound(const State& s) const;
+  size_t area_bound(const State& s) const { return hide_area_bound(pieces_, s.slot_of); }
   // The used hides, the one to empty first first: least filled, then the smallest.
   std::vector<int> targets(const State& s) const;
   bool insert_unit(State& s, int unit, int slot, std::uint64_t seed, const Effort& effort) const;
@@ -86,6 +88,10 @@ class HideSearch {
   // Every unit of a used hide onto an unused smaller one that has room for their area (the
   // `index`-th such pair, the lowest resulting fill first; no dearer hide): the same pieces on less leather.
   bool shrink(State& s, long index, std::uint64_t seed, const Effort& effort) const;
+  // The `index`-th ejection chain (engine/nest/hide_eject): the used hides to empty in turn, least
+  // filled first; every other turn an unused smaller hide, no dearer, joins the destinations (a big
+  // hide replaced by a smaller one). At the area bound only the replacing turns are tried.
+  bool chain(State& s, long index, std::uint64_t seed, const Effort& effort) const;
   // More placed area, then fewer hides, then more concentrated.
   bool better(const State& a, const State& b) const;
   // A new trajectory: the greedy in a perturbed order.
@@ -99,19 +105,6 @@ class HideSearch {
   const NestOptions& options_;
   Deadline deadline_;
 };
-
-size_t HideSearch::area_bound(const State& s) const {
-  double placed = 0;
-  for (size_t i = 0; i < s.slot_of.size(); ++i)
-    if (s.slot_of[i] >= 0) placed += pieces_.frames[0][pieces_.item_of[i]].area_mm2;
-  std::vector<double> areas;
-  for (const HideSlot& slot : pieces_.slots) areas.push_back(slot.container->usable_area_mm2());
-  std::sort(areas.rbegin(), areas.rend());
-  double covered = 0;
-  size_t k = 0;
-  while (k < areas.size() && covered < placed * (1 - 1e-12)) covered += areas[k++];
-  return k;
-}
 
 std::vector<int> HideSearch::targets(const State& s) const {
   std::vector<int> order = used_slots(s);
@@ -281,6 +274,20 @@ bool HideSearch::shrink(State& s, long index, std::uint64_t seed, const Effort& 
   return true;
 }
 
+bool HideSearch::chain(State& s, long index, std::uint64_t seed, const Effort& effort) const {
+  const std::vector<int> order = targets(s);
+  const EjectTurn turn = eject_turn(instance_, pieces_, order, index, order.size() <= area_bound(s));
+  if (turn.target < 0) return false;
+  const double before = concentration(pieces_, s.slot_of);
+  const EjectBudget budget{effort.strikes(), effort.stale(), kChainDestinations + effort.level, kMaxEjections};
+  switch (eject_hide(instance_, pieces_, options_, deadline_, s.slot_of, s.state, turn.target, turn.destinations, seed, budget)) {
+    case EjectResult::Emptied: return true;
+    case EjectResult::Rearranged: return concentration(pieces_, s.slot_of) > before * (1 + 1e-9);
+    case EjectResult::Failed: return false;
+  }
+  return false;
+}
+
 bool HideSearch::better(const State& a, const State& b) const {
   double placed_a = 0, placed_b = 0;
   for (size_t i = 0; i < a.slot_of.size(); ++i) {
@@ -289,8 +296,13 @@ bool HideSearch::better(const State& a, const State& b) const {
     placed_b += b.slot_of[i] >= 0 ? area : 0;
   }
   if (std::abs(placed_a - placed_b) > 1e-9 * std::max(1.0, placed_a)) return placed_a > placed_b;
-  const size_t used_a = used_slots(a).size(), used_b = used_slots(b).size();
-  if (used_a != used_b) return used_a < used_b;
+  const std::vector<int> used_a = used_slots(a), used_b = used_slots(b);
+  if (used_a.size() != used_b.size()) return used_a.size() < used_b.size();
+  // Then less leather (a higher utilisation of the used hides).
+  double area_a = 0, area_b = 0;
+  for (int slot : used_a) area_a += pieces_.slots[slot].container->usable_area_mm2();
+  for (int slot : used_b) area_b += pieces_.slots[slot].container->usable_area_mm2();
+  if (std::abs(area_a - area_b) > 1e-9 * area_a) return area_a < area_b;
   return concentration(pieces_, a.slot_of) > concentration(pieces_, b.slot_of) * (1 + 1e-9);
 }
 
@@ -346,7 +358,7 @@ Layout HideSearch::run() {
       // allows (or one hide holds everything that fits) only smaller hides are left to try.
       if (used.size() < 2 || used.size() <= area_bound(current)) {
         if (streak >= kShrinkTries) break;
-        success = shrink(trial, streak, seed, Effort{1});
+        success = streak % 2 ? chain(trial, streak / 2, seed, Effort{1}) : shrink(trial, streak / 2, seed, Effort{1});
         streak = success ? 0 : streak + 1;
       } else {
         const long cycles = streak / (kPerTarget * static_cast<long>(used.size()));
@@ -364,7 +376,8 @@ Layout HideSearch::run() {
           continue;
         }
         const Effort effort{static_cast<int>(cycles)};
-        success = move_or_swap(trial, streak, seed, effort);
+        success = streak % kChainPeriod == kChainPeriod - 1 ? chain(trial, streak / kChainPeriod, seed, effort)
+                                                            : move_or_swap(trial, streak / kChainPeriod, seed, effort);
         streak = success ? 0 : streak + 1;
       }
     }

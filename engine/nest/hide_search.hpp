@@ -15,22 +15,28 @@
 //   has been closed (knapsack form).
 // - move: one unit of a little-filled hide (the least filled first, the smaller hide on a tie; after
 //   4 failed attempts the next hide) goes, by the same insertion, onto a hide at least as full.
-// Once a whole cycle over the used hides failed (effort level 1), every fourth attempt is a move and
-// the others are:
+// - chain (every other attempt, at every level): an ejection chain (engine/nest/hide_eject) empties a
+//   used hide as a whole, the used hides in turn, least filled first, into the others by separation,
+//   ejecting what cannot be separated; on every other round an unused smaller hide joins the
+//   destinations (a big hide replaced by a smaller one). Kept when the hide is empty, or when the
+//   chain stopped early and put the rest back but the hides got more concentrated.
+// Once a whole cycle over the used hides failed (effort level 1), every fourth of the other attempts
+// is a move and the others are:
 // - swap: one unit of a little-filled hide and a smaller unit of a hide at least as full change places;
 // - re-pack: that hide and a fuller one packed again by the greedy, the fuller first, in a perturbed
 //   largest-first order (engine/nest/hide_repack);
 // - shrink: every unit of a used hide onto an unused smaller hide, no dearer, that has room for
 //   their area (the same pieces on less leather; also the only move left once the used hides are as
 //   few as their area allows).
-// All of them raise the sum over hides of placed area x fill, so none undoes another; a hide that
-// loses its last unit is closed (multi-hide form: fewer hides, the others fuller). Each level of
+// All of them (but an emptying chain) raise the sum over hides of placed area x fill, so none undoes
+// another; a hide that loses its last unit is closed (multi-hide form: fewer hides, the others fuller). Each level of
 // effort (a failed cycle) lengthens the separations, adds a destination and drops the inserted piece
 // at a random pose instead of the hide's centre; a success resets it. Restarts: the outcome hangs on
 // a few lucky moves early on, so a trajectory that still uses more hides than the best one after a
 // failed cycle (one as good as the best: after three) is dropped for a new one from the greedy in a
-// perturbed order; the best of all trajectories is returned. The search runs until the budget (or,
-// at the area bound, until 40 shrinks in a row failed).
+// perturbed order; the best of all trajectories is returned (the fewest hides, then the least
+// leather, then the most concentrated). The search runs until the budget (or, at the area bound, where
+// only shrinks and replacing chains are left, until 40 of them in a row failed).
 // Pair groups move as one unit and must end near each other (engine/nest/hide_pieces).
 // Deterministic for the seed, sweep workers and iteration budget; the time limit only stops it (a
 // round cut short is dropped). No threads of its own: sweeps go through NestOptions::run_parallel.

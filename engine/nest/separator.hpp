@@ -51,6 +51,9 @@ class Separator {
   const std::vector<PieceState>& state() const { return state_; }
   // Sum of all unweighted losses (0: feasible).
   double total_overlap() const;
+  // The unweighted loss of one pair (i != j) and of piece i against the container (0: clear).
+  double pair_loss(int i, int j) const { return overlap_[static_cast<size_t>(i) * n_ + j]; }
+  double exterior_loss(int i) const { return exterior_[i]; }
   // Sum of all losses times their GLS weights: what a sweep lowers.
   double total_weighted_overlap() const;
   // Back to weight 1 for every pair (the start of a separation).
