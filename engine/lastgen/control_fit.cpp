@@ -114,9 +114,13 @@ void fit_control_least_squares(QuadMesh& control, const QuadTopology& topology, 
       const Eigen::Vector3d foot = sample.on_rim ? targets.onto_rim(p) : targets.onto_surface(p);
       position.row(r) = p.transpose();
       target.row(r) = foot.transpose();
+      // Weights only grow (a sample once held harder stays so): the factor is rebuilt only when a
+      // sample newly needs holding, and the iteration cannot flip a sample back and forth.
       const double weight = targets.weight(p, foot);
-      if (weight != sample_weight(r)) changed = true;
-      sample_weight(r) = weight;
+      if (weight > sample_weight(r)) {
+        changed = true;
+        sample_weight(r) = weight;
+      }
     }
     if (changed) {
       const Eigen::SparseMatrix<double> normal =

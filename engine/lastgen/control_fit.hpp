@@ -26,7 +26,8 @@ struct ControlFitTargets {
   std::function<Eigen::Vector3d(const Eigen::Vector3d&)> onto_rim;
   // The weight of a sample's squared distance given its position and its foot point (mm; 1 =
   // ordinary; heavier where the surface must hold, e.g. on the ground or where it dips below it).
-  // Asked again at every step; the normal equations are factored again when a weight changes.
+  // Asked again at every step; a weight only grows (the largest asked so far counts), and the normal
+  // equations are factored again when one does.
   std::function<double(const Eigen::Vector3d& position, const Eigen::Vector3d& foot)> weight;
 };
 
