@@ -14,7 +14,7 @@ namespace lastcut {
 // How the surface is made: marching tetrahedra + isotropic remeshing onto the solid with its 2 mm top-cut
 // fillet (the default; `lastcut generate --surface legacy`), or the C2 bicubic Bezier surface of a quad
 // control mesh with a sharp, flat top cut (engine/lastgen/bezier_last.hpp; `--surface bezier`). Bezier is
-// not yet the default: the segmentation tests fail on it (docs/subdivision.md).
+// not yet the default: three tests still fail on it (docs/subdivision.md, "The sample last").
 enum class LastSurface { Remeshed, Bezier };
 
 struct LastParams {

@@ -16,8 +16,8 @@
 // top box face is the cap; its cells on the flat of the cut, a rectangle of cap_cells_u x cap_cells_v,
 // are left out, so that the rest is a disk whose boundary loop is the rim. The rim points slide on the
 // rim curve (the body, LastShape::body_value, meets the cut plane) and the others on the body during the
-// area-equalising relaxation of control_relaxation.hpp; then the limit positions are fitted onto the
-// body and the rim as in last_control_mesh.hpp.
+// area-equalising relaxation of control_relaxation.hpp; then the control points are fitted to the body
+// and the rim in the least-squares sense with a fairness term (control_fit.hpp).
 #include <array>
 
 #include "engine/lastgen/last_shape.hpp"

@@ -140,17 +140,30 @@ Eigen::VectorXd fit_height(const TriMesh& mesh, const SoleBasis& basis, const Ei
 
 Eigen::VectorXd smooth_vertex_field(const TriMesh& mesh, const Eigen::VectorXd& areas, Eigen::VectorXd values,
                                     double passes) {
+  return smooth_vertex_field(mesh, areas, std::move(values), passes, std::vector<char>(static_cast<size_t>(mesh.F.rows()), 0));
+}
+
+Eigen::VectorXd smooth_vertex_field(const TriMesh& mesh, const Eigen::VectorXd& areas, Eigen::VectorXd values, double passes,
+                                    const std::vector<char>& plane_faces) {
   const Eigen::Index vertex_count = mesh.V.rows();
+  // A vertex of a plane face averages over its plane faces only.
+  std::vector<char> on_plane(static_cast<size_t>(vertex_count), 0);
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
+    if (plane_faces[static_cast<size_t>(f)])
+      for (int k = 0; k < 3; ++k) on_plane[static_cast<size_t>(mesh.F(f, k))] = 1;
+  const auto counts = [&](Eigen::Index f, int k) { return plane_faces[static_cast<size_t>(f)] || !on_plane[static_cast<size_t>(mesh.F(f, k))]; };
   Eigen::VectorXd total = Eigen::VectorXd::Zero(vertex_count);
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) total(mesh.F(f, k)) += areas(f);
+    for (int k = 0; k < 3; ++k)
+      if (counts(f, k)) total(mesh.F(f, k)) += areas(f);
   Eigen::VectorXd next(vertex_count);
   for (int pass = 0; pass < static_cast<int>(std::ceil(passes)); ++pass) {
     const double share = std::min(1.0, passes - pass);
     next.setZero();
     for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
       const double mean = (values(mesh.F(f, 0)) + values(mesh.F(f, 1)) + values(mesh.F(f, 2))) / 3.0;
-      for (int k = 0; k < 3; ++k) next(mesh.F(f, k)) += areas(f) * mean;
+      for (int k = 0; k < 3; ++k)
+        if (counts(f, k)) next(mesh.F(f, k)) += areas(f) * mean;
     }
     for (Eigen::Index v = 0; v < vertex_count; ++v)
       if (total(v) > 0.0) values(v) += share * (next(v) / total(v) - values(v));

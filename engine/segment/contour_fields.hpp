@@ -35,6 +35,11 @@ struct ContourField {
 // mesh; a fractional last pass moves only that share of the way. values #V, areas #F (mm^2).
 Eigen::VectorXd smooth_vertex_field(const TriMesh& mesh, const Eigen::VectorXd& areas, Eigen::VectorXd values,
                                     double passes);
+// The same, but the vertices of the faces flagged in plane_faces (#F; the flat top cut) average over
+// those faces only: a sharp rim is a crease the average must not cross, or the larger side faces drag
+// the rim's own vertices below the curve (docs/subdivision.md). Faces off the plane still see them.
+Eigen::VectorXd smooth_vertex_field(const TriMesh& mesh, const Eigen::VectorXd& areas, Eigen::VectorXd values, double passes,
+                                    const std::vector<char>& plane_faces);
 
 // depth_mm below the plane fitted to `top` (#F flags): field = signed height above the plane + depth_mm
 // (mm), #V. Returns nothing when the region is too small or not flat (RMS distance to the plane

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <sstream>
 
@@ -26,6 +27,10 @@ constexpr double kSnapFraction = 0.1;      // crossings within 10 % of an edge e
 constexpr double kReferenceEdgeMm = 2.0;   // smoothing_passes are counted on a mesh with edges this long
 constexpr double kGeometricSmoothingPasses = 5.0;   // on the height and depth fields, against scanner noise
 constexpr double kMaxFitRmsMm = 0.8;       // a sole or top cut fitted worse than this is not used
+constexpr double kPlaneBandMm = 0.25;      // a face with all corners this close to the top plane is on it,
+constexpr double kPlaneBandRms = 3.0;      // or this many times the plane fit's RMS (scanner noise)
+constexpr double kSharpRimPassShare = 0.25;  // of the geometric passes, below a sharp rim
+constexpr double kSharpRimTurnRad = 50.0 * std::numbers::pi / 180.0;  // a crease turns more in one edge
 
 std::string fixed(double value, int decimals) {
   std::ostringstream out;
@@ -71,6 +76,38 @@ std::vector<Eigen::Vector3d> loop_points(const TriMesh& mesh, const std::vector<
   points.reserve(loop.size());
   for (int v : loop) points.emplace_back(mesh.V.row(v).transpose());
   return points;
+}
+
+// The faces with all corners on the fitted top plane (within a band that grows with the fit's RMS,
+// so that scanner noise does not break the plane up), #F.
+std::vector<char> faces_on_top_plane(const TriMesh& mesh, const ContourField& top_field, double depth_mm) {
+  const double band_mm = std::max(kPlaneBandMm, kPlaneBandRms * top_field.fit_rms_mm);
+  std::vector<char> plane_faces(static_cast<std::size_t>(mesh.F.rows()), 0);
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    bool flat = true;
+    for (int k = 0; k < 3; ++k) flat = flat && std::abs(top_field.values(mesh.F(f, k)) - depth_mm) < band_mm;
+    plane_faces[static_cast<std::size_t>(f)] = flat;
+  }
+  return plane_faces;
+}
+
+// Whether the plane's faces meet the side at a crease: the median turn of the normal across the edges
+// between a plane face and a side face exceeds kSharpRimTurnRad. A rounded rim (a fillet a few
+// edges wide, as a worn or sanded cut) turns 15-35 deg per edge there (measured on the remeshed
+// last, with 0.2 mm noise and 4x denser), the Bezier last 73 deg.
+bool meets_at_sharp_rim(const TriMesh& mesh, const MeshTopology& topology, const std::vector<char>& plane_faces) {
+  const Eigen::MatrixXd normals = triangle_normals(mesh);
+  std::vector<double> turns;
+  for (std::size_t h = 0; h < topology.across.size(); ++h) {
+    const std::size_t f = h / 3;
+    const int other = topology.across[h];
+    if (!plane_faces[f] || other < 0 || plane_faces[static_cast<std::size_t>(other / 3)]) continue;
+    const double cosine = normals.row(static_cast<Eigen::Index>(f)).dot(normals.row(other / 3));
+    turns.push_back(std::acos(std::clamp(cosine, -1.0, 1.0)));
+  }
+  if (turns.empty()) return false;
+  std::nth_element(turns.begin(), turns.begin() + static_cast<std::ptrdiff_t>(turns.size() / 2), turns.end());
+  return turns[turns.size() / 2] > kSharpRimTurnRad;
 }
 
 }  // namespace
@@ -131,8 +168,23 @@ BandCut cut_band(const OrientedLast& last, const SegmentOptions& options) {
   };
   fields.col(kSoleField) = sole_field ? ramp(sole_field->values, options.feather_height_mm)
                                       : smoothed_indicator(mesh, sole, areas, field_passes);
-  fields.col(kTopField) = top_field ? ramp(top_field->values, options.rim_depth_mm)
-                                    : smoothed_indicator(mesh, top, areas, field_passes);
+  if (top_field) {
+    const std::vector<char> plane_faces = faces_on_top_plane(mesh, *top_field, options.rim_depth_mm);
+    if (meets_at_sharp_rim(mesh, topology, plane_faces)) {
+      // A sharp rim (a crease; the Bezier last, a milled cut): the cap is a plane, so its vertices
+      // need no averaging with the side's, and below the crease the height falls steadily, so its
+      // average does not move the level set and no ramp is needed. A ramp would put every crossing
+      // mid-edge wherever the first vertex row below the crease is deeper than it, and averaging
+      // across the crease pulls the crease's own vertices below the curve (docs/subdivision.md).
+      // Fewer passes: noise along a steep side's normal hardly changes its height, while the average
+      // of a side that curves away below the rim lifts the curve (by 20 % of the depth at full passes).
+      fields.col(kTopField) = smooth_vertex_field(mesh, areas, top_field->values, kSharpRimPassShare * geometric_passes, plane_faces);
+    } else {
+      fields.col(kTopField) = ramp(top_field->values, options.rim_depth_mm);
+    }
+  } else {
+    fields.col(kTopField) = smoothed_indicator(mesh, top, areas, field_passes);
+  }
   result.notes.push_back(sole_field ? "feather line " + fixed(options.feather_height_mm, 2) + " mm above the sole surface (fitted within " +
                                            fixed(sole_field->fit_rms_mm, 2) + " mm RMS)"
                                      : std::string("the sole is not a smooth surface: feather line from the normal angle"));

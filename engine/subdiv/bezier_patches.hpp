@@ -39,6 +39,7 @@
 // at irregular boundary vertices (k >= 4).
 #include <Eigen/Core>
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "engine/subdiv/quad_mesh.hpp"
@@ -59,6 +60,16 @@ struct PatchPoint {
 
 // #Q patches of a quad mesh whose topology was built by build_quad_topology.
 std::vector<BezierPatch> build_bezier_patches(const QuadMesh& mesh, const QuadTopology& topology);
+
+// The same nets as weights of the control vertices: b[i + 4 j] = sum of weight x V.row(vertex) over
+// the entry's (vertex, weight) pairs. Exact where build_bezier_patches is linear in V: everywhere
+// but at the edge points of an extraordinary interior vertex (valence != 4), which take the regular
+// rule's average M_i here instead of its projection onto the limit tangent (the linear part a
+// least-squares fit of V can use; bezier_patches.cpp).
+struct PatchWeights {
+  std::array<std::vector<std::pair<int, double>>, 16> b;
+};
+std::vector<PatchWeights> bezier_patch_weights(const QuadMesh& mesh, const QuadTopology& topology);
 
 // Position and first and second derivatives of the patch at (u, v) in [0, 1]^2.
 PatchPoint evaluate_patch(const BezierPatch& patch, double u, double v);

@@ -18,9 +18,10 @@
 namespace lastcut {
 namespace {
 
-OrientedLast clean_last(int triangles) {
+OrientedLast clean_last(int triangles, LastSurface surface = LastParams{}.surface) {
   LastParams params = LastParams::for_eu_size(41, FootSide::Right);
   params.target_triangles = triangles;
+  params.surface = surface;
   params.seed = 41;
   return orient_last(generate_last(params).mesh);
 }
@@ -106,8 +107,13 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> top_cut_plane(const TriMesh& mesh) {
   return {centre, normal};
 }
 
-TEST(SegmentContours, TopRimRunsTheAskedDepthBelowTheTopCut) {
-  const OrientedLast last = clean_last(12000);
+// The rim at the asked depth on both kinds of top cut: rounded (the remeshed last's 2 mm fillet: a ramp
+// of the field, averaged across the rim) and sharp (the Bezier last's crease, whose first vertex row lies
+// about 3 mm down: the cap kept apart, the side's height unclamped; segment_last.cpp).
+class TopRimDepth : public testing::TestWithParam<LastSurface> {};
+
+TEST_P(TopRimDepth, RunsTheAskedDepthBelowTheTopCut) {
+  const OrientedLast last = clean_last(12000, GetParam());
   const auto [point, normal] = top_cut_plane(last.mesh);
   for (double depth_mm : {1.25, 2.5}) {
     SegmentOptions options;
@@ -126,6 +132,11 @@ TEST(SegmentContours, TopRimRunsTheAskedDepthBelowTheTopCut) {
     EXPECT_NEAR(deepest, depth_mm, 0.5);
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(Surfaces, TopRimDepth, testing::Values(LastSurface::Remeshed, LastSurface::Bezier),
+                         [](const testing::TestParamInfo<LastSurface>& param_info) {
+                           return param_info.param == LastSurface::Bezier ? std::string("sharp") : std::string("rounded");
+                         });
 
 }  // namespace
 }  // namespace lastcut
