@@ -27,8 +27,13 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::file
   const pid_t parent = ::getpid();
   pid_ = ::fork();
   if (pid_ < 0) throw std::runtime_error(std::string("fork failed: ") + std::strerror(errno));
+  if (pid_ > 0 && end_with_parent) {
+    ::setpgid(pid_, pid_);  // also here: whichever of the two runs first
+    group_ = true;
+  }
   if (pid_ == 0) {
     if (end_with_parent) {
+      ::setpgid(0, 0);  // a group of its own: what it starts (a pty bridge, a firmware) ends with it
       ::prctl(PR_SET_PDEATHSIG, SIGTERM);
       if (::getppid() != parent) ::_exit(1);  // the parent died before prctl took effect
     }
@@ -55,13 +60,20 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::file
 
 ChildProcess::~ChildProcess() {
   if (running()) {
-    ::kill(pid_, SIGKILL);
+    signal(SIGKILL);
     wait(5);
   }
+  end_group();
 }
 
 void ChildProcess::signal(int number) const {
-  if (pid_ > 0 && !exited_) ::kill(pid_, number);
+  if (pid_ > 0 && !exited_) ::kill(group_ ? -pid_ : pid_, number);
+}
+
+void ChildProcess::end_group() {
+  // What the child started and left behind (an orphan would spin on after the test).
+  if (group_ && pid_ > 0) ::kill(-pid_, SIGKILL);
+  group_ = false;
 }
 
 bool ChildProcess::running() {
@@ -88,6 +100,7 @@ int ChildProcess::stop(double kill_after_s) {
     signal(SIGKILL);
     wait(5);
   }
+  end_group();
   return exited_ ? status_ : -1;
 }
 

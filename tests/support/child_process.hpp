@@ -16,8 +16,9 @@ class ChildProcess {
   // signal mask and without the test runner's JOURNAL_STREAM and NOTIFY_SOCKET. When exec fails the
   // child exits with 127 (the log says why). With end_with_parent the child gets SIGTERM when the
   // thread that started it ends (a test killed by CTest's timeout never reaches the destructor: a
-  // simulator must not outlive it holding its pty link or port); start such a child from a thread
-  // that outlives it.
+  // simulator must not outlive it holding its pty link or port; start such a child from a thread
+  // that outlives it), and it runs in a process group of its own: signals go to the whole group,
+  // and what is left of the group when the child has ended is killed with it (stop, destructor).
   ChildProcess(const std::vector<std::string>& argv, const std::filesystem::path& log_file,
                bool end_with_parent = false);
   ~ChildProcess();
@@ -33,9 +34,12 @@ class ChildProcess {
   bool running();
 
  private:
+  void end_group();
+
   int pid_ = -1;
   int status_ = -1;
   bool exited_ = false;
+  bool group_ = false;  // end_with_parent: the child leads a process group
 };
 
 // Runs argv to completion (at most timeout_s, then SIGKILL); returns the exit status, -1 on timeout.
