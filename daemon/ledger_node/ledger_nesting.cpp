@@ -5,6 +5,7 @@
 // shared folder, then handed to the ledger (mark_nested, fenced by the batch's lease). Jobs whose
 // molds cannot be placed fail with their reason; jobs that did not fit on a hide wait for the next.
 #include <spdlog/spdlog.h>
+#include <unordered_map>
 
 #include "daemon/ledger_node/ledger_node.hpp"
 #include "daemon/pipeline/engine_steps.hpp"
@@ -70,6 +71,36 @@ Status LedgerNode::nest_on_hide(const ledger::BatchClaim& claim, const MaterialC
   return Status::success();
 }
 
+std::size_t LedgerNode::tell_job_outcomes(const ledger::BatchClaim& claim, const ledger::NestedBatch& nested) {
+  struct Outcome {
+    JobStage stage;
+    const std::string* reason;
+  };
+  std::unordered_map<long long, Outcome> outcome_of;
+  for (const auto& [job_id, reason] : nested.rejected)
+    outcome_of.try_emplace(job_id, Outcome{JobStage::Failed, &reason});
+  for (const auto& [job_id, reason] : nested.waiting)
+    outcome_of.try_emplace(job_id, Outcome{JobStage::Computed, &reason});
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < claim.job_ids.size(); ++i) {
+    const long long job_id = claim.job_ids[i];
+    const std::string& name = claim.job_names[i];
+    const auto found = outcome_of.find(job_id);
+    if (found == outcome_of.end()) {
+      if (nested.cut_file.empty()) continue;  // nothing is cut: the reason is logged for the batch
+      ++kept;
+      job_event(job_id, name, claim.job_tickets[i], claim.batch_id, JobStage::Batched, "");
+      continue;
+    }
+    const auto& [stage, reason] = found->second;
+    if (stage == JobStage::Failed) spdlog::error("job {} ({}): failed: {}", job_id, name, *reason);
+    else spdlog::info("job {} ({}): {}", job_id, name, *reason);
+    // A waiting job is back among the computed ones: no batch.
+    job_event(job_id, name, claim.job_tickets[i], stage == JobStage::Failed ? claim.batch_id : 0, stage, *reason);
+  }
+  return kept;
+}
+
 void LedgerNode::nest_batch(ledger::LedgerClient& client, const ledger::BatchClaim& claim, const std::string& worker) {
   const bool on_hide = claim.hide_id != 0;
   const std::string label =
@@ -116,30 +147,7 @@ void LedgerNode::nest_batch(ledger::LedgerClient& client, const ledger::BatchCla
     spdlog::warn("{}: {}; the nesting is dropped", label, marked.error());
     return;
   }
-  const auto name_of = [&](long long id) {
-    for (std::size_t i = 0; i < claim.job_ids.size(); ++i)
-      if (claim.job_ids[i] == id) return std::make_pair(claim.job_names[i], claim.job_tickets[i]);
-    return std::make_pair(std::string(), std::string());
-  };
-  for (const auto& [job_id, reason] : nested.rejected) {
-    spdlog::error("job {} ({}): failed: {}", job_id, name_of(job_id).first, reason);
-    job_event(job_id, name_of(job_id).first, name_of(job_id).second, claim.batch_id, JobStage::Failed, reason);
-  }
-  for (const auto& [job_id, reason] : nested.waiting) {
-    spdlog::info("job {} ({}): {}", job_id, name_of(job_id).first, reason);
-    job_event(job_id, name_of(job_id).first, name_of(job_id).second, 0, JobStage::Computed, reason);
-  }
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < claim.job_ids.size(); ++i) {
-    const auto gone = [&](const auto& list) {
-      for (const auto& entry : list)
-        if (entry.first == claim.job_ids[i]) return true;
-      return false;
-    };
-    if (gone(nested.rejected) || gone(nested.waiting) || nested.cut_file.empty()) continue;
-    ++kept;
-    job_event(claim.job_ids[i], claim.job_names[i], claim.job_tickets[i], claim.batch_id, JobStage::Batched, "");
-  }
+  const std::size_t kept = tell_job_outcomes(claim, nested);
   if (nested.cut_file.empty()) {
     spdlog::warn("{}: {}; nothing is cut", label, nested.reason.empty() ? "no job could be placed" : nested.reason);
     return;

@@ -90,6 +90,8 @@ class LedgerNode : public JobFlow {
                        const std::filesystem::path& scratch, ledger::NestedBatch& nested);
   Status nest_on_hide(const ledger::BatchClaim& claim, const MaterialConfig& material, const CutterSection& cutter,
                       const std::filesystem::path& scratch, ledger::NestedBatch& nested);
+  // Logs and tells (MQTT) each claimed job how the nesting ended, in claim order; returns the jobs batched.
+  std::size_t tell_job_outcomes(const ledger::BatchClaim& claim, const ledger::NestedBatch& nested);
   std::vector<std::string> hide_materials() const;
   // ledger_station.cpp (one thread per cutter cabled here)
   void station_worker(const std::string& cutter);
