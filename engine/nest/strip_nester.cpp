@@ -199,7 +199,10 @@ Layout nest_strip(const NestInstance& instance, const NestOptions& options) {
               random.uniform(0, best_length));
     } else if (success) {
       if (pool.empty()) shrink = std::min(kShrinkMost, shrink * kShrinkGrowth);
-      restart(shrink, -1);
+      // Cut at a random place, as the compression does (sparrow cuts at the middle while exploring): on
+      // jakobs2 the middle of the strip crosses pieces whose widths add up to the strip, so a middle
+      // cut always leaves overlaps there, while some other cut finds a gap (docs/benchmarks-nest.md).
+      restart(shrink, random.uniform(0, best_length));
     } else if (shrink > kShrinkLeast) {
       // Too bold a shrink: retry the least overlapping layout on a strip half as much shorter than the best.
       shrink = std::max(kShrinkLeast, shrink * kShrinkCut);
