@@ -56,6 +56,12 @@ struct FlattenOptions {
   ArapStart start = ArapStart::Auto;  // ignored with flip_guard (which starts from the Tutte map)
   // Anderson acceleration of the local/global iteration (Peng et al. 2018): same fixed point, fewer iterations.
   bool anderson_acceleration = true;
+  // ARAP whose outline crosses itself is rerun with the outline filter (outline_clearance.hpp) from a start
+  // map with a simple outline: the mold then has a cuttable outline, non-adjacent boundary edges at least
+  // outline_clearance_mm apart. 0.1 mm: five times the mold's outline simplification tolerance (0.02 mm),
+  // so a narrow notch stays a slit the simplified outline does not close, yet well below a knife's accuracy.
+  bool injective_outline = true;
+  double outline_clearance_mm = 0.1;
   // ABF++ (method Abf): Newton iterations at most and the tolerance on ||grad L|| (abf_angles.hpp).
   int abf_max_newton_iterations = 50;
   double abf_gradient_tolerance = 1e-6;
