@@ -15,7 +15,8 @@
 // they are untangled locally (untangle.hpp, star_untangle.hpp) and polished with flip-guarded steps; if
 // that fails, flip-guarded ARAP restarts from the flip-free Tutte embedding (tutte_embedding.hpp, one more
 // factorization). Either way FlattenResult::notes says what happened and flipped_triangles what is left
-// (0 in every case we have seen).
+// (0 in every case we have seen). If the result's outline crosses itself, ARAP is rerun injectively from a
+// start with a simple outline, its steps cut so the outline keeps a clearance (outline_clearance.hpp).
 // LSCM: B. Lévy, S. Petitjean, N. Ray, J. Maillot, SIGGRAPH 2002 (lscm.hpp), for comparison.
 // ABF++: A. Sheffer, B. Lévy, M. Mogilnitsky, A. Bogomyakov, ACM TOG 24(2), 2005: the corner angles by
 // Newton's method (abf_angles.hpp), then the map by least squares (abf_reconstruction.hpp), scaled to the
