@@ -25,7 +25,7 @@ struct ArapIterationReport {
   bool converged = false;      // relative energy change fell below the tolerance
   int shortened_steps = 0;     // global steps shortened so no triangle would flip or collapse
   int rejected_accelerations = 0;  // Anderson steps that did not lower the energy (plain step taken)
-  bool stalled_on_flips = false;  // stopped: even a 1/1024 step would flip or collapse a triangle (or cross the outline)
+  bool stalled_on_flips = false;  // stopped: a 1/1024 step would flip or collapse a triangle or cross the outline
 };
 
 // UV (#V x 2, mm) is the start map on entry and the result on exit. `laplacian` holds the cotangent

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iostream>
 #include <numbers>
+#include <string>
 
 #include "engine/flatten/disk_topology.hpp"
 #include "engine/flatten/flatten.hpp"
@@ -27,7 +28,9 @@ TEST(OutlineClearance, SquareIsSimpleAndBowTieCrosses) {
 }
 
 // A slit: the tip of a notch (vertex 4 at x = 5) approaches the opposite edge 0-1 (y = 0).
-Eigen::MatrixXd notch(double tip_y_mm) { return points({{0, 0}, {10, 0}, {10, 10}, {6, 10}, {5, tip_y_mm}, {4, 10}, {0, 10}}); }
+Eigen::MatrixXd notch(double tip_y_mm) {
+  return points({{0, 0}, {10, 0}, {10, 10}, {6, 10}, {5, tip_y_mm}, {4, 10}, {0, 10}});
+}
 
 TEST(OutlineClearance, StepKeepsTheClearanceOrStopsShortOfIt) {
   const OutlineClearance outline({0, 1, 2, 3, 4, 5, 6}, 0.1);
