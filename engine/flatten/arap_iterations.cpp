@@ -137,6 +137,8 @@ ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const Redu
   std::vector<char> state_now, state_candidate;
   if (flip_guard) classify_triangles(frames, UV, state_now);
 
+  Eigen::MatrixXd last_injective;
+  if (!flip_guard && outline != nullptr) last_injective = UV;
   double energy = local_step(frames, corner, UV, constant_energy, rhs);
   report.energy_start = energy;
   for (int iteration = 0; iteration < max_iterations; ++iteration) {
@@ -226,6 +228,16 @@ ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const Redu
       }
     }
     ++report.iterations;
+    if (!flip_guard && outline != nullptr) {
+      // Unguarded with an outline: stop at the first iterate that folds or crosses, keeping the one before.
+      classify_triangles(frames, UV, state_candidate);
+      const bool flipped = std::find(state_candidate.begin(), state_candidate.end(), kFlipped) != state_candidate.end();
+      if (flipped || outline->crosses(UV)) {
+        UV = last_injective;
+        break;
+      }
+      last_injective = UV;
+    }
     if (previous - energy <= relative_energy_tolerance * previous) {
       report.converged = true;
       break;

@@ -49,20 +49,30 @@ void make_outline_simple(const TriMesh& disk, const TriangleFrames& frames, cons
   if (!outline.crosses(UV)) return;
   Eigen::MatrixXd injective = start_map;
   const bool from_start = count_flipped_triangles(disk.F, injective) == 0 && !outline.crosses(injective);
+  // The unguarded iterations from the start map, replayed (they are deterministic) up to the last iterate
+  // before the first that folds or crosses: injective, and much nearer the minimum than the start map.
+  int replayed = 0;
+  if (from_start) {
+    replayed = run_arap_iterations(frames, laplacian, factor, injective, options.max_iterations,
+                                   options.relative_energy_tolerance, false, options.anderson_acceleration, &outline)
+                   .iterations;
+  }
   if (!from_start) injective = flip_free_start(disk, frames, topology, laplacian, options, result);
   const ArapIterationReport report =
       run_arap_iterations(frames, laplacian, factor, injective, options.max_iterations,
                           options.relative_energy_tolerance, true, options.anderson_acceleration, &outline);
   UV = std::move(injective);
-  result.iterations += report.iterations;
+  result.iterations += replayed + report.iterations;
   result.energy_final = report.energy_final;
   result.converged = report.converged;
+  const std::string from =
+      from_start ? "last of " + std::to_string(replayed) + " replayed ARAP iterations before a crossing or fold"
+                 : std::string("Tutte map");
   char line[300];
   std::snprintf(line, sizeof line,
                 "the ARAP outline crossed itself: reran injective ARAP from the %s (%d iterations, %d steps "
                 "shortened, outline clearance %.2f mm%s)",
-                from_start ? "start map" : "Tutte map", report.iterations, report.shortened_steps,
-                options.outline_clearance_mm,
+                from.c_str(), report.iterations, report.shortened_steps, options.outline_clearance_mm,
                 report.stalled_on_flips ? "; stopped where even a 1/1024 step would fold or cross" : "");
   result.notes.push_back(line);
 }
