@@ -35,6 +35,8 @@ struct ArapIterationReport {
 // With flip_guard and an `outline` filter (outline_clearance.hpp) a step is also halved until the outline
 // keeps its clearance, so a flip-free start with a simple outline stays injective (Smith & Schaefer 2015);
 // then Anderson points are tried too (accelerate) and rejected like plain steps when they fold or cross.
+// Without flip_guard, an `outline` makes the run stop at the first iterate that flips a triangle or whose
+// outline crosses, UV then holding the iterate before it (the injective rerun's start, flatten.cpp).
 // Without `outline` the iterations are exactly those of before.
 ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const ReducedLaplacian& laplacian,
                                         const SparseCholesky& factor, Eigen::MatrixXd& UV, int max_iterations,
