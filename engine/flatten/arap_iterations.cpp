@@ -106,7 +106,8 @@ double local_step(const TriangleFrames& frames, const std::vector<double>& corne
 
 ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const ReducedLaplacian& laplacian,
                                         const SparseCholesky& factor, Eigen::MatrixXd& UV, int max_iterations,
-                                        double relative_energy_tolerance, bool flip_guard, bool accelerate) {
+                                        double relative_energy_tolerance, bool flip_guard, bool accelerate,
+                                        const OutlineClearance* outline) {
   ArapIterationReport report;
   const int vertex_count = static_cast<int>(UV.rows());
   const int pinned = laplacian.pinned;
@@ -136,6 +137,8 @@ ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const Redu
   std::vector<char> state_now, state_candidate;
   if (flip_guard) classify_triangles(frames, UV, state_now);
 
+  Eigen::MatrixXd last_injective;
+  if (!flip_guard && outline != nullptr) last_injective = UV;
   double energy = local_step(frames, corner, UV, constant_energy, rhs);
   report.energy_start = energy;
   for (int iteration = 0; iteration < max_iterations; ++iteration) {
@@ -157,15 +160,43 @@ ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const Redu
     for (Eigen::Index r = 0; r < solution.rows(); ++r) candidate.row(laplacian.vertex_of_row[r]) = solution.row(r);
 
     const double previous = energy;
+    if (flip_guard && outline != nullptr && accelerate) {
+      // Injective mode: an Anderson point is kept only if it lowers the energy, folds nothing and keeps
+      // the outline clear; otherwise the filtered plain step below.
+      accelerated = anderson.mix(Eigen::Map<const Eigen::VectorXd>(UV.data(), UV.size()),
+                                 Eigen::Map<const Eigen::VectorXd>(candidate.data(), candidate.size()))
+                        .reshaped(UV.rows(), 2);
+      const double accelerated_energy = local_step(frames, corner, accelerated, constant_energy, spare_rhs);
+      if (accelerated_energy < previous) {
+        classify_triangles(frames, accelerated, state_candidate);
+        if (no_triangle_worse(state_now, state_candidate) && outline->keeps_clear(UV, accelerated)) {
+          state_now.swap(state_candidate);
+          UV.swap(accelerated);
+          rhs.swap(spare_rhs);
+          energy = accelerated_energy;
+          ++report.iterations;
+          if (previous - energy <= relative_energy_tolerance * previous) {
+            report.converged = true;
+            break;
+          }
+          continue;
+        }
+      }
+      anderson.reset();
+      ++report.rejected_accelerations;
+    }
     if (flip_guard) {
       double step = 1.0;
-      classify_triangles(frames, candidate, state_candidate);
-      bool acceptable = no_triangle_worse(state_now, state_candidate);
+      const auto acceptable_step = [&] {
+        classify_triangles(frames, candidate, state_candidate);
+        return no_triangle_worse(state_now, state_candidate) &&
+               (outline == nullptr || outline->keeps_clear(UV, candidate));
+      };
+      bool acceptable = acceptable_step();
       while (!acceptable && step > 1.0 / 1024.0) {
         step *= 0.5;
         candidate = UV + 0.5 * (candidate - UV);
-        classify_triangles(frames, candidate, state_candidate);
-        acceptable = no_triangle_worse(state_now, state_candidate);
+        acceptable = acceptable_step();
       }
       if (!acceptable) {
         report.stalled_on_flips = true;
@@ -197,6 +228,16 @@ ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const Redu
       }
     }
     ++report.iterations;
+    if (!flip_guard && outline != nullptr) {
+      // Unguarded with an outline: stop at the first iterate that folds or crosses, keeping the one before.
+      classify_triangles(frames, UV, state_candidate);
+      const bool flipped = std::find(state_candidate.begin(), state_candidate.end(), kFlipped) != state_candidate.end();
+      if (flipped || outline->crosses(UV)) {
+        UV = last_injective;
+        break;
+      }
+      last_injective = UV;
+    }
     if (previous - energy <= relative_energy_tolerance * previous) {
       report.converged = true;
       break;

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include "engine/flatten/cotangent_laplacian.hpp"
+#include "engine/flatten/outline_clearance.hpp"
 #include "engine/flatten/sparse_cholesky.hpp"
 
 namespace lastcut {
@@ -24,15 +25,22 @@ struct ArapIterationReport {
   bool converged = false;      // relative energy change fell below the tolerance
   int shortened_steps = 0;     // global steps shortened so no triangle would flip or collapse
   int rejected_accelerations = 0;  // Anderson steps that did not lower the energy (plain step taken)
-  bool stalled_on_flips = false;  // stopped because even a 1/1024 step would flip or collapse a triangle
+  bool stalled_on_flips = false;  // stopped: a 1/1024 step would flip or collapse a triangle or cross the outline
 };
 
 // UV (#V x 2, mm) is the start map on entry and the result on exit. `laplacian` holds the cotangent
 // Laplacian pinned at laplacian.pinned and `factor` its factorization. With flip_guard, a global step that
 // would flip or collapse (UV area < 5% of 3D area) any triangle that was not so before is halved until it does not
 // (the energy still decreases: it is convex in u for fixed rotations), so a flip-free start stays flip-free.
+// With flip_guard and an `outline` filter (outline_clearance.hpp) a step is also halved until the outline
+// keeps its clearance, so a flip-free start with a simple outline stays injective (Smith & Schaefer 2015);
+// then Anderson points are tried too (accelerate) and rejected like plain steps when they fold or cross.
+// Without flip_guard, an `outline` makes the run stop at the first iterate that flips a triangle or whose
+// outline crosses, UV then holding the iterate before it (the injective rerun's start, flatten.cpp).
+// Without `outline` the iterations are exactly those of before.
 ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const ReducedLaplacian& laplacian,
                                         const SparseCholesky& factor, Eigen::MatrixXd& UV, int max_iterations,
-                                        double relative_energy_tolerance, bool flip_guard, bool accelerate = true);
+                                        double relative_energy_tolerance, bool flip_guard, bool accelerate = true,
+                                        const OutlineClearance* outline = nullptr);
 
 }  // namespace lastcut

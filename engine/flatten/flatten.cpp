@@ -13,6 +13,7 @@
 #include "engine/flatten/cotangent_laplacian.hpp"
 #include "engine/flatten/disk_topology.hpp"
 #include "engine/flatten/lscm.hpp"
+#include "engine/flatten/outline_clearance.hpp"
 #include "engine/flatten/plane_rotation_start.hpp"
 #include "engine/flatten/tutte_embedding.hpp"
 #include "engine/flatten/untangle.hpp"
@@ -36,6 +37,44 @@ Eigen::MatrixXd flip_free_start(const TriMesh& disk, const TriangleFrames& frame
   factor.analyze_pattern(laplacian.matrix);
   ++result.factorizations;
   return tutte_embedding(disk, frames, topology, laplacian, factor);
+}
+
+// If UV's outline crosses itself, replaces UV by injective ARAP (outline filter, outline_clearance.hpp) from
+// start_map when that is flip-free with a simple outline, else from the Tutte map (a convex outline).
+void make_outline_simple(const TriMesh& disk, const TriangleFrames& frames, const MeshTopology& topology,
+                         const ReducedLaplacian& laplacian, const SparseCholesky& factor,
+                         const Eigen::MatrixXd& start_map, const FlattenOptions& options, Eigen::MatrixXd& UV,
+                         FlattenResult& result) {
+  const OutlineClearance outline(topology.boundary_loops[0], options.outline_clearance_mm);
+  if (!outline.crosses(UV)) return;
+  Eigen::MatrixXd injective = start_map;
+  const bool from_start = count_flipped_triangles(disk.F, injective) == 0 && !outline.crosses(injective);
+  // The unguarded iterations from the start map, replayed (they are deterministic) up to the last iterate
+  // before the first that folds or crosses: injective, and much nearer the minimum than the start map.
+  int replayed = 0;
+  if (from_start) {
+    replayed = run_arap_iterations(frames, laplacian, factor, injective, options.max_iterations,
+                                   options.relative_energy_tolerance, false, options.anderson_acceleration, &outline)
+                   .iterations;
+  }
+  if (!from_start) injective = flip_free_start(disk, frames, topology, laplacian, options, result);
+  const ArapIterationReport report =
+      run_arap_iterations(frames, laplacian, factor, injective, options.max_iterations,
+                          options.relative_energy_tolerance, true, options.anderson_acceleration, &outline);
+  UV = std::move(injective);
+  result.iterations += replayed + report.iterations;
+  result.energy_final = report.energy_final;
+  result.converged = report.converged;
+  const std::string from =
+      from_start ? "last of " + std::to_string(replayed) + " replayed ARAP iterations before a crossing or fold"
+                 : std::string("Tutte map");
+  char line[300];
+  std::snprintf(line, sizeof line,
+                "the ARAP outline crossed itself: reran injective ARAP from the %s (%d iterations, %d steps "
+                "shortened, outline clearance %.2f mm%s)",
+                from.c_str(), report.iterations, report.shortened_steps, options.outline_clearance_mm,
+                report.stalled_on_flips ? "; stopped where even a 1/1024 step would fold or cross" : "");
+  result.notes.push_back(line);
 }
 
 void run_arap(const TriMesh& disk, const TriangleFrames& frames, const MeshTopology& topology,
@@ -88,6 +127,7 @@ void run_arap(const TriMesh& disk, const TriangleFrames& frames, const MeshTopol
   }
   Eigen::MatrixXd UV = std::move(*start);
   result.seconds_init += seconds_since(clock);
+  const Eigen::MatrixXd start_map = UV;  // where an injective rerun starts if the result's outline crosses
 
   clock = Clock::now();
   const ArapIterationReport report = run_arap_iterations(frames, laplacian, factor, UV, options.max_iterations,
@@ -133,6 +173,8 @@ void run_arap(const TriMesh& disk, const TriangleFrames& frames, const MeshTopol
                              std::to_string(guarded.iterations) + " iterations, more distortion)");
     }
   }
+  if (options.injective_outline)
+    make_outline_simple(disk, frames, topology, laplacian, factor, start_map, options, UV, result);
   result.seconds_iterations += seconds_since(clock);
   result.UV = std::move(UV);
 }
@@ -199,6 +241,7 @@ void run_abf(const TriMesh& disk, const TriangleFrames& frames, const MeshTopolo
 void check_options(const FlattenOptions& options) {
   if (options.max_iterations < 0) throw EngineError("flatten: max_iterations must not be negative");
   if (!(options.relative_energy_tolerance >= 0.0)) throw EngineError("flatten: energy tolerance must be >= 0");
+  if (!(options.outline_clearance_mm >= 0.0)) throw EngineError("flatten: the outline clearance must be >= 0 mm");
   if (options.abf_max_newton_iterations < 0) throw EngineError("flatten: ABF++ Newton iterations must not be negative");
   if (!(options.abf_gradient_tolerance >= 0.0)) throw EngineError("flatten: ABF++ tolerance must be >= 0");
 }

@@ -15,7 +15,8 @@
 // they are untangled locally (untangle.hpp, star_untangle.hpp) and polished with flip-guarded steps; if
 // that fails, flip-guarded ARAP restarts from the flip-free Tutte embedding (tutte_embedding.hpp, one more
 // factorization). Either way FlattenResult::notes says what happened and flipped_triangles what is left
-// (0 in every case we have seen).
+// (0 in every case we have seen). If the result's outline crosses itself, ARAP is rerun injectively from a
+// start with a simple outline, its steps cut so the outline keeps a clearance (outline_clearance.hpp).
 // LSCM: B. Lévy, S. Petitjean, N. Ray, J. Maillot, SIGGRAPH 2002 (lscm.hpp), for comparison.
 // ABF++: A. Sheffer, B. Lévy, M. Mogilnitsky, A. Bogomyakov, ACM TOG 24(2), 2005: the corner angles by
 // Newton's method (abf_angles.hpp), then the map by least squares (abf_reconstruction.hpp), scaled to the
@@ -56,6 +57,12 @@ struct FlattenOptions {
   ArapStart start = ArapStart::Auto;  // ignored with flip_guard (which starts from the Tutte map)
   // Anderson acceleration of the local/global iteration (Peng et al. 2018): same fixed point, fewer iterations.
   bool anderson_acceleration = true;
+  // ARAP whose outline crosses itself is rerun with the outline filter (outline_clearance.hpp) from a start
+  // map with a simple outline: the mold then has a cuttable outline, non-adjacent boundary edges at least
+  // outline_clearance_mm apart. 0.1 mm: five times the mold's outline simplification tolerance (0.02 mm),
+  // so a narrow notch stays a slit the simplified outline does not close, yet well below a knife's accuracy.
+  bool injective_outline = true;
+  double outline_clearance_mm = 0.1;
   // ABF++ (method Abf): Newton iterations at most and the tolerance on ||grad L|| (abf_angles.hpp).
   int abf_max_newton_iterations = 50;
   double abf_gradient_tolerance = 1e-6;
