@@ -43,9 +43,14 @@ bool merge_hides(const NestInstance& instance, const HidePieces& pieces, const N
                  std::vector<int>& slot_of, std::vector<PieceState>& state, const MergeTurn& turn, std::uint64_t seed,
                  const EjectBudget& budget) {
   if (turn.first < 0) return false;
+  // The first hide's pieces mostly find free spots on the spare; the second hide is the hard part:
+  // it gets three times the ejections, two more destinations and twice the separation.
+  EjectBudget deep = budget;
+  deep.max_ejections *= 3, deep.destinations += 2, deep.stale *= 2;
   for (int hide : {turn.first, turn.second}) {
     const EjectResult result = eject_hide(instance, pieces, options, deadline, slot_of, state, hide, turn.destinations,
-                                          stream_seed(seed, static_cast<std::uint64_t>(hide), 41), budget);
+                                          stream_seed(seed, static_cast<std::uint64_t>(hide), 41),
+                                          hide == turn.first ? budget : deep);
     if (result != EjectResult::Emptied) return false;
   }
   return true;

@@ -46,10 +46,7 @@ class HideSearch {
   Layout run();
 
  private:
-  struct State {
-    std::vector<int> slot_of;
-    std::vector<PieceState> state;
-  };
+  struct State { std::vector<int> slot_of; std::vector<PieceState> state; };  // per piece
   double placed_area(const State& s, int slot) const {
     double a = 0;
     for (size_t i = 0; i < s.slot_of.size(); ++i)
@@ -57,9 +54,7 @@ class HideSearch {
     return a;
   }
   double fill(const State& s, int slot) const { return placed_area(s, slot) / pieces_.slots[slot].container->usable_area_mm2(); }
-  double free_area(const State& s, int slot) const {
-    return pieces_.slots[slot].container->usable_area_mm2() - placed_area(s, slot);
-  }
+  double free_area(const State& s, int slot) const { return pieces_.slots[slot].container->usable_area_mm2() - placed_area(s, slot); }
   std::vector<int> used_slots(const State& s) const {
     std::vector<int> used;
     for (int slot : s.slot_of)
@@ -283,8 +278,7 @@ bool HideSearch::chain(State& s, long index, std::uint64_t seed, const Effort& e
   if (index % kMergePeriod == kMergePeriod - 1 && order.size() > area_bound(s))
     return merge_hides(instance_, pieces_, options_, deadline_, s.slot_of, s.state,
                        merge_turn(instance_, pieces_, s.slot_of, order, index / kMergePeriod, kMergeFill), seed, budget);
-  const long turn_index = index - (index + 1) / kMergePeriod;  // the chains that are not merges
-  const EjectTurn turn = eject_turn(instance_, pieces_, order, turn_index, order.size() <= area_bound(s));
+  const EjectTurn turn = eject_turn(instance_, pieces_, order, index - (index + 1) / kMergePeriod, order.size() <= area_bound(s));
   if (turn.target < 0) return false;
   const double before = concentration(pieces_, s.slot_of);
   switch (eject_hide(instance_, pieces_, options_, deadline_, s.slot_of, s.state, turn.target, turn.destinations, seed, budget)) {
@@ -345,10 +339,7 @@ Layout HideSearch::run() {
     // Knapsack: a unit left over, most valuable first.
     int left_over = -1;
     for (int u : by_value)
-      if (!tried[u] && current.slot_of[pieces_.units[u].front()] < 0) {
-        left_over = u;
-        break;
-      }
+      if (left_over < 0 && !tried[u] && current.slot_of[pieces_.units[u].front()] < 0) left_over = u;
     if (left_over >= 0) {
       std::vector<int> destinations = used;
       std::stable_sort(destinations.begin(), destinations.end(),
