@@ -6,7 +6,8 @@
 // covers the pieces' area), utilisation of the used hides' usable area (outline minus holes).
 // Usage: hide_bench [--data DIR] [--limits 10,60] [--threads 2] [--workers 4] [--seed 1]
 //                   [--only NAME[,NAME...]] [--methods search,greedy] [--rounds N] [--svg-dir DIR] [--trace 1]
-//   --trace 1: every improvement on stderr (seconds since start, hides used, utilisation)
+//   --trace 1: every improvement on stderr (seconds since start, hides used, utilisation) and, per
+//              final layout, each used hide's fill and what the least-filled one would need (by area)
 //   --rounds N: N improvement rounds instead of the time limits (a fixed budget: compares two versions on the same work)
 #include <algorithm>
 #include <chrono>
@@ -44,6 +45,32 @@ int area_bound(const lastcut::NestInstance& instance) {
   for (size_t k = 0; k < areas.size(); ++k)
     if ((covered += areas[k]) >= pieces) return static_cast<int>(k + 1);
   return static_cast<int>(areas.size()) + 1;  // not even all hides together
+}
+
+// The fill of each used hide (placed over usable area, the hide's id), least filled first, and the fill
+// the others would reach by area if that hide's pieces went onto them: the room an emptying move has.
+void print_fills(const lastcut::NestInstance& instance, const lastcut::Layout& layout) {
+  std::vector<std::pair<double, double>> hides;  // (placed, usable) per used hide
+  std::vector<int> ids;
+  for (const auto& bin : instance.bins) {
+    double placed = 0;
+    bool used = false;
+    for (const auto& p : layout.placements)
+      if (p.bin == bin.id) used = true, placed += std::abs(lastcut::signed_area(lastcut::find_item(instance, p.item).shape));
+    if (!used) continue;
+    double usable = std::abs(lastcut::signed_area(bin.outer));
+    for (const auto& hole : bin.holes) usable -= std::abs(lastcut::signed_area(hole));
+    hides.emplace_back(placed, usable), ids.push_back(bin.id);
+  }
+  std::vector<size_t> order(hides.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return hides[a].first / hides[a].second < hides[b].first / hides[b].second; });
+  double placed = 0, usable = 0;
+  for (const auto& h : hides) placed += h.first, usable += h.second;
+  std::fprintf(stderr, "%s fills %%:", instance.name.c_str());
+  for (size_t k : order) std::fprintf(stderr, " %d:%.1f", ids[k], 100 * hides[k].first / hides[k].second);
+  if (!order.empty())
+    std::fprintf(stderr, "; without hide %d the others at %.1f %%\n", ids[order[0]], 100 * placed / (usable - hides[order[0]].second));
 }
 
 }  // namespace
@@ -107,6 +134,7 @@ int main(int argc, char** argv) {
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const auto problems = lastcut::check_layout(layout, instance);
         invalid += problems.empty() ? 0 : 1;
+        if (trace) print_fills(instance, layout);
         hides_sum[m] += lastcut::used_bin_count(layout);
         utilisation_sum[m] += layout.utilisation;
         if (!svg_dir.empty())

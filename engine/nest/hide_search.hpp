@@ -19,7 +19,9 @@
 //   used hide as a whole, the used hides in turn, least filled first, into the others by separation,
 //   ejecting what cannot be separated; on every other round an unused smaller hide joins the
 //   destinations (a big hide replaced by a smaller one). Kept when the hide is empty, or when the
-//   chain stopped early and put the rest back but the hides got more concentrated.
+//   chain stopped early and put the rest back but the hides got more concentrated. Every third chain
+//   is a merge (engine/nest/hide_merge): two used hides emptied into the others plus the largest
+//   unused hide, when the hides left could hold the pieces by area (one hide fewer, fewer larger hides).
 // Once a whole cycle over the used hides failed (effort level 1), every fourth of the other attempts
 // is a move and the others are:
 // - swap: one unit of a little-filled hide and a smaller unit of a hide at least as full change places;
