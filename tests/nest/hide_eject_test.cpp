@@ -9,12 +9,16 @@
 
 #include "engine/nest/hide_eject.hpp"
 #include "engine/nest/layout_check.hpp"
+#include "hide_assignment.hpp"
 #include "nest_test_instances.hpp"
 
 namespace lastcut {
 namespace {
 
 using namespace nest_detail;
+using test::HideAssignment;
+using test::pieces_on;
+using test::put;
 
 constexpr double kHideMm = 230, kGapMm = 2, kMarginMm = 5;
 // The room a piece's inflated outline may use: the hide less (margin - gap/2) on each side.
@@ -34,29 +38,10 @@ NestInstance square_hides(int hides) {
   return instance;
 }
 
-struct Assignment {
-  std::vector<int> slot_of;
-  std::vector<PieceState> state;
-};
-
-// Puts `piece` on `slot` at the feasible sampled spot whose box centre is nearest (x, y).
-bool put(const HidePieces& pieces, Assignment& a, int piece, int slot, double x, double y) {
-  const Point2 want(x, y);
-  return place_on_slot(pieces, piece, slot, a.slot_of, a.state,
-                       [want](const Box& b) { return (Point2(0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)) - want).norm(); },
-                       2000, 7);
-}
-
-std::string problems_of(const NestInstance& instance, const HidePieces& pieces, const Assignment& a) {
+std::string problems_of(const NestInstance& instance, const HidePieces& pieces, const HideAssignment& a) {
   std::string text;
   for (const std::string& p : check_layout(hide_layout(instance, pieces, a.slot_of, a.state, {}), instance)) text += p + "; ";
   return text;
-}
-
-int pieces_on(const Assignment& a, int slot) {
-  int n = 0;
-  for (int s : a.slot_of) n += s == slot ? 1 : 0;
-  return n;
 }
 
 TEST(HideEject, EmptiesAHideIntoTheGapsOfAnotherBySeparatingIt) {
@@ -67,7 +52,7 @@ TEST(HideEject, EmptiesAHideIntoTheGapsOfAnotherBySeparatingIt) {
   NestOptions options;
   const HidePieces pieces = prepare_hide_pieces(instance, options);
   ASSERT_EQ(pieces.item_of.size(), 4u);
-  Assignment a{std::vector<int>(4, -1), std::vector<PieceState>(4)};
+  HideAssignment a{std::vector<int>(4, -1), std::vector<PieceState>(4)};
   // Hide 0: two squares side by side at mid-height block both columns (60 mm free above and below).
   ASSERT_TRUE(put(pieces, a, 0, 0, 55, kHideMm / 2));
   ASSERT_TRUE(put(pieces, a, 1, 0, kHideMm - 55, kHideMm / 2));
@@ -75,7 +60,7 @@ TEST(HideEject, EmptiesAHideIntoTheGapsOfAnotherBySeparatingIt) {
   ASSERT_TRUE(put(pieces, a, 3, 1, kHideMm, kHideMm));
   ASSERT_EQ(problems_of(instance, pieces, a), "");
   {  // No free spot is left on hide 0: a plain insertion cannot empty hide 1.
-    Assignment probe = a;
+    HideAssignment probe = a;
     probe.slot_of[2] = -1;
     EXPECT_FALSE(put(pieces, probe, 2, 0, kHideMm / 2, kHideMm / 2));
   }
@@ -99,7 +84,7 @@ TEST(HideEject, ASmallPieceMakesRoomByMovingOnToAThirdHide) {
   NestOptions options;
   const HidePieces pieces = prepare_hide_pieces(instance, options);
   ASSERT_EQ(pieces.item_of.size(), 4u);
-  Assignment a{std::vector<int>(4, -1), std::vector<PieceState>(4)};
+  HideAssignment a{std::vector<int>(4, -1), std::vector<PieceState>(4)};
   ASSERT_TRUE(put(pieces, a, 0, 0, 0, kHideMm / 2));
   ASSERT_TRUE(put(pieces, a, 1, 0, kHideMm / 2 + 30, kHideMm / 2));
   ASSERT_TRUE(put(pieces, a, 2, 1, 0, kHideMm / 2));
@@ -110,7 +95,7 @@ TEST(HideEject, ASmallPieceMakesRoomByMovingOnToAThirdHide) {
   ASSERT_GT(usable - 110 * 215 - 50 * 50, usable - 165 * 165);
   const Deadline deadline(60);
   {  // Without an ejection the chain cannot do it.
-    Assignment b = a;
+    HideAssignment b = a;
     EjectBudget no_ejection;
     no_ejection.max_ejections = 0;
     EXPECT_NE(eject_hide(instance, pieces, options, deadline, b.slot_of, b.state, 1, {0, 2}, 1, no_ejection), EjectResult::Emptied);
@@ -128,7 +113,7 @@ TEST(HideEject, TwoHidesThatCanOnlySwapAreRearrangedNotEmptied) {
   instance.items.push_back(test::item(1, test::rectangle(50, 50), 1));
   NestOptions options;
   const HidePieces pieces = prepare_hide_pieces(instance, options);
-  Assignment a{std::vector<int>(2, -1), std::vector<PieceState>(2)};
+  HideAssignment a{std::vector<int>(2, -1), std::vector<PieceState>(2)};
   ASSERT_TRUE(put(pieces, a, 0, 1, kHideMm / 2, kHideMm / 2));
   ASSERT_TRUE(put(pieces, a, 1, 0, kHideMm / 2, kHideMm / 2));
   ASSERT_GE(pieces.slots[0].container->usable_area_mm2() - 50 * 50, 200 * 200);
@@ -152,7 +137,7 @@ TEST(HideEject, ReplacesABigHideByASmallerUnusedOne) {
   const HidePieces pieces = prepare_hide_pieces(instance, options);
   ASSERT_EQ(pieces.slots[0].bin_index, 0);
   ASSERT_EQ(pieces.slots[2].bin_index, 2);
-  Assignment a{std::vector<int>(6, -1), std::vector<PieceState>(6)};
+  HideAssignment a{std::vector<int>(6, -1), std::vector<PieceState>(6)};
   ASSERT_TRUE(put(pieces, a, 0, 0, 0, 0));
   ASSERT_TRUE(put(pieces, a, 1, 0, 400, 400));
   for (int k = 0; k < 4; ++k) ASSERT_TRUE(put(pieces, a, 2 + k, 1, k % 2 ? kHideMm : 0, k / 2 ? kHideMm : 0));

@@ -6,12 +6,16 @@
 
 #include "engine/nest/hide_merge.hpp"
 #include "engine/nest/layout_check.hpp"
+#include "hide_assignment.hpp"
 #include "nest_test_instances.hpp"
 
 namespace lastcut {
 namespace {
 
 using namespace nest_detail;
+using test::HideAssignment;
+using test::pieces_on;
+using test::put;
 
 constexpr double kBigMm = 230, kSmallMm = 130, kGapMm = 2, kMarginMm = 5;
 // The room a piece's inflated outline may use: the hide less (margin - gap/2) on each side.
@@ -33,24 +37,6 @@ NestInstance merge_instance() {
   return instance;
 }
 
-struct Assignment {
-  std::vector<int> slot_of;
-  std::vector<PieceState> state;
-};
-
-bool put(const HidePieces& pieces, Assignment& a, int piece, int slot, double x, double y) {
-  const Point2 want(x, y);
-  return place_on_slot(pieces, piece, slot, a.slot_of, a.state,
-                       [want](const Box& b) { return (Point2(0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)) - want).norm(); },
-                       2000, 7);
-}
-
-int pieces_on(const Assignment& a, int slot) {
-  int n = 0;
-  for (int s : a.slot_of) n += s == slot ? 1 : 0;
-  return n;
-}
-
 TEST(HideMerge, TwoSmallHidesGiveWayToALargerUnusedOne) {
   // A big hide holds four squares only as a 2 x 2 block (2 x 102 <= 222 < 3 x 102), a small one one
   // square (102 <= 130 - 8 < 2 x 102 in height).
@@ -66,7 +52,7 @@ TEST(HideMerge, TwoSmallHidesGiveWayToALargerUnusedOne) {
   ASSERT_EQ(pieces.slots[spare].bin_index, 1);
   ASSERT_EQ(pieces.slots[small_a].bin_index, 2);
   ASSERT_EQ(pieces.slots[small_b].bin_index, 3);
-  Assignment a{std::vector<int>(6, -1), std::vector<PieceState>(6)};
+  HideAssignment a{std::vector<int>(6, -1), std::vector<PieceState>(6)};
   for (int k = 0; k < 4; ++k) ASSERT_TRUE(put(pieces, a, k, full, k % 2 ? kBigMm : 0, k / 2 ? kBigMm : 0));
   ASSERT_TRUE(put(pieces, a, 4, small_a, kBigMm / 2, kSmallMm / 2));
   ASSERT_TRUE(put(pieces, a, 5, small_b, kBigMm / 2, kSmallMm / 2));
