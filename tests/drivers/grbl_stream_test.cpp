@@ -65,7 +65,9 @@ TEST(GrblStream, UsesTheBufferSizeTheMachineReports) {
   const SendResult result = f.send(make_program(150));
   EXPECT_EQ(result.outcome, SendOutcome::Done) << result.reason;
   const auto [received, stats] = f.record();
-  EXPECT_GT(stat_value(stats, "rx_high_water_bytes"), 200);
+  // Above grbl's default 128 bytes proves the reported size is used; how close it gets to 256 depends
+  // on how fast the simulated planner drains, i.e. on the machine's load.
+  EXPECT_GT(stat_value(stats, "rx_high_water_bytes"), 128);
   EXPECT_LE(stat_value(stats, "rx_high_water_bytes"), 256);
   bool logged = false;
   for (const auto& line : result.device_log) logged |= line.find("receive buffer 256 bytes") != std::string::npos;
