@@ -2,7 +2,7 @@
 // against plain baselines measured in the same run, the sparse Cholesky backends, and LSCM vs ABF++ vs ARAP.
 // Usage: bench_flatten [--no-400k] [--arap-only] [--starts] [--methods-only] [--quality RUNS] [--trace]
 //                      [--only NAME-PART] [--save FOLDER] [--from FOLDER] | --split-agreement
-// Prints markdown tables (docs/benchmarks-flatten.md).
+// Prints markdown tables (docs/benchmarks-flatten.md); --help lists the options.
 #include <time.h>
 
 #include <algorithm>
@@ -12,6 +12,8 @@
 #include <cstring>
 #include <optional>
 #include <string>
+
+#include <CLI/CLI.hpp>
 
 #include "bench/flatten/bench_halves.hpp"
 #include "bench/flatten/split_agreement.hpp"
@@ -171,20 +173,24 @@ int main(int argc, char** argv) {
   std::string only;         // run only the halves whose name contains this
   std::string save_folder;  // write each half there as <triangles>.off (to profile one half alone)
   std::string from_folder;  // read the halves from there (OFF in mm, as --save wrote them) instead of making them
-  for (int i = 1; i < argc; ++i) {
-    largest = largest && std::strcmp(argv[i], "--no-400k") != 0;
-    arap_only = arap_only || std::strcmp(argv[i], "--arap-only") == 0;
-    starts = starts || std::strcmp(argv[i], "--starts") == 0;
-    methods_only = methods_only || std::strcmp(argv[i], "--methods-only") == 0;
-    trace = trace || std::strcmp(argv[i], "--trace") == 0;
-    if (std::strcmp(argv[i], "--quality") == 0 && i + 1 < argc) quality_runs = std::atoi(argv[++i]);
-    if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) only = argv[++i];
-    if (std::strcmp(argv[i], "--save") == 0 && i + 1 < argc) save_folder = argv[++i];
-    if (std::strcmp(argv[i], "--from") == 0 && i + 1 < argc) from_folder = argv[++i];
-    if (std::strcmp(argv[i], "--split-agreement") == 0) {  // only the automatic vs expert split table
-      print_split_agreement();
-      return 0;
-    }
+  bool no_400k = false, split_agreement = false;
+  CLI::App app{"Flattening benchmark: ARAP on half lasts against plain baselines, the sparse Cholesky backends, "
+               "LSCM vs ABF++ vs ARAP (markdown tables, docs/benchmarks-flatten.md)"};
+  app.add_flag("--no-400k", no_400k, "skip the 400k-triangle halves");
+  app.add_flag("--arap-only", arap_only, "only the ARAP table");
+  app.add_flag("--starts", starts, "only the comparison of start maps");
+  app.add_flag("--methods-only", methods_only, "only LSCM vs ABF++ vs ARAP");
+  app.add_flag("--trace", trace, "outline distance to the converged map after k iterations");
+  app.add_option("--quality", quality_runs, "only the speed-and-quality table, best of RUNS");
+  app.add_option("--only", only, "only the halves whose name contains this");
+  app.add_option("--save", save_folder, "write each half into this folder as <triangles>.off");
+  app.add_option("--from", from_folder, "read the halves from this folder (OFF in mm, as --save wrote them)");
+  app.add_flag("--split-agreement", split_agreement, "only the automatic vs expert split table");
+  CLI11_PARSE(app, argc, argv);
+  largest = !no_400k;
+  if (split_agreement) {
+    print_split_agreement();
+    return 0;
   }
   std::vector<BenchHalf> halves;
   if (!from_folder.empty()) {
