@@ -160,32 +160,40 @@ ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const Redu
     for (Eigen::Index r = 0; r < solution.rows(); ++r) candidate.row(laplacian.vertex_of_row[r]) = solution.row(r);
 
     const double previous = energy;
-    if (flip_guard && outline != nullptr && accelerate) {
-      // Injective mode: an Anderson point is kept only if it lowers the energy, folds nothing and keeps
-      // the outline clear; otherwise the filtered plain step below.
+    // The Anderson-mixed point of UV and the plain step into `accelerated`, its energy (right-hand side
+    // into spare_rhs).
+    const auto mix_accelerated = [&] {
       accelerated = anderson.mix(Eigen::Map<const Eigen::VectorXd>(UV.data(), UV.size()),
                                  Eigen::Map<const Eigen::VectorXd>(candidate.data(), candidate.size()))
                         .reshaped(UV.rows(), 2);
-      const double accelerated_energy = local_step(frames, corner, accelerated, constant_energy, spare_rhs);
+      return local_step(frames, corner, accelerated, constant_energy, spare_rhs);
+    };
+    const auto take_accelerated = [&](double accelerated_energy) {
+      UV.swap(accelerated);
+      rhs.swap(spare_rhs);
+      energy = accelerated_energy;
+    };
+    bool took_accelerated = false;
+    if (flip_guard && outline != nullptr && accelerate) {
+      // Injective mode: an Anderson point is kept only if it lowers the energy, folds nothing and keeps
+      // the outline clear; otherwise the filtered plain step below.
+      const double accelerated_energy = mix_accelerated();
       if (accelerated_energy < previous) {
         classify_triangles(frames, accelerated, state_candidate);
         if (no_triangle_worse(state_now, state_candidate) && outline->keeps_clear(UV, accelerated)) {
           state_now.swap(state_candidate);
-          UV.swap(accelerated);
-          rhs.swap(spare_rhs);
-          energy = accelerated_energy;
-          ++report.iterations;
-          if (previous - energy <= relative_energy_tolerance * previous) {
-            report.converged = true;
-            break;
-          }
-          continue;
+          take_accelerated(accelerated_energy);
+          took_accelerated = true;
         }
       }
-      anderson.reset();
-      ++report.rejected_accelerations;
+      if (!took_accelerated) {
+        anderson.reset();
+        ++report.rejected_accelerations;
+      }
     }
-    if (flip_guard) {
+    if (took_accelerated) {
+      // Kept above: on to the convergence test.
+    } else if (flip_guard) {
       double step = 1.0;
       const auto acceptable_step = [&] {
         classify_triangles(frames, candidate, state_candidate);
@@ -212,14 +220,9 @@ ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const Redu
     } else {
       // Anderson-accelerated point, kept only if it lowers the energy more than the plain step is
       // guaranteed to (Peng et al. 2018); otherwise the plain step and a fresh history.
-      accelerated = anderson.mix(Eigen::Map<const Eigen::VectorXd>(UV.data(), UV.size()),
-                                 Eigen::Map<const Eigen::VectorXd>(candidate.data(), candidate.size()))
-                        .reshaped(UV.rows(), 2);
-      const double accelerated_energy = local_step(frames, corner, accelerated, constant_energy, spare_rhs);
+      const double accelerated_energy = mix_accelerated();
       if (accelerated_energy < previous) {
-        UV.swap(accelerated);
-        rhs.swap(spare_rhs);
-        energy = accelerated_energy;
+        take_accelerated(accelerated_energy);
       } else {
         anderson.reset();
         ++report.rejected_accelerations;

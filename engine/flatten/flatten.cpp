@@ -56,8 +56,9 @@ void make_outline_simple(const TriMesh& disk, const TriangleFrames& frames, cons
     replayed = run_arap_iterations(frames, laplacian, factor, injective, options.max_iterations,
                                    options.relative_energy_tolerance, false, options.anderson_acceleration, &outline)
                    .iterations;
+  } else {
+    injective = flip_free_start(disk, frames, topology, laplacian, options, result);
   }
-  if (!from_start) injective = flip_free_start(disk, frames, topology, laplacian, options, result);
   const ArapIterationReport report =
       run_arap_iterations(frames, laplacian, factor, injective, options.max_iterations,
                           options.relative_energy_tolerance, true, options.anderson_acceleration, &outline);

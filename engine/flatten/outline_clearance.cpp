@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "engine/core/engine_error.hpp"
+#include "engine/core/polygon.hpp"
 #include "engine/core/segment_predicates.hpp"
 
 namespace lastcut {
@@ -19,13 +20,6 @@ namespace {
 // frozen by them. Requiring such a pair never to narrow stalled the FIND medial half at its first step.
 constexpr double kKeptShare = 0.5;
 
-double point_segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double length_squared = ab.squaredNorm();
-  const double t = length_squared > 0.0 ? std::clamp((p - a).dot(ab) / length_squared, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).norm();
-}
-
 Eigen::Vector2d at(const Eigen::MatrixXd& UV, int vertex) { return UV.row(vertex).transpose(); }
 
 }  // namespace
@@ -33,8 +27,8 @@ Eigen::Vector2d at(const Eigen::MatrixXd& UV, int vertex) { return UV.row(vertex
 double segment_distance_mm(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
                            const Eigen::Vector2d& d) {
   if (segments_touch(a, b, c, d)) return 0.0;
-  return std::min({point_segment_distance(a, c, d), point_segment_distance(b, c, d), point_segment_distance(c, a, b),
-                   point_segment_distance(d, a, b)});
+  return std::min({distance_to_segment(a, c, d), distance_to_segment(b, c, d), distance_to_segment(c, a, b),
+                   distance_to_segment(d, a, b)});
 }
 
 OutlineClearance::OutlineClearance(std::vector<int> loop, double clearance_mm)
