@@ -12,8 +12,12 @@ MergeTurn merge_turn(const NestInstance& instance, const HidePieces& pieces, con
   auto cost = [&](int slot) { return instance.bins[pieces.slots[slot].bin_index].cost; };
   std::vector<double> placed(pieces.slots.size(), 0);
   double placed_sum = 0, used_sum = 0;
-  for (size_t i = 0; i < slot_of.size(); ++i)
-    if (slot_of[i] >= 0) placed[slot_of[i]] += pieces.frames[0][pieces.item_of[i]].area_mm2, placed_sum += pieces.frames[0][pieces.item_of[i]].area_mm2;
+  for (size_t i = 0; i < slot_of.size(); ++i) {
+    if (slot_of[i] < 0) continue;
+    const double area = pieces.frames[0][pieces.item_of[i]].area_mm2;
+    placed[slot_of[i]] += area;
+    placed_sum += area;
+  }
   for (int slot : order) used_sum += usable(slot);
   std::vector<MergeTurn> candidates;
   for (size_t a = 0; a < order.size(); ++a)

@@ -339,7 +339,10 @@ Layout HideSearch::run() {
     // Knapsack: a unit left over, most valuable first.
     int left_over = -1;
     for (int u : by_value)
-      if (left_over < 0 && !tried[u] && current.slot_of[pieces_.units[u].front()] < 0) left_over = u;
+      if (!tried[u] && current.slot_of[pieces_.units[u].front()] < 0) {
+        left_over = u;
+        break;
+      }
     if (left_over >= 0) {
       std::vector<int> destinations = used;
       std::stable_sort(destinations.begin(), destinations.end(),
