@@ -198,4 +198,33 @@ TriMesh spherical_cap(double radius_mm, double cap_deg, int rings, int around) {
   return mesh;
 }
 
+TriMesh helicoidal_ramp(double r_in_mm, double r_out_mm, double sweep_deg, double pitch_mm, int radial, int around) {
+  TriMesh mesh;
+  mesh.V.resize((radial + 1) * (around + 1), 3);
+  const double sweep_rad = sweep_deg * std::numbers::pi / 180.0;
+  for (int j = 0; j <= around; ++j) {
+    const double theta = sweep_rad * j / around;
+    for (int i = 0; i <= radial; ++i) {
+      const double r = r_in_mm + (r_out_mm - r_in_mm) * i / radial;
+      mesh.V.row(j * (radial + 1) + i) << r * std::cos(theta), r * std::sin(theta),
+          pitch_mm * theta / (2.0 * std::numbers::pi);
+    }
+  }
+  mesh.F.resize(2 * radial * around, 3);
+  int f = 0;
+  for (int j = 0; j < around; ++j) {
+    for (int i = 0; i < radial; ++i) {
+      const int a = j * (radial + 1) + i, b = a + 1, c = a + radial + 2, d = a + radial + 1;
+      if ((i + j) % 2 == 0) {
+        mesh.F.row(f++) << a, b, c;
+        mesh.F.row(f++) << a, c, d;
+      } else {
+        mesh.F.row(f++) << a, b, d;
+        mesh.F.row(f++) << b, c, d;
+      }
+    }
+  }
+  return mesh;
+}
+
 }  // namespace lastcut::testing

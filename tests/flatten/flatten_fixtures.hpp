@@ -35,6 +35,12 @@ TriMesh subdivide_midpoint(const TriMesh& mesh);
 // Spherical cap of radius_mm up to polar angle cap_deg, as a ring grid with a fan at the pole (a disk, mm).
 TriMesh spherical_cap(double radius_mm, double cap_deg, int rings, int around);
 
+// A sector of an annulus (radii r_in..r_out) over sweep_deg > 360, lifted along z by pitch_mm per turn: a
+// disk-topology ramp whose metric is close to flat (ds^2 = dr^2 + (r^2 + h^2) dtheta^2 with h = pitch / 2 pi,
+// h/r_in = 0.08), so its near-isometric flattening is an annulus sector that overlaps itself by
+// sweep - 360 degrees. Quads split along alternating diagonals, counter-clockwise seen from above.
+TriMesh helicoidal_ramp(double r_in_mm, double r_out_mm, double sweep_deg, double pitch_mm, int radial, int around);
+
 // Least-squares rigid alignment (rotation + translation, no scaling; Procrustes/Kabsch) of `moving` onto
 // `target` (both #V x 2); returns the largest point distance after alignment (mm).
 double max_distance_after_rigid_alignment(const Eigen::MatrixXd& moving, const Eigen::MatrixXd& target);

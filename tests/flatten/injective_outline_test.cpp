@@ -10,9 +10,12 @@
 #include "engine/flatten/disk_topology.hpp"
 #include "engine/flatten/flatten.hpp"
 #include "engine/flatten/outline_clearance.hpp"
+#include "tests/flatten/flatten_fixtures.hpp"
 
 namespace lastcut {
 namespace {
+
+using testing::helicoidal_ramp;
 
 Eigen::MatrixXd points(std::initializer_list<std::pair<double, double>> xy) {
   Eigen::MatrixXd UV(static_cast<Eigen::Index>(xy.size()), 2);
@@ -47,39 +50,6 @@ TEST(OutlineClearance, StepKeepsTheClearanceOrStopsShortOfIt) {
   EXPECT_FALSE(outline.keeps_clear(notch(0.05), notch(0.0)));
   // Edge 0-1 against the notch's sides, 0.1 mm away: brute force gives the same distance.
   EXPECT_NEAR(outline.smallest_gap_mm(notch(0.1), 1), 0.1, 1e-12);
-}
-
-// A sector of an annulus (radii r_in..r_out) over sweep_deg > 360, lifted along z by pitch_mm per turn: a
-// disk-topology ramp whose metric is close to flat (ds^2 = dr^2 + (r^2 + h^2) dtheta^2 with h = pitch / 2 pi,
-// h/r_in = 0.08), so its near-isometric flattening is an annulus sector that overlaps itself by
-// sweep - 360 degrees. Quads split along alternating diagonals, counter-clockwise seen from above.
-TriMesh helicoidal_ramp(double r_in_mm, double r_out_mm, double sweep_deg, double pitch_mm, int radial, int around) {
-  TriMesh mesh;
-  mesh.V.resize((radial + 1) * (around + 1), 3);
-  const double sweep_rad = sweep_deg * std::numbers::pi / 180.0;
-  for (int j = 0; j <= around; ++j) {
-    const double theta = sweep_rad * j / around;
-    for (int i = 0; i <= radial; ++i) {
-      const double r = r_in_mm + (r_out_mm - r_in_mm) * i / radial;
-      mesh.V.row(j * (radial + 1) + i) << r * std::cos(theta), r * std::sin(theta),
-          pitch_mm * theta / (2.0 * std::numbers::pi);
-    }
-  }
-  mesh.F.resize(2 * radial * around, 3);
-  int f = 0;
-  for (int j = 0; j < around; ++j) {
-    for (int i = 0; i < radial; ++i) {
-      const int a = j * (radial + 1) + i, b = a + 1, c = a + radial + 2, d = a + radial + 1;
-      if ((i + j) % 2 == 0) {
-        mesh.F.row(f++) << a, b, c;
-        mesh.F.row(f++) << a, c, d;
-      } else {
-        mesh.F.row(f++) << a, b, d;
-        mesh.F.row(f++) << b, c, d;
-      }
-    }
-  }
-  return mesh;
 }
 
 TEST(InjectiveArap, HelicoidalRampFlattensWithASimpleOutline) {
