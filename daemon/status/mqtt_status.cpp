@@ -12,6 +12,8 @@ namespace lastcut::daemon {
 namespace {
 
 constexpr int kQos = 1;  // at least once: a retained state or an event is not lost on a dropped packet
+// How long a reconnection waits for libmosquitto's resent messages to be confirmed (see run()).
+constexpr std::chrono::seconds kResendWait(5);
 
 }  // namespace
 
@@ -144,6 +146,8 @@ void MqttStatus::on_disconnect(mosquitto*, void* self, int code) {
 void MqttStatus::on_publish(mosquitto*, void* self, int message_id) {
   auto& status = *static_cast<MqttStatus*>(self);
   std::lock_guard lock(status.mutex_);
+  if (status.unconfirmed_ > 0) --status.unconfirmed_;
+  if (status.unconfirmed_ == 0) status.wake_.notify_all();
   if (status.collecting_acks_) {
     status.acknowledged_ids_.insert(message_id);
     status.wake_.notify_all();
@@ -202,6 +206,14 @@ void MqttStatus::run() {
     });
     if (stopping_) return;
     if (republish_all_) {
+      // After a reconnection libmosquitto resends the QoS 1 messages that were in flight when the link
+      // dropped. A retained value resent after the current one would win at the broker (seen: the idle
+      // progress of the start over the finished batch's), so the current state goes out again only
+      // once those are confirmed; what is not confirmed within kResendWait is taken as lost.
+      wake_.wait_for(lock, kResendWait, [this] { return stopping_ || !connected_ || unconfirmed_ == 0; });
+      if (stopping_) return;
+      if (!connected_) continue;
+      unconfirmed_ = 0;
       for (const auto& [topic, payload] : retained_) dirty_.insert(topic);
       republish_all_ = false;
     }
@@ -223,8 +235,17 @@ bool MqttStatus::flush() {
     events.swap(events_);
   }
   const auto publish = [this](const Message& message, bool retain) {
-    return mosquitto_publish(client_, nullptr, message.topic.c_str(), static_cast<int>(message.payload.size()),
-                             message.payload.data(), kQos, retain) == MOSQ_ERR_SUCCESS;
+    {
+      std::lock_guard lock(mutex_);
+      ++unconfirmed_;  // before the call: the broker may confirm before mosquitto_publish returns
+    }
+    const bool sent = mosquitto_publish(client_, nullptr, message.topic.c_str(), static_cast<int>(message.payload.size()),
+                                        message.payload.data(), kQos, retain) == MOSQ_ERR_SUCCESS;
+    if (!sent) {
+      std::lock_guard lock(mutex_);
+      if (unconfirmed_ > 0) --unconfirmed_;
+    }
+    return sent;
   };
   // What was not sent goes back in front of anything queued meanwhile, in order; the limit holds.
   const auto put_back = [this, &events] {

@@ -11,6 +11,7 @@
 // backoff (1 s doubling to 10 s); meanwhile the retained state is kept current in memory and job
 // events queue up to [status] queue_limit (the oldest dropped first, counted and logged). At each
 // (re)connection the station's "online" and every cutter's retained topics are published again,
+// once libmosquitto's resent in-flight messages are confirmed (an older value must not land last),
 // so subscribers see current state after a broker restart without persistence. The last will
 // sets "online" to "false" when the daemon dies without a clean stop; stop() sets it itself.
 // Each change of the link (connected, lost, back, refused) is logged once.
@@ -85,6 +86,7 @@ class MqttStatus final : public StatusObserver {
   std::size_t dropped_events_ = 0;                // since the last "back" log line
   std::map<std::string, CutterStatus> cutters_;   // last reported, for change detection
   std::map<std::string, std::size_t> percent_sent_;  // cutter -> last progress percent published
+  std::size_t unconfirmed_ = 0;                   // QoS 1 publishes the broker has not confirmed yet
   bool collecting_acks_ = false;                  // stopping: waiting for online = "false" to be confirmed
   std::set<int> acknowledged_ids_;
 };
