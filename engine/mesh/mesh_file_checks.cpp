@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -25,11 +26,23 @@ std::string lower(std::string text) {
 }
 
 std::string read_all(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw EngineError("cannot read " + path.string() + ": " + std::strerror(errno));
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
+  std::string text(static_cast<size_t>(in.tellg()), '\0');
+  in.seekg(0);
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<size_t>(in.gcount()));
+  return text;
+}
+
+// A vertex value as a float, correctly rounded as OpenMesh's reader (istream >> float) rounds it; a
+// leading '+' is allowed as there. "" when read, else why not (in the words of a refusal).
+const char* read_float(std::string_view token, float& value) {
+  if (token.size() > 1 && token[0] == '+' && token[1] != '-' && token[1] != '+') token.remove_prefix(1);
+  const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+  if (end != token.data() + token.size() || error == std::errc::invalid_argument) return "is not a number";
+  if (error == std::errc::result_out_of_range) return "is out of range";
+  return "";
 }
 
 std::string read_prefix(const std::filesystem::path& path, size_t bytes) {
@@ -210,52 +223,63 @@ MeshFileFacts check_ply(const std::filesystem::path& path, int max_triangles) {
   return facts;
 }
 
-// Counts the vertex and face records after the OFF header (numbers only, no conversion to
-// coordinates), reading the whole file at once: line-by-line streams are far too slow here.
-void check_off_records(const std::filesystem::path& path, const MeshFileFacts& facts) {
+// Reads the vertex and face records after the OFF header into `records` (counts them only when it
+// is null), reading the whole file at once: line-by-line streams are far too slow here.
+void check_off_records(const std::filesystem::path& path, const MeshFileFacts& facts, SoupImporter* records) {
   const std::string name = path.filename().string();
   const std::string text = read_all(path);
   TextTokens tokens(text, true);
   // The header line, then the three counts.
   tokens.skip_line();
   for (int k = 0; k < 3; ++k) tokens.next();
-  // OpenMesh reads the rest as one stream of numbers, with no per-line structure: a value it reads
-  // only in part ("7-4") shifts everything after it, and a face size read as an unsigned int from
-  // "-4" (or anything from the colour values OpenMesh does not expect on a plain OFF face line) is
-  // 4 billion corners to store: found by tests/fuzz/off_fuzz.cpp. So every vertex value must be a
-  // number as a whole, the rest of a vertex line is skipped as OpenMesh skips it, every face is a
-  // plain corner count (at most the vertex count), as many plain vertex numbers and nothing else.
-  // A vertex is x y z; OpenMesh drops the rest of its line (a colour), so the check does too.
+  // A file must mean one thing to every reader (OpenMesh reads the rest as one stream of numbers
+  // with no per-line structure, where a value read only in part, "7-4", shifts everything after
+  // it, found by tests/fuzz/off_fuzz.cpp). So every vertex value must be a number as a whole, the
+  // rest of a vertex line is skipped (a colour), every face is a plain corner count (at most the
+  // vertex count), as many plain vertex numbers and nothing else.
+  if (records != nullptr)
+    records->reserve(static_cast<unsigned>(facts.declared_vertices), 0, static_cast<unsigned>(facts.declared_faces));
   const long long values_needed = 3 * facts.declared_vertices;
   long long values = 0;
+  OpenMesh::Vec3f point;
   for (std::string_view value; values < values_needed && !(value = tokens.next()).empty();) {
-    if (!TextTokens::is_number(value))
-      throw EngineError("unreadable OFF " + name + ": vertex value '" + std::string(value.substr(0, 20)) + "' is not a number");
-    if (++values % 3 == 0) tokens.skip_line();
+    if (const std::string_view refusal = read_float(value, point[static_cast<int>(values % 3)]); !refusal.empty())
+      throw EngineError("unreadable OFF " + name + ": vertex value '" + std::string(value.substr(0, 20)) + "' " +
+                        std::string(refusal));
+    if (++values % 3 == 0) {
+      if (records != nullptr) records->add_vertex(point);
+      tokens.skip_line();
+    }
   }
   long long faces = 0;
+  SoupImporter::VHandles corners;
   for (; faces < facts.declared_faces; ++faces) {
     const std::string_view corners_text = tokens.next();
     if (corners_text.empty()) break;
     const std::string face = "unreadable OFF " + name + ": face " + std::to_string(faces + 1);
-    if (!TextTokens::is_count(corners_text, facts.declared_vertices))
+    long long corner_count = 0;
+    if (!TextTokens::read_count(corners_text, facts.declared_vertices, corner_count))
       throw EngineError(face + " has '" + std::string(corners_text.substr(0, 20)) + "' for its number of corners");
-    const long long corners = std::strtoll(std::string(corners_text).c_str(), nullptr, 10);
+    corners.clear();
     long long read = 0;
-    for (std::string_view corner; read < corners && !(corner = tokens.next()).empty(); ++read)
-      if (!TextTokens::is_count(corner, std::numeric_limits<int>::max()))
+    for (std::string_view corner; read < corner_count && !(corner = tokens.next()).empty(); ++read) {
+      long long index = 0;
+      if (!TextTokens::read_count(corner, std::numeric_limits<int>::max(), index))
         throw EngineError(face + " has '" + std::string(corner.substr(0, 20)) + "' for a vertex number");
-    if (read < corners) break;
+      corners.emplace_back(static_cast<int>(index));
+    }
+    if (read < corner_count) break;
     const std::string_view rest = tokens.rest_of_line();
     const size_t used = rest.find_first_not_of(" \t\r\v\f");
     if (used != std::string_view::npos && rest[used] != '#')
       throw EngineError(face + " has more values than its corners (face colours are not read)");
+    if (records != nullptr) records->add_face(corners);
   }
   if (values < values_needed || faces < facts.declared_faces)
     throw truncated_error("OFF", path, facts, values / 3, faces);
 }
 
-MeshFileFacts check_off(const std::filesystem::path& path, int max_triangles) {
+MeshFileFacts check_off(const std::filesystem::path& path, int max_triangles, SoupImporter* records) {
   MeshFileFacts facts = facts_of(MeshFileFormat::Off);
   std::ifstream in(path, std::ios::binary);
   // OpenMesh takes the whole first line as the header and reads the counts after it, as unsigned
@@ -297,13 +321,14 @@ MeshFileFacts check_off(const std::filesystem::path& path, int max_triangles) {
   if (facts.declared_faces <= 0) throw EngineError("no faces in OFF " + path.filename().string());
   check_cap(facts.declared_faces, max_triangles, path);
   // OpenMesh pads a short OFF with made-up faces: check every record is there.
-  check_off_records(path, facts);
+  check_off_records(path, facts, records);
+  facts.records_read = records != nullptr;
   return facts;
 }
 
 }  // namespace
 
-MeshFileFacts inspect_mesh_file(const std::filesystem::path& path, int max_triangles) {
+MeshFileFacts inspect_mesh_file(const std::filesystem::path& path, int max_triangles, SoupImporter* records) {
   std::error_code error;
   const auto status = std::filesystem::status(path, error);
   if (!std::filesystem::exists(status)) throw EngineError("cannot read " + path.string() + ": no such file");
@@ -318,7 +343,7 @@ MeshFileFacts inspect_mesh_file(const std::filesystem::path& path, int max_trian
   if (extension == ".stl") return check_stl(path, size, max_triangles);
   if (extension == ".obj") return check_obj(path, max_triangles);
   if (extension == ".ply") return check_ply(path, max_triangles);
-  return check_off(path, max_triangles);
+  return check_off(path, max_triangles, records);
 }
 
 }  // namespace lastcut

@@ -22,7 +22,6 @@ SoupImporter parse(const std::filesystem::path& path, const MeshFileFacts& facts
   if (facts.format == MeshFileFormat::BinaryStl) options += OpenMesh::IO::Options::Binary;
   if (!OpenMesh::IO::IOManager().read(path.string(), soup, options))
     throw EngineError("unreadable " + facts.format_name + " file " + path.filename().string());
-  if (soup.triangles.empty()) throw EngineError("no triangles in " + path.filename().string());
   return soup;
 }
 
@@ -46,8 +45,10 @@ TriMesh to_trimesh(const SoupImporter& soup, const std::filesystem::path& path) 
 }  // namespace
 
 MeshIntake read_mesh(const std::filesystem::path& path, const MeshReadOptions& options) {
-  const MeshFileFacts facts = inspect_mesh_file(path, options.max_triangles);
-  const SoupImporter soup = parse(path, facts);
+  SoupImporter soup;
+  const MeshFileFacts facts = inspect_mesh_file(path, options.max_triangles, &soup);
+  if (!facts.records_read) soup = parse(path, facts);
+  if (soup.triangles.empty()) throw EngineError("no triangles in " + path.filename().string());
   if (static_cast<long long>(soup.triangles.size()) > options.max_triangles)
     throw EngineError("too many triangles in " + path.filename().string() + ": " + std::to_string(soup.triangles.size()) +
                       " (limit " + std::to_string(options.max_triangles) + ")");

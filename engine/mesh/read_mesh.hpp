@@ -1,5 +1,6 @@
 #pragma once
-// Mesh intake: reads a scan (STL ASCII/binary, OBJ, PLY, OFF through OpenMesh's parsers), finds
+// Mesh intake: reads a scan (STL ASCII/binary, OBJ, PLY through OpenMesh's parsers; ASCII OFF in
+// the pass that checks it, mesh_file_checks.hpp), finds
 // its length unit, repairs what scans contain (duplicate vertices, degenerate and duplicate
 // faces, flipped faces, non-manifold spots, loose scanner debris) and refuses, with one line an
 // operator can act on, what cannot be a usable scan (empty, truncated, NaN, too large, several

@@ -51,8 +51,13 @@ class TextTokens {
   }
   // True for a plain count: digits only, at most `limit`.
   static bool is_count(std::string_view token, long long limit) {
-    if (token.empty() || token.size() > 18) return false;
     long long value = 0;
+    return read_count(token, limit, value);
+  }
+  // As is_count, and the count into `value`.
+  static bool read_count(std::string_view token, long long limit, long long& value) {
+    if (token.empty() || token.size() > 18) return false;
+    value = 0;
     for (char c : token) {
       if (c < '0' || c > '9') return false;
       value = value * 10 + (c - '0');

@@ -205,6 +205,8 @@ TEST(MeshBadInput, OffCountsThatAreNoCounts) {
   expect_refusal([&] { read_mesh(dir / "shifted.off"); }, "face 2 has '3-4' for a vertex number");
   test::write_text(dir / "value.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1-2 0\n0 0 1\n3 0 1 2\n");
   expect_refusal([&] { read_mesh(dir / "value.off"); }, "vertex value '1-2' is not a number");
+  test::write_text(dir / "huge.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1e40 0\n0 0 1\n3 0 1 2\n");
+  expect_refusal([&] { read_mesh(dir / "huge.off"); }, "vertex value '1e40' is out of range");
   test::write_text(dir / "colour.off", vertices + "3 0 1 2 255 0 0\n3 0 1 3\n");
   expect_refusal([&] { read_mesh(dir / "colour.off"); }, "face 1 has more values than its corners");
   // OpenMesh drops what follows x y z on a vertex line; counting it as a face shifted the faces.
