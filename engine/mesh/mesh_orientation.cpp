@@ -33,8 +33,7 @@ double signed_volume_mm3(const TriMesh& mesh) {
   return volume / 6.0;
 }
 
-void keep_largest_component(TriMesh& mesh, double debris_fraction, IntakeReport& report) {
-  const MeshTopology topology = build_mesh_topology(mesh.F, mesh.V.rows());
+void keep_largest_component(TriMesh& mesh, MeshTopology& topology, double debris_fraction, IntakeReport& report) {
   int piece_count = 0;
   const std::vector<int> piece = face_components(topology, {}, piece_count);
   const std::vector<double> piece_area = component_areas(piece, piece_count, triangle_areas(mesh));
@@ -60,10 +59,10 @@ void keep_largest_component(TriMesh& mesh, double debris_fraction, IntakeReport&
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) removed[static_cast<size_t>(f)] = piece[static_cast<size_t>(f)] != ranked[0].second;
   mesh_detail::drop_faces(mesh, removed);
   mesh_detail::drop_unreferenced_vertices(mesh);
+  topology = build_mesh_topology(mesh.F, mesh.V.rows());
 }
 
-int orient_outward(TriMesh& mesh, IntakeReport& report) {
-  const MeshTopology topology = build_mesh_topology(mesh.F, mesh.V.rows());
+int orient_outward(TriMesh& mesh, MeshTopology& topology, IntakeReport& report) {
   std::vector<signed char> flip(static_cast<size_t>(mesh.F.rows()), -1);  // -1 not yet visited
   bool orientable = true;
   for (Eigen::Index seed = 0; seed < mesh.F.rows(); ++seed) {
@@ -93,15 +92,17 @@ int orient_outward(TriMesh& mesh, IntakeReport& report) {
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
     if (flip[static_cast<size_t>(f)] == 1) mesh.F.row(f) = Eigen::RowVector3i(mesh.F(f, 0), mesh.F(f, 2), mesh.F(f, 1));
   int flipped = static_cast<int>(std::count(flip.begin(), flip.end(), 1));
+  bool turned = flipped > 0;
   if (signed_volume_mm3(mesh) < 0.0) {
     mesh.F.col(1).swap(mesh.F.col(2));
     flipped = static_cast<int>(mesh.F.rows()) - flipped;
+    turned = true;
   }
+  if (turned) topology = build_mesh_topology(mesh.F, mesh.V.rows());
   return flipped;
 }
 
-int count_boundary_loops(const TriMesh& mesh) {
-  const MeshTopology topology = build_mesh_topology(mesh.F, mesh.V.rows());
+int count_boundary_loops(const MeshTopology& topology) {
   return static_cast<int>(topology.boundary_loops.size()) + topology.open_boundary_chains;
 }
 

@@ -141,11 +141,11 @@ int flag_faces_in_extra_fans(const TriMesh& mesh, const MeshTopology& topology, 
 
 }  // namespace
 
-int remove_non_manifold_faces(TriMesh& mesh) {
+int remove_non_manifold_faces(TriMesh& mesh, MeshTopology& topology) {
   std::vector<char> removed(static_cast<size_t>(mesh.F.rows()), 0);
   // Removing faces can leave a new bow tie behind; a few rounds settle every case seen in scans.
   for (int round = 0; round < 4; ++round) {
-    MeshTopology topology = build_mesh_topology(mesh.F, mesh.V.rows(), removed);
+    topology = build_mesh_topology(mesh.F, mesh.V.rows(), removed);
     const int crowded = flag_faces_on_crowded_edges(mesh, topology, removed);
     if (crowded > 0) topology = build_mesh_topology(mesh.F, mesh.V.rows(), removed);
     const int fans = flag_faces_in_extra_fans(mesh, topology, removed);
@@ -153,6 +153,7 @@ int remove_non_manifold_faces(TriMesh& mesh) {
   }
   const int dropped = drop_faces(mesh, removed);
   mesh_detail::drop_unreferenced_vertices(mesh);
+  if (dropped > 0) topology = build_mesh_topology(mesh.F, mesh.V.rows());
   return dropped;
 }
 

@@ -6,6 +6,7 @@
 //   remove_non_manifold_faces  faces on edges used more than twice, and the smaller fans at
 //                              vertices where several fans meet only at the vertex
 // Orientation, components and holes follow in mesh_orientation.hpp.
+#include "engine/core/mesh_topology.hpp"
 #include "engine/core/tri_mesh.hpp"
 #include "engine/mesh/read_mesh.hpp"
 
@@ -14,6 +15,7 @@ namespace lastcut {
 int merge_duplicate_vertices(TriMesh& mesh);
 int remove_degenerate_faces(TriMesh& mesh);
 int remove_duplicate_faces(TriMesh& mesh);
-int remove_non_manifold_faces(TriMesh& mesh);
+// topology: set to the topology of the repaired mesh (built here anyway; the steps after it use it).
+int remove_non_manifold_faces(TriMesh& mesh, MeshTopology& topology);
 
 }  // namespace lastcut

@@ -74,16 +74,17 @@ MeshIntake read_mesh(const std::filesystem::path& path, const MeshReadOptions& o
   report.degenerate_faces_removed = static_cast<int>(parser_dropped) + remove_degenerate_faces(mesh);
   report.duplicate_faces_removed = remove_duplicate_faces(mesh);
   const Eigen::Index faces_before = mesh.F.rows();
-  report.non_manifold_faces_removed = remove_non_manifold_faces(mesh);
+  MeshTopology& topology = intake.topology;
+  report.non_manifold_faces_removed = remove_non_manifold_faces(mesh, topology);
   // A few bad spots are repaired; a file that is mostly bad spots is not a scan of a solid.
   if (report.non_manifold_faces_removed > 0.2 * static_cast<double>(faces_before))
     throw EngineError("non-manifold mess in " + path.filename().string() + ": " +
                       std::to_string(report.non_manifold_faces_removed) + " of " + std::to_string(faces_before) +
                       " faces sit on edges or corners shared by too many faces");
   if (mesh.F.rows() == 0) throw EngineError("nothing usable left in " + path.filename().string() + " after repair");
-  keep_largest_component(mesh, options.min_component_fraction, report);
-  report.faces_flipped = orient_outward(mesh, report);
-  report.boundary_loops = count_boundary_loops(mesh);
+  keep_largest_component(mesh, topology, options.min_component_fraction, report);
+  report.faces_flipped = orient_outward(mesh, topology, report);
+  report.boundary_loops = count_boundary_loops(topology);
   if (report.boundary_loops > 0) report.notes.push_back(std::to_string(report.boundary_loops) + " holes left open");
   return intake;
 }

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/mesh_topology.hpp"
 #include "engine/core/tri_mesh.hpp"
 #include "engine/mesh/write_mesh.hpp"
 
@@ -41,6 +42,7 @@ struct IntakeReport {
 
 struct MeshIntake {
   TriMesh mesh;  // mm, one connected 2-manifold piece, outward-oriented
+  MeshTopology topology;  // of mesh (the repair builds it; callers need not build it again)
   IntakeReport report;
 };
 

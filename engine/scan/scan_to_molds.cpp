@@ -24,10 +24,10 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 // A last may carry scan holes (segmentation closes them up to max_hole_fill_diameter_mm across); a
 // larger boundary loop means the scan is an open patch or has a hole too large to close.
-void refuse_open_patch(const TriMesh& mesh, const SegmentOptions& options) {
+void refuse_open_patch(const TriMesh& mesh, const MeshTopology& topology, const SegmentOptions& options) {
   int open_loops = 0;
   double largest_mm = 0.0;
-  for (const auto& loop : simple_boundary_loops(build_mesh_topology(mesh.F, mesh.V.rows()))) {
+  for (const auto& loop : simple_boundary_loops(topology)) {
     const double across_mm = loop_across_mm(mesh.V, loop);
     if (across_mm <= options.max_hole_fill_diameter_mm) continue;
     ++open_loops;
@@ -112,13 +112,13 @@ ScanResult scan_to_molds(const std::filesystem::path& scan, const ScanOptions& o
   clock.lap("read and repair");
 
   if (!options.segment) {
-    const MeshTopology topology = build_mesh_topology(intake.mesh.F, intake.mesh.V.rows());
+    const MeshTopology& topology = intake.topology;
     refuse_closed_patch(topology);
     clock.lap("patch check");
     result.segments.push_back(
         flatten_segment("patch", std::move(intake.mesh), topology, {}, options, result.notes, clock));
   } else {
-    refuse_open_patch(intake.mesh, options.segment_options);
+    refuse_open_patch(intake.mesh, intake.topology, options.segment_options);
     check_is_last(intake.mesh);
     clock.lap("last check");
     const OrientedLast oriented = orient_last(intake.mesh, options.side);
