@@ -107,7 +107,7 @@ double local_step(const TriangleFrames& frames, const std::vector<double>& corne
 ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const ReducedLaplacian& laplacian,
                                         const SparseCholesky& factor, Eigen::MatrixXd& UV, int max_iterations,
                                         double relative_energy_tolerance, bool flip_guard, bool accelerate,
-                                        const OutlineClearance* outline) {
+                                        const OutlineClearance* outline, int give_up_after_crossing) {
   ArapIterationReport report;
   const int vertex_count = static_cast<int>(UV.rows());
   const int pinned = laplacian.pinned;
@@ -137,8 +137,11 @@ ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const Redu
   std::vector<char> state_now, state_candidate;
   if (flip_guard) classify_triangles(frames, UV, state_now);
 
+  const bool stop_before_fold = !flip_guard && outline != nullptr && give_up_after_crossing <= 0;
+  const bool watch_crossing = !flip_guard && outline != nullptr && give_up_after_crossing > 0;
+  int crossed_in_a_row = 0;
   Eigen::MatrixXd last_injective;
-  if (!flip_guard && outline != nullptr) last_injective = UV;
+  if (stop_before_fold) last_injective = UV;
   double energy = local_step(frames, corner, UV, constant_energy, rhs);
   report.energy_start = energy;
   for (int iteration = 0; iteration < max_iterations; ++iteration) {
@@ -231,7 +234,14 @@ ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const Redu
       }
     }
     ++report.iterations;
-    if (!flip_guard && outline != nullptr) {
+    if (watch_crossing) {
+      crossed_in_a_row = outline->crosses(UV) ? crossed_in_a_row + 1 : 0;
+      if (crossed_in_a_row >= give_up_after_crossing) {
+        report.gave_up_crossed = true;
+        break;
+      }
+    }
+    if (stop_before_fold) {
       // Unguarded with an outline: stop at the first iterate that folds or crosses, keeping the one before.
       classify_triangles(frames, UV, state_candidate);
       const bool flipped = std::find(state_candidate.begin(), state_candidate.end(), kFlipped) != state_candidate.end();

@@ -26,6 +26,7 @@ struct ArapIterationReport {
   int shortened_steps = 0;     // global steps shortened so no triangle would flip or collapse
   int rejected_accelerations = 0;  // Anderson steps that did not lower the energy (plain step taken)
   bool stalled_on_flips = false;  // stopped: a 1/1024 step would flip or collapse a triangle or cross the outline
+  bool gave_up_crossed = false;   // stopped: the outline crossed itself give_up_after_crossing iterations in a row
 };
 
 // UV (#V x 2, mm) is the start map on entry and the result on exit. `laplacian` holds the cotangent
@@ -37,10 +38,14 @@ struct ArapIterationReport {
 // then Anderson points are tried too (accelerate) and rejected like plain steps when they fold or cross.
 // Without flip_guard, an `outline` makes the run stop at the first iterate that flips a triangle or whose
 // outline crosses, UV then holding the iterate before it (the injective rerun's start, flatten.cpp).
-// Without `outline` the iterations are exactly those of before.
+// Unless give_up_after_crossing > 0: then the run goes on through folds and crossings, as without
+// `outline`, but gives up (gave_up_crossed) once the outline has crossed itself at that many iterations
+// in a row, UV holding the last iterate: a result whose outline crosses is replaced by the injective
+// rerun anyway, so the iterations after that are wasted (FIND medial half: crossed from the 2nd of 54).
+// Without `outline` the iterations are exactly those of before; with it, the iterates are the same.
 ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const ReducedLaplacian& laplacian,
                                         const SparseCholesky& factor, Eigen::MatrixXd& UV, int max_iterations,
                                         double relative_energy_tolerance, bool flip_guard, bool accelerate = true,
-                                        const OutlineClearance* outline = nullptr);
+                                        const OutlineClearance* outline = nullptr, int give_up_after_crossing = 0);
 
 }  // namespace lastcut

@@ -43,9 +43,8 @@ Eigen::MatrixXd flip_free_start(const TriMesh& disk, const TriangleFrames& frame
 // start_map when that is flip-free with a simple outline, else from the Tutte map (a convex outline).
 void make_outline_simple(const TriMesh& disk, const TriangleFrames& frames, const MeshTopology& topology,
                          const ReducedLaplacian& laplacian, const SparseCholesky& factor,
-                         const Eigen::MatrixXd& start_map, const FlattenOptions& options, Eigen::MatrixXd& UV,
-                         FlattenResult& result) {
-  const OutlineClearance outline(topology.boundary_loops[0], options.outline_clearance_mm);
+                         const OutlineClearance& outline, const Eigen::MatrixXd& start_map,
+                         const FlattenOptions& options, Eigen::MatrixXd& UV, FlattenResult& result) {
   if (!outline.crosses(UV)) return;
   Eigen::MatrixXd injective = start_map;
   const bool from_start = count_flipped_triangles(disk.F, injective) == 0 && !outline.crosses(injective);
@@ -131,9 +130,14 @@ void run_arap(const TriMesh& disk, const TriangleFrames& frames, const MeshTopol
   const Eigen::MatrixXd start_map = UV;  // where an injective rerun starts if the result's outline crosses
 
   clock = Clock::now();
-  const ArapIterationReport report = run_arap_iterations(frames, laplacian, factor, UV, options.max_iterations,
-                                                         options.relative_energy_tolerance, options.flip_guard,
-                                                         options.anderson_acceleration);
+  // Iterations in a row with a crossed outline after which the unguarded run gives up (the injective
+  // rerun replaces its result anyway). No half measured crosses for a while and comes clear again.
+  constexpr int kGiveUpAfterCrossing = 8;
+  const OutlineClearance outline(topology.boundary_loops[0], options.outline_clearance_mm);
+  const bool watch_outline = options.injective_outline && !options.flip_guard;
+  const ArapIterationReport report = run_arap_iterations(
+      frames, laplacian, factor, UV, options.max_iterations, options.relative_energy_tolerance, options.flip_guard,
+      options.anderson_acceleration, watch_outline ? &outline : nullptr, watch_outline ? kGiveUpAfterCrossing : 0);
   result.iterations = report.iterations;
   result.converged = report.converged;
   result.energy_start = report.energy_start;
@@ -141,14 +145,18 @@ void run_arap(const TriMesh& disk, const TriangleFrames& frames, const MeshTopol
   if (report.shortened_steps > 0) {
     result.notes.push_back(std::to_string(report.shortened_steps) + " ARAP steps shortened so that no triangle flips");
   }
-  if (!report.converged && !report.stalled_on_flips) {
+  if (report.gave_up_crossed) {
+    result.notes.push_back("the ARAP outline crossed itself " + std::to_string(kGiveUpAfterCrossing) +
+                           " iterations in a row: stopped after " + std::to_string(report.iterations));
+  } else if (!report.converged && !report.stalled_on_flips) {
     result.notes.push_back("ARAP reached the iteration limit (" + std::to_string(options.max_iterations) +
                            ") before the energy tolerance");
   }
 
   // Repair: ARAP may fold a few triangles where the surface is far from developable. Untangle them
   // locally, then let flip-guarded ARAP steps relax the neighbourhood without folding anything again.
-  const int flips = count_flipped_triangles(disk.F, UV);
+  // A run that gave up on its crossed outline goes straight to the injective rerun.
+  const int flips = report.gave_up_crossed ? 0 : count_flipped_triangles(disk.F, UV);
   if (flips > 0) {
     const UntangleReport untangled = untangle_flips(frames, topology, UV);
     if (untangled.flipped_after == 0) {
@@ -175,7 +183,7 @@ void run_arap(const TriMesh& disk, const TriangleFrames& frames, const MeshTopol
     }
   }
   if (options.injective_outline)
-    make_outline_simple(disk, frames, topology, laplacian, factor, start_map, options, UV, result);
+    make_outline_simple(disk, frames, topology, laplacian, factor, outline, start_map, options, UV, result);
   result.seconds_iterations += seconds_since(clock);
   result.UV = std::move(UV);
 }

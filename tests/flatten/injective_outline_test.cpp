@@ -5,11 +5,14 @@
 #include <cmath>
 #include <iostream>
 #include <numbers>
+#include <optional>
 #include <string>
 
+#include "engine/flatten/arap_iterations.hpp"
 #include "engine/flatten/disk_topology.hpp"
 #include "engine/flatten/flatten.hpp"
 #include "engine/flatten/outline_clearance.hpp"
+#include "engine/flatten/plane_rotation_start.hpp"
 #include "tests/flatten/flatten_fixtures.hpp"
 
 namespace lastcut {
@@ -86,6 +89,43 @@ TEST(InjectiveArap, HelicoidalRampFlattensWithASimpleOutline) {
   std::cout << "ramp (" << ramp.triangle_count() << " triangles): plain D_angle " << d_plain.D_angle << " D_area "
             << d_plain.D_area << "; injective D_angle " << d.D_angle << " D_area " << d.D_area << ", "
             << result.iterations << " iterations, smallest gap " << gap_mm << " mm; " << result.notes.back() << "\n";
+}
+
+// An unguarded run watching its outline stops once the outline has crossed itself 8 iterations in a row
+// (flatten.cpp then reruns injectively), and up to there its iterates are those of the run that does not
+// watch: the same map, bit for bit, after as many iterations.
+TEST(InjectiveArap, AnUnguardedRunGivesUpOnAnOutlineThatStaysCrossed) {
+  const TriMesh ramp = helicoidal_ramp(40.0, 80.0, 420.0, 20.0, 10, 240);
+  const MeshTopology topology = check_disk(ramp);
+  const OutlineClearance outline(topology.boundary_loops[0], 0.1);
+  const TriangleFrames frames = compute_triangle_frames(ramp);
+  const ReducedLaplacian laplacian = pinned_cotangent_laplacian(frames, topology);
+  SparseCholesky factor;
+  factor.analyze_pattern(laplacian.matrix);
+  factor.factorize(laplacian.matrix);
+  const std::optional<Eigen::MatrixXd> plane = plane_rotation_start(ramp, frames, topology, laplacian, factor);
+  ASSERT_TRUE(plane.has_value());
+  const Eigen::MatrixXd start = *plane;
+  constexpr int kMaxIterations = 600;
+  constexpr double kTolerance = 1e-6;
+
+  Eigen::MatrixXd unwatched = start;
+  const ArapIterationReport full = run_arap_iterations(frames, laplacian, factor, unwatched, kMaxIterations, kTolerance, false);
+  ASSERT_TRUE(outline.crosses(unwatched)) << "the premise: the plain run ends crossed";
+
+  Eigen::MatrixXd watched = start;
+  const ArapIterationReport gave_up =
+      run_arap_iterations(frames, laplacian, factor, watched, kMaxIterations, kTolerance, false, true, &outline, 8);
+  EXPECT_TRUE(gave_up.gave_up_crossed);
+  EXPECT_GE(gave_up.iterations, 8);
+  EXPECT_LT(gave_up.iterations, full.iterations);
+  EXPECT_TRUE(outline.crosses(watched));
+
+  Eigen::MatrixXd same_count = start;
+  run_arap_iterations(frames, laplacian, factor, same_count, gave_up.iterations, kTolerance, false);
+  EXPECT_TRUE(same_count == watched) << "the watch changed the iterates";
+  std::cout << "ramp: the plain run takes " << full.iterations << " iterations, the watched one gives up after "
+            << gave_up.iterations << "\n";
 }
 
 }  // namespace
