@@ -135,7 +135,6 @@ size_t pick_from_pool(size_t size, Random& random) {
 Layout nest_strip(const NestInstance& instance, const NestOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const Deadline deadline(options.time_limit_s);
-  const Deadline exploration_end(kExplorationShare * options.time_limit_s);
   const double gap = options.gap_mm.value_or(instance.gap_mm);
   const double margin = options.margin_mm.value_or(instance.margin_mm);
   const double inset = margin - gap / 2;  // outlines are grown by gap / 2
@@ -171,16 +170,23 @@ Layout nest_strip(const NestInstance& instance, const NestOptions& options) {
   };
   restart(shrink, -1);
 
+  // How far the search is through its budget (0..1): separation steps, rounds or time, whichever bounds it.
   const long rounds = options.iteration_limit.value_or(0);
+  auto progress = [&](long rounds_done) {
+    if (options.sweep_limit) return static_cast<double>(separation.steps()) / static_cast<double>(*options.sweep_limit);
+    if (options.iteration_limit) return static_cast<double>(rounds_done) / static_cast<double>(rounds);
+    return seconds_since(start) / options.time_limit_s;
+  };
   for (long round = 0; !options.iteration_limit || round < rounds; ++round) {
-    if (deadline.passed()) break;
-    const bool compressing = options.iteration_limit ? round >= kExplorationShare * static_cast<double>(rounds)
-                                                     : exploration_end.passed();
+    if (deadline.passed() || (options.sweep_limit && separation.steps() >= *options.sweep_limit)) break;
+    const bool compressing = progress(round) >= kExplorationShare;
+    const long step_limit = options.sweep_limit.value_or(ParallelSeparation::kNoStepLimit);
     container.set_length(width);
     separation.set_state(current);
-    const bool success = compressing ? separation.separate(kCompressionStrikes, kCompressionStale, deadline)
-                                     : separation.separate(kExplorationStrikes, kExplorationStale, deadline);
-    if (deadline.passed()) break;  // a round cut short is not deterministic: drop it
+    const bool success = compressing ? separation.separate(kCompressionStrikes, kCompressionStale, deadline, step_limit)
+                                     : separation.separate(kExplorationStrikes, kExplorationStale, deadline, step_limit);
+    // A round cut short by the time or step budget is dropped (it would not be deterministic).
+    if (deadline.passed() || (!success && separation.steps() >= step_limit)) break;
     if (success) {
       const double length = strip_length(pieces.pieces, separation.state(), inset);
       if (length < best_length) {
@@ -191,11 +197,8 @@ Layout nest_strip(const NestInstance& instance, const NestOptions& options) {
       }
     }
     if (compressing) {
-      const double progress = options.iteration_limit
-                                  ? (round + 1 - kExplorationShare * static_cast<double>(rounds)) /
-                                        ((1 - kExplorationShare) * static_cast<double>(rounds))
-                                  : (seconds_since(start) / options.time_limit_s - kExplorationShare) / (1 - kExplorationShare);
-      restart(kCompressionShrinkFirst + std::clamp(progress, 0.0, 1.0) * (kCompressionShrinkLast - kCompressionShrinkFirst),
+      const double phase = (progress(round + 1) - kExplorationShare) / (1 - kExplorationShare);
+      restart(kCompressionShrinkFirst + std::clamp(phase, 0.0, 1.0) * (kCompressionShrinkLast - kCompressionShrinkFirst),
               random.uniform(0, best_length));
     } else if (success) {
       if (pool.empty()) shrink = std::min(kShrinkMost, shrink * kShrinkGrowth);
