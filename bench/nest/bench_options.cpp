@@ -20,6 +20,7 @@ bool BenchOptions::parse(const std::string& key, const std::string& value) {
   else if (key == "--seed") seed = std::strtoull(value.c_str(), nullptr, 10);
   else if (key == "--only") only = value;
   else if (key == "--rounds") rounds = std::atol(value.c_str());
+  else if (key == "--sweeps") sweeps = std::atol(value.c_str());
   else if (key == "--svg-dir") svg_dir = value;
   else if (key == "--limits") {
     limits.clear();

@@ -1,6 +1,6 @@
 #pragma once
 // The options nest_bench and hide_bench share (--data --limits --threads --workers --seed --only
-// --rounds --svg-dir) and the NestOptions they make, with one ThreadTeam (daemon/cli/thread_team.hpp)
+// --rounds --sweeps --svg-dir) and the NestOptions they make, with one ThreadTeam (daemon/cli/thread_team.hpp)
 // started once for all runs: a sweep's tasks do not start threads.
 #include <cstdint>
 #include <filesystem>
@@ -21,14 +21,15 @@ struct BenchOptions {
   std::uint64_t seed = 1;
   std::string only;                     // comma-separated instance names; empty: all
   long rounds = 0;                      // > 0: this many improvement rounds instead of the time limits
+  long sweeps = 0;                      // > 0 (strips): this many separation steps instead of the time limits
   std::filesystem::path svg_dir;        // when set: a picture of every layout
 
   // Takes one `--key value` pair if it is one of the shared options; false for any other key.
   bool parse(const std::string& key, const std::string& value);
   // --only lets the instance named `name` run.
   bool selected(const std::string& name) const;
-  // NestOptions for one run with time limit limit_s on the team's threads (--rounds is the caller's:
-  // nest_bench bounds only its strip runs by rounds).
+  // NestOptions for one run with time limit limit_s on the team's threads (--rounds and --sweeps are
+  // the caller's: nest_bench bounds only its strip runs by them).
   NestOptions nest_options(double limit_s);
 
  private:

@@ -7,6 +7,9 @@
 //                   [--svg-dir DIR]
 //                   [--rounds N]   (N improvement rounds instead of a time limit: a deterministic run whose
 //                                   wall time compares the speed of two builds)
+//                   [--sweeps N]   (strips: N separation steps instead of a time limit: deterministic, and
+//                                   proportional to the work, so two variants of the search compare
+//                                   on equal CPU under any machine load)
 //                   [--trace 1]    (every improvement on stderr: seconds since start, strip length)
 //        nest_bench --limits 20 --svg-dir DIR --instance FILE   (options before --instance)
 #include <algorithm>
@@ -83,6 +86,7 @@ int main(int argc, char** argv) {
       const lastcut::NestInstance instance = lastcut::read_nest_instance(file);
       lastcut::NestOptions options = options_for(limit);
       if (bench.rounds > 0) options.time_limit_s = 1e9, options.iteration_limit = bench.rounds;
+      if (bench.sweeps > 0) options.time_limit_s = 1e9, options.sweep_limit = bench.sweeps;
       const auto start = std::chrono::steady_clock::now();
       if (trace)
         options.on_improvement = [&start, name = file.stem().string()](const lastcut::Layout& l) {
@@ -91,8 +95,9 @@ int main(int argc, char** argv) {
                        l.strip_length.value_or(0), 100 * l.utilisation);
         };
       const lastcut::Layout layout = lastcut::nest(instance, options);
-      if (bench.rounds > 0)
-        std::printf("%s: %ld rounds in %.2f s\n", instance.name.c_str(), bench.rounds,
+      if (bench.rounds > 0 || bench.sweeps > 0)
+        std::printf("%s: %ld %s in %.2f s\n", instance.name.c_str(), bench.sweeps > 0 ? bench.sweeps : bench.rounds,
+                    bench.sweeps > 0 ? "separation steps" : "rounds",
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
       const auto problems = lastcut::check_layout(layout, instance);
       invalid += problems.empty() ? 0 : 1;

@@ -13,6 +13,7 @@ ParallelSeparation::ParallelSeparation(const std::vector<const PreparedItem*>& p
 }
 
 void ParallelSeparation::sweep_all() {
+  ++steps_;
   if (workers_.size() == 1) {
     lead().sweep();
     return;
@@ -41,7 +42,7 @@ void ParallelSeparation::sweep_all() {
   if (winner > 0) lead().adopt(*workers_[winner]);
 }
 
-bool ParallelSeparation::separate(int max_strikes, int max_stale_iterations, const Deadline& deadline) {
+bool ParallelSeparation::separate(int max_strikes, int max_stale_iterations, const Deadline& deadline, long step_limit) {
   lead().reset_weights();
   double best_total = lead().total_overlap();
   if (best_total == 0) return true;
@@ -50,7 +51,7 @@ bool ParallelSeparation::separate(int max_strikes, int max_stale_iterations, con
   for (int strike = 0; strike < max_strikes;) {
     const double strike_start = lead().total_overlap();
     for (int stale = 0; stale < max_stale_iterations;) {
-      if (deadline.passed()) {
+      if (deadline.passed() || steps_ >= step_limit) {
         lead().set_state(best_state);
         return false;
       }

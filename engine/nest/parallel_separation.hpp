@@ -10,6 +10,7 @@
 // are compared by weighted overlap, ties going to the lowest index. More workers than cores still pays
 // off where good moves are rare: each step then tries more sweeps of the same layout.
 #include <functional>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -31,8 +32,12 @@ class ParallelSeparation {
   void set_state(const std::vector<PieceState>& state) { lead().set_state(state); }
   const std::vector<PieceState>& state() const { return workers_.front()->state(); }
   double total_overlap() const { return workers_.front()->total_overlap(); }
-  // Until feasible (true) or out of strikes or time (false; the least overlapping state is kept).
-  bool separate(int max_strikes, int max_stale_iterations, const Deadline& deadline);
+  // Until feasible (true) or out of strikes or time, or once steps() reaches step_limit (false; the
+  // least overlapping state is kept).
+  bool separate(int max_strikes, int max_stale_iterations, const Deadline& deadline, long step_limit = kNoStepLimit);
+  // Separation steps (sweeps of all workers) done so far by this object.
+  long steps() const { return steps_; }
+  static constexpr long kNoStepLimit = std::numeric_limits<long>::max();
 
  private:
   Separator& lead() { return *workers_.front(); }
@@ -41,6 +46,7 @@ class ParallelSeparation {
   std::vector<std::unique_ptr<Separator>> workers_;
   size_t tasks_;
   RunParallel run_parallel_;
+  long steps_ = 0;
 };
 
 }  // namespace lastcut::nest_detail

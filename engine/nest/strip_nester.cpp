@@ -26,7 +26,11 @@ constexpr double kExplorationShare = 0.8;
 // every shrink separates at the first attempt and halves (down to the least) when one fails.
 constexpr double kShrinkFirst = 0.01, kShrinkLeast = 0.001, kShrinkMost = 0.05;
 constexpr double kShrinkGrowth = 1.25, kShrinkCut = 0.5;
-constexpr int kExplorationStrikes = 3, kExplorationStale = 100;
+// Two strikes while exploring (sparrow: 3): a failed separation costs a hundred successful ones, so
+// a cheaper failure buys more attempts; at an equal budget of separation steps the nine instances'
+// gaps summed 3.3 points lower over 16 runs (shapes0 and jakobs2 gained, blaz1 lost;
+// docs/benchmarks-nest.md, ninth session).
+constexpr int kExplorationStrikes = 2, kExplorationStale = 100;
 constexpr int kCompressionStrikes = 5, kCompressionStale = 50;
 constexpr double kCompressionShrinkFirst = 0.0005, kCompressionShrinkLast = 0.00001;
 constexpr size_t kPoolSize = 16;
@@ -135,7 +139,6 @@ size_t pick_from_pool(size_t size, Random& random) {
 Layout nest_strip(const NestInstance& instance, const NestOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const Deadline deadline(options.time_limit_s);
-  const Deadline exploration_end(kExplorationShare * options.time_limit_s);
   const double gap = options.gap_mm.value_or(instance.gap_mm);
   const double margin = options.margin_mm.value_or(instance.margin_mm);
   const double inset = margin - gap / 2;  // outlines are grown by gap / 2
@@ -171,16 +174,23 @@ Layout nest_strip(const NestInstance& instance, const NestOptions& options) {
   };
   restart(shrink, -1);
 
+  // How far the search is through its budget (0..1): separation steps, rounds or time, whichever bounds it.
   const long rounds = options.iteration_limit.value_or(0);
+  auto progress = [&](long rounds_done) {
+    if (options.sweep_limit) return static_cast<double>(separation.steps()) / static_cast<double>(*options.sweep_limit);
+    if (options.iteration_limit) return static_cast<double>(rounds_done) / static_cast<double>(rounds);
+    return seconds_since(start) / options.time_limit_s;
+  };
   for (long round = 0; !options.iteration_limit || round < rounds; ++round) {
-    if (deadline.passed()) break;
-    const bool compressing = options.iteration_limit ? round >= kExplorationShare * static_cast<double>(rounds)
-                                                     : exploration_end.passed();
+    if (deadline.passed() || (options.sweep_limit && separation.steps() >= *options.sweep_limit)) break;
+    const bool compressing = progress(round) >= kExplorationShare;
+    const long step_limit = options.sweep_limit.value_or(ParallelSeparation::kNoStepLimit);
     container.set_length(width);
     separation.set_state(current);
-    const bool success = compressing ? separation.separate(kCompressionStrikes, kCompressionStale, deadline)
-                                     : separation.separate(kExplorationStrikes, kExplorationStale, deadline);
-    if (deadline.passed()) break;  // a round cut short is not deterministic: drop it
+    const bool success = compressing ? separation.separate(kCompressionStrikes, kCompressionStale, deadline, step_limit)
+                                     : separation.separate(kExplorationStrikes, kExplorationStale, deadline, step_limit);
+    // A round cut short by the time or step budget is dropped (it would not be deterministic).
+    if (deadline.passed() || (!success && separation.steps() >= step_limit)) break;
     if (success) {
       const double length = strip_length(pieces.pieces, separation.state(), inset);
       if (length < best_length) {
@@ -191,11 +201,8 @@ Layout nest_strip(const NestInstance& instance, const NestOptions& options) {
       }
     }
     if (compressing) {
-      const double progress = options.iteration_limit
-                                  ? (round + 1 - kExplorationShare * static_cast<double>(rounds)) /
-                                        ((1 - kExplorationShare) * static_cast<double>(rounds))
-                                  : (seconds_since(start) / options.time_limit_s - kExplorationShare) / (1 - kExplorationShare);
-      restart(kCompressionShrinkFirst + std::clamp(progress, 0.0, 1.0) * (kCompressionShrinkLast - kCompressionShrinkFirst),
+      const double phase = (progress(round + 1) - kExplorationShare) / (1 - kExplorationShare);
+      restart(kCompressionShrinkFirst + std::clamp(phase, 0.0, 1.0) * (kCompressionShrinkLast - kCompressionShrinkFirst),
               random.uniform(0, best_length));
     } else if (success) {
       if (pool.empty()) shrink = std::min(kShrinkMost, shrink * kShrinkGrowth);

@@ -3,6 +3,7 @@
 // the layout only improves (anytime).
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <thread>
 
 #include "engine/core/engine_error.hpp"
@@ -63,6 +64,24 @@ TEST(Nester, SameSeedAndRoundsGiveTheSameLayoutOnAnyNumberOfThreads) {
   const Layout other_seed = nest(instance, rounds(6, 2, 6));
   expect_valid(other_seed, instance);
   EXPECT_NE(layout_to_json(a, instance)["placements"].dump(), layout_to_json(other_seed, instance)["placements"].dump());
+}
+
+// A budget of separation steps ends the search long before its time limit, and, like rounds, gives
+// the same layout on any number of threads.
+TEST(Nester, SweepLimitEndsTheSearchAndGivesTheSameLayoutOnAnyNumberOfThreads) {
+  const NestInstance instance = read_nest_instance(LASTCUT_SHARED_DATA_DIR "/nesting/esicup/fu.json");
+  auto steps = [](int threads) {
+    NestOptions options = rounds(1, threads, 3);
+    options.iteration_limit.reset();
+    options.sweep_limit = 300;
+    return options;
+  };
+  const auto start = std::chrono::steady_clock::now();
+  const Layout a = nest(instance, steps(2));
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30.0);  // limit: 60 s
+  const Layout b = nest(instance, steps(1));
+  expect_valid(a, instance);
+  EXPECT_EQ(layout_to_json(a, instance).dump(), layout_to_json(b, instance).dump());
 }
 
 TEST(Nester, GapAndMarginAreKept) {
