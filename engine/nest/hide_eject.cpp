@@ -10,7 +10,6 @@ namespace {
 constexpr int kPlaceSamples = 240;
 constexpr int kSweepWorkers = 2;
 
-Point2 box_centre(const Box& b) { return {0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)}; }
 
 class Chain {
  public:
@@ -22,12 +21,7 @@ class Chain {
   EjectResult run(int target, const std::vector<int>& destinations, std::uint64_t seed);
 
  private:
-  double free_area(int slot) const {
-    double placed = 0;
-    for (size_t i = 0; i < slot_of_.size(); ++i)
-      if (slot_of_[i] == slot) placed += pieces_.frames[0][pieces_.item_of[i]].area_mm2;
-    return pieces_.slots[slot].container->usable_area_mm2() - placed;
-  }
+  double free_area(int slot) const { return free_area_mm2(pieces_, slot_of_, slot); }
   std::vector<int> units_on(int slot) const {
     std::vector<int> units;
     for (size_t i = 0; i < slot_of_.size(); ++i)
@@ -38,11 +32,7 @@ class Chain {
   void take_off(int unit) {
     for (int p : pieces_.units[unit]) slot_of_[p] = -1;
   }
-  Separator::Objective near_first(int first, int slot) const {
-    const PieceState& a = state_[first];
-    const Point2 anchor = box_centre(pieces_.prepared(first, slot).orientations[a.orientation].box.shifted(a.offset));
-    return [anchor](const Box& b) { return (box_centre(b) - anchor).norm(); };
-  }
+  Separator::Objective near_first(int first, int slot) const { return near_piece(pieces_, first, slot, state_[first]); }
   // The chain stopped with `pool` left over: those units back onto the (emptied) target at free spots.
   EjectResult settle_back(int target, std::vector<int> pool, std::uint64_t seed);
   // Every piece of `unit` at a free sampled spot of `slot`, near each other; false when not.
@@ -141,14 +131,7 @@ EjectResult Chain::settle_back(int target, std::vector<int> pool, std::uint64_t 
 }
 
 bool Chain::place_free(int slot, int unit, std::uint64_t seed) {
-  const std::vector<int>& members = pieces_.units[unit];
-  for (size_t m = 0; m < members.size(); ++m) {
-    Separator::Objective objective = [](const Box& b) { return b.x1 + 1e-3 * b.y0; };
-    if (m > 0) objective = near_first(members[0], slot);
-    if (!place_on_slot(pieces_, members[m], slot, slot_of_, state_, objective, kPlaceSamples, stream_seed(seed, 0, m)))
-      return false;
-  }
-  return unit_near(pieces_, instance_, unit, slot, state_);
+  return place_unit_free(pieces_, instance_, unit, slot, slot_of_, state_, kPlaceSamples, seed);
 }
 
 std::vector<int> Chain::insert(int slot, const std::vector<int>& units, std::uint64_t seed) {

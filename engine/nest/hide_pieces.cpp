@@ -210,6 +210,30 @@ bool place_on_slot(const HidePieces& pieces, int piece, int slot, std::vector<in
   return true;
 }
 
+double free_area_mm2(const HidePieces& pieces, const std::vector<int>& slot_of, int slot) {
+  double placed = 0;
+  for (size_t i = 0; i < slot_of.size(); ++i)
+    if (slot_of[i] == slot) placed += pieces.frames[0][pieces.item_of[i]].area_mm2;
+  return pieces.slots[slot].container->usable_area_mm2() - placed;
+}
+
+Separator::Objective near_piece(const HidePieces& pieces, int first, int slot, const PieceState& first_state) {
+  const Box b = pieces.prepared(first, slot).orientations[first_state.orientation].box.shifted(first_state.offset);
+  const Point2 anchor(0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1));
+  return [anchor](const Box& c) { return (Point2(0.5 * (c.x0 + c.x1), 0.5 * (c.y0 + c.y1)) - anchor).norm(); };
+}
+
+bool place_unit_free(const HidePieces& pieces, const NestInstance& instance, int unit, int slot, std::vector<int>& slot_of,
+                     std::vector<PieceState>& state, int samples, std::uint64_t seed) {
+  const std::vector<int>& members = pieces.units[unit];
+  for (size_t m = 0; m < members.size(); ++m) {
+    Separator::Objective objective = [](const Box& b) { return b.x1 + 1e-3 * b.y0; };
+    if (m > 0) objective = near_piece(pieces, members[0], slot, state[members[0]]);
+    if (!place_on_slot(pieces, members[m], slot, slot_of, state, objective, samples, stream_seed(seed, 0, m))) return false;
+  }
+  return unit_near(pieces, instance, unit, slot, state);
+}
+
 std::string unplaced_reason(const HidePieces& pieces, int unit, std::uint64_t seed) {
   const std::vector<int>& members = pieces.units[unit];
   for (size_t s = 0; s < pieces.slots.size(); ++s) {

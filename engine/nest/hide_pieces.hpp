@@ -75,4 +75,17 @@ bool place_on_slot(const HidePieces& pieces, int piece, int slot, std::vector<in
                    std::vector<PieceState>& state, const Separator::Objective& objective, int samples,
                    std::uint64_t seed);
 
+// Usable area of `slot` not taken by the pieces on it in slot_of (per piece), mm^2.
+double free_area_mm2(const HidePieces& pieces, const std::vector<int>& slot_of, int slot);
+
+// place_on_slot's objective for a pair member: the distance of its box centre to that of `first`
+// where it lies on `slot` (first_state), so the member goes next to its first piece.
+Separator::Objective near_piece(const HidePieces& pieces, int first, int slot, const PieceState& first_state);
+
+// Every piece of `unit` at a free sampled spot of `slot`: the first as far left (then low) as the
+// samples allow, the others near it. True when each found a spot and the unit is near; otherwise the
+// pieces placed so far stay placed (the caller undoes them).
+bool place_unit_free(const HidePieces& pieces, const NestInstance& instance, int unit, int slot, std::vector<int>& slot_of,
+                     std::vector<PieceState>& state, int samples, std::uint64_t seed);
+
 }  // namespace lastcut::nest_detail

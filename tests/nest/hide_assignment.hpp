@@ -5,6 +5,7 @@
 
 #include "engine/nest/hide_pieces.hpp"
 #include "engine/nest/nest_geometry.hpp"
+#include "nest_test_instances.hpp"
 
 namespace lastcut::test {
 
@@ -20,6 +21,21 @@ inline bool put(const nest_detail::HidePieces& pieces, HideAssignment& a, int pi
     return (Point2(0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)) - want).norm();
   };
   return nest_detail::place_on_slot(pieces, piece, slot, a.slot_of, a.state, distance_to_want, 2000, 7);
+}
+
+// `hides` square hides of side_mm, with the given gap and margin and no items yet.
+inline NestInstance square_hides(int hides, double side_mm, double gap_mm, double margin_mm) {
+  NestInstance instance;
+  instance.name = "square hides";
+  for (int h = 0; h < hides; ++h) {
+    Bin bin;
+    bin.id = h + 1;
+    bin.outer = rectangle(side_mm, side_mm);
+    instance.bins.push_back(bin);
+  }
+  instance.gap_mm = gap_mm;
+  instance.margin_mm = margin_mm;
+  return instance;
 }
 
 inline int pieces_on(const HideAssignment& a, int slot) {

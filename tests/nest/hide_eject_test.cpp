@@ -24,19 +24,7 @@ constexpr double kHideMm = 230, kGapMm = 2, kMarginMm = 5;
 // The room a piece's inflated outline may use: the hide less (margin - gap/2) on each side.
 constexpr double kRoomMm = kHideMm - 2 * (kMarginMm - kGapMm / 2);
 
-NestInstance square_hides(int hides) {
-  NestInstance instance;
-  instance.name = "square hides";
-  for (int h = 0; h < hides; ++h) {
-    Bin bin;
-    bin.id = h + 1;
-    bin.outer = test::rectangle(kHideMm, kHideMm);
-    instance.bins.push_back(bin);
-  }
-  instance.gap_mm = kGapMm;
-  instance.margin_mm = kMarginMm;
-  return instance;
-}
+NestInstance square_hides(int hides) { return test::square_hides(hides, kHideMm, kGapMm, kMarginMm); }
 
 std::string problems_of(const NestInstance& instance, const HidePieces& pieces, const HideAssignment& a) {
   std::string text;
