@@ -7,7 +7,6 @@ namespace {
 
 constexpr int kSamples = 240;
 
-Point2 box_centre(const Box& b) { return {0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)}; }
 
 }  // namespace
 
@@ -23,11 +22,7 @@ bool repack_hides(const NestInstance& instance, const HidePieces& pieces, std::v
       bool all = true;
       for (size_t m = 0; m < members.size() && all; ++m) {
         Separator::Objective objective = [](const Box& b) { return b.x1 + 1e-3 * b.y0; };
-        if (m > 0) {
-          const PieceState& a = state[members[0]];
-          const Point2 anchor = box_centre(pieces.prepared(members[0], slot).orientations[a.orientation].box.shifted(a.offset));
-          objective = [anchor](const Box& b) { return (box_centre(b) - anchor).norm(); };
-        }
+        if (m > 0) objective = near_piece(pieces, members[0], slot, state[members[0]]);
         all = place_on_slot(pieces, members[m], slot, slot_of, state, objective, m == 0 ? kSamples : 2 * kSamples,
                             stream_seed(seed, k, m));
       }

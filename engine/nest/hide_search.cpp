@@ -54,7 +54,7 @@ class HideSearch {
     return a;
   }
   double fill(const State& s, int slot) const { return placed_area(s, slot) / pieces_.slots[slot].container->usable_area_mm2(); }
-  double free_area(const State& s, int slot) const { return pieces_.slots[slot].container->usable_area_mm2() - placed_area(s, slot); }
+  double free_area(const State& s, int slot) const { return free_area_mm2(pieces_, s.slot_of, slot); }
   std::vector<int> used_slots(const State& s) const {
     std::vector<int> used;
     for (int slot : s.slot_of)
@@ -123,11 +123,7 @@ bool HideSearch::insert_unit(State& s, int unit, int slot, std::uint64_t seed, c
   for (size_t m = 0; m < members.size(); ++m) {
     const int p = members[m];
     Separator::Objective objective = [](const Box& b) { return b.x1 + 1e-3 * b.y0; };
-    if (m > 0 && s.slot_of[members[0]] == slot) {
-      const PieceState& a = s.state[members[0]];
-      const Point2 anchor = box_centre(pieces_.prepared(members[0], slot).orientations[a.orientation].box.shifted(a.offset));
-      objective = [anchor](const Box& b) { return (box_centre(b) - anchor).norm(); };
-    }
+    if (m > 0 && s.slot_of[members[0]] == slot) objective = near_piece(pieces_, members[0], slot, s.state[members[0]]);
     if (!place_on_slot(pieces_, p, slot, s.slot_of, s.state, objective, kPlaceSamples, stream_seed(seed, m, 1)))
       rest.push_back(p);
   }
@@ -165,13 +161,11 @@ bool HideSearch::insert_unit(State& s, int unit, int slot, std::uint64_t seed, c
     if (unit_near(pieces_, instance_, u, slot, s.state)) continue;
     const std::vector<int>& group = pieces_.units[u];
     for (size_t m = 1; m < group.size(); ++m) {
-      const PieceState& a = s.state[group[0]];
-      const Point2 anchor = box_centre(pieces_.prepared(group[0], slot).orientations[a.orientation].box.shifted(a.offset));
+      const Separator::Objective near_first = near_piece(pieces_, group[0], slot, s.state[group[0]]);
       const int old_slot = s.slot_of[group[m]];
       const PieceState old_state = s.state[group[m]];
       s.slot_of[group[m]] = -1;
-      if (!place_on_slot(pieces_, group[m], slot, s.slot_of, s.state,
-                         [anchor](const Box& b) { return (box_centre(b) - anchor).norm(); }, 2 * kPlaceSamples,
+      if (!place_on_slot(pieces_, group[m], slot, s.slot_of, s.state, near_first, 2 * kPlaceSamples,
                          stream_seed(seed, m, 3)))
         s.slot_of[group[m]] = old_slot, s.state[group[m]] = old_state;
     }
