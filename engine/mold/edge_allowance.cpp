@@ -97,8 +97,12 @@ std::vector<NetEdge> split_net_edges(const Polygon2& net, const std::vector<std:
 
   std::vector<NetEdge> edges;
   for (size_t i = 0; i < around.size(); ++i) {
-    const auto& [start, from] = around[i];
-    const auto& [end, to] = around[(i + 1) % around.size()];
+    // Named references rather than structured bindings: clang 14 (the fuzzing build) cannot capture
+    // structured bindings in a lambda.
+    const int start = around[i].first;
+    const std::string& from = around[i].second;
+    const int end = around[(i + 1) % around.size()].first;
+    const std::string& to = around[(i + 1) % around.size()].second;
     const auto rule = std::find_if(std::begin(kEdgeRules), std::end(kEdgeRules), [&](const EdgeRule& r) {
       return (from == r.a && to == r.b) || (from == r.b && to == r.a);
     });
