@@ -237,8 +237,14 @@ void check_off_records(const std::filesystem::path& path, const MeshFileFacts& f
   // it, found by tests/fuzz/off_fuzz.cpp). So every vertex value must be a number as a whole, the
   // rest of a vertex line is skipped (a colour), every face is a plain corner count (at most the
   // vertex count), as many plain vertex numbers and nothing else.
+  // Room for what the file can hold, not for what its header claims: "OFF 444444202 7 2" made the reader
+  // reserve 10 GB (found by tests/fuzz/off_fuzz.cpp). The shortest vertex line is "0 0 0\n", the shortest
+  // face "3 0 1 2\n"; a header that claims more is refused as truncated below.
+  constexpr long long kShortestVertexBytes = 6, kShortestFaceBytes = 8;
+  const long long size = static_cast<long long>(text.size());
   if (records != nullptr)
-    records->reserve(static_cast<unsigned>(facts.declared_vertices), 0, static_cast<unsigned>(facts.declared_faces));
+    records->reserve(static_cast<unsigned>(std::min(facts.declared_vertices, size / kShortestVertexBytes)), 0,
+                     static_cast<unsigned>(std::min(facts.declared_faces, size / kShortestFaceBytes)));
   const long long values_needed = 3 * facts.declared_vertices;
   long long values = 0;
   OpenMesh::Vec3f point;

@@ -214,6 +214,10 @@ TEST(MeshBadInput, OffCountsThatAreNoCounts) {
   expect_refusal([&] { read_mesh(dir / "rest.off"); }, "face 2 has '5000000000' for its number of corners");
   test::write_text(dir / "corners.off", vertices + "5000000000 0 1 2\n3 0 1 3\n");
   expect_refusal([&] { read_mesh(dir / "corners.off"); }, "face 1 has '5000000000' for its number of corners");
+  // A header that claims far more vertices than the file holds: refused as truncated, without first
+  // reserving room for 2 billion vertices (48 GB; the fuzzer found 10 GB with "OFF 444444202 7 2").
+  test::write_text(dir / "claims.off", "OFF\n2147483647 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  expect_refusal([&] { read_mesh(dir / "claims.off"); }, "truncated OFF claims.off: 4 of 2147483647 vertices");
 }
 
 TEST(MeshBadInput, NonManifoldMessIsRefused) {
