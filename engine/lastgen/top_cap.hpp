@@ -12,10 +12,8 @@
 // 1977, with the greedy shortest-diagonal rule instead of their optimum). Grids come from the bilinearly
 // blended Coons patch of the four arcs (S. A. Coons, MIT MAC-TR-41, 1967) smoothed by uniform Laplacian
 // steps. Triangles still missing come from splitting inner quads into four around their centre.
-#include <array>
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 namespace lastcut {
 
