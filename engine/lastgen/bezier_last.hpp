@@ -5,14 +5,9 @@
 //
 // Count: a closed triangle mesh has 2 n^2 triangles per control quad, and the box of nx x ny x nz
 // control cells has 2 (nx ny + nx nz + ny nz) quads; the box is chosen near the last's proportions
-// (each side within 3 cells) with the largest count not above the target. The few triangles still
-// missing (typically under 0.5 %) come from splitting that many cap quads into four around their centre:
-// the cap is flat, so no split changes the surface.
-//
-// Cap: the rim samples form four arcs of n u, n v, n u, n v segments (the cap cells of the side mesh);
-// the cap is the (n u) x (n v) grid of those arcs, its inside from the bilinearly blended Coons patch of
-// the four arcs (S. A. Coons, "Surfaces for computer-aided design of space forms", MIT MAC-TR-41, 1967)
-// smoothed by uniform Laplacian steps, all in the cut plane.
+// (each side within 3 cells) with the largest count not above 99 % of the target. The flat cap
+// (top_cap.hpp) takes every triangle the side leaves: a grid finer than the rim's arcs, sized to its
+// share, with one transition row to the rim samples.
 #include "engine/core/tri_mesh.hpp"
 #include "engine/lastgen/last_shape.hpp"
 

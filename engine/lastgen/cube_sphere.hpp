@@ -40,7 +40,10 @@ CubeSphere cast_cube_sphere(const LastShape& shape, const Eigen::Vector3d& centr
 // at the middle of its section) straight across, to the section's half extents; the rest fans out from
 // the segment's ends over the heel and the toe. Rays from one point give cells small where the surface
 // is near it (the instep) and large far off (the toe: 90 : 1 in area); rays from a spine give cells
-// about as long along the last everywhere. Throws EngineError when a ray does not leave the solid.
+// about as long along the last everywhere. The x stations of the lattice are then moved so that every
+// slab between two of them holds the same area (measured on a first cast): sections have the same
+// number of cells around, so evenly spaced stations gave the tall instep sections cells twice the toe's.
+// Throws EngineError when a ray does not leave the solid.
 CubeSphere cast_along_spine(const LastShape& shape, const LastParams& params, const std::array<int, 3>& cells);
 
 }  // namespace lastcut
