@@ -1,7 +1,6 @@
 #include "bench_options.hpp"
 
 #include <algorithm>
-#include <cstdlib>
 #include <sstream>
 
 namespace lastcut::bench {
@@ -13,22 +12,16 @@ std::vector<std::string> split_list(const std::string& text) {
   return parts;
 }
 
-bool BenchOptions::parse(const std::string& key, const std::string& value) {
-  if (key == "--data") data = value;
-  else if (key == "--threads") threads = std::atoi(value.c_str());
-  else if (key == "--workers") workers = std::atoi(value.c_str());
-  else if (key == "--seed") seed = std::strtoull(value.c_str(), nullptr, 10);
-  else if (key == "--only") only = value;
-  else if (key == "--rounds") rounds = std::atol(value.c_str());
-  else if (key == "--sweeps") sweeps = std::atol(value.c_str());
-  else if (key == "--svg-dir") svg_dir = value;
-  else if (key == "--limits") {
-    limits.clear();
-    for (const std::string& item : split_list(value)) limits.push_back(std::atof(item.c_str()));
-  } else {
-    return false;
-  }
-  return true;
+void BenchOptions::add_options(CLI::App& app) {
+  app.add_option("--data", data, "instance folder")->capture_default_str();
+  app.add_option("--limits", limits, "time limits, s, comma-separated: one run each")->delimiter(',')->capture_default_str();
+  app.add_option("--threads", threads, "threads")->capture_default_str();
+  app.add_option("--workers", workers, "strips: sweeps compared per separation step")->capture_default_str();
+  app.add_option("--seed", seed, "random seed")->capture_default_str();
+  app.add_option("--only", only, "comma-separated instance names (default: all)");
+  app.add_option("--rounds", rounds, "this many improvement rounds instead of the time limits");
+  app.add_option("--sweeps", sweeps, "strips: this many separation steps instead of the time limits");
+  app.add_option("--svg-dir", svg_dir, "write a picture of every layout here");
 }
 
 bool BenchOptions::selected(const std::string& name) const {

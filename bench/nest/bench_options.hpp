@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "daemon/cli/thread_team.hpp"
 #include "engine/nest/nest_options.hpp"
 
@@ -24,8 +26,8 @@ struct BenchOptions {
   long sweeps = 0;                      // > 0 (strips): this many separation steps instead of the time limits
   std::filesystem::path svg_dir;        // when set: a picture of every layout
 
-  // Takes one `--key value` pair if it is one of the shared options; false for any other key.
-  bool parse(const std::string& key, const std::string& value);
+  // Registers the shared options on the benchmark's command line (CLI11: --help, unknown options refused).
+  void add_options(CLI::App& app);
   // --only lets the instance named `name` run.
   bool selected(const std::string& name) const;
   // NestOptions for one run with time limit limit_s on the team's threads (--rounds and --sweeps are

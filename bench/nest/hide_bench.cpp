@@ -79,17 +79,13 @@ int main(int argc, char** argv) {
   lastcut::bench::BenchOptions bench;
   bench.data = LASTCUT_SHARED_DATA_DIR "/nesting/leather";
   std::vector<std::string> methods = {"search", "greedy"};
-  bool trace = false;  // every improvement with its time, on stderr
-  for (int a = 1; a + 1 < argc; a += 2) {
-    const std::string key = argv[a], value = argv[a + 1];
-    if (bench.parse(key, value)) continue;
-    if (key == "--methods") methods = lastcut::bench::split_list(value);
-    else if (key == "--trace") trace = value != "0";
-    else {
-      std::fprintf(stderr, "unknown option %s\n", key.c_str());
-      return 2;
-    }
-  }
+  int trace = 0;  // 1: every improvement with its time, on stderr
+  CLI::App app{"Hide nesting benchmark: the hide search against the greedy on the Baldacci leather instances and "
+               "generated shoe-mold batches (markdown tables, docs/benchmarks-nest.md)"};
+  bench.add_options(app);
+  app.add_option("--methods", methods, "search, greedy (comma-separated)")->delimiter(',')->capture_default_str();
+  app.add_option("--trace", trace, "1: print every improvement and the hides' fills on stderr");
+  CLI11_PARSE(app, argc, argv);
   const std::filesystem::path& data = bench.data;
   std::vector<double>& limits = bench.limits;
   const int threads = bench.threads, workers = bench.workers;

@@ -49,28 +49,27 @@ std::vector<std::filesystem::path> json_files(const std::filesystem::path& folde
 int main(int argc, char** argv) {
   lastcut::bench::BenchOptions bench;
   bench.data = LASTCUT_SHARED_DATA_DIR "/nesting";
-  bool trace = false;
-  for (int a = 1; a + 1 < argc; a += 2) {
-    const std::string key = argv[a], value = argv[a + 1];
-    if (bench.parse(key, value)) continue;
-    if (key == "--trace") trace = value != "0";
-    else if (key == "--instance") {  // one instance file (strip or hides), one run per limit, with its picture
-      const lastcut::NestInstance instance = lastcut::read_nest_instance(value);
-      for (double limit : bench.limits) {
-        const lastcut::NestOptions options = bench.nest_options(limit);
-        const lastcut::Layout layout = lastcut::nest(instance, options);
-        const auto problems = lastcut::check_layout(layout, instance);
-        std::printf("%s %g s: %zu placed, %zu unplaced entries, %d hides, length %.1f, utilisation %.2f %%, %s\n", instance.name.c_str(), limit,
-                    layout.placements.size(), layout.unplaced.size(), lastcut::used_bin_count(layout), layout.strip_length.value_or(0),
-                    100 * layout.utilisation, problems.empty() ? "valid" : problems.front().c_str());
-        if (!bench.svg_dir.empty()) lastcut::write_layout_svg(bench.svg_dir / ("nest-" + instance.name + ".svg"), layout, instance);
-        if (!problems.empty()) return 1;
-      }
-      return 0;
-    } else {
-      std::fprintf(stderr, "unknown option %s\n", key.c_str());
-      return 2;
+  int trace = 0;
+  std::string instance_file;
+  CLI::App app{"Nesting benchmark: the strip nester on the ESICUP instances against their best-known lengths "
+               "(markdown tables, docs/benchmarks-nest.md)"};
+  bench.add_options(app);
+  app.add_option("--trace", trace, "1: print every improvement on stderr");
+  app.add_option("--instance", instance_file, "one instance file (strip or hides): one run per limit, with its picture");
+  CLI11_PARSE(app, argc, argv);
+  if (!instance_file.empty()) {
+    const lastcut::NestInstance instance = lastcut::read_nest_instance(instance_file);
+    for (double limit : bench.limits) {
+      const lastcut::NestOptions options = bench.nest_options(limit);
+      const lastcut::Layout layout = lastcut::nest(instance, options);
+      const auto problems = lastcut::check_layout(layout, instance);
+      std::printf("%s %g s: %zu placed, %zu unplaced entries, %d hides, length %.1f, utilisation %.2f %%, %s\n", instance.name.c_str(), limit,
+                  layout.placements.size(), layout.unplaced.size(), lastcut::used_bin_count(layout), layout.strip_length.value_or(0),
+                  100 * layout.utilisation, problems.empty() ? "valid" : problems.front().c_str());
+      if (!bench.svg_dir.empty()) lastcut::write_layout_svg(bench.svg_dir / ("nest-" + instance.name + ".svg"), layout, instance);
+      if (!problems.empty()) return 1;
     }
+    return 0;
   }
   auto selected = [&bench](const std::filesystem::path& file) { return bench.selected(file.stem().string()); };
   auto options_for = [&bench](double limit) { return bench.nest_options(limit); };
