@@ -38,7 +38,8 @@
 // failed cycle (one as good as the best: after three) is dropped for a new one from the greedy in a
 // perturbed order; the best of all trajectories is returned (the fewest hides, then the least
 // leather, then the most concentrated). The search runs until the budget (or, at the area bound, where
-// only shrinks and replacing chains are left, until 40 of them in a row failed).
+// only shrinks and replacing chains are left, until 40 of them in a row failed; with pieces still left
+// over, as on one hide in the knapsack form, such a failed run starts a new trajectory instead).
 // Pair groups move as one unit and must end near each other (engine/nest/hide_pieces).
 // Deterministic for the seed, sweep workers and iteration budget; the time limit only stops it (a
 // round cut short is dropped). No threads of its own: sweeps go through NestOptions::run_parallel.

@@ -97,6 +97,29 @@ TEST(NestHideSearch, KeepsTheHighestPriorityWhenNotEverythingFits) {
   EXPECT_FALSE(layout.unplaced.empty());
 }
 
+// One 100 mm hide; a 54 mm square (the most valuable piece, placed first by value) leaves no room for
+// any of four 46 mm squares, which fill the hide 2 x 2 when one of them comes first (gap 2 mm). Once the
+// left-overs have failed, the search must try other orders (a perturbed greedy, as the iterated greedy
+// does) instead of ending with its budget unused on the 29 % layout.
+TEST(NestHideSearch, OnOneHideTriesOtherOrdersWhenTheMostValuablePieceBlocksTheRest) {
+  NestInstance instance;
+  instance.name = "blocking-square";
+  Bin hide;
+  hide.id = 1;
+  hide.name = "square";
+  hide.outer = test::rectangle(100, 100);
+  instance.bins.push_back(hide);
+  instance.items.push_back(test::item(0, test::rectangle(54, 54), 1, {0}));
+  instance.items.push_back(test::item(1, test::rectangle(46, 46), 4, {0}));
+  instance.gap_mm = 2;
+  instance.margin_mm = 0;
+  const Layout layout = nest(instance, rounds(600));
+  EXPECT_TRUE(check_layout(layout, instance).empty()) << all(check_layout(layout, instance));
+  int small_placed = 0;
+  for (const Placement& p : layout.placements) small_placed += p.item == 1 ? 1 : 0;
+  EXPECT_EQ(small_placed, 4) << layout.placements.size() << " placed";
+}
+
 TEST(NestHideSearch, APairThatCannotBeNearIsLeftOutWhole) {
   NestInstance instance = test::constraint_instance(1);
   instance.pair_distance_mm = 1;  // no two pieces can have centroids 1 mm apart
