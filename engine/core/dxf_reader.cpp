@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <limits>
 
 #include "engine/core/engine_error.hpp"
 
@@ -53,6 +54,15 @@ double number(const std::filesystem::path& path, const std::string& text) {
   return value;
 }
 
+// An integer group value (flags, $INSUNITS). Converting a double outside int's range is undefined
+// behaviour (the fuzzer's 70 / 3333...331, tests/fuzz/hide_dxf_fuzz.cpp), so such a value is refused.
+int integer(const std::filesystem::path& path, const std::string& text) {
+  const double value = number(path, text);
+  if (!(value >= std::numeric_limits<int>::min() && value <= std::numeric_limits<int>::max()))
+    throw EngineError(path.string() + ": '" + text.substr(0, 40) + "' is not a DXF integer (out of range)");
+  return static_cast<int>(value);
+}
+
 // Appends the segment from a to b, an arc when bulge != 0, without b itself.
 void append_segment(std::vector<Point2>& points, const DxfVertex& a, const Point2& b, double tolerance) {
   points.push_back(a.point);
@@ -90,7 +100,7 @@ DxfDrawing read_dxf_drawing(const std::filesystem::path& path) {
       continue;
     }
     if (section == "HEADER" && group.code == 9 && group.value == "$INSUNITS" && g + 1 < groups.size())
-      drawing.insunits = static_cast<int>(number(path, groups[g + 1].value));
+      drawing.insunits = integer(path, groups[g + 1].value);
     if (section != "ENTITIES" || group.code != 0) continue;
     // An entity: its groups run to the next code 0.
     size_t end = g + 1;
@@ -103,7 +113,7 @@ DxfDrawing read_dxf_drawing(const std::filesystem::path& path) {
       const Group& field = groups[k];
       if (field.code == 8) layer = field.value;
       if (field.code == 1) text = field.value;
-      if (field.code == 70) flags = static_cast<int>(number(path, field.value));
+      if (field.code == 70) flags = integer(path, field.value);
       if (field.code == 10) vertices.push_back({Point2(number(path, field.value), 0.0), 0.0});
       if (field.code == 20 && !vertices.empty()) vertices.back().point.y() = number(path, field.value);
       if (field.code == 42 && !vertices.empty()) vertices.back().bulge = number(path, field.value);

@@ -104,7 +104,14 @@ Bin bin_from_json_file(const std::filesystem::path& path) {
   if (!bin_json.contains("id")) bin_json["id"] = 0;
   Bin bin = bin_from_json(bin_json, source);
   double scale = 1.0;
-  const std::string units = document.value("units", object->value("units", std::string("mm")));
+  // "units" of the document, else of the bin, else mm; a value that is not text is refused (it threw
+  // nlohmann's type_error past every caller: tests/fuzz/hide_json_fuzz.cpp).
+  const nlohmann::json* units_json = document.contains("units") ? &document["units"]
+                                     : object->contains("units") ? &(*object)["units"]
+                                                                 : nullptr;
+  if (units_json != nullptr && !units_json->is_string())
+    throw EngineError(source + ": \"units\" must be text: mm, cm, m or in");
+  const std::string units = units_json != nullptr ? units_json->get<std::string>() : std::string("mm");
   if (units == "mm") scale = 1.0;
   else if (units == "cm") scale = 10.0;
   else if (units == "m") scale = 1000.0;

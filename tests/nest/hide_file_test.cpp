@@ -197,6 +197,14 @@ TEST_F(HideFileTest, RefusalsAreOneLineEach) {
   EXPECT_EQ(refusal(f), f.string() + " is not valid JSON (byte 11)");
   f = write("units.json", R"({"units": "furlong", "shape": [[0,0],[1000,0],[1000,600]]})");
   EXPECT_EQ(refusal(f), f.string() + ": units \"furlong\" are not supported; use mm, cm, m or in");
+  // Found by tests/fuzz/hide_json_fuzz.cpp: "units" that is not text threw nlohmann's type_error past every caller.
+  f = write("units-list.json", R"({"units": ["mm"], "shape": [[0,0],[1000,0],[1000,600]]})");
+  EXPECT_EQ(refusal(f), f.string() + ": \"units\" must be text: mm, cm, m or in");
+  // Found by tests/fuzz/hide_dxf_fuzz.cpp: a flag beyond int's range was converted with undefined behaviour.
+  std::string flags = dxf_text(4, hide());
+  flags.replace(flags.find("\n70\n1\n"), 6, "\n70\n99999999999\n");
+  f = write("flags.dxf", flags);
+  EXPECT_EQ(refusal(f), f.string() + ": '99999999999' is not a DXF integer (out of range)");
   f = write("nobin.json", R"({"items": []})");
   EXPECT_EQ(refusal(f), f.string() + ": no hide outline (\"shape\" or \"outer\")");
   f = write("photo.png", "x");
