@@ -121,6 +121,8 @@ Status LedgerNode::enter_hide(const ReadyScan& ready) {
     hide = read_hide_file(ready.scan);
   } catch (const EngineError& failure) {
     return Status::failure(failure.what());
+  } catch (const std::exception& failure) {  // a reader bug, not a refusal: the hide fails, the node runs on
+    return Status::failure(name + ": unreadable hide file (" + failure.what() + ")");
   }
   std::string material, cutter;
   if (const std::string unknown = settle_hide_targets(hide.hide_id, hide.material, hide.cutter,

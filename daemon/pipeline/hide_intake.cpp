@@ -74,6 +74,11 @@ void Pipeline::take_hide(const ReadyScan& ready) {
   } catch (const EngineError& failure) {
     fail_hide(batch, failure.what());
     return;
+  } catch (const std::exception& failure) {
+    // A reader bug, not a refusal (nlohmann's type_error once escaped here and stopped the daemon): the
+    // hide still goes to failed/ with the reason, and the daemon runs on.
+    fail_hide(batch, name + ": unreadable hide file (" + failure.what() + ")");
+    return;
   }
   batch.hide_id = hide.hide_id;
   if (const std::string unknown = settle_hide_targets(hide.hide_id, hide.material, hide.cutter,

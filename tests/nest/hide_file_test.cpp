@@ -205,6 +205,9 @@ TEST_F(HideFileTest, RefusalsAreOneLineEach) {
   flags.replace(flags.find("\n70\n1\n"), 6, "\n70\n99999999999\n");
   f = write("flags.dxf", flags);
   EXPECT_EQ(refusal(f), f.string() + ": '99999999999' is not a DXF integer (out of range)");
+  // Found by tests/fuzz/hide_dxf_fuzz.cpp: a hole far from the origin overflowed Clipper's grid (its exception escaped).
+  f = write("far.dxf", dxf_text(4, hide({{"HOLE", rectangle(1e16, 1e16, 1.1e16, 1.1e16)}})));
+  EXPECT_EQ(refusal(f), f.string() + ": the hole 1 has a point more than 10 km from the drawing's origin; check the drawing's units");
   f = write("nobin.json", R"({"items": []})");
   EXPECT_EQ(refusal(f), f.string() + ": no hide outline (\"shape\" or \"outer\")");
   f = write("photo.png", "x");
