@@ -329,6 +329,16 @@ Layout HideSearch::run() {
   long streak = 0, restarts = 0;  // multi-hide attempts since the last success; trajectories started
   std::vector<char> tried(pieces_.units.size(), 0);
   const std::vector<int> by_value = unit_order_by_value(pieces_);
+  // A new trajectory from a perturbed greedy start; the best of all is kept.
+  const auto new_trajectory = [&] {
+    current = restart(++restarts);
+    streak = 0;
+    std::fill(tried.begin(), tried.end(), 0);
+    if (better(current, best)) {
+      best = current;
+      if (options_.on_improvement) options_.on_improvement(layout(best, false));
+    }
+  };
   for (long round = 1; !options_.iteration_limit || round <= *options_.iteration_limit; ++round) {
     if (deadline_.passed()) break;
     const std::uint64_t seed = stream_seed(options_.seed, static_cast<std::uint64_t>(round), 0);
@@ -363,13 +373,7 @@ Layout HideSearch::run() {
           // greedy does, rather than ending with budget left (it ended after 3-10 s of 30 and placed
           // less area than the iterated greedy on some hides: docs/benchmarks-nest.md).
           if (!any_left_over(current)) break;
-          current = restart(++restarts);
-          streak = 0;
-          std::fill(tried.begin(), tried.end(), 0);
-          if (better(current, best)) {
-            best = current;
-            if (options_.on_improvement) options_.on_improvement(layout(best, false));
-          }
+          new_trajectory();
           continue;
         }
         success = streak % 2 ? chain(trial, streak / 2, seed, Effort{1}) : shrink(trial, streak / 2, seed, Effort{1});
@@ -380,13 +384,7 @@ Layout HideSearch::run() {
         // lucky moves early on, so a trajectory that is behind the best gets one cycle, one as good
         // as the best every level of effort.
         if (cycles > (used.size() <= used_slots(best).size() ? kMaxLevel : 0)) {
-          current = restart(++restarts);
-          streak = 0;
-          std::fill(tried.begin(), tried.end(), 0);
-          if (better(current, best)) {
-            best = current;
-            if (options_.on_improvement) options_.on_improvement(layout(best, false));
-          }
+          new_trajectory();
           continue;
         }
         const Effort effort{static_cast<int>(cycles)};
