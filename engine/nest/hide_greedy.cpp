@@ -67,26 +67,18 @@ HideAssignment greedy_hides(const NestInstance& instance, const HidePieces& piec
       const std::vector<int>& members = pieces.units[u];
       if (std::any_of(members.begin(), members.end(), [&](int p) { return local_of[p] < 0; })) continue;
       bool all = true;
-      Point2 anchor = Point2::Zero();
       for (size_t m = 0; m < members.size() && all; ++m) {
         const int i = local_of[members[m]];
         auto leftmost = [](const Box& b) { return b.x1 + 1e-3 * b.y0; };
-        auto near_anchor = [&anchor](const Box& b) {
-          return (Point2(0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)) - anchor).norm();
-        };
         const bool ok = m == 0 ? separator.place_greedy(i, leftmost, samples_for(*prepared[i]), active)
-                               : separator.place_greedy(i, near_anchor, 2 * samples_for(*prepared[i]), active);
+                               : separator.place_greedy(i, near_piece(pieces, members[0], slot, result.state[members[0]]),
+                                                        2 * samples_for(*prepared[i]), active);
         if (!ok) {
           all = false;
           break;
         }
         active[i] = 1;
         result.state[members[m]] = separator.state()[i];
-        if (m == 0) {
-          const PieceState& st = separator.state()[i];
-          const Box b = prepared[i]->orientations[st.orientation].box.shifted(st.offset);
-          anchor = Point2(0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1));
-        }
       }
       if (all && !unit_near(pieces, instance, u, slot, result.state)) all = false;
       if (!all) {

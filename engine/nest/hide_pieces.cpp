@@ -210,17 +210,20 @@ bool place_on_slot(const HidePieces& pieces, int piece, int slot, std::vector<in
   return true;
 }
 
-double free_area_mm2(const HidePieces& pieces, const std::vector<int>& slot_of, int slot) {
+double placed_area_mm2(const HidePieces& pieces, const std::vector<int>& slot_of, int slot) {
   double placed = 0;
   for (size_t i = 0; i < slot_of.size(); ++i)
     if (slot_of[i] == slot) placed += pieces.frames[0][pieces.item_of[i]].area_mm2;
-  return pieces.slots[slot].container->usable_area_mm2() - placed;
+  return placed;
+}
+
+double free_area_mm2(const HidePieces& pieces, const std::vector<int>& slot_of, int slot) {
+  return pieces.slots[slot].container->usable_area_mm2() - placed_area_mm2(pieces, slot_of, slot);
 }
 
 Separator::Objective near_piece(const HidePieces& pieces, int first, int slot, const PieceState& first_state) {
-  const Box b = pieces.prepared(first, slot).orientations[first_state.orientation].box.shifted(first_state.offset);
-  const Point2 anchor(0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1));
-  return [anchor](const Box& c) { return (Point2(0.5 * (c.x0 + c.x1), 0.5 * (c.y0 + c.y1)) - anchor).norm(); };
+  const Point2 anchor = pieces.prepared(first, slot).orientations[first_state.orientation].box.shifted(first_state.offset).centre();
+  return [anchor](const Box& c) { return (c.centre() - anchor).norm(); };
 }
 
 bool place_unit_free(const HidePieces& pieces, const NestInstance& instance, int unit, int slot, std::vector<int>& slot_of,

@@ -75,6 +75,8 @@ bool place_on_slot(const HidePieces& pieces, int piece, int slot, std::vector<in
                    std::vector<PieceState>& state, const Separator::Objective& objective, int samples,
                    std::uint64_t seed);
 
+// Area of the pieces on `slot` in slot_of (per piece), mm^2.
+double placed_area_mm2(const HidePieces& pieces, const std::vector<int>& slot_of, int slot);
 // Usable area of `slot` not taken by the pieces on it in slot_of (per piece), mm^2.
 double free_area_mm2(const HidePieces& pieces, const std::vector<int>& slot_of, int slot);
 

@@ -28,7 +28,6 @@ constexpr long kChainPeriod = 2;  // every other attempt is an ejection chain (3
 constexpr long kMergePeriod = 3;  // every third chain merges two hides into an unused one (hide_merge)
 constexpr double kMergeFill = 0.74;  // merges tried up to this fill of the hides left (Test1: 72 % reached)
 
-Point2 box_centre(const Box& b) { return {0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)}; }
 
 // How hard one insertion tries; grows while no attempt succeeds, back to 0 after a success.
 struct Effort {
@@ -47,12 +46,7 @@ class HideSearch {
 
  private:
   struct State { std::vector<int> slot_of; std::vector<PieceState> state; };  // per piece
-  double placed_area(const State& s, int slot) const {
-    double a = 0;
-    for (size_t i = 0; i < s.slot_of.size(); ++i)
-      if (s.slot_of[i] == slot) a += pieces_.frames[0][pieces_.item_of[i]].area_mm2;
-    return a;
-  }
+  double placed_area(const State& s, int slot) const { return placed_area_mm2(pieces_, s.slot_of, slot); }
   double fill(const State& s, int slot) const { return placed_area(s, slot) / pieces_.slots[slot].container->usable_area_mm2(); }
   double free_area(const State& s, int slot) const { return free_area_mm2(pieces_, s.slot_of, slot); }
   std::vector<int> used_slots(const State& s) const {
@@ -140,7 +134,7 @@ bool HideSearch::insert_unit(State& s, int unit, int slot, std::uint64_t seed, c
     for (int p : local) prepared.push_back(&pieces_.prepared(p, slot)), start.push_back(s.state[p]);
     for (int p : rest) {
       const PreparedItem& item = pieces_.prepared(p, slot);
-      PieceState st{0, box_centre(pieces_.slots[slot].container->offset_range(item.orientations[0]))};
+      PieceState st{0, pieces_.slots[slot].container->offset_range(item.orientations[0]).centre()};
       if (effort.level > 0) {
         st.orientation = random.below(static_cast<int>(item.orientations.size()));
         const Box range = pieces_.slots[slot].container->offset_range(item.orientations[st.orientation]);

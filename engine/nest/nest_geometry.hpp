@@ -17,6 +17,7 @@ struct Box {
   Box shifted(const Point2& t) const { return {x0 + t.x(), y0 + t.y(), x1 + t.x(), y1 + t.y()}; }
   double width() const { return x1 - x0; }
   double height() const { return y1 - y0; }
+  Point2 centre() const { return {0.5 * (x0 + x1), 0.5 * (y0 + y1)}; }
 };
 
 // Bounding box of points #P (mm); points must not be empty.

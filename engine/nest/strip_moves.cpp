@@ -9,7 +9,6 @@ namespace {
 
 constexpr double kLargeAreaShare = 0.75;
 
-Point2 box_centre(const Box& b) { return {0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)}; }
 
 const OrientedShape& shape_of(const std::vector<const PreparedItem*>& pieces, const std::vector<PieceState>& state,
                               size_t i) {
@@ -39,7 +38,7 @@ void shrink_strip(const std::vector<const PreparedItem*>& pieces, std::vector<Pi
                   double delta_mm, const Container& container) {
   for (size_t i = 0; i < pieces.size(); ++i) {
     const OrientedShape& s = shape_of(pieces, state, i);
-    if (box_centre(s.box.shifted(state[i].offset)).x() > split_x) state[i].offset.x() -= delta_mm;
+    if (s.box.shifted(state[i].offset).centre().x() > split_x) state[i].offset.x() -= delta_mm;
     state[i].offset = container.clamp_offset(s, state[i].offset);
   }
 }
@@ -73,8 +72,8 @@ void disrupt_layout(const std::vector<const PreparedItem*>& pieces, std::vector<
       if (i != a) partners.push_back(i);
   const size_t b = partners[random.below(static_cast<int>(partners.size()))];
 
-  const Point2 centre_a = box_centre(shape_of(pieces, state, a).box.shifted(state[a].offset));
-  const Point2 centre_b = box_centre(shape_of(pieces, state, b).box.shifted(state[b].offset));
+  const Point2 centre_a = shape_of(pieces, state, a).box.shifted(state[a].offset).centre();
+  const Point2 centre_b = shape_of(pieces, state, b).box.shifted(state[b].offset).centre();
   const Point2 old_a = state[a].offset, old_b = state[b].offset;
   state[a].offset += centre_b - centre_a;
   state[b].offset += centre_a - centre_b;
