@@ -101,6 +101,8 @@ Result<BatchMade> build_batch(const std::vector<BatchJobInput>& jobs, const Mate
     }
   } catch (const EngineError& error) {
     return Status::failure(error.what());
+  } catch (const std::exception& error) {
+    return Status::failure(unexpected_failure_reason(error));
   }
 }
 

@@ -8,8 +8,11 @@
 //                          into the file as it is written, and the cutter gets exactly these bytes
 // Both write only into the folder they are given, through durable writes, so a crash mid-step
 // leaves nothing half-written that a later reader could take for a result. Engine errors come
-// back as one-line reasons; nothing is thrown.
+// back as one-line reasons; nothing is thrown: an exception that is not an EngineError (a bug, or a
+// library's exception the engine failed to translate) fails the job, batch or hide with
+// unexpected_failure_reason instead of ending lastcutd and every job it has in hand.
 #include <filesystem>
+#include <exception>
 #include <map>
 #include <string>
 #include <vector>
@@ -29,6 +32,10 @@ inline constexpr const char* kItemsFile = "items.json";  // the job's pieces as 
 inline constexpr const char* kReportFile = "report.json";
 inline constexpr const char* kPreviewFile = "preview.svg";
 inline constexpr const char* kLayoutFile = "layout.json";
+
+inline std::string unexpected_failure_reason(const std::exception& error) {
+  return std::string("internal error, please report it with the input (kept): ") + error.what();
+}
 
 struct MoldsMade {
   int piece_count = 0;        // molds made (before quantity)

@@ -115,6 +115,8 @@ Result<HideMade> build_hide(const std::vector<HideJobInput>& jobs, const std::fi
     return made;
   } catch (const EngineError& error) {
     return Status::failure(error.what());
+  } catch (const std::exception& error) {
+    return Status::failure(unexpected_failure_reason(error));
   }
 }
 

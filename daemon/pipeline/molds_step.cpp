@@ -61,6 +61,8 @@ Result<MoldsMade> compute_molds(const std::filesystem::path& scan, const std::fi
     return Status::failure(error.what());
   } catch (const std::bad_alloc&) {
     return Status::failure("the scan is too large for this machine's memory");
+  } catch (const std::exception& error) {
+    return Status::failure(unexpected_failure_reason(error));
   }
 }
 
