@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "engine/core/engine_error.hpp"
@@ -32,20 +33,44 @@ Polygon2 largest_closed_outline(const std::filesystem::path& path, std::vector<P
   return outline;
 }
 
+void check_pattern_size(const std::string& source, const Polygon2& outline) {
+  constexpr double kSmallest_mm = 5.0, kLargest_mm = 2000.0, kLongest_mm = 10000.0;
+  constexpr size_t kMostPoints = 20000;
+  if (outline.points.size() > kMostPoints)
+    throw EngineError(source + ": an outline of " + std::to_string(outline.points.size()) +
+                      " points, more than 20000; simplify it in the drawing program");
+  Point2 low = outline.points.front(), high = low;
+  for (const Point2& p : outline.points) low = low.cwiseMin(p), high = high.cwiseMax(p);
+  const Point2 size = high - low;
+  char line[200];
+  if (size.maxCoeff() > kLargest_mm || size.maxCoeff() < kSmallest_mm) {
+    std::snprintf(line, sizeof line, ": the outline is %.6g x %.6g mm, %s than a shoe pattern; check the drawing's units",
+                  size.x(), size.y(), size.maxCoeff() > kLargest_mm ? "larger" : "smaller");
+    throw EngineError(source + line);
+  }
+  if (const double around = perimeter(outline); around > kLongest_mm) {
+    std::snprintf(line, sizeof line, ": the outline is %.3g m long, longer than 10 m; it is no shoe pattern", around / 1000.0);
+    throw EngineError(source + line);
+  }
+}
+
 Mold read_reference_outline(const std::filesystem::path& path) {
   std::string extension = path.extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (!std::filesystem::is_regular_file(path)) throw EngineError("cannot read pattern file " + path.string());
   if (std::filesystem::file_size(path) == 0) throw EngineError(path.string() + ": the file is empty");
-  if (extension == ".dxf") return read_dxf_outline(path);
-  if (extension == ".svg") {
-    Mold mold;
+  Mold mold;
+  if (extension == ".dxf") {
+    mold = read_dxf_outline(path);
+  } else if (extension == ".svg") {
     mold.name = path.stem().string();
     mold.outline = read_svg_outline(path);
-    return mold;
+  } else {
+    throw EngineError(path.string() + ": not a pattern file; expected a .dxf or .svg outline");
   }
-  throw EngineError(path.string() + ": not a pattern file; expected a .dxf or .svg outline");
+  check_pattern_size(path.string(), mold.outline);
+  return mold;
 }
 
 }  // namespace lastcut

@@ -11,8 +11,13 @@
 //        mm, cm, in, pt or px the user unit is width / viewBox width; otherwise a user unit is a
 //        CSS pixel, 1/96 inch. y is flipped (SVG points down) so the pattern keeps its handedness.
 //        transform attributes are refused (flatten them in the drawing program first).
+// Size: at least 5 mm and at most 2000 mm across, at most 10 m around, at most 20,000 points. Outside
+// that it is no shoe pattern (most often a drawing in other units than its header says), and the
+// comparison, which samples the outline every 0.25 mm against every edge of the other, would run for
+// minutes on it.
 // Every refusal is an EngineError of one line that names the file.
 #include <filesystem>
+#include <string>
 
 #include "engine/mold/mold.hpp"
 
@@ -25,6 +30,9 @@ Mold read_reference_outline(const std::filesystem::path& path);
 // The two readers behind it (same rules, no extension check).
 Mold read_dxf_outline(const std::filesystem::path& path);
 Polygon2 read_svg_outline(const std::filesystem::path& path);
+
+// Refuses (EngineError, one line starting with `source`) an outline outside the size rules above.
+void check_pattern_size(const std::string& source, const Polygon2& outline);
 
 // Largest-area closed ring of `rings` (each #P >= 3, mm), made counter-clockwise. Throws the
 // "no closed outline" refusal naming `path` when there is none with area.

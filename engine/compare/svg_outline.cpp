@@ -110,8 +110,12 @@ double user_unit_mm(const std::filesystem::path& path, const std::string& svg_ta
 }
 
 // Number of chords so that a curve with second-difference bound `bend` (mm) stays within tolerance.
+// Clamped as a double: a curve of absurd size (1e62) would overflow int; its points are refused later.
 int chord_count(double bend_mm, double factor) {
-  return std::clamp(static_cast<int>(std::ceil(std::sqrt(factor * bend_mm / kCurveTolerance_mm))), 1, 10000);
+  constexpr double kMostChords = 10000.0;
+  const double chords = std::ceil(std::sqrt(factor * bend_mm / kCurveTolerance_mm));
+  if (!(chords <= kMostChords)) return static_cast<int>(kMostChords);
+  return std::max(1, static_cast<int>(chords));
 }
 
 struct Subpaths {

@@ -150,6 +150,28 @@ TEST_F(ReferenceFiles, BadFilesAreRefusedWithOneLine) {
   expect_refusal(write("huge.dxf", dxf("9\n$INSUNITS\n70\n6\n", lwpolyline({{0, 0}, {2e3, 0}, {2e3, 2e3}}, true))),
                  ": coordinates beyond 1 km; check the drawing's units");
   expect_refusal(write("text.dxf", "this is not\na drawing\n"), " is not a DXF file: line 1 is not a group code");
+  // Sizes no shoe pattern has (wrong units, or a drawing that would keep the comparison busy for minutes).
+  expect_refusal(write("metres.dxf", dxf("9\n$INSUNITS\n70\n6\n", lwpolyline({{0, 0}, {0.27, 0}, {0.27, 3.1}}, true))),
+                 ": the outline is 270 x 3100 mm, larger than a shoe pattern; check the drawing's units");
+  expect_refusal(write("unitless.dxf", dxf("", lwpolyline({{0, 0}, {0.27, 0}, {0.27, 0.1}}, true))),
+                 ": the outline is 0.27 x 0.1 mm, smaller than a shoe pattern; check the drawing's units");
+  std::vector<Point2> serpentine;  // 1900 x 70 mm, six runs across: 11.5 m around
+  for (int run = 0; run < 6; ++run) {
+    const double y = 12.0 * run, from = run % 2 == 0 ? 10.0 : 1900.0, to = run % 2 == 0 ? 1900.0 : 10.0;
+    serpentine.push_back({from, y});
+    serpentine.push_back({to, y});
+  }
+  serpentine.push_back({0, 60});
+  serpentine.push_back({0, 0});
+  expect_refusal(write("serpentine.dxf", dxf("", lwpolyline(serpentine, true))),
+                 ": the outline is 11.5 m long, longer than 10 m; it is no shoe pattern");
+  expect_refusal(write("far-curve.svg", "<svg width=\"270mm\" viewBox=\"0 0 270 120\"><path d=\"M 0 100 C 60 140 200 120 "
+                                        "2E62 88 L 28 -4 Z\"/></svg>"),
+                 ": coordinates beyond 1 km; check the drawing's units");
+  std::string dense = "<svg width=\"300mm\" viewBox=\"0 0 300 300\"><path d=\"M0 0";
+  for (int k = 1; k <= 20000; ++k) dense += " L" + std::to_string(0.015 * k) + " " + std::to_string((k % 2) * 0.01);
+  dense += " L 300 200 Z\"/></svg>";
+  expect_refusal(write("dense.svg", dense), ": an outline of 20002 points, more than 20000; simplify it in the drawing program");
   expect_refusal(write("nothing.dxf", dxf("", "")), ": no closed outline");
   expect_refusal(write("arc.svg", "<svg width=\"10mm\" viewBox=\"0 0 10 10\"><path d=\"M0 0 A 5 5 0 0 1 10 0 Z\"/></svg>"),
                  ": path command 'A' is not supported; use M, L, H, V, C, Q and Z (convert arcs and smooth curves to paths)");
