@@ -32,6 +32,8 @@ if [ -z "${TMPDIR:-}" ] && [ -d /dev/shm ] && [ -w /dev/shm ]; then export TMPDI
 max_len_of() {
   case "$1" in
     stl | obj | ply | off) echo 65536 ;;
+    scan_last) echo 131072 ;;  # a 2000-triangle last as OFF is ~46 kB
+    scan_patch) echo 65536 ;;
     nest_instance | layout) echo 32768 ;;
     grbl_reply) echo 4096 ;;
     hpgl_reply) echo 512 ;;  # a full ESC.B buffer ("0") makes the driver sleep 20 ms: keep runs short

@@ -8,17 +8,13 @@
 // so it surfaces as a libFuzzer crash, as do sanitizer reports, hangs and out-of-memory.
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 
-#include "engine/core/engine_error.hpp"
 #include "engine/nest/hide_file.hpp"
-#include "fuzz_input_file.hpp"
+#include "engine_file_fuzz.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  static lastcut::fuzz::FuzzInputFile file("hide.dxf");
-  try {
-    (void)lastcut::read_hide_file(file.write(data, size));
-  } catch (const lastcut::EngineError&) {
-    // a refusal with one line for the operator
-  }
-  return 0;
+  return lastcut::fuzz::read_engine_file(data, size, "hide.dxf", [](const std::filesystem::path& path) {
+    (void)lastcut::read_hide_file(path);
+  });
 }

@@ -7,18 +7,14 @@
 // line. Any other exception is not caught, so it surfaces as a libFuzzer crash, as do sanitizer reports.
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 
-#include "engine/core/engine_error.hpp"
 #include "engine/nest/hide_file.hpp"
-#include "fuzz_input_file.hpp"
+#include "engine_file_fuzz.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  static lastcut::fuzz::FuzzInputFile file("hide.toml");
-  lastcut::HideFile hide;
-  try {
-    lastcut::read_hide_sidecar(file.write(data, size), hide);
-  } catch (const lastcut::EngineError&) {
-    // a refusal with one line for the operator
-  }
-  return 0;
+  return lastcut::fuzz::read_engine_file(data, size, "hide.toml", [](const std::filesystem::path& path) {
+    lastcut::HideFile hide;
+    lastcut::read_hide_sidecar(path, hide);
+  });
 }

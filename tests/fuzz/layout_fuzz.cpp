@@ -9,19 +9,15 @@
 // through) is not caught, so it surfaces as a libFuzzer crash, as do sanitizer reports.
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 
-#include "engine/core/engine_error.hpp"
 #include "engine/toolpath/layout_pieces.hpp"
-#include "fuzz_input_file.hpp"
+#include "engine_file_fuzz.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  static lastcut::fuzz::FuzzInputFile file("layout.json");
-  try {
-    const lastcut::LayoutFile layout = lastcut::read_layout_file(file.write(data, size));
+  return lastcut::fuzz::read_engine_file(data, size, "layout.json", [](const std::filesystem::path& path) {
+    const lastcut::LayoutFile layout = lastcut::read_layout_file(path);
     for (const lastcut::SheetRef& sheet : lastcut::sheets_in_layout(layout.layout))
       (void)lastcut::placed_pieces(layout.layout, layout.instance, sheet);
-  } catch (const lastcut::EngineError&) {
-    // a refusal with one line for the operator
-  }
-  return 0;
+  });
 }

@@ -9,17 +9,13 @@
 // anything else: it surfaces as a libFuzzer crash, as do sanitizer reports.
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 
-#include "engine/core/engine_error.hpp"
 #include "engine/nest/nest_json.hpp"
-#include "fuzz_input_file.hpp"
+#include "engine_file_fuzz.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  static lastcut::fuzz::FuzzInputFile file("instance.json");
-  try {
-    (void)lastcut::read_nest_instance(file.write(data, size));
-  } catch (const lastcut::EngineError&) {
-    // a refusal with one line for the operator
-  }
-  return 0;
+  return lastcut::fuzz::read_engine_file(data, size, "instance.json", [](const std::filesystem::path& path) {
+    (void)lastcut::read_nest_instance(path);
+  });
 }

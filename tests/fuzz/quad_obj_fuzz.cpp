@@ -4,19 +4,15 @@
 // mesh_fuzz.hpp for why anything else must be reported as a crash.
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 
-#include "engine/core/engine_error.hpp"
 #include "engine/subdiv/quad_obj.hpp"
 #include "engine/subdiv/sample_surface.hpp"
-#include "fuzz_input_file.hpp"
+#include "engine_file_fuzz.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  static lastcut::fuzz::FuzzInputFile file("quads.obj");
-  try {
-    const lastcut::QuadMesh control = lastcut::read_quad_obj(file.write(data, size));
+  return lastcut::fuzz::read_engine_file(data, size, "quads.obj", [](const std::filesystem::path& path) {
+    const lastcut::QuadMesh control = lastcut::read_quad_obj(path);
     lastcut::subdivide_bezier(control, 2, lastcut::SampleSpread::EvenAtExtraordinary);
-  } catch (const lastcut::EngineError&) {
-    // a refusal with one line for the operator
-  }
-  return 0;
+  });
 }
