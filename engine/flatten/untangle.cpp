@@ -67,16 +67,15 @@ bool place_region(const TriangleFrames& frames, const std::vector<int>& movable,
   return true;
 }
 
-// Second strategy: Gauss-Seidel sweeps of the same averaging, growing one ring at a time, where mesh
-// boundary vertices may slide to the middle of their two boundary neighbours (for folds that reach the outline).
-UntangleReport relax_with_sliding_outline(const TriangleFrames& frames, const MeshTopology& topology,
-                                          Eigen::MatrixXd& UV, const std::vector<int>& flipped, int max_rings) {
-  UntangleReport report;
-  report.flipped_before = report.flipped_after = static_cast<int>(flipped.size());
-  const int vertex_count = static_cast<int>(UV.rows());
-  std::vector<char> on_boundary(vertex_count, 0);
+// 1 for the vertices of the outline (the disk's boundary loop), #V.
+std::vector<char> outline_flags(const MeshTopology& topology, int vertex_count) {
+  std::vector<char> on_boundary(static_cast<size_t>(vertex_count), 0);
   for (int v : topology.boundary_loops[0]) on_boundary[v] = 1;
-  std::vector<char> in_region(vertex_count, 0);
+  return on_boundary;
+}
+
+// The corners of the flipped triangles, each once in order of first appearance, marked in in_region (#V).
+std::vector<int> corners_of(const TriangleFrames& frames, const std::vector<int>& flipped, std::vector<char>& in_region) {
   std::vector<int> region;
   for (int f : flipped) {
     for (int v : frames.triangles[f]) {
@@ -86,6 +85,18 @@ UntangleReport relax_with_sliding_outline(const TriangleFrames& frames, const Me
       }
     }
   }
+  return region;
+}
+
+// Second strategy: Gauss-Seidel sweeps of the same averaging, growing one ring at a time, where mesh
+// boundary vertices may slide to the middle of their two boundary neighbours (for folds that reach the outline).
+UntangleReport relax_with_sliding_outline(const TriangleFrames& frames, const MeshTopology& topology,
+                                          Eigen::MatrixXd& UV, const std::vector<int>& flipped, int max_rings) {
+  UntangleReport report;
+  report.flipped_before = report.flipped_after = static_cast<int>(flipped.size());
+  const std::vector<char> on_boundary = outline_flags(topology, static_cast<int>(UV.rows()));
+  std::vector<char> in_region(static_cast<size_t>(UV.rows()), 0);
+  std::vector<int> region = corners_of(frames, flipped, in_region);
   const Eigen::MatrixXd original = UV;
   constexpr int kSweepsPerRing = 200;
   for (int ring = 1; ring <= max_rings; ++ring) {
@@ -129,19 +140,9 @@ UntangleReport regional_tutte(const TriangleFrames& frames, const MeshTopology& 
   report.flipped_before = static_cast<int>(flipped.size());
   report.flipped_after = report.flipped_before;
 
-  const int vertex_count = static_cast<int>(UV.rows());
-  std::vector<char> on_boundary(vertex_count, 0);
-  for (int v : topology.boundary_loops[0]) on_boundary[v] = 1;
-  std::vector<char> in_region(vertex_count, 0);
-  std::vector<int> region;  // breadth-first order: ring by ring
-  for (int f : flipped) {
-    for (int v : frames.triangles[f]) {
-      if (!in_region[v]) {
-        in_region[v] = 1;
-        region.push_back(v);
-      }
-    }
-  }
+  const std::vector<char> on_boundary = outline_flags(topology, static_cast<int>(UV.rows()));
+  std::vector<char> in_region(static_cast<size_t>(UV.rows()), 0);
+  std::vector<int> region = corners_of(frames, flipped, in_region);  // then grown breadth-first: ring by ring
   const Eigen::MatrixXd original = UV;
   int rings = 0;
   size_t ring_start = 0;
@@ -163,7 +164,7 @@ UntangleReport regional_tutte(const TriangleFrames& frames, const MeshTopology& 
       ring_start = inner_end;
     }
     std::vector<int> movable;
-    std::vector<int> movable_index(vertex_count, -1);
+    std::vector<int> movable_index(static_cast<size_t>(UV.rows()), -1);
     for (size_t i = 0; i < inner_end; ++i) {
       const int v = region[i];
       if (on_boundary[v]) continue;
