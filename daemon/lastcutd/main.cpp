@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <memory>
 #include <string>
 #include <tuple>
@@ -32,6 +33,8 @@
 namespace {
 
 constexpr int kExitConfig = 78;
+// EX_SOFTWARE: an internal error stopped the daemon (systemd restarts it; 78 it does not).
+constexpr int kExitInternal = 70;
 
 int check_config(const std::string& file) {
   const auto result = lastcut::daemon::load_daemon_config(file);
@@ -158,7 +161,16 @@ int run(const std::string& file) {
   std::unique_ptr<lastcut::daemon::JobFlow> flow;
   if (config->ledger) flow = std::make_unique<lastcut::daemon::LedgerNode>(config);
   else flow = std::make_unique<lastcut::daemon::Pipeline>(config);
-  const int code = serve(file, *flow, signals, notifier, loaded.config->status, live_status.get());
+  int code = 0;
+  try {
+    code = serve(file, *flow, signals, notifier, loaded.config->status, live_status.get());
+  } catch (const std::exception& error) {
+    // A bug in the loop's own steps (the engine's are caught per job). Stop in order, holding the jobs
+    // in hand, rather than abort; systemd starts lastcutd again (Restart=on-failure).
+    spdlog::critical("lastcutd stops on an internal error, please report it: {}", error.what());
+    notifier.stopping();
+    code = kExitInternal;
+  }
   flow.reset();
   if (live_status) live_status->stop();
   spdlog::info("lastcutd stopped");
