@@ -22,6 +22,8 @@ void BenchOptions::add_options(CLI::App& app) {
   app.add_option("--rounds", rounds, "this many improvement rounds instead of the time limits");
   app.add_option("--sweeps", sweeps, "strips: this many separation steps instead of the time limits");
   app.add_option("--svg-dir", svg_dir, "write a picture of every layout here");
+  app.add_option("--rotation-step", rotation_step_deg, "step of the rotations tried for freely rotating pieces, deg")
+      ->capture_default_str();
 }
 
 bool BenchOptions::selected(const std::string& name) const {
@@ -38,6 +40,7 @@ NestOptions BenchOptions::nest_options(double limit_s) {
   options.threads = threads;
   options.sweep_workers = workers;
   options.seed = seed;
+  options.free_rotation_step_deg = rotation_step_deg;
   options.run_parallel = team_->runner();
   return options;
 }

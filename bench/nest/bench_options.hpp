@@ -25,6 +25,7 @@ struct BenchOptions {
   long rounds = 0;                      // > 0: this many improvement rounds instead of the time limits
   long sweeps = 0;                      // > 0 (strips): this many separation steps instead of the time limits
   std::filesystem::path svg_dir;        // when set: a picture of every layout
+  double rotation_step_deg = NestOptions{}.free_rotation_step_deg;  // poses of freely rotating pieces
 
   // Registers the shared options on the benchmark's command line (CLI11: --help, unknown options refused).
   void add_options(CLI::App& app);
