@@ -39,6 +39,7 @@ void check_pattern_size(const std::string& source, const Polygon2& outline) {
   if (outline.points.size() > kMostPoints)
     throw EngineError(source + ": an outline of " + std::to_string(outline.points.size()) +
                       " points, more than 20000; simplify it in the drawing program");
+  if (outline.points.size() < 3) throw EngineError(source + ": no closed outline");
   Point2 low = outline.points.front(), high = low;
   for (const Point2& p : outline.points) low = low.cwiseMin(p), high = high.cwiseMax(p);
   const Point2 size = high - low;
