@@ -47,6 +47,27 @@ void refuse_closed_patch(const MeshTopology& topology) {
     throw EngineError("the scan is a closed surface, not an open patch; drop --no-segment to cut a last into halves");
 }
 
+// A patch of a last is at most about half a metre across (check_is_last allows lasts up to 500 mm).
+// Far more is a wrong length unit or a stray point far off the surface (found by fuzzing: one vertex
+// moved to 161 m gave a "mold" whose spike had collapsed, area -99 %).
+void refuse_absurd_patch(const TriMesh& mesh) {
+  constexpr double kLargestPatch_mm = 1000.0;
+  const Eigen::Vector3d extent = (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).transpose();
+  if (extent.maxCoeff() > kLargestPatch_mm) {
+    char text[240];
+    std::snprintf(text, sizeof text,
+                  "not a patch of a last: %.0f x %.0f x %.0f mm (at most 1000 mm across; a wrong length unit, or a "
+                  "stray point far off the surface?)",
+                  extent.x(), extent.y(), extent.z());
+    throw EngineError(text);
+  }
+}
+
+// An ARAP mold keeps the surface's area within a few per cent (the FIND halves: -0.5 to -7 %). Far
+// more means part of the surface collapsed or was stretched in the flattening: a spike or a fold in
+// the scan. The mold is still made, with a warning for the operator to look at it.
+constexpr double kAreaChangeWarning_pct = 25.0;
+
 // Rotation (det +1) and translation that put the flattening heel left, toe right, bounding box at
 // the origin (see the header).
 Eigen::MatrixXd place_flattening(const Eigen::MatrixXd& UV, const std::map<std::string, int>& landmarks) {
@@ -114,6 +135,7 @@ ScanResult scan_to_molds(const std::filesystem::path& scan, const ScanOptions& o
   if (!options.segment) {
     const MeshTopology& topology = intake.topology;
     refuse_closed_patch(topology);
+    refuse_absurd_patch(intake.mesh);
     clock.lap("patch check");
     result.segments.push_back(
         flatten_segment("patch", std::move(intake.mesh), topology, {}, options, result.notes, clock));
@@ -140,6 +162,18 @@ ScanResult scan_to_molds(const std::filesystem::path& scan, const ScanOptions& o
     for (Segment* half : order)
       result.segments.push_back(flatten_segment(half->name, std::move(half->mesh), half->topology, half->landmarks,
                                                 options, result.notes, clock));
+  }
+  for (const SegmentResult& segment : result.segments) {
+    const double change_pct = segment.measures.area_error_pct;
+    if (!(std::abs(change_pct) <= kAreaChangeWarning_pct)) {
+      char text[240];
+      std::snprintf(text, sizeof text,
+                    "%s: the mold's area is %.0f %% %s than the surface's: part of the surface collapsed or stretched in "
+                    "the flattening (a spike or a fold in the scan?); check the mold",
+                    segment.name.c_str(), std::abs(change_pct), change_pct < 0 ? "smaller" : "larger");
+      result.warnings.push_back(text);
+      result.notes.push_back(text);
+    }
   }
   result.profile = clock.stages();
   result.seconds_total = seconds_since(start);

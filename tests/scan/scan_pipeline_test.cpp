@@ -161,5 +161,56 @@ TEST_F(ScanPipeline, RefusesAnOpenPatchUnlessAskedNotToSegment) {
   EXPECT_THROW(scan_to_molds(dir_ / "for-patch.stl", no_segment), EngineError);
 }
 
+// A 10 x 10 cell grid patch, 80 x 60 mm, gently curved, with the middle vertex at height spike_mm.
+TriMesh grid_patch(double spike_mm) {
+  constexpr int n = 10;
+  TriMesh patch;
+  patch.V.resize((n + 1) * (n + 1), 3);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double x = 8.0 * i, y = 6.0 * j;
+      patch.V.row(j * (n + 1) + i) << x, y, 0.004 * (x - 40) * (x - 40) + 0.01 * (y - 30) * (y - 30);
+    }
+  patch.V((n / 2) * (n + 1) + n / 2, 2) = spike_mm;
+  patch.F.resize(2 * n * n, 3);
+  for (int j = 0, f = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+      patch.F.row(f++) << a, b, d;
+      patch.F.row(f++) << a, d, c;
+    }
+  return patch;
+}
+
+TEST_F(ScanPipeline, APatchWithAStrayPointIsRefusedAndOneWithASpikeWarns) {
+  ScanOptions no_segment;
+  no_segment.segment = false;
+  no_segment.read.unit = LengthUnit::Millimetre;
+  const fs::path plain = dir_ / "grid.obj";
+  write_obj(plain, grid_patch(0.0));
+  const ScanResult fine = scan_to_molds(plain, no_segment);
+  EXPECT_TRUE(fine.warnings.empty()) << fine.warnings.front();
+
+  // Found by fuzzing (scan_patch): one vertex of a half moved to 161 m gave a "mold" with area -99 %.
+  const fs::path stray = dir_ / "grid-stray.obj";
+  write_obj(stray, grid_patch(161271.0));
+  try {
+    scan_to_molds(stray, no_segment);
+    FAIL() << "a patch 161 m tall was flattened";
+  } catch (const EngineError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "not a patch of a last: 80 x 60 x 161271 mm (at most 1000 mm across; a wrong length unit, or a stray "
+              "point far off the surface?)");
+  }
+
+  // A spike the size check lets through: the mold is made, and the operator is told to look at it.
+  const fs::path spike = dir_ / "grid-spike.obj";
+  write_obj(spike, grid_patch(400.0));
+  const ScanResult spiked = scan_to_molds(spike, no_segment);
+  ASSERT_EQ(spiked.warnings.size(), 1u);
+  EXPECT_NE(spiked.warnings[0].find("patch: the mold's area is "), std::string::npos) << spiked.warnings[0];
+  EXPECT_NE(spiked.warnings[0].find("smaller than the surface's"), std::string::npos) << spiked.warnings[0];
+}
+
 }  // namespace
 }  // namespace lastcut
