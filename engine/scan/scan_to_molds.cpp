@@ -52,7 +52,7 @@ void refuse_closed_patch(const MeshTopology& topology) {
 // moved to 161 m gave a "mold" whose spike had collapsed, area -99 %).
 void refuse_absurd_patch(const TriMesh& mesh) {
   constexpr double kLargestPatch_mm = 1000.0;
-  const Eigen::Vector3d extent = (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).transpose();
+  const Eigen::Vector3d extent = bounding_box_size(mesh);
   if (extent.maxCoeff() > kLargestPatch_mm) {
     char text[240];
     std::snprintf(text, sizeof text,
