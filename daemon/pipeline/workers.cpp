@@ -52,14 +52,17 @@ void Pipeline::compute_job(const std::string& job_id, const std::string& worker)
   const Result<MoldsMade> outcome =
       compute_molds(job_dir / state->scan_name, job_dir, state->ticket, job_mold_options(state->ticket, settings->jobs),
                     settings->jobs.max_hole_across_mm);
-  monitor_.end(worker);
   const double took_s = seconds_since(start);
   if (!outcome) {
+    monitor_.end(worker);
     fail_job(*spool_, *state, outcome.error());
     return;
   }
+  // Inside the bracket too: a comparison with a reference pattern is computation on the job's
+  // behalf, and one that hung must starve the watchdog like a hung flattening.
   const Result<ReferenceCheck> checked =
       check_against_references(job_dir, state->ticket, settings->review.corner_tolerance_mm);
+  monitor_.end(worker);
   if (!checked) {
     fail_job(*spool_, *state, checked.error());
     return;
