@@ -1,13 +1,9 @@
 // The real `lastcut nest` binary: writes a layout that the independent checker accepts and a
 // picture, exits 3 when pieces are left over, and refuses bad input with one line.
 #include <gtest/gtest.h>
-
-#include <sys/wait.h>
-
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -16,26 +12,10 @@
 #include "engine/nest/layout_check.hpp"
 #include "engine/nest/nest_json.hpp"
 #include "nest_test_instances.hpp"
+#include "tests/support/lastcut_cli.hpp"
 
 namespace lastcut {
 namespace {
-
-const std::filesystem::path kBinary = LASTCUT_BINARY_DIR "/bin/lastcut";
-
-struct CliRun {
-  int exit_code;
-  std::string output;
-};
-
-CliRun run(const std::string& arguments) {
-  const std::string command = kBinary.string() + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string output;
-  char buffer[512];
-  while (pipe && fgets(buffer, sizeof buffer, pipe)) output += buffer;
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
 
 std::filesystem::path temp_dir() {
   const auto dir = std::filesystem::temp_directory_path() / ("lastcut-nest-cli-" + std::to_string(::getpid()));
@@ -44,13 +24,14 @@ std::filesystem::path temp_dir() {
 }
 
 TEST(NestCli, WritesACheckedLayoutAndPicture) {
-  ASSERT_TRUE(std::filesystem::exists(kBinary)) << "build the lastcut target first";
   const auto dir = temp_dir();
   std::ofstream(dir / "strip.json") << instance_to_json(test::small_strip()).dump();
-  const CliRun result = run("nest " + (dir / "strip.json").string() + " --time-limit 1 --threads 2 --gap 1 -o " +
-                         (dir / "layout.json").string() + " --svg " + (dir / "layout.svg").string());
-  ASSERT_EQ(result.exit_code, 0) << result.output;
-  EXPECT_NE(result.output.find("10 of 10 pieces"), std::string::npos) << result.output;
+  const test::CommandRun result =
+      test::run_lastcut("nest " + (dir / "strip.json").string() + " --time-limit 1 --threads 2 --gap 1 -o " +
+                            (dir / "layout.json").string() + " --svg " + (dir / "layout.svg").string(),
+                        dir);
+  ASSERT_EQ(result.exit_code, 0) << result.all();
+  EXPECT_NE(result.all().find("10 of 10 pieces"), std::string::npos) << result.all();
   const nlohmann::json json = read_json_file(dir / "layout.json");
   const Layout layout = layout_from_json(json);
   const NestInstance embedded = instance_from_layout_json(json);
@@ -68,9 +49,11 @@ TEST(NestCli, ExitsThreeWhenPiecesAreLeftOver) {
   NestInstance instance = test::small_hide();
   instance.items.push_back(test::item(5, test::rectangle(500, 40), 1, {}));
   std::ofstream(dir / "hide.json") << instance_to_json(instance).dump();
-  const CliRun result = run("nest " + (dir / "hide.json").string() + " --time-limit 0.5 --threads 1 -o " + (dir / "layout.json").string());
-  EXPECT_EQ(result.exit_code, 3) << result.output;
-  EXPECT_NE(result.output.find("not placed: item 5"), std::string::npos) << result.output;
+  const test::CommandRun result = test::run_lastcut(
+      "nest " + (dir / "hide.json").string() + " --time-limit 0.5 --threads 1 -o " + (dir / "layout.json").string(),
+      dir);
+  EXPECT_EQ(result.exit_code, 3) << result.all();
+  EXPECT_NE(result.all().find("not placed: item 5"), std::string::npos) << result.all();
   std::filesystem::remove_all(dir);
 }
 
@@ -81,9 +64,11 @@ TEST(NestCli, MoldsFromSeveralLastsCarryTheirFolderOnTheLabel) {
     std::filesystem::create_directories(dir / last);
     write_mold_dxf(dir / last / "medial.dxf", Mold{"medial", test::rectangle(120, 60), {}});
   }
-  const CliRun result = run("nest " + (dir / "m-38-left").string() + " " + (dir / "m-40-right").string() +
-                            " --roll-width 300 --time-limit 0.5 --threads 1 -o " + (dir / "batch.json").string());
-  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const test::CommandRun result =
+      test::run_lastcut("nest " + (dir / "m-38-left").string() + " " + (dir / "m-40-right").string() +
+                            " --roll-width 300 --time-limit 0.5 --threads 1 -o " + (dir / "batch.json").string(),
+                        dir);
+  ASSERT_EQ(result.exit_code, 0) << result.all();
   const NestInstance embedded = instance_from_layout_json(read_json_file(dir / "batch.json"));
   EXPECT_EQ(embedded.name, "batch");  // several lasts: named after the layout, not the first last
   ASSERT_EQ(embedded.items.size(), 2u);
@@ -95,16 +80,20 @@ TEST(NestCli, MoldsFromSeveralLastsCarryTheirFolderOnTheLabel) {
 TEST(NestCli, RefusesBadInputWithOneLine) {
   const auto dir = temp_dir();
   std::ofstream(dir / "broken.json") << "{\"strip_height\": 10, \"items\": [{\"id\": 0, \"shape\": [[0,0],[1,0]]}]}";
-  const CliRun bad = run("nest " + (dir / "broken.json").string() + " --time-limit 1 -o " + (dir / "out.json").string());
+  const test::CommandRun bad = test::run_lastcut(
+      "nest " + (dir / "broken.json").string() + " --time-limit 1 -o " + (dir / "out.json").string(), dir);
   EXPECT_EQ(bad.exit_code, 1);
-  EXPECT_NE(bad.output.find("lastcut nest: error:"), std::string::npos) << bad.output;
-  EXPECT_NE(bad.output.find("at least 3"), std::string::npos) << bad.output;
-  EXPECT_EQ(std::count(bad.output.begin(), bad.output.end(), '\n'), 1) << bad.output;
+  EXPECT_EQ(bad.out, "");
+  EXPECT_EQ(bad.err.rfind("lastcut nest: error:", 0), 0u) << bad.err;
+  EXPECT_NE(bad.err.find("at least 3"), std::string::npos) << bad.err;
+  EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "out.json"));
-  const CliRun missing = run("nest " + (dir / "missing.json").string() + " --time-limit 1 -o " + (dir / "out.json").string());
-  EXPECT_EQ(missing.exit_code, 1) << missing.output;
-  const CliRun molds_without_roll = run("nest " + dir.string() + " --time-limit 1 -o " + (dir / "out.json").string());
-  EXPECT_EQ(molds_without_roll.exit_code, 1) << molds_without_roll.output;
+  const test::CommandRun missing = test::run_lastcut(
+      "nest " + (dir / "missing.json").string() + " --time-limit 1 -o " + (dir / "out.json").string(), dir);
+  EXPECT_EQ(missing.exit_code, 1) << missing.all();
+  const test::CommandRun molds_without_roll =
+      test::run_lastcut("nest " + dir.string() + " --time-limit 1 -o " + (dir / "out.json").string(), dir);
+  EXPECT_EQ(molds_without_roll.exit_code, 1) << molds_without_roll.all();
   std::filesystem::remove_all(dir);
 }
 

@@ -3,12 +3,9 @@
 // go on one hide together: on a hide too small for all of them, none; the layout passes the
 // independent checker and keeps to the rotation step.
 #include <gtest/gtest.h>
-
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -18,24 +15,10 @@
 #include "engine/mold/mold_dxf.hpp"
 #include "engine/nest/layout_check.hpp"
 #include "engine/nest/nest_json.hpp"
+#include "tests/support/lastcut_cli.hpp"
 
 namespace lastcut {
 namespace {
-
-struct CliRun {
-  int exit_code;
-  std::string output;
-};
-
-CliRun run(const std::string& arguments) {
-  const std::string command = std::string(LASTCUT_BINARY_DIR "/bin/lastcut ") + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string output;
-  char buffer[512];
-  while (pipe && fgets(buffer, sizeof buffer, pipe)) output += buffer;
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
 
 Polygon2 rectangle(double w, double h) { return {{{0, 0}, {w, 0}, {w, h}, {0, h}}}; }
 
@@ -51,10 +34,12 @@ TEST(NestHidesCli, MoldsGoWholeOnOneHideFile) {
   // Hide B: 600 x 400 mm with a hole in its middle.
   std::ofstream(dir / "b.json") << R"({"shape": {"type": "polygon", "data": {"outer": [[0,0],[600,0],[600,400],[0,400]],
       "inner": [[[280,180],[320,180],[320,220],[280,220]]]}}})";
-  const CliRun result = run("nest " + (dir / "m-40-left").string() + " --mirrored-twins --time-limit 0.5 --threads 1 --gap 2 " +
-                            "--rotation-step 90 -o " + (dir / "layout.json").string() + " --hides " +
-                            (dir / "a.dxf").string() + " " + (dir / "b.json").string());
-  ASSERT_EQ(result.exit_code, 0) << result.output;
+  const test::CommandRun result = test::run_lastcut(
+      "nest " + (dir / "m-40-left").string() + " --mirrored-twins --time-limit 0.5 --threads 1 --gap 2 " +
+          "--rotation-step 90 -o " + (dir / "layout.json").string() + " --hides " + (dir / "a.dxf").string() + " " +
+          (dir / "b.json").string(),
+      dir);
+  ASSERT_EQ(result.exit_code, 0) << result.all();
   const nlohmann::json json = read_json_file(dir / "layout.json");
   const Layout layout = layout_from_json(json);
   const NestInstance instance = instance_from_layout_json(json);
@@ -68,17 +53,20 @@ TEST(NestHidesCli, MoldsGoWholeOnOneHideFile) {
     EXPECT_EQ(std::fmod(p.rotation_deg, 90.0), 0.0) << p.rotation_deg;
   }
   EXPECT_EQ(bins, std::set<int>{1}) << "all on hide B, none on A";
-  EXPECT_NE(result.output.find("4 of 4 pieces on 1 hide(s)"), std::string::npos) << result.output;
+  EXPECT_NE(result.all().find("4 of 4 pieces on 1 hide(s)"), std::string::npos) << result.all();
 
   // A bad hide file: one line, exit 1.
   DxfDocument open(DxfVersion::R12, {{"HIDE", 7}});
   open.polyline("HIDE", rectangle(600, 400).points, false);
   std::ofstream(dir / "open.dxf") << open.str();
-  const CliRun bad = run("nest " + (dir / "m-40-left").string() + " --time-limit 0.5 -o " + (dir / "x.json").string() +
-                         " --hides " + (dir / "open.dxf").string());
+  const test::CommandRun bad =
+      test::run_lastcut("nest " + (dir / "m-40-left").string() + " --time-limit 0.5 -o " + (dir / "x.json").string() +
+                            " --hides " + (dir / "open.dxf").string(),
+                        dir);
   EXPECT_EQ(bad.exit_code, 1);
-  EXPECT_EQ(bad.output, "lastcut nest: error: " + (dir / "open.dxf").string() +
-                            ": the hide outline on layer HIDE is open; close it in the drawing program\n");
+  EXPECT_EQ(bad.out, "");
+  EXPECT_EQ(bad.err, "lastcut nest: error: " + (dir / "open.dxf").string() +
+                         ": the hide outline on layer HIDE is open; close it in the drawing program\n");
   std::filesystem::remove_all(dir);
 }
 

@@ -15,6 +15,8 @@ struct CommandRun {
   int exit_code = -1;
   bool crashed = false;  // killed by a signal (the shell reports that as 128 + signal)
   std::string out, err;
+  // What an operator sees on the terminal, for messages that may go to either stream.
+  std::string all() const { return out + err; }
 };
 
 inline std::string read_text(const std::filesystem::path& path) {
