@@ -10,19 +10,12 @@
 
 #include "engine/lastgen/generate_last.hpp"
 #include "engine/orient/orient_last.hpp"
+#include "tests/support/last_cases.hpp"
 
 namespace lastcut {
 namespace {
 
-struct LastCase {
-  int eu_size;
-  FootSide side;
-  std::uint64_t seed;
-};
-
-std::string case_name(const testing::TestParamInfo<LastCase>& info) {
-  return "EU" + std::to_string(info.param.eu_size) + (info.param.side == FootSide::Left ? "Left" : "Right");
-}
+using test::LastCase;
 
 TriMesh transformed(const TriMesh& mesh, const Eigen::Affine3d& pose) {
   TriMesh result = mesh;
@@ -69,7 +62,7 @@ INSTANTIATE_TEST_SUITE_P(Sizes, OrientGeneratedLast,
                          testing::Values(LastCase{35, FootSide::Left, 31}, LastCase{37, FootSide::Right, 32},
                                          LastCase{41, FootSide::Left, 33}, LastCase{44, FootSide::Right, 34},
                                          LastCase{47, FootSide::Left, 35}, LastCase{47, FootSide::Right, 36}),
-                         case_name);
+                         test::last_case_name);
 
 TEST(OrientGeneratedLast, IsDeterministic) {
   LastParams params = LastParams::for_eu_size(42, FootSide::Right);

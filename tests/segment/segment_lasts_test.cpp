@@ -13,19 +13,12 @@
 #include "engine/segment/segment_last.hpp"
 #include "engine/segment/surface_regions.hpp"
 #include "segment_test_support.hpp"
+#include "tests/support/last_cases.hpp"
 
 namespace lastcut {
 namespace {
 
-struct LastCase {
-  int eu_size;
-  FootSide side;
-  std::uint64_t seed;
-};
-
-std::string case_name(const testing::TestParamInfo<LastCase>& info) {
-  return "EU" + std::to_string(info.param.eu_size) + (info.param.side == FootSide::Left ? "Left" : "Right");
-}
+using test::LastCase;
 
 OrientedLast scanned_last(const LastCase& c, int triangles) {
   LastParams params = LastParams::for_eu_size(c.eu_size, c.side);
@@ -121,7 +114,7 @@ TEST_P(SegmentGeneratedLast, GivesTwoSmoothDiskHalvesOnTheRightSides) {
 INSTANTIATE_TEST_SUITE_P(Sizes, SegmentGeneratedLast,
                          testing::Values(LastCase{35, FootSide::Right, 11}, LastCase{39, FootSide::Left, 12},
                                          LastCase{43, FootSide::Right, 13}, LastCase{47, FootSide::Left, 14}),
-                         case_name);
+                         test::last_case_name);
 
 TEST(SegmentGeneratedLast, IsDeterministic) {
   const OrientedLast last = scanned_last({41, FootSide::Left, 21}, 12000);
