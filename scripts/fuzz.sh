@@ -37,6 +37,7 @@ max_len_of() {
     nest_instance | layout) echo 32768 ;;
     grbl_reply) echo 4096 ;;
     hpgl_reply) echo 512 ;;  # a full ESC.B buffer ("0") makes the driver sleep 20 ms: keep runs short
+    compare) echo 256 ;;  # two outlines of at most 24 points and five marks (compare_fuzz.cpp)
     *) echo 16384 ;;
   esac
 }

@@ -75,7 +75,7 @@ int run_compare(const CompareArguments& arguments) {
     const fs::path mold_path = mold_file(arguments);
     Mold mold = read_mold_dxf(mold_path);
     if (mold.name.empty()) mold.name = mold_path.stem().string();
-    check_pattern_size(mold_path.string(), mold.outline);
+    check_pattern_outline(mold_path.string(), mold.outline);
     const Mold reference = read_reference_outline(arguments.reference);
     CompareOptions options;
     options.overlap.allow_mirror = !arguments.no_mirror;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "engine/core/engine_error.hpp"
+#include "engine/mold/outline_geometry.hpp"
 
 namespace lastcut {
 
@@ -33,7 +34,23 @@ Polygon2 largest_closed_outline(const std::filesystem::path& path, std::vector<P
   return outline;
 }
 
-void check_pattern_size(const std::string& source, const Polygon2& outline) {
+namespace {
+
+// Where edges i and j of `outline` (from point i to point i+1) meet: their crossing, or for edges that
+// overlap along a line, the start of edge j.
+Point2 edges_meet_at(const Polygon2& outline, int i, int j) {
+  const size_t n = outline.points.size();
+  const Point2 p = outline.points[static_cast<size_t>(i)], r = outline.points[(static_cast<size_t>(i) + 1) % n] - p;
+  const Point2 q = outline.points[static_cast<size_t>(j)], s = outline.points[(static_cast<size_t>(j) + 1) % n] - q;
+  const double denominator = r.x() * s.y() - r.y() * s.x();
+  if (std::abs(denominator) <= 1e-12 * r.norm() * s.norm()) return q;
+  const Point2 qp = q - p;
+  return p + std::clamp((qp.x() * s.y() - qp.y() * s.x()) / denominator, 0.0, 1.0) * r;
+}
+
+}  // namespace
+
+void check_pattern_outline(const std::string& source, const Polygon2& outline) {
   constexpr double kSmallest_mm = 5.0, kLargest_mm = 2000.0, kLongest_mm = 10000.0;
   constexpr size_t kMostPoints = 20000;
   if (outline.points.size() > kMostPoints)
@@ -53,6 +70,21 @@ void check_pattern_size(const std::string& source, const Polygon2& outline) {
     std::snprintf(line, sizeof line, ": the outline is %.3g m long, longer than 10 m; it is no shoe pattern", around / 1000.0);
     throw EngineError(source + line);
   }
+  // A crossing outline has no one area: the overlap 2C/(A+B) came out above 100 % on one (fuzzing).
+  // A point repeated by the drawing program is no crossing, so repeats are dropped for the test.
+  Polygon2 distinct;
+  for (const Point2& p : outline.points)
+    if (distinct.points.empty() || p != distinct.points.back()) distinct.points.push_back(p);
+  while (distinct.points.size() > 1 && distinct.points.back() == distinct.points.front()) distinct.points.pop_back();
+  if (distinct.points.size() < 3) throw EngineError(source + ": no closed outline");
+  if (const auto crossing = find_self_intersection(distinct)) {
+    const Point2 at = edges_meet_at(distinct, crossing->first, crossing->second);
+    std::snprintf(line, sizeof line,
+                  ": the outline crosses or touches itself near (%.1f, %.1f) mm; a pattern is one line that does not "
+                  "cross itself, fix it in the drawing program",
+                  at.x(), at.y());
+    throw EngineError(source + line);
+  }
 }
 
 Mold read_reference_outline(const std::filesystem::path& path) {
@@ -70,7 +102,7 @@ Mold read_reference_outline(const std::filesystem::path& path) {
   } else {
     throw EngineError(path.string() + ": not a pattern file; expected a .dxf or .svg outline");
   }
-  check_pattern_size(path.string(), mold.outline);
+  check_pattern_outline(path.string(), mold.outline);
   return mold;
 }
 

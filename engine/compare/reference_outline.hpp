@@ -14,7 +14,8 @@
 // Size: at least 5 mm and at most 2000 mm across, at most 10 m around, at most 20,000 points. Outside
 // that it is no shoe pattern (most often a drawing in other units than its header says), and the
 // comparison, which samples the outline every 0.25 mm against every edge of the other, would run for
-// minutes on it.
+// minutes on it. Shape: the outline may not cross or touch itself (a crossing outline has no one
+// area to compare); a point repeated in a row is not a crossing.
 // Every refusal is an EngineError of one line that names the file.
 #include <filesystem>
 #include <string>
@@ -31,8 +32,9 @@ Mold read_reference_outline(const std::filesystem::path& path);
 Mold read_dxf_outline(const std::filesystem::path& path);
 Polygon2 read_svg_outline(const std::filesystem::path& path);
 
-// Refuses (EngineError, one line starting with `source`) an outline outside the size rules above.
-void check_pattern_size(const std::string& source, const Polygon2& outline);
+// Refuses (EngineError, one line starting with `source`) an outline outside the size and shape rules
+// above.
+void check_pattern_outline(const std::string& source, const Polygon2& outline);
 
 // Largest-area closed ring of `rings` (each #P >= 3, mm), made counter-clockwise. Throws the
 // "no closed outline" refusal naming `path` when there is none with area.

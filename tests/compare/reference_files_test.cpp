@@ -172,6 +172,12 @@ TEST_F(ReferenceFiles, BadFilesAreRefusedWithOneLine) {
   for (int k = 1; k <= 20000; ++k) dense += " L" + std::to_string(0.015 * k) + " " + std::to_string((k % 2) * 0.01);
   dense += " L 300 200 Z\"/></svg>";
   expect_refusal(write("dense.svg", dense), ": an outline of 20002 points, more than 20000; simplify it in the drawing program");
+  // A traced outline that crosses itself (a figure eight): no one area to compare. A repeated point is no crossing.
+  expect_refusal(write("crossed.dxf", dxf("", lwpolyline({{0, 0}, {100, 60}, {100, 0}, {0, 40}}, true))),
+                 ": the outline crosses or touches itself near (40.0, 24.0) mm; a pattern is one line that does not "
+                 "cross itself, fix it in the drawing program");
+  EXPECT_NO_THROW(read_reference_outline(
+      write("repeated-point.dxf", dxf("", lwpolyline({{0, 0}, {100, 0}, {100, 0}, {100, 50}, {0, 50}, {0, 0}}, true)))));
   expect_refusal(write("nothing.dxf", dxf("", "")), ": no closed outline");
   expect_refusal(write("arc.svg", "<svg width=\"10mm\" viewBox=\"0 0 10 10\"><path d=\"M0 0 A 5 5 0 0 1 10 0 Z\"/></svg>"),
                  ": path command 'A' is not supported; use M, L, H, V, C, Q and Z (convert arcs and smooth curves to paths)");

@@ -1,9 +1,9 @@
 // Fuzz target: reading a reference pattern as DXF (engine/compare/reference_outline.hpp), what
 // lastcutd does when a job's sidecar names a reference pattern (daemon/pipeline/reference_check.cpp)
 // and what `lastcut compare MOLD REFERENCE` does: read_reference_outline parses the file and refuses
-// sizes no shoe pattern has (check_pattern_size). The comparison itself is left out: under the
-// sanitizers one takes 1-6 s (Clipper, at every trial motion of the alignment), too slow to fuzz;
-// the size rules bound its work instead (docs/fuzzing.md).
+// sizes and shapes no shoe pattern has (check_pattern_outline). The comparison itself is left out:
+// under the sanitizers one of real patterns takes 1-6 s (Clipper, at every trial motion of the
+// alignment); the target `compare` fuzzes it on small outlines made from the bytes directly.
 //
 // What counts as fine: read_reference_outline documents EngineError, one line, for a file that is not
 // a usable pattern; the daemon then fails the job with that line. Any other exception surfaces as a
