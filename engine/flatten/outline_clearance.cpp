@@ -2,13 +2,12 @@
 #include "engine/flatten/outline_clearance.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 #include <utility>
 
 #include "engine/core/engine_error.hpp"
+#include "engine/core/near_edge_pairs.hpp"
 #include "engine/core/polygon.hpp"
 #include "engine/core/segment_predicates.hpp"
 
@@ -39,55 +38,11 @@ OutlineClearance::OutlineClearance(std::vector<int> loop, double clearance_mm)
 
 template <typename Pair>
 bool OutlineClearance::for_each_near_pair(const Eigen::MatrixXd& UV, double reach_mm, Pair pair) const {
-  const int n = static_cast<int>(loop_.size());
-  Eigen::Vector2d lo = at(UV, loop_[0]), hi = lo;
-  double total_length = 0.0;
-  for (int i = 0; i < n; ++i) {
-    const Eigen::Vector2d p = at(UV, loop_[i]);
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-    total_length += (at(UV, loop_[(i + 1) % n]) - p).norm();
-  }
-  if (!lo.allFinite() || !hi.allFinite()) return pair(-1, -1);  // a diverged map: let the caller refuse it
-  lo.array() -= reach_mm;
-  hi.array() += reach_mm;
-  // Cells about two mean edges wide, never finer than the reach nor than 1/1024 of the extent.
-  const double extent = std::max(hi.x() - lo.x(), hi.y() - lo.y());
-  const double cell = std::max({2.0 * total_length / n, 2.0 * reach_mm, extent / 1024.0, 1e-9});
-  const auto cell_of = [&](double value, double origin) { return static_cast<std::int64_t>((value - origin) / cell); };
-  const std::int64_t rows = cell_of(hi.y(), lo.y()) + 1;
-
-  // Per edge its cell range; (cell key, edge) sorted so that each cell's edges are consecutive.
-  std::vector<std::array<std::int64_t, 4>> range(static_cast<size_t>(n));
-  std::vector<std::pair<std::int64_t, int>> entries;
-  entries.reserve(4 * static_cast<size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    const Eigen::Vector2d a = at(UV, loop_[i]), b = at(UV, loop_[(i + 1) % n]);
-    auto& r = range[static_cast<size_t>(i)];
-    r = {cell_of(std::min(a.x(), b.x()) - reach_mm, lo.x()), cell_of(std::max(a.x(), b.x()) + reach_mm, lo.x()),
-         cell_of(std::min(a.y(), b.y()) - reach_mm, lo.y()), cell_of(std::max(a.y(), b.y()) + reach_mm, lo.y())};
-    for (std::int64_t x = r[0]; x <= r[1]; ++x)
-      for (std::int64_t y = r[2]; y <= r[3]; ++y) entries.emplace_back(x * rows + y, i);
-  }
-  std::sort(entries.begin(), entries.end());
-  for (size_t s = 0; s < entries.size();) {
-    size_t e = s;
-    while (e < entries.size() && entries[e].first == entries[s].first) ++e;
-    const std::int64_t x = entries[s].first / rows, y = entries[s].first % rows;
-    for (size_t p = s; p < e; ++p) {
-      for (size_t q = p + 1; q < e; ++q) {
-        const int i = entries[p].second, j = entries[q].second;  // i < j: sorted within the cell
-        if (j == i + 1 || (i == 0 && j == n - 1)) continue;      // neighbours share a vertex
-        const auto& ri = range[static_cast<size_t>(i)];
-        const auto& rj = range[static_cast<size_t>(j)];
-        // Visit each pair once: in the lowest cell both ranges share.
-        if (x != std::max(ri[0], rj[0]) || y != std::max(ri[2], rj[2])) continue;
-        if (!pair(i, j)) return false;
-      }
-    }
-    s = e;
-  }
-  return true;
+  const EdgePairScan scan = for_each_near_edge_pair(
+      static_cast<int>(loop_.size()), [&](int k) { return at(UV, loop_[static_cast<size_t>(k)]); }, reach_mm,
+      [&](int i, int j) { return pair(std::min(i, j), std::max(i, j)); });
+  if (scan == EdgePairScan::NotFinite) return pair(-1, -1);  // a diverged map: let the caller refuse it
+  return scan == EdgePairScan::Completed;
 }
 
 bool OutlineClearance::crosses(const Eigen::MatrixXd& UV) const {

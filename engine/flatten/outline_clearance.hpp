@@ -9,7 +9,7 @@
 // found by halving (arap_iterations.hpp) and each trial is tested at its end point only: a map whose
 // triangles are all positively oriented and whose outline is a simple closed curve is injective on a disk,
 // whatever path led to it, so the end-point test suffices for the iterate to be a bijection onto its image.
-// Broad phase: a uniform grid over the edges' boxes grown by the clearance (boundary loops have ~1-3k edges).
+// Broad phase: engine/core/near_edge_pairs.hpp, over the edges' boxes grown by half the clearance.
 #include <Eigen/Core>
 #include <vector>
 

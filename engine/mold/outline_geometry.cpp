@@ -2,55 +2,30 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <limits>
-#include <set>
-#include <unordered_map>
 #include <vector>
 
+#include "engine/core/engine_error.hpp"
+#include "engine/core/near_edge_pairs.hpp"
 #include "engine/core/segment_predicates.hpp"
 
 namespace lastcut {
 
 namespace {
 
-bool adjacent(int i, int j, int n) { return i == j || (i + 1) % n == j || (j + 1) % n == i; }
-
-// Calls visit(i, j) with i < j for every pair of non-adjacent touching edges until it returns false.
+// Calls visit(i, j) for every pair of edges that share no vertex and touch, until it returns false.
+// Throws EngineError for a point that is not a finite number.
 template <typename Visit>
 void for_each_intersection(const Polygon2& polygon, Visit visit) {
   const auto& p = polygon.points;
   const int n = static_cast<int>(p.size());
-  if (n < 4) return;
-  double total_length = 0.0;
-  for (int i = 0; i < n; ++i) total_length += (p[(i + 1) % n] - p[i]).norm();
-  const double cell = std::max(2.0 * total_length / n, 1e-9);
-  Point2 lo = p[0];
-  for (const auto& q : p) lo = lo.cwiseMin(q);
-  auto cell_of = [&](double value, double origin) { return static_cast<std::int64_t>(std::floor((value - origin) / cell)); };
-
-  std::unordered_map<std::int64_t, std::vector<int>> grid;
-  for (int i = 0; i < n; ++i) {
-    const Point2& a = p[i];
-    const Point2& b = p[(i + 1) % n];
-    const std::int64_t x0 = cell_of(std::min(a.x(), b.x()), lo.x()), x1 = cell_of(std::max(a.x(), b.x()), lo.x());
-    const std::int64_t y0 = cell_of(std::min(a.y(), b.y()), lo.y()), y1 = cell_of(std::max(a.y(), b.y()), lo.y());
-    for (std::int64_t x = x0; x <= x1; ++x)
-      for (std::int64_t y = y0; y <= y1; ++y) grid[x * 4000037 + y].push_back(i);
-  }
-  std::set<std::pair<int, int>> seen;
-  for (const auto& [key, edges] : grid) {
-    for (size_t s = 0; s < edges.size(); ++s) {
-      for (size_t t = s + 1; t < edges.size(); ++t) {
-        const int i = std::min(edges[s], edges[t]);
-        const int j = std::max(edges[s], edges[t]);
-        if (adjacent(i, j, n)) continue;
-        if (!segments_touch(p[i], p[(i + 1) % n], p[j], p[(j + 1) % n])) continue;
-        if (!seen.emplace(i, j).second) continue;
-        if (!visit(i, j)) return;
-      }
-    }
-  }
+  const EdgePairScan scan = for_each_near_edge_pair(
+      n, [&](int k) { return p[static_cast<size_t>(k)]; }, 0.0,
+      [&](int i, int j) {
+        if (!segments_touch(p[i], p[(i + 1) % n], p[j], p[(j + 1) % n])) return true;
+        return visit(std::min(i, j), std::max(i, j));
+      });
+  if (scan == EdgePairScan::NotFinite) throw EngineError("outline check: a point of the outline is not a finite number");
 }
 
 }  // namespace

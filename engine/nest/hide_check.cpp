@@ -7,6 +7,7 @@
 #include <polyclipping/clipper.hpp>
 
 #include "engine/core/engine_error.hpp"
+#include "engine/core/near_edge_pairs.hpp"
 #include "engine/core/segment_predicates.hpp"
 #include "engine/nest/clipper_paths.hpp"
 #include "engine/nest/hide_file.hpp"
@@ -14,26 +15,13 @@
 namespace lastcut {
 namespace {
 
-// True when two edges that are not neighbours along the ring meet (a sweep over x keeps this near
-// n log n for the thousands of points of a digitized outline).
+// True when two edges that are not neighbours along the ring meet; the ring's points are finite.
 bool self_intersects(const Polygon2& ring) {
   const auto& p = ring.points;
-  const size_t n = p.size();
-  std::vector<size_t> order(n);
-  for (size_t i = 0; i < n; ++i) order[i] = i;
-  const auto low_x = [&](size_t e) { return std::min(p[e].x(), p[(e + 1) % n].x()); };
-  const auto high_x = [&](size_t e) { return std::max(p[e].x(), p[(e + 1) % n].x()); };
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return low_x(a) < low_x(b); });
-  for (size_t i = 0; i < n; ++i) {
-    const size_t e = order[i];
-    for (size_t j = i + 1; j < n && low_x(order[j]) <= high_x(e); ++j) {
-      const size_t f = order[j];
-      const size_t gap = (e > f ? e - f : f - e);
-      if (gap == 1 || gap == n - 1) continue;  // neighbours share their common vertex only
-      if (segments_touch(p[e], p[(e + 1) % n], p[f], p[(f + 1) % n])) return true;
-    }
-  }
-  return false;
+  const int n = static_cast<int>(p.size());
+  return for_each_near_edge_pair(n, [&](int k) { return p[static_cast<size_t>(k)]; }, 0.0, [&](int i, int j) {
+           return !segments_touch(p[i], p[(i + 1) % n], p[j], p[(j + 1) % n]);
+         }) != EdgePairScan::Completed;
 }
 
 // Area (mm^2) of `ring` outside `outer`, by Clipper on a 1 um grid.
