@@ -44,6 +44,12 @@ struct HidePieces {
 
 HidePieces prepare_hide_pieces(const NestInstance& instance, const NestOptions& options);
 
+// Which hide each piece lies on, and where.
+struct HidePlacement {
+  std::vector<int> slot_of;        // per piece; -1 = not placed
+  std::vector<PieceState> state;   // per piece, in its slot's frame
+};
+
 // The pair rule, shared with the checker's documentation: two pieces of one group are near when
 // their centroids are at most pair_distance_mm apart (instance value when > 0, otherwise the mean
 // of their bounding box diagonals plus the gap). A group is near when every piece has another

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 
 #include "engine/nest/hide_eject.hpp"
 #include "engine/nest/hide_greedy.hpp"
 #include "engine/nest/hide_merge.hpp"
+#include "engine/nest/hide_regroup.hpp"
 #include "engine/nest/hide_repack.hpp"
 #include "engine/nest/nest_random.hpp"
 #include "engine/nest/parallel_separation.hpp"
@@ -27,6 +29,9 @@ constexpr long kPerTarget = 4;    // failed attempts on one hide before the next
 constexpr long kChainPeriod = 2;  // every other attempt is an ejection chain (3 and 1 measured worse)
 constexpr long kMergePeriod = 3;  // every third chain merges two hides into an unused one (hide_merge)
 constexpr double kMergeFill = 0.74;  // merges tried up to this fill of the hides left (Test1: 72 % reached)
+constexpr double kRegroupFill = 0.74;  // regroupings tried up to this fill of the fewer hides
+constexpr double kRegroupMin_s = 10;   // time of one regrouping, unless less is left
+constexpr long kRegroupAfterRounds = 5;  // rounds without a hide fewer before the regrouping is tried
 
 
 // How hard one insertion tries; grows while no attempt succeeds, back to 0 after a success.
@@ -42,10 +47,12 @@ class HideSearch {
   HideSearch(const NestInstance& instance, const HidePieces& pieces, const NestOptions& options)
       : instance_(instance), pieces_(pieces), options_(options), deadline_(options.time_limit_s) {}
 
-  Layout run();
+  using State = HidePlacement;
+  // The best placement of all trajectories, and as a layout.
+  State best_placement();
+  Layout run() { return layout(best_placement(), true); }
 
  private:
-  struct State { std::vector<int> slot_of; std::vector<PieceState> state; };  // per piece
   double placed_area(const State& s, int slot) const { return placed_area_mm2(pieces_, s.slot_of, slot); }
   double fill(const State& s, int slot) const { return placed_area(s, slot) / pieces_.slots[slot].container->usable_area_mm2(); }
   double free_area(const State& s, int slot) const { return free_area_mm2(pieces_, s.slot_of, slot); }
@@ -84,6 +91,10 @@ class HideSearch {
   // filled first; every other turn an unused smaller hide, no dearer, joins the destinations (a big
   // hide replaced by a smaller one). At the area bound only the replacing turns are tried.
   bool chain(State& s, long index, std::uint64_t seed, const Effort& effort) const;
+  // `s` (every unit placed) regrouped onto the first hides of the opening order, one fewer than it
+  // uses (engine/nest/hide_regroup), when they could hold its pieces at kRegroupFill by area; within
+  // half of the time left (at least kRegroupMin_s).
+  std::optional<State> regroup(const State& s, long turn) const;
   // More placed area, then fewer hides, then more concentrated.
   bool better(const State& a, const State& b) const;
   // A new trajectory: the greedy in a perturbed order.
@@ -296,6 +307,22 @@ bool HideSearch::better(const State& a, const State& b) const {
   return concentration(pieces_, a.slot_of) > concentration(pieces_, b.slot_of) * (1 + 1e-9);
 }
 
+std::optional<HideSearch::State> HideSearch::regroup(const State& s, long turn) const {
+  const std::vector<int> used = used_slots(s);
+  if (any_left_over(s) || used.size() < 2 || used.size() - 1 < area_bound(s)) return std::nullopt;
+  std::vector<int> targets(used.size() - 1);
+  std::iota(targets.begin(), targets.end(), 0);  // slots are in opening order: cheapest, then largest
+  double placed = 0, usable = 0;
+  for (int slot : used) placed += placed_area(s, slot);
+  for (int slot : targets) usable += pieces_.slots[static_cast<size_t>(slot)].container->usable_area_mm2();
+  if (placed > kRegroupFill * usable) return std::nullopt;
+  const Deadline slice(std::min(deadline_.seconds_left(), std::max(kRegroupMin_s, 0.9 * deadline_.seconds_left())));
+  auto found = regroup_onto(instance_, pieces_, options_, s.slot_of, targets, slice, RegroupBudget{},
+                            stream_seed(options_.seed, static_cast<std::uint64_t>(turn), 29));
+  if (!found) return std::nullopt;
+  return State{std::move(found->slot_of), std::move(found->state)};
+}
+
 bool HideSearch::any_left_over(const State& s) const {
   return std::any_of(s.slot_of.begin(), s.slot_of.end(), [](int slot) { return slot < 0; });
 }
@@ -314,13 +341,15 @@ HideSearch::State HideSearch::restart(long restarts) const {
   return {start.slot_of, start.state};
 }
 
-Layout HideSearch::run() {
+HideSearch::State HideSearch::best_placement() {
   const HideAssignment start = greedy_hides(instance_, pieces_, unit_order_by_value(pieces_), stream_seed(options_.seed, 0, 0));
   State best{start.slot_of, start.state};
   State current = best;  // the trajectory searched now; best = the best state of all trajectories
   if (options_.on_improvement) options_.on_improvement(layout(best, false));
   const int n_slots = static_cast<int>(pieces_.slots.size());
   long streak = 0, restarts = 0;  // multi-hide attempts since the last success; trajectories started
+  size_t regroup_count = 0;       // hides of the best layout when last counted
+  long rounds_at_count = 0;       // rounds since the best layout's hide count changed
   std::vector<char> tried(pieces_.units.size(), 0);
   const std::vector<int> by_value = unit_order_by_value(pieces_);
   // A new trajectory from a perturbed greedy start; the best of all is kept.
@@ -336,6 +365,25 @@ Layout HideSearch::run() {
   for (long round = 1; !options_.iteration_limit || round <= *options_.iteration_limit; ++round) {
     if (deadline_.passed()) break;
     const std::uint64_t seed = stream_seed(options_.seed, static_cast<std::uint64_t>(round), 0);
+    // Once the moves have kept the best layout's hide count for kRegroupAfterRounds rounds: that layout
+    // regrouped onto one hide fewer (hide_regroup), once per hide count.
+    if (const size_t count = used_slots(best).size(); count != regroup_count) {
+      regroup_count = count;
+      rounds_at_count = 0;
+    }
+    if (++rounds_at_count == kRegroupAfterRounds) {
+      if (auto fewer = regroup(best, round)) {
+        current = std::move(*fewer);
+        streak = 0;
+        std::fill(tried.begin(), tried.end(), 0);
+        if (better(current, best)) {
+          best = current;
+          if (options_.on_improvement) options_.on_improvement(layout(best, false));
+        }
+        continue;
+      }
+      if (deadline_.passed()) break;
+    }
     const std::vector<int> used = used_slots(current);
     State trial = current;
     bool success = false;
@@ -398,13 +446,17 @@ Layout HideSearch::run() {
       }
     }
   }
-  return layout(best, true);
+  return best;
 }
 
 }  // namespace
 
 Layout nest_hides_search(const NestInstance& instance, const HidePieces& pieces, const NestOptions& options) {
   return HideSearch(instance, pieces, options).run();
+}
+
+HidePlacement search_hide_placement(const NestInstance& instance, const HidePieces& pieces, const NestOptions& options) {
+  return HideSearch(instance, pieces, options).best_placement();
 }
 
 }  // namespace lastcut::nest_detail

@@ -51,4 +51,7 @@ namespace lastcut::nest_detail {
 
 Layout nest_hides_search(const NestInstance& instance, const HidePieces& pieces, const NestOptions& options);
 
+// The same search's best placement, without making it a layout (the regrouping's per-hide oracle).
+HidePlacement search_hide_placement(const NestInstance& instance, const HidePieces& pieces, const NestOptions& options);
+
 }  // namespace lastcut::nest_detail

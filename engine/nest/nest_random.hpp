@@ -1,6 +1,7 @@
 #pragma once
 // Random numbers that are the same on every platform and standard library (the std
 // distributions are implementation-defined): mt19937_64 plus our own mapping to [0, 1).
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <random>
@@ -34,6 +35,9 @@ class Deadline {
       : end_(std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                                      std::chrono::duration<double>(seconds))) {}
   bool passed() const { return std::chrono::steady_clock::now() >= end_; }
+  double seconds_left() const {
+    return std::max(0.0, std::chrono::duration<double>(end_ - std::chrono::steady_clock::now()).count());
+  }
 
  private:
   std::chrono::steady_clock::time_point end_;
