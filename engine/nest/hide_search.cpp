@@ -31,6 +31,7 @@ constexpr long kMergePeriod = 3;  // every third chain merges two hides into an 
 constexpr double kMergeFill = 0.74;  // merges tried up to this fill of the hides left (Test1: 72 % reached)
 constexpr double kRegroupFill = 0.74;  // regroupings tried up to this fill of the fewer hides
 constexpr double kRegroupMin_s = 10;   // time of one regrouping, unless less is left
+constexpr long kRegroupUnitsPerHide = 10;  // regroupings only where the hides hold this few units on average
 constexpr long kRegroupAfterRounds = 5;  // rounds without a hide fewer before the regrouping is tried
 
 
@@ -316,6 +317,10 @@ std::optional<HideSearch::State> HideSearch::regroup(const State& s, long turn) 
   for (int slot : used) placed += placed_area(s, slot);
   for (int slot : targets) usable += pieces_.slots[static_cast<size_t>(slot)].container->usable_area_mm2();
   if (placed > kRegroupFill * usable) return std::nullopt;
+  // Many small units a hide: the moves do well there, and each per-hide search is long (shoe batches).
+  const long units = std::count_if(pieces_.units.begin(), pieces_.units.end(),
+                                   [&](const std::vector<int>& u) { return s.slot_of[static_cast<size_t>(u.front())] >= 0; });
+  if (units > kRegroupUnitsPerHide * static_cast<long>(targets.size())) return std::nullopt;
   const Deadline slice(std::min(deadline_.seconds_left(), std::max(kRegroupMin_s, 0.9 * deadline_.seconds_left())));
   auto found = regroup_onto(instance_, pieces_, options_, s.slot_of, targets, slice, RegroupBudget{},
                             stream_seed(options_.seed, static_cast<std::uint64_t>(turn), 29));
