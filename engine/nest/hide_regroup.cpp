@@ -14,9 +14,11 @@ constexpr int kSwapCandidates = 40;  // swaps tried for one left-over unit befor
 // No hide is asked to hold more than this share of its usable area: the oracle would spend its whole
 // budget failing (Test6's ten hides hold its pieces at 56-69 % each).
 constexpr double kPackFill = 0.78;
+constexpr int kLongerQuestion = 4;  // a failing hide's own question is asked once more, this many times as long
 
 struct Packing {
   bool complete = false;
+  int effort = 1;                                      // the question's budget was effort x the base one
   std::vector<int> left_over;                          // units (of the parent) not placed
   std::vector<std::pair<int, PieceState>> placed;      // parent piece, its state on the hide
 };
@@ -45,7 +47,7 @@ class Regroup {
   }
   bool out_of_budget() const { return deadline_.passed() || calls_ >= budget_.most_oracle_calls; }
   // Whether target hide `target` holds `units` (the hide search on that hide alone), cached.
-  const Packing& pack(size_t target, std::vector<int> units);
+  const Packing& pack(size_t target, std::vector<int> units, int effort = 1);
   bool try_move(size_t from, int unit);
   bool try_swap(size_t from, int unit);
 
@@ -62,10 +64,13 @@ class Regroup {
   long calls_ = 0;
 };
 
-const Packing& Regroup::pack(size_t target, std::vector<int> units) {
+const Packing& Regroup::pack(size_t target, std::vector<int> units, int effort) {
   std::sort(units.begin(), units.end());
   auto key = std::make_pair(target, units);
-  if (auto known = cache_.find(key); known != cache_.end()) return known->second;
+  if (auto known = cache_.find(key); known != cache_.end()) {
+    if (known->second.complete || known->second.effort >= effort) return known->second;
+    cache_.erase(known);  // asked again, longer
+  }
   if (units.empty()) return cache_.emplace(std::move(key), Packing{true, {}, {}}).first->second;
   ++calls_;
   const int slot = slots_[target];
@@ -89,12 +94,13 @@ const Packing& Regroup::pack(size_t target, std::vector<int> units) {
   alone.on_improvement = nullptr;
   alone.seed = stream_seed(seed_, static_cast<std::uint64_t>(calls_), 23);
   if (options_.iteration_limit) {
-    alone.iteration_limit = budget_.oracle_rounds;
+    alone.iteration_limit = budget_.oracle_rounds * effort;
     alone.time_limit_s = deadline_.seconds_left();
   } else {
-    alone.time_limit_s = std::min(budget_.oracle_s, deadline_.seconds_left());
+    alone.time_limit_s = std::min(budget_.oracle_s * effort, deadline_.seconds_left());
   }
   Packing packing;
+  packing.effort = effort;
   const HidePieces one_pieces = prepare_hide_pieces(one, alone);
   if (one_pieces.unplaced.empty() && one_pieces.item_of.size() == parent_piece.size()) {
     const HidePlacement found = search_hide_placement(one, one_pieces, alone);
@@ -182,6 +188,8 @@ std::optional<HidePlacement> Regroup::run(const std::vector<int>& units) {
       return result;
     }
     const size_t from = failing[static_cast<size_t>(random_.below(static_cast<int>(failing.size())))];
+    // A short question may miss a packing that exists: the hide is asked again, kLongerQuestion times as long.
+    if (pack(from, on_[from]).effort < kLongerQuestion && pack(from, on_[from], kLongerQuestion).complete) continue;
     const std::vector<int> left = pack(from, on_[from]).left_over;
     const int unit = left[static_cast<size_t>(random_.below(static_cast<int>(left.size())))];
     if (try_move(from, unit) || try_swap(from, unit)) continue;
