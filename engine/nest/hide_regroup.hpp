@@ -7,8 +7,9 @@
 // per hide afterwards reaches the groupings one unit at a time cannot (docs/benchmarks-nest.md).
 //
 // Start: units by area, largest first, each onto the target hide whose fill by area would stay lowest
-// (worst fit by fill). Then, while a hide cannot hold its units (the oracle leaves some over), one of
-// its left-over units u:
+// (worst fit by fill). Then, while a hide cannot hold its units (the oracle leaves some over), that hide
+// is asked once more, four times as long (a short question can miss a packing), and then one of its
+// left-over units u:
 //   - move: onto the least filled other hide that can hold it with its own units;
 //   - swap: for a smaller unit v of another hide, when that hide holds its units with u instead of v
 //     and the first hide then leaves less area over than u's;
