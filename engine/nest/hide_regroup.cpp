@@ -71,7 +71,7 @@ const Packing& Regroup::pack(size_t target, std::vector<int> units, int effort) 
     if (known->second.complete || known->second.effort >= effort) return known->second;
     cache_.erase(known);  // asked again, longer
   }
-  if (units.empty()) return cache_.emplace(std::move(key), Packing{true, {}, {}}).first->second;
+  if (units.empty()) return cache_.emplace(std::move(key), Packing{.complete = true}).first->second;
   ++calls_;
   const int slot = slots_[target];
   // The hide alone, with the items of these units (a unit's pieces stay one unit: same pair group).

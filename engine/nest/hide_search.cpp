@@ -93,8 +93,9 @@ class HideSearch {
   // hide replaced by a smaller one). At the area bound only the replacing turns are tried.
   bool chain(State& s, long index, std::uint64_t seed, const Effort& effort) const;
   // `s` (every unit placed) regrouped onto the first hides of the opening order, one fewer than it
-  // uses (engine/nest/hide_regroup), when they could hold its pieces at kRegroupFill by area; within
-  // half of the time left (at least kRegroupMin_s).
+  // uses (engine/nest/hide_regroup), when they could hold its pieces at kRegroupFill by area with at
+  // most kRegroupUnitsPerHide units a hide on average; within 90 % of the time left (at least
+  // kRegroupMin_s, unless less is left).
   std::optional<State> regroup(const State& s, long turn) const;
   // More placed area, then fewer hides, then more concentrated.
   bool better(const State& a, const State& b) const;
