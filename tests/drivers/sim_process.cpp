@@ -3,7 +3,6 @@
 
 #include <unistd.h>
 
-#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -36,9 +35,14 @@ std::string read_file(const std::filesystem::path& path) {
 SimProcess::SimProcess(std::vector<std::string> args) : SimProcess(sim_binary(), std::move(args)) {}
 
 SimProcess::SimProcess(const std::string& binary, std::vector<std::string> args) {
-  static std::atomic<int> started{0};
-  log_ = std::filesystem::temp_directory_path() /
-         ("lastcut-sim-" + std::to_string(::getpid()) + "-" + std::to_string(++started) + ".log");
+  // A fresh, empty log of its own: a name made from the pid could meet the log that a killed test
+  // process with the same (reused) pid left behind, and its old "ready:" line would be taken for
+  // this simulator's before the link exists.
+  std::string pattern = (std::filesystem::temp_directory_path() / "lastcut-sim-XXXXXX.log").string();
+  const int fd = ::mkstemps(pattern.data(), 4);
+  if (fd < 0) std::abort();
+  ::close(fd);
+  log_ = pattern;
   std::vector<std::string> argv{binary};
   argv.insert(argv.end(), args.begin(), args.end());
   child_ = std::make_unique<lastcut::test::ChildProcess>(argv, log_, /*end_with_parent=*/true);

@@ -8,6 +8,9 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <thread>
 
 #include "tests/drivers/sim_process.hpp"
@@ -24,6 +27,7 @@ TEST(SimProcess, SimulatorEndsWhenTheTestProcessIsKilled) {
   const pid_t test = ::fork();
   ASSERT_GE(test, 0);
   if (test == 0) {  // the "test": starts a simulator, reports its pid, then hangs until killed
+    ::setenv("TMPDIR", dir.path().c_str(), 1);  // its simulator's log is never removed by it: keep it in `dir`
     SimProcess sim({"grbl", "--link", dir / "grbl", "--time-scale", "0"});
     const int pid = sim.ready() ? sim.pid() : -1;
     if (::write(report[1], &pid, sizeof pid) != sizeof pid) ::_exit(1);
@@ -46,6 +50,24 @@ TEST(SimProcess, SimulatorEndsWhenTheTestProcessIsKilled) {
   ::prctl(PR_SET_CHILD_SUBREAPER, 0);
   ::close(report[0]);
   ::close(report[1]);
+}
+
+TEST(SimProcess, ReadyMeansThisSimulatorsLinkExistsWhateverLogsOthersLeft) {
+  // A killed test leaves its simulator's log behind; a later test process can get the same pid (CI
+  // flaked so: "no such port" right after "ready"). Logs in the old pid-based naming, each saying ready:
+  TempDir dir;
+  std::vector<std::filesystem::path> stale;
+  for (int n = 1; n <= 3; ++n) {
+    stale.push_back(std::filesystem::temp_directory_path() /
+                    ("lastcut-sim-" + std::to_string(::getpid()) + "-" + std::to_string(n) + ".log"));
+    std::ofstream(stale.back()) << "ready: " << (dir / "elsewhere") << " -> /dev/pts/999\n";
+  }
+  SimProcess sim({"grbl", "--link", dir / "grbl", "--time-scale", "0"});
+  ASSERT_TRUE(sim.ready()) << sim.ready_line();
+  EXPECT_TRUE(std::filesystem::exists(dir / "grbl")) << sim.ready_line();
+  EXPECT_NE(sim.ready_line().find(dir / "grbl"), std::string::npos) << sim.ready_line();
+  EXPECT_EQ(sim.stop(), 0);
+  for (const auto& path : stale) std::filesystem::remove(path);
 }
 
 }  // namespace
