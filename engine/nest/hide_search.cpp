@@ -401,15 +401,16 @@ HideSearch::State HideSearch::best_placement() {
         break;
       }
     if (left_over >= 0) {
-      std::vector<int> destinations = used;
+      // The used hides, most free area first; failing those, the unused hides in opening order. Each
+      // list gets its own tries: behind the used hides' limit an unused hide was never reached, and a
+      // unit the greedy start left over stayed off for good (Test6, seed 6: 42 of 43 pieces placed).
+      std::vector<int> destinations = used, unused;
       std::stable_sort(destinations.begin(), destinations.end(),
                        [&](int a, int b) { return free_area(current, a) > free_area(current, b); });
       for (int slot = 0; slot < n_slots; ++slot)
-        if (std::find(used.begin(), used.end(), slot) == used.end()) {
-          destinations.push_back(slot);
-          break;
-        }
-      success = insert_anywhere(trial, left_over, destinations, seed, Effort{});
+        if (std::find(used.begin(), used.end(), slot) == used.end()) unused.push_back(slot);
+      success = insert_anywhere(trial, left_over, destinations, seed, Effort{}) ||
+                insert_anywhere(trial, left_over, unused, seed, Effort{});
       if (!success) tried[left_over] = 1;
     } else {
       // Multi-hide: fewer hides, until the budget. When the used hides are as few as their area
