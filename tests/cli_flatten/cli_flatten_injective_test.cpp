@@ -15,6 +15,7 @@
 #include "engine/mesh/write_mesh.hpp"
 #include "tests/flatten/flatten_fixtures.hpp"
 #include "tests/support/lastcut_cli.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
 namespace {
@@ -22,7 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(CliFlattenInjective, OverlappingRampGetsAMoldWithAClearOutline) {
-  const fs::path dir = fs::temp_directory_path() / ("lastcut-cli-injective-" + std::to_string(::getpid()));
+  const fs::path dir = lastcut::test::make_temp_dir("cli-injective");
   fs::create_directories(dir);
   // The ramp of tests/flatten/injective_outline_test.cpp: radii 40-80 mm, 420 degrees, 20 mm rise per turn.
   write_mesh(dir / "ramp.obj", testing::helicoidal_ramp(40.0, 80.0, 420.0, 20.0, 10, 240));

@@ -18,6 +18,7 @@
 #include "engine/mesh/write_mesh.hpp"
 #include "tests/scan/ragged_holes.hpp"
 #include "tests/support/lastcut_cli.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
 namespace {
@@ -37,7 +38,7 @@ int count_lines_starting(const std::string& text, const std::string& prefix) {
 class CliFlattenScans : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fs::temp_directory_path() / ("lastcut-cli-scans-" + std::to_string(::getpid()));
+    dir_ = lastcut::test::make_temp_dir("cli-scans");
     fs::create_directories(dir_);
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }

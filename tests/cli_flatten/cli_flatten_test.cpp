@@ -19,6 +19,7 @@
 #include "engine/mesh/write_mesh.hpp"
 #include "engine/mold/mold_dxf.hpp"
 #include "tests/support/lastcut_cli.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
 namespace {
@@ -31,7 +32,7 @@ using test::read_text;
 class CliFlatten : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fs::temp_directory_path() / ("lastcut-cli-flatten-" + std::to_string(::getpid()));
+    dir_ = lastcut::test::make_temp_dir("cli-flatten");
     fs::create_directories(dir_);
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }

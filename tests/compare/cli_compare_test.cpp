@@ -14,6 +14,7 @@
 
 #include "engine/mold/mold_dxf.hpp"
 #include "tests/support/lastcut_cli.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
 namespace {
@@ -26,7 +27,7 @@ using test::read_text;
 class CliCompare : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fs::temp_directory_path() / ("lastcut-cli-compare-" + std::to_string(::getpid()));
+    dir_ = lastcut::test::make_temp_dir("cli-compare");
     fs::create_directories(dir_);
     ASSERT_EQ(run("generate -o '" + (dir_ / "last.stl").string() + "' --size 40 --side left --triangles 20000").exit_code, 0);
     ASSERT_EQ(run("flatten '" + (dir_ / "last.stl").string() + "' -o '" + (dir_ / "flat").string() + "'").exit_code, 0);

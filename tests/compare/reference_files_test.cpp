@@ -14,6 +14,7 @@
 #include "engine/core/engine_error.hpp"
 #include "engine/mold/mold_dxf.hpp"
 #include "tests/compare/synthetic_mold.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
 namespace {
@@ -23,7 +24,7 @@ namespace fs = std::filesystem;
 class ReferenceFiles : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fs::temp_directory_path() / ("lastcut-reference-files-" + std::to_string(::getpid()));
+    dir_ = lastcut::test::make_temp_dir("reference-files");
     fs::create_directories(dir_);
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "engine/core/durable_file.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
 namespace {
@@ -22,7 +23,7 @@ std::string read_all(const std::filesystem::path& file) {
 
 struct ScratchFolder {
   ScratchFolder() {
-    path = std::filesystem::temp_directory_path() / ("lastcut-durable-" + std::to_string(::getpid()));
+    path = lastcut::test::make_temp_dir("durable");
     std::filesystem::remove_all(path);
     std::filesystem::create_directories(path);
   }

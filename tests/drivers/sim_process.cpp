@@ -12,17 +12,6 @@
 
 namespace lastcut::drivers::testing {
 
-TempDir::TempDir() {
-  std::string pattern = (std::filesystem::temp_directory_path() / "lastcut-drivers-XXXXXX").string();
-  if (::mkdtemp(pattern.data()) == nullptr) std::abort();
-  path_ = pattern;
-}
-
-TempDir::~TempDir() {
-  std::error_code ec;
-  std::filesystem::remove_all(path_, ec);
-}
-
 std::string sim_binary() { return std::string(LASTCUT_BINARY_DIR) + "/bin/lastcut-sim"; }
 
 std::string read_file(const std::filesystem::path& path) {

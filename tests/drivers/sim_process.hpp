@@ -9,18 +9,15 @@
 
 #include "tests/support/child_process.hpp"
 #include "tests/support/loopback_port.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut::drivers::testing {
 
-class TempDir {
+// tests/support/temp_dir.hpp's folder; `dir / "name"` is a string here, as the simulators' arguments are.
+class TempDir : public lastcut::test::TempDir {
  public:
-  TempDir();
-  ~TempDir();
-  const std::filesystem::path& path() const { return path_; }
-  std::string operator/(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  std::filesystem::path path_;
+  TempDir() : lastcut::test::TempDir("drivers") {}
+  std::string operator/(const std::string& name) const { return (path() / name).string(); }
 };
 
 class SimProcess {

@@ -12,13 +12,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "tests/support/temp_dir.hpp"
+
 namespace lastcut::fuzz {
 
 class FuzzInputFile {
  public:
   // `file_name` decides the format the loader sees, e.g. "scan.stl" or "order.job.toml".
   explicit FuzzInputFile(const std::string& file_name)
-      : folder_(std::filesystem::temp_directory_path() / ("lastcut-fuzz-" + std::to_string(::getpid()))),
+      : folder_(lastcut::test::make_temp_dir("fuzz")),
         path_(folder_ / file_name) {
     std::filesystem::create_directories(folder_);
   }

@@ -4,7 +4,6 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
-#include <random>
 #include <stdexcept>
 
 namespace lastcut::test {
@@ -58,17 +57,6 @@ TriMesh box_mesh(const Eigen::Vector3d& low, const Eigen::Vector3d& high, int n)
     mesh.F.row(static_cast<Eigen::Index>(f)) << index[static_cast<size_t>(faces[f].x())], index[static_cast<size_t>(faces[f].y())],
         index[static_cast<size_t>(faces[f].z())];
   return mesh;
-}
-
-TempDir::TempDir(const std::string& name) {
-  std::random_device entropy;
-  path_ = std::filesystem::temp_directory_path() / ("lastcut-" + name + "-" + std::to_string(entropy()));
-  std::filesystem::create_directories(path_);
-}
-
-TempDir::~TempDir() {
-  std::error_code ignored;  // best effort in a destructor; a leftover temp dir is harmless
-  std::filesystem::remove_all(path_, ignored);
 }
 
 void write_text(const std::filesystem::path& path, const std::string& text) {

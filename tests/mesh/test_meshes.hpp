@@ -7,23 +7,13 @@
 #include <vector>
 
 #include "engine/core/tri_mesh.hpp"
+#include "tests/support/temp_dir.hpp"  // TempDir for the intake tests
 
 namespace lastcut::test {
 
 // Closed axis-aligned box from `low` to `high` (mm), each face split into n x n quads
 // (2 n^2 triangles per side), outward oriented.
 TriMesh box_mesh(const Eigen::Vector3d& low, const Eigen::Vector3d& high, int n);
-
-// A fresh, empty directory under the system temp dir, removed by the destructor.
-class TempDir {
- public:
-  explicit TempDir(const std::string& name);
-  ~TempDir();
-  std::filesystem::path operator/(const std::string& file) const { return path_ / file; }
-
- private:
-  std::filesystem::path path_;
-};
 
 void write_text(const std::filesystem::path& path, const std::string& text);
 // OBJ with the given vertices and faces (0-based in F, written 1-based).

@@ -15,6 +15,7 @@
 #include "engine/lastgen/generate_last.hpp"
 #include "engine/mesh/write_mesh.hpp"
 #include "engine/scan/scan_to_molds.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
 namespace {
@@ -88,7 +89,7 @@ double distance_to_outline_mm(const Polygon2& polygon, const Point2& p) {
 }
 
 TEST(BalanceNotchesOnALast, MedialAndLateralCentreCutNotchesMeetWhenSewn) {
-  const fs::path dir = fs::temp_directory_path() / ("lastcut-balance-" + std::to_string(::getpid()));
+  const fs::path dir = lastcut::test::make_temp_dir("balance");
   fs::create_directories(dir);
   LastParams params = LastParams::for_eu_size(41, FootSide::Left);
   params.target_triangles = 12000;

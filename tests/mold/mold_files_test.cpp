@@ -10,6 +10,7 @@
 #include "engine/mold/mold_dxf.hpp"
 #include "engine/mold/mold_svg.hpp"
 #include "tests/mold/synthetic_patch.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
 namespace {
@@ -19,9 +20,7 @@ namespace fs = std::filesystem;
 class MoldFiles : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("lastcut-mold-files-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
+    dir_ = lastcut::test::make_temp_dir(std::string("mold-files-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
   }
   void TearDown() override { fs::remove_all(dir_); }
   fs::path file(const std::string& name) const { return dir_ / name; }

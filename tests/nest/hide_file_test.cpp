@@ -9,6 +9,7 @@
 
 #include "engine/core/engine_error.hpp"
 #include "engine/nest/hide_file.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
 namespace {
@@ -44,11 +45,9 @@ std::vector<Point2> rectangle(double x0, double y0, double x1, double y1) {
 class HideFileTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("lastcut-hide-file-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
+    dir_ = lastcut::test::make_temp_dir(std::string("hide-file-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
   }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
   std::filesystem::path write(const std::string& name, const std::string& text) {
     std::ofstream(dir_ / name, std::ios::binary) << text;
     return dir_ / name;

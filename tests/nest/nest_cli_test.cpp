@@ -13,12 +13,13 @@
 #include "engine/nest/nest_json.hpp"
 #include "nest_test_instances.hpp"
 #include "tests/support/lastcut_cli.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
 namespace {
 
 std::filesystem::path temp_dir() {
-  const auto dir = std::filesystem::temp_directory_path() / ("lastcut-nest-cli-" + std::to_string(::getpid()));
+  const auto dir = lastcut::test::make_temp_dir("nest-cli");
   std::filesystem::create_directories(dir);
   return dir;
 }

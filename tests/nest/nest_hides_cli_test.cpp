@@ -16,6 +16,7 @@
 #include "engine/nest/layout_check.hpp"
 #include "engine/nest/nest_json.hpp"
 #include "tests/support/lastcut_cli.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
 namespace {
@@ -23,7 +24,7 @@ namespace {
 Polygon2 rectangle(double w, double h) { return {{{0, 0}, {w, 0}, {w, h}, {0, h}}}; }
 
 TEST(NestHidesCli, MoldsGoWholeOnOneHideFile) {
-  const auto dir = std::filesystem::temp_directory_path() / ("lastcut-nest-hides-" + std::to_string(::getpid()));
+  const auto dir = lastcut::test::make_temp_dir("nest-hides");
   std::filesystem::create_directories(dir / "m-40-left");
   write_mold_dxf(dir / "m-40-left" / "medial.dxf", Mold{"medial", rectangle(200, 80), {}});
   write_mold_dxf(dir / "m-40-left" / "lateral.dxf", Mold{"lateral", rectangle(200, 90), {}});

@@ -22,6 +22,7 @@
 #include "engine/scan/scan_outputs.hpp"
 #include "engine/scan/scan_to_molds.hpp"
 #include "tests/scan/ragged_holes.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
 namespace {
@@ -44,7 +45,7 @@ class ScanHoles : public ::testing::Test {
     params_.target_triangles = 60000;
     last_ = generate_last(params_).mesh;
     length_mm_ = last_.V.col(0).maxCoeff() - last_.V.col(0).minCoeff();
-    dir_ = fs::temp_directory_path() / ("lastcut-scan-holes-" + std::to_string(::getpid()));
+    dir_ = lastcut::test::make_temp_dir("scan-holes");
     fs::create_directories(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }

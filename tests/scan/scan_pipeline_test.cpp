@@ -15,6 +15,7 @@
 #include "engine/mold/outline_alignment.hpp"
 #include "engine/scan/scan_outputs.hpp"
 #include "engine/scan/scan_to_molds.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
 namespace {
@@ -24,7 +25,7 @@ namespace fs = std::filesystem;
 class ScanPipeline : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fs::temp_directory_path() / ("lastcut-scan-" + std::to_string(::getpid()));
+    dir_ = lastcut::test::make_temp_dir("scan");
     fs::create_directories(dir_);
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }

@@ -12,6 +12,7 @@
 #include "engine/mesh/write_mesh.hpp"
 #include "engine/scan/scan_outputs.hpp"
 #include "engine/scan/scan_to_molds.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
 namespace {
@@ -21,7 +22,7 @@ namespace fs = std::filesystem;
 class ScanSide : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fs::temp_directory_path() / ("lastcut-scan-side-" + std::to_string(::getpid()));
+    dir_ = lastcut::test::make_temp_dir("scan-side");
     fs::create_directories(dir_);
     LastParams params = LastParams::for_eu_size(40, FootSide::Left);
     params.symmetric = true;

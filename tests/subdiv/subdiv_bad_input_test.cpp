@@ -9,12 +9,19 @@
 #include "engine/subdiv/quad_obj.hpp"
 #include "engine/subdiv/sample_surface.hpp"
 #include "tests/subdiv/quad_test_meshes.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
 namespace {
 
+// The test process's own folder, removed at its exit.
+const test::TempDir& folder() {
+  static const test::TempDir dir("subdiv-bad-input");
+  return dir;
+}
+
 std::filesystem::path write_text(const std::string& name, const std::string& text) {
-  const std::filesystem::path path = std::filesystem::temp_directory_path() / ("lastcut-subdiv-" + name);
+  const std::filesystem::path path = folder() / name;
   std::ofstream(path) << text;
   return path;
 }
@@ -45,7 +52,7 @@ TEST(SubdivBadInput, BadNumbersAndIndicesAreRefused) {
                  "vertex 9 does not exist (6 vertices so far)");
   expect_refusal([&] { read_quad_obj(write_text("zero.obj", std::string(kTwoQuads) + "f 0 1 2 3\n")); }, "'0' is not a vertex index");
   expect_refusal([&] { read_quad_obj(write_text("empty.obj", "# nothing\nv 1 2 3\n")); }, "has no quads");
-  expect_refusal([&] { read_quad_obj(std::filesystem::temp_directory_path() / "lastcut-subdiv-missing.obj"); }, "cannot read");
+  expect_refusal([&] { read_quad_obj(folder() / "missing.obj"); }, "cannot read");
 }
 
 TEST(SubdivBadInput, ObjFormsOfCornersAreRead) {

@@ -10,6 +10,7 @@
 #include "engine/toolpath/layout_pieces.hpp"
 #include "engine/toolpath/plan_cut_program.hpp"
 #include "engine/toolpath/cut_program.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut::test {
 namespace {
@@ -111,8 +112,8 @@ ShoeJob write_shoe_job(const std::string& profile_name, const std::string& test_
 }
 
 std::filesystem::path scratch_dir(const std::string& test_name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("lastcut-toolpath-" + test_name + "-" + std::to_string(::getpid()));
+  static const TempDir process_dir("toolpath");  // one per test process, removed at its exit
+  const auto dir = process_dir / test_name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
