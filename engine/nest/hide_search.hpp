@@ -9,8 +9,8 @@
 //
 // Start: the greedy of engine/nest/hide_greedy (units by priority, then area; hides largest usable
 // area first). Then rounds, each one move that is kept only when it ends feasible:
-// - insert: a unit left over (highest value first) goes onto one of the two hides with the most free
-//   area (the first unopened hide after the used ones): at a free sampled spot if there is one,
+// - insert: a unit left over (highest value first) goes onto one of the two used hides with the most
+//   free area, else one of the first two unopened hides (opening order): at a free sampled spot if there is one,
 //   otherwise dropped in and the hide separated. A unit that fails is not tried again until a hide
 //   has been closed (knapsack form).
 // - move: one unit of a little-filled hide (the least filled first, the smaller hide on a tie; after
