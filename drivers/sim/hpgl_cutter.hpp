@@ -52,6 +52,7 @@ class HpglCutter : public ByteDevice {
   std::string received_;
   double now_s_ = 0, busy_until_s_ = 0;
   bool halted_ = false, xoff_sent_ = false, garbage_next_ = false;
+  bool awaiting_rest_ = false;  // the buffer holds only the start of an instruction
   bool pen_down_ = false, relative_ = false;
   double x_ = 0, y_ = 0;            // plotter units
   int device_error_ = 0, hpgl_error_ = 0;

@@ -59,6 +59,25 @@ TEST(HpglStream, XonXoffKeepsTheSmallBufferFromOverflowing) {
   EXPECT_NE(svg.find("<line"), std::string::npos);
 }
 
+// PD instructions of ~150 bytes in a 256-byte buffer: XOFF comes at 192 bytes with the next instruction
+// ~40 bytes in, and at most two 16-byte chunks follow it; once the one before is plotted the buffer
+// holds ~75 bytes of an unfinished PD, above the 64 at which XON comes. The plotter must not wait for
+// bytes it has stopped itself.
+TEST(HpglStream, XonXoffWithInstructionsLongerThanAQuarterOfTheBuffer) {
+  HpglFixture f("xonxoff", {"--speed", "1000"});
+  ASSERT_TRUE(f.sim->ready()) << f.sim->ready_line();
+  std::string program = "IN;SP1;PU0,0;\n";
+  for (int i = 0; i < 12; ++i) {
+    program += "PD";
+    for (int k = 0; k < 14; ++k) program += (k ? "," : "") + std::to_string(1000 + (i * 37 + k * 211) % 3000) + "," + std::to_string(1000 + (k * 97) % 2000);
+    program += ";\n";
+  }
+  program += "PU0,0;SP0;\n";
+  const std::string stats = f.deliver(program);
+  EXPECT_EQ(stat_value(stats, "overflows"), 0);
+  EXPECT_GT(stat_value(stats, "xoff_sent"), 0) << "the plotter must have been slower than the line for this test to mean anything";
+}
+
 TEST(HpglStream, EscBHandshakeSendsOnlyWhatFits) {
   HpglFixture f("escb");
   ASSERT_TRUE(f.sim->ready());
