@@ -37,11 +37,15 @@ void HpglCutter::answer(const std::string& text) {
 void HpglCutter::update_flow() {
   if (options_.handshake != "xonxoff") return;
   const size_t fill = buffer_.size(), capacity = static_cast<size_t>(options_.buffer_bytes);
+  // While the buffer holds only the start of an instruction the flow stays open: holding XOFF then
+  // would wait for bytes this plotter stopped itself, as a PD of many pairs can be longer than the
+  // 25 % fill at which XON comes (the ledger test's cut files have PDs of 769 bytes). A real plotter
+  // runs a PD's pairs as they arrive; one longer than the buffer still overflows here.
   if (!xoff_sent_ && !awaiting_rest_ && fill * 4 >= capacity * 3) {
     output_ += kXoff;
     xoff_sent_ = true;
     ++xoffs_;
-  } else if (xoff_sent_ && fill * 4 <= capacity) {
+  } else if (xoff_sent_ && (awaiting_rest_ || fill * 4 <= capacity)) {
     output_ += kXon;
     xoff_sent_ = false;
   }
@@ -188,16 +192,8 @@ void HpglCutter::advance(double now_s) {
     std::string raw, mnemonic;
     std::vector<double> params;
     if (!take_instruction(raw, mnemonic, params)) {
-      // Only the start of an instruction is here. Holding XOFF now would wait for bytes this plotter
-      // stopped itself: a PD of many pairs can be longer than the 25 % fill at which XON comes (the
-      // ledger test's cut files have PDs of 769 bytes). A real plotter runs a PD's pairs as they
-      // arrive; this one releases the flow until the instruction is complete (one longer than the
-      // buffer still overflows).
       awaiting_rest_ = !buffer_.empty();
-      if (awaiting_rest_ && xoff_sent_) {
-        output_ += kXon;
-        xoff_sent_ = false;
-      }
+      update_flow();
       break;
     }
     awaiting_rest_ = false;

@@ -3,7 +3,6 @@
 // now writes a mold, says in report.json that ARAP was rerun injectively, and the flat mesh's outline keeps
 // the 0.1 mm clearance (checked here by brute force over all pairs of boundary edges).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -24,7 +23,6 @@ namespace fs = std::filesystem;
 
 TEST(CliFlattenInjective, OverlappingRampGetsAMoldWithAClearOutline) {
   const fs::path dir = lastcut::test::make_temp_dir("cli-injective");
-  fs::create_directories(dir);
   // The ramp of tests/flatten/injective_outline_test.cpp: radii 40-80 mm, 420 degrees, 20 mm rise per turn.
   write_mesh(dir / "ramp.obj", testing::helicoidal_ramp(40.0, 80.0, 420.0, 20.0, 10, 240));
   const std::string arguments =

@@ -3,7 +3,6 @@
 // symmetric last named by --side, or flattened with neutral names and a warning.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -39,7 +38,6 @@ class CliFlattenScans : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = lastcut::test::make_temp_dir("cli-scans");
-    fs::create_directories(dir_);
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
 

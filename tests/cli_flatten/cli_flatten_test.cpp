@@ -3,7 +3,6 @@
 // leaves the files of the output contract.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdint>
@@ -33,7 +32,6 @@ class CliFlatten : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = lastcut::test::make_temp_dir("cli-flatten");
-    fs::create_directories(dir_);
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
 

@@ -2,7 +2,6 @@
 // flattened by `lastcut flatten`) against references written as files.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -28,7 +27,6 @@ class CliCompare : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = lastcut::test::make_temp_dir("cli-compare");
-    fs::create_directories(dir_);
     ASSERT_EQ(run("generate -o '" + (dir_ / "last.stl").string() + "' --size 40 --side left --triangles 20000").exit_code, 0);
     ASSERT_EQ(run("flatten '" + (dir_ / "last.stl").string() + "' -o '" + (dir_ / "flat").string() + "'").exit_code, 0);
   }

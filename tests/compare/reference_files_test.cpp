@@ -1,7 +1,6 @@
 // Reading reference patterns: DXF (LWPOLYLINE, POLYLINE, bulges, $INSUNITS) and SVG paths
 // (units, relative commands, curves), and the one-line refusals of bad files.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -25,7 +24,6 @@ class ReferenceFiles : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = lastcut::test::make_temp_dir("reference-files");
-    fs::create_directories(dir_);
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
   static fs::path write(const std::string& name, const std::string& text) {

@@ -2,8 +2,6 @@
 // working folder (the other durable-write tests are in tests/daemon/spool_test.cpp).
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -21,24 +19,14 @@ std::string read_all(const std::filesystem::path& file) {
   return text.str();
 }
 
-struct ScratchFolder {
-  ScratchFolder() {
-    path = lastcut::test::make_temp_dir("durable");
-    std::filesystem::remove_all(path);
-    std::filesystem::create_directories(path);
-  }
-  ~ScratchFolder() { std::filesystem::remove_all(path); }
-  std::filesystem::path path;
-};
-
 TEST(DurableFile, ABareFileNameIsWrittenIntoTheWorkingFolder) {
-  ScratchFolder scratch;
+  const lastcut::test::TempDir scratch("durable");
   const auto previous = std::filesystem::current_path();
-  std::filesystem::current_path(scratch.path);
+  std::filesystem::current_path(scratch.path());
   const Status status = write_file_durably("cut.nc", "G0 X2\n");
   std::filesystem::current_path(previous);
   ASSERT_TRUE(status) << status.error();
-  EXPECT_EQ(read_all(scratch.path / "cut.nc"), "G0 X2\n");
+  EXPECT_EQ(read_all(scratch / "cut.nc"), "G0 X2\n");
 }
 
 }  // namespace

@@ -3,8 +3,6 @@
 // the TOML and JSON loaders). The bytes are written to a file with the extension the loader
 // needs, in a folder of this process (fuzz targets may run side by side), so the real entry
 // point is fuzzed and no parsing code is duplicated for the fuzzer. The folder is removed at exit.
-#include <unistd.h>
-
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -20,14 +18,7 @@ class FuzzInputFile {
  public:
   // `file_name` decides the format the loader sees, e.g. "scan.stl" or "order.job.toml".
   explicit FuzzInputFile(const std::string& file_name)
-      : folder_(lastcut::test::make_temp_dir("fuzz")),
-        path_(folder_ / file_name) {
-    std::filesystem::create_directories(folder_);
-  }
-  ~FuzzInputFile() {
-    std::error_code ignored;
-    std::filesystem::remove_all(folder_, ignored);
-  }
+      : folder_("fuzz"), path_(folder_ / file_name) {}
   FuzzInputFile(const FuzzInputFile&) = delete;
   FuzzInputFile& operator=(const FuzzInputFile&) = delete;
 
@@ -42,7 +33,7 @@ class FuzzInputFile {
   }
 
  private:
-  std::filesystem::path folder_;
+  lastcut::test::TempDir folder_;  // removed with the input by its destructor
   std::filesystem::path path_;
 };
 

@@ -5,7 +5,6 @@
 // notches sit exactly on the landmark vertices; the pipeline is deterministic, so the net lines of
 // both runs are the same polygon).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -90,7 +89,6 @@ double distance_to_outline_mm(const Polygon2& polygon, const Point2& p) {
 
 TEST(BalanceNotchesOnALast, MedialAndLateralCentreCutNotchesMeetWhenSewn) {
   const fs::path dir = lastcut::test::make_temp_dir("balance");
-  fs::create_directories(dir);
   LastParams params = LastParams::for_eu_size(41, FootSide::Left);
   params.target_triangles = 12000;
   write_stl_binary(dir / "last.stl", generate_last(params).mesh);

@@ -1,7 +1,6 @@
 // The real `lastcut nest` binary: writes a layout that the independent checker accepts and a
 // picture, exits 3 when pieces are left over, and refuses bad input with one line.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -19,9 +18,7 @@ namespace lastcut {
 namespace {
 
 std::filesystem::path temp_dir() {
-  const auto dir = lastcut::test::make_temp_dir("nest-cli");
-  std::filesystem::create_directories(dir);
-  return dir;
+  return lastcut::test::make_temp_dir("nest-cli");
 }
 
 TEST(NestCli, WritesACheckedLayoutAndPicture) {

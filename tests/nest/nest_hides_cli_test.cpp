@@ -3,7 +3,6 @@
 // go on one hide together: on a hide too small for all of them, none; the layout passes the
 // independent checker and keeps to the rotation step.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>

@@ -3,7 +3,6 @@
 // clear refusal. The oracle for "continues the surface" is the generator's own implicit last
 // (LastShape), which the scan was made from.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -46,7 +45,6 @@ class ScanHoles : public ::testing::Test {
     last_ = generate_last(params_).mesh;
     length_mm_ = last_.V.col(0).maxCoeff() - last_.V.col(0).minCoeff();
     dir_ = lastcut::test::make_temp_dir("scan-holes");
-    fs::create_directories(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
 

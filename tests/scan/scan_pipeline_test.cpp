@@ -4,7 +4,6 @@
 //  - quality on a 100k-triangle last: no flipped triangle, D_angle and D_area <= 2.02, area error <= 1 %;
 //  - the files of the output contract and the report.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -26,7 +25,6 @@ class ScanPipeline : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = lastcut::test::make_temp_dir("scan");
-    fs::create_directories(dir_);
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
 

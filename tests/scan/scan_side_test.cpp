@@ -2,7 +2,6 @@
 // lateral molds, the two assignments mirror each other (left's medial half is right's lateral half,
 // the -Y one); unnamed it gives side_a (+Y) and side_b (-Y) molds and the warning, not a failure.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <map>
@@ -23,7 +22,6 @@ class ScanSide : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = lastcut::test::make_temp_dir("scan-side");
-    fs::create_directories(dir_);
     LastParams params = LastParams::for_eu_size(40, FootSide::Left);
     params.symmetric = true;
     params.target_triangles = 20000;

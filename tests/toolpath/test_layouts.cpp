@@ -5,7 +5,6 @@
 #include <fstream>
 #include <numbers>
 #include <sstream>
-#include <unistd.h>
 
 #include "engine/toolpath/layout_pieces.hpp"
 #include "engine/toolpath/plan_cut_program.hpp"
