@@ -2,7 +2,6 @@
 // known development, and both halves of a generated last go through the scan pipeline flip-free with a
 // valid mold.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +13,7 @@
 #include "engine/mold/outline_geometry.hpp"
 #include "engine/scan/scan_to_molds.hpp"
 #include "tests/flatten/flatten_fixtures.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
 namespace {
@@ -48,14 +48,14 @@ TEST(AbfDevelopable, ConePatchBecomesItsDevelopment) {
 }
 
 TEST(AbfHalves, GeneratedLastHalvesAreFlipFreeWithValidMolds) {
-  const fs::path scan = fs::temp_directory_path() / ("lastcut-abf-" + std::to_string(::getpid()) + ".stl");
+  const test::TempDir folder("abf-halves");
+  const fs::path scan = folder / "last.stl";
   LastParams params = LastParams::for_eu_size(42, FootSide::Left);
   params.target_triangles = 60000;
   write_stl_binary(scan, generate_last(params).mesh);
   ScanOptions options;
   options.flatten.method = FlattenMethod::Abf;
   const ScanResult result = scan_to_molds(scan, options);
-  fs::remove(scan);
   ASSERT_EQ(result.segments.size(), 2u);
   for (const SegmentResult& segment : result.segments) {
     SCOPED_TRACE(segment.name);

@@ -7,12 +7,12 @@
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <random>
 #include <sstream>
 #include <string>
 
 #include "engine/mesh/read_mesh.hpp"
 #include "tests/support/lastcut_cli.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
 namespace {
@@ -22,8 +22,7 @@ using CommandResult = test::CommandRun;
 class CliGenerate : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() / ("lastcut-cli-generate-" + std::to_string(std::random_device{}()));
-    std::filesystem::create_directories(dir_);
+    dir_ = test::make_temp_dir("cli-generate");
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
 

@@ -11,6 +11,7 @@
 #include "engine/lastgen/generate_last.hpp"
 #include "engine/lastgen/last_shape.hpp"
 #include "mesh_checks.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
 namespace {
@@ -101,7 +102,8 @@ TEST(SimulatedScan, RandomPoseIsTheRecordedRigidMotion) {
 TEST(SimulatedScan, BinaryStlHasExactlyTheStandardSize) {
   LastParams params = scan_params();
   const TriMesh mesh = generate_last(params).mesh;
-  const std::filesystem::path path = std::filesystem::temp_directory_path() / "lastgen_test_last.stl";
+  const test::TempDir folder("lastgen-scan");
+  const std::filesystem::path path = folder / "last.stl";
   write_stl_binary(path, mesh);
   EXPECT_EQ(std::filesystem::file_size(path), 84u + 50u * static_cast<unsigned>(mesh.triangle_count()));
   std::ifstream in(path, std::ios::binary);
@@ -110,7 +112,6 @@ TEST(SimulatedScan, BinaryStlHasExactlyTheStandardSize) {
   uint32_t count = 0;
   std::memcpy(&count, header + 80, 4);
   EXPECT_EQ(count, static_cast<uint32_t>(mesh.triangle_count()));
-  std::filesystem::remove(path);
 }
 
 }  // namespace

@@ -1,13 +1,13 @@
 // [ledger] in the daemon configuration: absent means the file spool; present, every key is
 // checked and each mistake is one line with the key path and the line.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <fstream>
 
 #include "daemon/config/config_loader.hpp"
 #include "tests/support/minimal_daemon_config.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut::daemon {
 namespace {
@@ -17,9 +17,7 @@ const std::string kBase = "\n" + lastcut::testing::kMinimalDaemonConfig;
 class LedgerConfigTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    std::string pattern = (std::filesystem::temp_directory_path() / "lastcut-ledger-config-XXXXXX").string();
-    ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
-    folder_ = pattern;
+    folder_ = test::make_temp_dir("ledger-config");
   }
   void TearDown() override { std::filesystem::remove_all(folder_); }
 

@@ -9,6 +9,7 @@
 #include "engine/nest/layout_check.hpp"
 #include "engine/nest/nest_json.hpp"
 #include "nest_test_instances.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
 namespace {
@@ -141,17 +142,18 @@ TEST(NestJson, RefusesBadInstances) {
 }
 
 TEST(NestJson, RefusesFilesThatAreNotJson) {
-  const auto path = std::filesystem::temp_directory_path() / "lastcut-nest-not-json.json";
+  const test::TempDir folder("nest-json");
+  const auto path = folder / "not-json.json";
   std::ofstream(path) << "{\"strip_height\": 10, \"items\": [";
   EXPECT_THROW(read_nest_instance(path), EngineError);
   EXPECT_THROW(read_nest_instance(path.string() + ".missing"), EngineError);
-  std::filesystem::remove(path);
 }
 
 // Found by the nest_instance fuzz target: nlohmann's parser throws out_of_range, not parse_error,
 // for a number no double holds; it escaped the reader instead of being refused.
 TEST(NestJson, RefusesNumbersTooLargeForADouble) {
-  const auto path = std::filesystem::temp_directory_path() / "lastcut-nest-huge-number.json";
+  const test::TempDir folder("nest-json");
+  const auto path = folder / "huge-number.json";
   std::ofstream(path) << R"({"strip_height": 1e400, "items": []})";
   try {
     read_nest_instance(path);
@@ -159,7 +161,6 @@ TEST(NestJson, RefusesNumbersTooLargeForADouble) {
   } catch (const EngineError& error) {
     EXPECT_NE(std::string(error.what()).find("number too large"), std::string::npos) << error.what();
   }
-  std::filesystem::remove(path);
 }
 
 }  // namespace

@@ -6,7 +6,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <sstream>
 #include <string>
 
@@ -14,6 +13,7 @@
 #include "engine/subdiv/sample_surface.hpp"
 #include "tests/subdiv/quad_test_meshes.hpp"
 #include "tests/support/lastcut_cli.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
 namespace {
@@ -23,8 +23,7 @@ using CommandResult = test::CommandRun;
 class CliSubdivide : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() / ("lastcut-cli-subdivide-" + std::to_string(std::random_device{}()));
-    std::filesystem::create_directories(dir_);
+    dir_ = test::make_temp_dir("cli-subdivide");
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
 

@@ -10,7 +10,8 @@
 #include <sstream>
 #include <stdexcept>
 #include <sys/wait.h>
-#include <unistd.h>
+
+#include "tests/support/temp_dir.hpp"
 
 namespace lastcut::test {
 namespace {
@@ -22,15 +23,11 @@ std::string read_text(const std::filesystem::path& path) {
   return text.str();
 }
 
-std::filesystem::path temporary_file(const std::string& stem) {
-  return std::filesystem::temp_directory_path() / (stem + "-" + std::to_string(::getpid()) + "-" +
-                                                   std::to_string(reinterpret_cast<uintptr_t>(&stem)) + ".txt");
-}
-
 }  // namespace
 
 std::string run_command(const std::string& command) {
-  const std::filesystem::path errors = temporary_file("lastcut-stderr");
+  const TempDir folder("interpreter");
+  const std::filesystem::path errors = folder / "stderr.txt";
   const std::string full = command + " 2>" + errors.string();
   FILE* pipe = ::popen(full.c_str(), "r");
   if (!pipe) throw std::runtime_error("cannot run: " + command);
@@ -40,7 +37,6 @@ std::string run_command(const std::string& command) {
   while ((count = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) output.append(buffer.data(), count);
   const int status = ::pclose(pipe);
   const std::string stderr_text = read_text(errors);
-  std::filesystem::remove(errors);
   if (status != 0) {
     throw std::runtime_error("command failed (status " + std::to_string(WEXITSTATUS(status)) + "): " + command +
                              "\n" + stderr_text.substr(0, 2000));
