@@ -19,7 +19,8 @@
 // Mathematics 123, 2002) with worst-fit decreasing as the start (Johnson, "Fast algorithms for bin
 // packing", JCSS 8, 1974) and the swap neighbourhood of Fleszar & Hindi's variable neighbourhood
 // search for bin packing (Computers & Operations Research 29, 2002).
-// Oracle answers are cached per (hide, units). Deterministic for the seed when the oracle runs on a
+// Oracle answers are cached per (hide, units), and a hide is not asked for a superset of units it
+// could not hold. Deterministic for the seed when the oracle runs on a
 // round budget (NestOptions::iteration_limit set); otherwise its time budget decides its answers.
 #include <cstdint>
 #include <optional>
