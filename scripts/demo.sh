@@ -17,9 +17,17 @@ else
   bin="$root/build/bin"
 fi
 
-demo="$root/demo"
+# LASTCUT_DEMO_DIR=folder: run the demo there instead of ./demo/ (the test suite's run of this script);
+# the shipped demo configuration is copied there with its paths pointing into that folder.
+demo="${LASTCUT_DEMO_DIR:-$root/demo}"
+config="$root/config/demo/lastcut.toml"
 rm -rf "$demo/incoming" "$demo/spool" "$demo/staging" "$demo/cutter-records"
 mkdir -p "$demo/incoming" "$demo/staging" "$demo/cutter-records"
+if [ -n "${LASTCUT_DEMO_DIR:-}" ]; then
+  demo="$(cd "$demo" && pwd)"
+  sed -e "s|\"../../demo/|\"$demo/|" -e "s|\"../machines\"|\"$root/config/machines\"|" "$config" > "$demo/lastcut.toml"
+  config="$demo/lastcut.toml"
+fi
 
 pids=()
 cleanup() { for pid in "${pids[@]}"; do kill "$pid" 2>/dev/null || true; done; }
@@ -39,8 +47,8 @@ done
 echo "grbl table on $demo/cutter-1.tty, HPGL plotter on $demo/plotter-1.tty"
 
 echo "== lastcutd"
-"$bin/lastcutd" --check-config config/demo/lastcut.toml
-"$bin/lastcutd" --config config/demo/lastcut.toml > "$demo/lastcutd.log" 2>&1 &
+"$bin/lastcutd" --check-config "$config"
+"$bin/lastcutd" --config "$config" > "$demo/lastcutd.log" 2>&1 &
 daemon=$!
 pids+=($daemon)
 for _ in $(seq 100); do grep -q "lastcutd ready" "$demo/lastcutd.log" && break; sleep 0.1; done
@@ -70,7 +78,7 @@ for _ in $(seq 360); do
   [ "$finished" -ge "$count" ] && [ -z "$(ls "$demo/spool/work" 2>/dev/null)" ] && break
   sleep 0.5
 done
-"$bin/lastcut" status --config config/demo/lastcut.toml || true
+"$bin/lastcut" status --config "$config" || true
 
 echo "== stopping lastcutd (SIGTERM)"
 kill -TERM "$daemon"
@@ -89,7 +97,8 @@ for job in "$demo"/spool/done/* "$demo"/spool/failed/* "$demo"/spool/held/*; do
   for file in layout.json cut.nc cut.plt preview.svg report.json; do
     [ -f "$job/$file" ] && echo "  $(printf '%-10s' "${file%%.*}:") $job/$file"
   done
-  grep -h '"reason"' "$job/state.json" | head -1 | sed 's/^ */  /'
+  # Why a job failed or is held; a done job has no reason.
+  grep -h '"reason": "[^"]' "$job/state.json" | head -1 | sed -E 's/^ *"reason": (.*[^,]),?$/  reason:    \1/' || true
 done
 echo "what the simulated cutters received: $demo/cutter-records/"
 failed=$(ls "$demo/spool/failed" 2>/dev/null | wc -l)
