@@ -4,12 +4,10 @@
 // or held when the cut was interrupted (at most once: never sent again by itself), or queued again
 // when the driver guarantees nothing reached the machine. A ledger away after a cut: the end is
 // written again until it lands (the lease keeper renews the claim meanwhile).
-#include <fstream>
-#include <sstream>
-
 #include <spdlog/spdlog.h>
 
 #include "daemon/ledger_node/ledger_node.hpp"
+#include "daemon/pipeline/watched_send.hpp"
 #include "drivers/cutter.hpp"
 
 namespace lastcut::daemon {
@@ -64,10 +62,9 @@ bool LedgerNode::cut_batch(ledger::LedgerClient& client, const ledger::BatchClai
       if (stopping_) return false;
     }
   };
-  std::ifstream in(store_.absolute(claim.cut_file), std::ios::binary);
-  std::ostringstream program;
-  program << in.rdbuf();
-  if (!in || claim.cut_file.empty() || program.str().empty()) {
+  const std::optional<std::string> program =
+      claim.cut_file.empty() ? std::nullopt : read_cut_program(store_.absolute(claim.cut_file));
+  if (!program) {
     const std::string reason = "the cut file " + claim.cut_file + " is missing or empty in the shared folder";
     spdlog::error("{}: held: {}", label, reason);
     record([&] { return client.hold_batch(claim.lease, reason); });
@@ -77,19 +74,16 @@ bool LedgerNode::cut_batch(ledger::LedgerClient& client, const ledger::BatchClai
   // The point of no return: from here on a crash or fault means "maybe partly cut".
   if (!record([&] { return client.mark_sending(claim.lease); })) return true;
   spdlog::info("{}: cutting ({} jobs)", label, claim.job_ids.size());
-  report_cutter({claim.cutter, "sending", id, "", 0, 0, 0, program.str().size()});
+  report_cutter({claim.cutter, "sending", id, "", 0, 0, 0, program->size()});
   batch_event(claim, JobStage::Sending, "");
   ++cuts_in_progress_;
-  const std::string worker = "cutter " + claim.cutter;
-  monitor_.begin(worker, "batch " + id, section.link.timeout_s + 30);
   const auto progress = [&](const drivers::SendProgress& step) {
-    monitor_.beat(worker);
     report_cutter({claim.cutter, "sending", id, "", step.lines_acked, step.lines_total, step.bytes_sent,
                    step.bytes_total});
   };
   const drivers::SendResult result =
-      drivers::send_job({section.link, claim.cutter, ("L" + id).substr(0, 16)}, program.str(), progress, cancel_cut_);
-  monitor_.end(worker);
+      send_watched(monitor_, "cutter " + claim.cutter, "batch " + id,
+                   {section.link, claim.cutter, ("L" + id).substr(0, 16)}, *program, progress, cancel_cut_);
   --cuts_in_progress_;
   switch (result.outcome) {
     case drivers::SendOutcome::Done:

@@ -1,11 +1,9 @@
 #include "daemon/pipeline/cutter_dispatcher.hpp"
 
-#include <fstream>
-#include <sstream>
-
 #include <spdlog/spdlog.h>
 
 #include "daemon/pipeline/job_outcomes.hpp"
+#include "daemon/pipeline/watched_send.hpp"
 #include "drivers/cutter.hpp"
 
 namespace lastcut::daemon {
@@ -133,12 +131,9 @@ bool CutterDispatcher::cut_batch(const std::string& batch_id) {
   if (!last_problem_.empty()) spdlog::info("cutter {}: ready again ({})", name_, probe.state);
   last_problem_.clear();
 
-  // Exactly the stored cut file: what an operator inspects (or replays with `lastcut send`) is what
-  // the machine got.
-  std::ifstream in(spool_.batch_dir(batch_id) / batch->cut_file, std::ios::binary);
-  std::ostringstream program;
-  program << in.rdbuf();
-  if (!in || batch->cut_file.empty() || program.str().empty()) {
+  const std::optional<std::string> program =
+      batch->cut_file.empty() ? std::nullopt : read_cut_program(spool_.batch_dir(batch_id) / batch->cut_file);
+  if (!program) {
     batch->reason = "the cut file " + batch->cut_file + " is missing or empty";
     hold_batch(spool_, *batch);
     report("held", batch_id, batch->reason);
@@ -155,17 +150,14 @@ bool CutterDispatcher::cut_batch(const std::string& batch_id) {
   report("sending", batch_id, "");
   spdlog::info("cutter {}: cutting batch {} ({} jobs, {} pieces)", name_, batch_id, batch->job_ids.size(),
                batch->piece_count);
-  const std::string worker = "cutter " + name_;
-  monitor_.begin(worker, "batch " + batch_id, section.link.timeout_s + 30);
   const auto progress = [&](const drivers::SendProgress& step) {
-    monitor_.beat(worker);
     if (step.bytes_total > 0) {
       set_condition("cutting " + batch_id + " (" + std::to_string(100 * step.bytes_sent / step.bytes_total) + " %)");
     }
     report("sending", batch_id, "", step);
   };
-  const drivers::SendResult result = drivers::send_job(config, program.str(), progress, cancel_);
-  monitor_.end(worker);
+  const drivers::SendResult result =
+      send_watched(monitor_, "cutter " + name_, "batch " + batch_id, config, *program, progress, cancel_);
   {
     std::lock_guard lock(mutex_);
     sending_ = false;
