@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "engine/nest/hide_search.hpp"
+#include "engine/nest/known_failures.hpp"
 
 namespace lastcut::nest_detail {
 namespace {
@@ -61,8 +62,7 @@ class Regroup {
   std::uint64_t seed_;
   std::vector<std::vector<int>> on_;  // per target hide: its units
   std::map<std::pair<size_t, std::vector<int>>, Packing> cache_;
-  // Per target hide: the unit sets (sorted) the oracle could not pack there.
-  std::vector<std::vector<const std::vector<int>*>> failed_sets_;
+  KnownFailures failures_;  // per target hide, the unit sets the oracle could not pack there
   long calls_ = 0;
 };
 
@@ -71,19 +71,16 @@ const Packing& Regroup::pack(size_t target, std::vector<int> units, int effort) 
   auto key = std::make_pair(target, units);
   if (auto known = cache_.find(key); known != cache_.end()) {
     if (known->second.complete || known->second.effort >= effort) return known->second;
-    std::erase(failed_sets_[target], &known->first.second);
+    failures_.forget(target, units);
     cache_.erase(known);  // asked again, longer
   }
   if (units.empty()) return cache_.emplace(std::move(key), Packing{.complete = true}).first->second;
   // A hide that could not hold some of these units (asked at least as long) will not hold them all: the
-  // oracle is not asked. On Test6 that spares 7-17 of a regrouping's 110-140 questions, each a failing
+  // oracle is not asked. On Test6 that spares 3-17 of a regrouping's 24-140 questions, each a failing
   // search to the end of its budget; of 19 such questions asked anyway for a check, none was packed.
-  for (const std::vector<int>* failed : failed_sets_[target]) {
-    const Packing& known = cache_.at({target, *failed});
-    if (known.effort >= effort && std::includes(units.begin(), units.end(), failed->begin(), failed->end())) {
-      Packing surely_not{.complete = false, .effort = effort, .left_over = known.left_over, .placed = {}};
-      return cache_.emplace(std::move(key), std::move(surely_not)).first->second;
-    }
+  if (const std::vector<int>* failed = failures_.failed_subset(target, units, effort)) {
+    Packing surely_not{.complete = false, .effort = effort, .left_over = cache_.at({target, *failed}).left_over, .placed = {}};
+    return cache_.emplace(std::move(key), std::move(surely_not)).first->second;
   }
   ++calls_;
   const int slot = slots_[target];
@@ -132,10 +129,8 @@ const Packing& Regroup::pack(size_t target, std::vector<int> units, int effort) 
   } else {
     packing.left_over = units;  // some piece has no pose on this hide at all
   }
-  const bool failed = !packing.complete;
-  auto entry = cache_.emplace(std::move(key), std::move(packing)).first;
-  if (failed) failed_sets_[target].push_back(&entry->first.second);
-  return entry->second;
+  if (!packing.complete) failures_.add(target, units, effort);
+  return cache_.emplace(std::move(key), std::move(packing)).first->second;
 }
 
 bool Regroup::try_move(size_t from, int unit) {
@@ -181,7 +176,7 @@ bool Regroup::try_swap(size_t from, int unit) {
 std::optional<HidePlacement> Regroup::run(const std::vector<int>& units) {
   // Worst fit by fill, largest unit first.
   on_.assign(slots_.size(), {});
-  failed_sets_.assign(slots_.size(), {});
+  failures_ = KnownFailures(slots_.size());
   std::vector<int> order = units;
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return area(a) > area(b); });
   for (int u : order) {
