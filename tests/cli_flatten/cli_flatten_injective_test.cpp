@@ -22,7 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(CliFlattenInjective, OverlappingRampGetsAMoldWithAClearOutline) {
-  const fs::path dir = lastcut::test::make_temp_dir("cli-injective");
+  const lastcut::test::TempDir dir("cli-injective");
   // The ramp of tests/flatten/injective_outline_test.cpp: radii 40-80 mm, 420 degrees, 20 mm rise per turn.
   write_mesh(dir / "ramp.obj", testing::helicoidal_ramp(40.0, 80.0, 420.0, 20.0, 10, 240));
   const std::string arguments =
@@ -43,7 +43,6 @@ TEST(CliFlattenInjective, OverlappingRampGetsAMoldWithAClearOutline) {
   const OutlineClearance outline(topology.boundary_loops[0], 0.1);
   EXPECT_FALSE(outline.crosses(flat.V.leftCols(2)));
   EXPECT_GE(outline.smallest_gap_mm(flat.V.leftCols(2), 1), 0.1 - 1e-5);  // written with 6 decimals
-  fs::remove_all(dir);
 }
 
 }  // namespace

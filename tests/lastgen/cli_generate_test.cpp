@@ -21,10 +21,6 @@ using CommandResult = test::CommandRun;
 
 class CliGenerate : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = test::make_temp_dir("cli-generate");
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
 
   static std::string slurp(const std::filesystem::path& path) { return test::read_text(path); }
 
@@ -32,7 +28,7 @@ class CliGenerate : public ::testing::Test {
     return test::run_lastcut("generate " + arguments, dir_);
   }
 
-  std::filesystem::path dir_;
+  const test::TempDir dir_{"cli-generate"};
 };
 
 TEST_F(CliGenerate, WritesTheAskedLastAndTheSameBytesForTheSameSeed) {

@@ -16,10 +16,6 @@ const std::string kBase = "\n" + lastcut::testing::kMinimalDaemonConfig;
 
 class LedgerConfigTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    folder_ = test::make_temp_dir("ledger-config");
-  }
-  void TearDown() override { std::filesystem::remove_all(folder_); }
 
   ConfigLoadResult load(const std::string& ledger_table) {
     std::ofstream(folder_ / "lastcut.toml") << kBase << ledger_table;
@@ -30,7 +26,7 @@ class LedgerConfigTest : public ::testing::Test {
     return static_cast<int>(std::count(kBase.begin(), kBase.end(), '\n')) + 1 + index_in_table;
   }
 
-  std::filesystem::path folder_;
+  const test::TempDir folder_{"ledger-config"};
 };
 
 TEST_F(LedgerConfigTest, AbsentTableMeansTheFileSpool) {

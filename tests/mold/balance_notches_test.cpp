@@ -88,7 +88,7 @@ double distance_to_outline_mm(const Polygon2& polygon, const Point2& p) {
 }
 
 TEST(BalanceNotchesOnALast, MedialAndLateralCentreCutNotchesMeetWhenSewn) {
-  const fs::path dir = lastcut::test::make_temp_dir("balance");
+  const lastcut::test::TempDir dir("balance");
   LastParams params = LastParams::for_eu_size(41, FootSide::Left);
   params.target_triangles = 12000;
   write_stl_binary(dir / "last.stl", generate_last(params).mesh);
@@ -99,7 +99,6 @@ TEST(BalanceNotchesOnALast, MedialAndLateralCentreCutNotchesMeetWhenSewn) {
   options.mold.edge_allowances = EdgeAllowances{16, 5, 0};
   const ScanResult net_run = scan_to_molds(dir / "last.stl", net_options);
   const ScanResult result = scan_to_molds(dir / "last.stl", options);
-  fs::remove_all(dir);
   ASSERT_EQ(result.segments.size(), 2u);
 
   std::map<std::string, std::map<std::string, std::vector<double>>> lengths;  // segment -> edge -> arc lengths

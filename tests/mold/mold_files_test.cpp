@@ -19,10 +19,6 @@ namespace fs = std::filesystem;
 
 class MoldFiles : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = lastcut::test::make_temp_dir(std::string("mold-files-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   fs::path file(const std::string& name) const { return dir_ / name; }
   void write_text(const fs::path& path, const std::string& text) const { std::ofstream(path, std::ios::binary) << text; }
   static std::string read_text(const fs::path& path) {
@@ -31,7 +27,7 @@ class MoldFiles : public ::testing::Test {
     s << in.rdbuf();
     return s.str();
   }
-  fs::path dir_;
+  const lastcut::test::TempDir dir_{std::string("mold-files-") + ::testing::UnitTest::GetInstance()->current_test_info()->name()};
 };
 
 Mold sample_mold(double allowance_mm = 0.0) {

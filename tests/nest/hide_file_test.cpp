@@ -44,10 +44,6 @@ std::vector<Point2> rectangle(double x0, double y0, double x1, double y1) {
 
 class HideFileTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = lastcut::test::make_temp_dir(std::string("hide-file-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
   std::filesystem::path write(const std::string& name, const std::string& text) {
     std::ofstream(dir_ / name, std::ios::binary) << text;
     return dir_ / name;
@@ -61,7 +57,7 @@ class HideFileTest : public ::testing::Test {
     }
     return "(accepted)";
   }
-  std::filesystem::path dir_;
+  const lastcut::test::TempDir dir_{std::string("hide-file-") + ::testing::UnitTest::GetInstance()->current_test_info()->name()};
 };
 
 TEST_F(HideFileTest, DxfLayersGiveOutlineHolesZonesAndBackboneInMillimetres) {

@@ -17,12 +17,8 @@
 namespace lastcut {
 namespace {
 
-std::filesystem::path temp_dir() {
-  return lastcut::test::make_temp_dir("nest-cli");
-}
-
 TEST(NestCli, WritesACheckedLayoutAndPicture) {
-  const auto dir = temp_dir();
+  const lastcut::test::TempDir dir("nest-cli");
   std::ofstream(dir / "strip.json") << instance_to_json(test::small_strip()).dump();
   const test::CommandRun result =
       test::run_lastcut("nest " + (dir / "strip.json").string() + " --time-limit 1 --threads 2 --gap 1 -o " +
@@ -39,11 +35,10 @@ TEST(NestCli, WritesACheckedLayoutAndPicture) {
   const std::string picture((std::istreambuf_iterator<char>(svg)), std::istreambuf_iterator<char>());
   EXPECT_NE(picture.find("<svg"), std::string::npos);
   EXPECT_NE(picture.find("utilisation"), std::string::npos);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(NestCli, ExitsThreeWhenPiecesAreLeftOver) {
-  const auto dir = temp_dir();
+  const lastcut::test::TempDir dir("nest-cli");
   NestInstance instance = test::small_hide();
   instance.items.push_back(test::item(5, test::rectangle(500, 40), 1, {}));
   std::ofstream(dir / "hide.json") << instance_to_json(instance).dump();
@@ -52,12 +47,11 @@ TEST(NestCli, ExitsThreeWhenPiecesAreLeftOver) {
       dir);
   EXPECT_EQ(result.exit_code, 3) << result.all();
   EXPECT_NE(result.all().find("not placed: item 5"), std::string::npos) << result.all();
-  std::filesystem::remove_all(dir);
 }
 
 TEST(NestCli, MoldsFromSeveralLastsCarryTheirFolderOnTheLabel) {
   // What `lastcut flatten` leaves: one folder per last, one DXF per half, labelled by the half only.
-  const auto dir = temp_dir();
+  const lastcut::test::TempDir dir("nest-cli");
   for (const std::string last : {"m-38-left", "m-40-right"}) {
     std::filesystem::create_directories(dir / last);
     write_mold_dxf(dir / last / "medial.dxf", Mold{"medial", test::rectangle(120, 60), {}});
@@ -72,11 +66,10 @@ TEST(NestCli, MoldsFromSeveralLastsCarryTheirFolderOnTheLabel) {
   ASSERT_EQ(embedded.items.size(), 2u);
   EXPECT_EQ(embedded.items[0].label, "m-38-left medial");
   EXPECT_EQ(embedded.items[1].label, "m-40-right medial");
-  std::filesystem::remove_all(dir);
 }
 
 TEST(NestCli, RefusesBadInputWithOneLine) {
-  const auto dir = temp_dir();
+  const lastcut::test::TempDir dir("nest-cli");
   std::ofstream(dir / "broken.json") << "{\"strip_height\": 10, \"items\": [{\"id\": 0, \"shape\": [[0,0],[1,0]]}]}";
   const test::CommandRun bad = test::run_lastcut(
       "nest " + (dir / "broken.json").string() + " --time-limit 1 -o " + (dir / "out.json").string(), dir);
@@ -90,9 +83,8 @@ TEST(NestCli, RefusesBadInputWithOneLine) {
       "nest " + (dir / "missing.json").string() + " --time-limit 1 -o " + (dir / "out.json").string(), dir);
   EXPECT_EQ(missing.exit_code, 1) << missing.all();
   const test::CommandRun molds_without_roll =
-      test::run_lastcut("nest " + dir.string() + " --time-limit 1 -o " + (dir / "out.json").string(), dir);
+      test::run_lastcut("nest " + dir.path().string() + " --time-limit 1 -o " + (dir / "out.json").string(), dir);
   EXPECT_EQ(molds_without_roll.exit_code, 1) << molds_without_roll.all();
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

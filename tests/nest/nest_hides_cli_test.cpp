@@ -23,7 +23,7 @@ namespace {
 Polygon2 rectangle(double w, double h) { return {{{0, 0}, {w, 0}, {w, h}, {0, h}}}; }
 
 TEST(NestHidesCli, MoldsGoWholeOnOneHideFile) {
-  const auto dir = lastcut::test::make_temp_dir("nest-hides");
+  const lastcut::test::TempDir dir("nest-hides");
   std::filesystem::create_directories(dir / "m-40-left");
   write_mold_dxf(dir / "m-40-left" / "medial.dxf", Mold{"medial", rectangle(200, 80), {}});
   write_mold_dxf(dir / "m-40-left" / "lateral.dxf", Mold{"lateral", rectangle(200, 90), {}});
@@ -67,7 +67,6 @@ TEST(NestHidesCli, MoldsGoWholeOnOneHideFile) {
   EXPECT_EQ(bad.out, "");
   EXPECT_EQ(bad.err, "lastcut nest: error: " + (dir / "open.dxf").string() +
                          ": the hide outline on layer HIDE is open; close it in the drawing program\n");
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

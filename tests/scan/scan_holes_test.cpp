@@ -44,14 +44,12 @@ class ScanHoles : public ::testing::Test {
     params_.target_triangles = 60000;
     last_ = generate_last(params_).mesh;
     length_mm_ = last_.V.col(0).maxCoeff() - last_.V.col(0).minCoeff();
-    dir_ = lastcut::test::make_temp_dir("scan-holes");
   }
-  void TearDown() override { fs::remove_all(dir_); }
 
   LastParams params_;
   TriMesh last_;
   double length_mm_ = 0;
-  fs::path dir_;
+  const lastcut::test::TempDir dir_{"scan-holes"};
 };
 
 TEST_F(ScanHoles, RaggedHolesAreMeasuredAcrossAndClosedAlongTheSurface) {

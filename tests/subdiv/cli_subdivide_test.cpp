@@ -22,10 +22,6 @@ using CommandResult = test::CommandRun;
 
 class CliSubdivide : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = test::make_temp_dir("cli-subdivide");
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
 
   static std::string slurp(const std::filesystem::path& path) { return test::read_text(path); }
   CommandResult run(const std::string& arguments) const {
@@ -33,7 +29,7 @@ class CliSubdivide : public ::testing::Test {
   }
   static int line_count(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
 
-  std::filesystem::path dir_;
+  const test::TempDir dir_{"cli-subdivide"};
 };
 
 TEST_F(CliSubdivide, WritesTheSampledQuadMesh) {

@@ -29,6 +29,7 @@ class TempDir {
   TempDir(const TempDir&) = delete;
   TempDir& operator=(const TempDir&) = delete;
   const std::filesystem::path& path() const { return path_; }
+  operator const std::filesystem::path&() const { return path_; }  // implicit: a TempDir stands for its folder
   std::filesystem::path operator/(const std::string& file) const { return path_ / file; }
 
  private:
