@@ -2,7 +2,7 @@
 // plain read_mesh of the same file in the same run) and last generator speed.
 //   build/bin/bench_mesh [--benchmark_filter=...]
 // The test scan: a generated EU 42 last of 100k triangles, 1-to-4 subdivided to 400k, with
-// scanner noise, written once per format into a temp dir.
+// scanner noise, written once per format into a fresh temp folder that is removed at exit.
 #include <benchmark/benchmark.h>
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
@@ -14,22 +14,25 @@
 #include "engine/mesh/midpoint_subdivision.hpp"
 #include "engine/mesh/openmesh_types.hpp"
 #include "engine/mesh/read_mesh.hpp"
+#include "tests/support/temp_dir.hpp"
 
 namespace {
 
 const std::filesystem::path& scan_dir() {
-  static const std::filesystem::path dir = [] {
-    const std::filesystem::path path = std::filesystem::temp_directory_path() / "lastcut-bench-mesh";
-    std::filesystem::create_directories(path);
+  // A fixed name would let two runs (or a leftover of a killed one) share the files.
+  static const lastcut::test::TempDir dir("bench-mesh");
+  static const bool written = [] {
+    const std::filesystem::path& path = dir.path();
     lastcut::LastParams params = lastcut::LastParams::for_eu_size(42, lastcut::FootSide::Left);
     params.surface = lastcut::LastSurface::Remeshed;  // the figures in docs/ were measured on it
     params.target_triangles = 100000;
     params.noise_mm = 0.1;
     const lastcut::TriMesh scan = lastcut::subdivide_midpoint(lastcut::generate_last(params).mesh);
     for (const char* extension : {".stl", ".obj", ".ply", ".off"}) lastcut::write_mesh(path / (std::string("scan400k") + extension), scan);
-    return path;
+    return true;
   }();
-  return dir;
+  (void)written;
+  return dir.path();
 }
 
 const char* kFormats[] = {".stl", ".obj", ".ply", ".off"};
