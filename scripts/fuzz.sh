@@ -2,14 +2,17 @@
 # Runs the libFuzzer targets of tests/fuzz for SECONDS each, two at a time (docs/fuzzing.md).
 #   bash scripts/fuzz.sh SECONDS [TARGET...]      e.g. bash scripts/fuzz.sh 600   or   scripts/fuzz.sh 60 stl layout
 #   bash scripts/fuzz.sh --table [TARGET...]      the table of the last runs again, from build-fuzz/logs/
+#   bash scripts/fuzz.sh --replay [TARGET...]     build, then run each target once over its in-tree seed
+#                                                 corpus (CI: the clang tree compiles and every libFuzzer
+#                                                 binary runs its regression inputs; no new inputs are made)
 # Configures and builds the clang tree build-fuzz/ (-DLASTCUT_FUZZ=ON) when needed. Each target
 # starts from a copy of its in-tree seed corpus in build-fuzz/corpus/<target> (new inputs stay
 # there, not in the tree); crashes go to build-fuzz/artifacts/<target>/, logs to build-fuzz/logs/.
 # Prints a table of the runs; exits non-zero when any target crashed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-if [ $# -lt 1 ] || ! [[ "$1" =~ ^([0-9]+|--table)$ ]]; then
-  echo "usage: scripts/fuzz.sh SECONDS [TARGET...] | scripts/fuzz.sh --table [TARGET...]" >&2
+if [ $# -lt 1 ] || ! [[ "$1" =~ ^([0-9]+|--table|--replay)$ ]]; then
+  echo "usage: scripts/fuzz.sh SECONDS [TARGET...] | scripts/fuzz.sh --table [TARGET...] | scripts/fuzz.sh --replay [TARGET...]" >&2
   exit 2
 fi
 seconds="$1"
@@ -119,8 +122,42 @@ print_table() {
   fi
 }
 
-if [ "$seconds" != "--table" ]; then
-  build_targets
-  run_all
-fi
-print_table
+# Each target once over the files of its in-tree seed corpus (libFuzzer's run-these-files mode):
+# deterministic, so a failure is a crash of that build on a stored input, never a new find.
+replay_all() {
+  local target files failed=() logs="$build/logs"
+  mkdir -p "$logs"
+  for target in "${targets[@]}"; do
+    mapfile -t files < <(find "tests/fuzz/corpus/$target" -type f | sort)
+    if [ ${#files[@]} -eq 0 ]; then
+      echo "fuzz replay: no seed corpus for '$target' (tests/fuzz/corpus/$target/)" >&2
+      failed+=("$target")
+      continue
+    fi
+    if "$build/bin/${target}_fuzz" -rss_limit_mb=2048 -timeout=30 -close_fd_mask=1 "${files[@]}" \
+      >"$logs/$target.replay.log" 2>&1; then
+      echo "fuzz replay: $target ran ${#files[@]} inputs"
+    else
+      echo "fuzz replay: $target FAILED on its seed corpus; the end of $logs/$target.replay.log:" >&2
+      tail -n 30 "$logs/$target.replay.log" | sed -n 'l 200' >&2  # escaped: the log may hold input bytes
+      failed+=("$target")
+    fi
+  done
+  if [ ${#failed[@]} -gt 0 ]; then
+    echo "fuzz replay failed: ${failed[*]}" >&2
+    return 1
+  fi
+}
+
+case "$seconds" in
+  --table) print_table ;;
+  --replay)
+    build_targets
+    replay_all
+    ;;
+  *)
+    build_targets
+    run_all
+    print_table
+    ;;
+esac
