@@ -50,7 +50,7 @@ Status HotFolder::start() {
   const std::string network = network_file_system(folder_);
   polling_ = config_.mode == WatchMode::Poll || (config_.mode == WatchMode::Auto && !network.empty());
   if (polling_) {
-    mode_description_ = "polling every " + std::to_string(config_.poll_interval_s) + " s" +
+    mode_description_ = fmt::format("polling every {:g} s", config_.poll_interval_s) +
                         (network.empty() ? "" : " (network share: " + network + ")");
     return Status::success();
   }
@@ -59,7 +59,7 @@ Status HotFolder::start() {
   if (::inotify_add_watch(inotify_fd_, folder_.c_str(), IN_CLOSE_WRITE | IN_MOVED_TO | IN_CREATE | IN_MODIFY) < 0) {
     return Status::failure("cannot watch " + folder_.string() + ": " + std::strerror(errno));
   }
-  mode_description_ = "inotify, full rescan every " + std::to_string(config_.rescan_interval_s) + " s";
+  mode_description_ = fmt::format("inotify, full rescan every {:g} s", config_.rescan_interval_s);
   return Status::success();
 }
 
