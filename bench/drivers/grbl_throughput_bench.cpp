@@ -8,12 +8,14 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <CLI/CLI.hpp>
 
 #include "drivers/cutter.hpp"
 #include "drivers/grbl/grbl_job.hpp"
@@ -44,8 +46,17 @@ std::unique_ptr<lastcut::test::ChildProcess> start_sim(const std::string& link, 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int lines = argc > 1 ? std::atoi(argv[1]) : 10000;
-  const int baud = argc > 2 ? std::atoi(argv[2]) : 115200;
+  int lines = 10000;
+  int baud = 115200;
+  CLI::App app{"Throughput of the grbl sender as a share of the serial wire's capacity: a G-code job streamed to "
+               "lastcut-sim grbl over a pseudo-terminal, character counting vs send-and-wait"};
+  app.add_option("LINES", lines, "lines of G-code in the job")
+      ->capture_default_str()
+      ->check(CLI::Range(1, std::numeric_limits<int>::max()));
+  app.add_option("BAUD", baud, "serial wire speed the simulator models (baud, 10 bits per byte)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, std::numeric_limits<int>::max()));
+  CLI11_PARSE(app, argc, argv);
   const std::string program = make_job(lines);
   size_t wire_bytes = 0;
   for (const auto& line : lastcut::drivers::grbl::program_lines(program)) wire_bytes += line.size() + 1;

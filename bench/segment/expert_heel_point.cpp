@@ -8,21 +8,30 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "engine/lastgen/generate_last.hpp"
 #include "engine/segment/expert_split_plane.hpp"
 #include "engine/segment/segment_last.hpp"
 
 int main(int argc, char** argv) {
   using namespace lastcut;
-  if (argc < 4) {
-    std::fprintf(stderr, "usage: %s EU left|right TRIANGLES [legacy]\n", argv[0]);
-    return 2;
-  }
-  const int eu = std::stoi(argv[1]);
-  const FootSide side = std::string(argv[2]) == "left" ? FootSide::Left : FootSide::Right;
+  int eu = 0, triangles = 0;
+  std::string side_name, legacy;
+  CLI::App app{"Where the expert rule puts T3 on a generated last against the farthest feather-line point from T2 "
+               "(bound 1.5 mm, ExpertSplitOnLasts)"};
+  app.add_option("EU", eu, "EU size of the last")->required()->check(CLI::Range(35, 47));
+  app.add_option("side", side_name, "foot side: left or right")->required()->check(CLI::IsMember({"left", "right"}));
+  app.add_option("TRIANGLES", triangles, "target triangle count of the last")
+      ->required()
+      ->check(CLI::Range(2000, 2'000'000));
+  app.add_option("legacy", legacy, "\"legacy\": the remeshed surface instead of the Bezier one")
+      ->check(CLI::IsMember({"legacy"}));
+  CLI11_PARSE(app, argc, argv);
+  const FootSide side = side_name == "left" ? FootSide::Left : FootSide::Right;
   LastParams params = LastParams::for_eu_size(eu, side);
-  params.target_triangles = std::stoi(argv[3]);
-  params.surface = argc > 4 && std::string(argv[4]) == "legacy" ? LastSurface::Remeshed : LastSurface::Bezier;
+  params.target_triangles = triangles;
+  params.surface = legacy == "legacy" ? LastSurface::Remeshed : LastSurface::Bezier;
   // Generated lasts are in the canonical frame already: no orientation step (as in the test).
   const OrientedLast last{generate_last(params).mesh, Eigen::Affine3d::Identity(), side, {}};
   SegmentOptions options;
@@ -40,7 +49,7 @@ int main(int argc, char** argv) {
   for (size_t i = 0; i < fine.size(); ++i)
     if ((fine[i] - plane.T2).norm() > (fine[far] - plane.T2).norm()) far = i;
   std::printf("EU %d %s, %d triangles, %s: T3 %.2f mm from the farthest point (bound 1.5), %.2f mm ahead of the back-most (bound 0.5)\n",
-              eu, argv[2], params.target_triangles, params.surface == LastSurface::Bezier ? "Bezier" : "legacy",
+              eu, side_name.c_str(), params.target_triangles, params.surface == LastSurface::Bezier ? "Bezier" : "legacy",
               (plane.T3 - fine[far]).norm(), plane.T3.x() - x_back);
   return 0;
 }

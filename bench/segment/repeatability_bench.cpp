@@ -17,13 +17,13 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <cmath>
 #include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
+
+#include <CLI/CLI.hpp>
 
 #include "engine/core/engine_error.hpp"
 #include "engine/lastgen/generate_last.hpp"
@@ -107,17 +107,23 @@ std::pair<double, Eigen::Vector3d> boundary_gap_3d_mm(const lastcut::TriMesh& a,
 }  // namespace
 
 int main(int argc, char** argv) {
-  bool quick = false, noise = true, pose = true, density = true, holes = true;
+  bool quick = false, no_noise = false, no_pose = false, same_density = false, no_holes = false;
   lastcut::ScanOptions options;
-  for (int i = 1; i < argc; ++i) {
-    if (i + 1 < argc && std::strcmp(argv[i], "--feather-height") == 0) options.segment_options.feather_height_mm = std::atof(argv[++i]);
-    if (i + 1 < argc && std::strcmp(argv[i], "--rim-depth") == 0) options.segment_options.rim_depth_mm = std::atof(argv[++i]);
-    quick |= std::strcmp(argv[i], "--quick") == 0;
-    noise &= std::strcmp(argv[i], "--no-noise") != 0;
-    pose &= std::strcmp(argv[i], "--no-pose") != 0;
-    density &= std::strcmp(argv[i], "--same-density") != 0;
-    holes &= std::strcmp(argv[i], "--no-holes") != 0;
-  }
+  CLI::App app{"Repeatability of the molds: pairs of scans of one last that differ as two real scans do go through "
+               "scan-to-molds; the molds of each half are aligned and compared by the Hausdorff distance"};
+  app.add_flag("--quick", quick, "only the 3 pairs the scan test checks (default: 12 pairs, EU 36..46, both feet)");
+  app.add_flag("--no-noise", no_noise, "no 0.2 mm scanner noise on the scans");
+  app.add_flag("--no-pose", no_pose, "no random pose: both scans in the canonical frame");
+  app.add_flag("--same-density", same_density, "both scans at 16k triangles (default: 16k vs 24k)");
+  app.add_flag("--no-holes", no_holes, "no holes in the scans (default: 3)");
+  app.add_option("--feather-height", options.segment_options.feather_height_mm,
+                 "segmentation: feather line height above the fitted sole surface (mm)")
+      ->capture_default_str();
+  app.add_option("--rim-depth", options.segment_options.rim_depth_mm,
+                 "segmentation: top rim depth below the fitted top plane (mm)")
+      ->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+  const bool noise = !no_noise, pose = !no_pose, density = !same_density, holes = !no_holes;
   std::vector<Pair> pairs;
   if (quick) {
     pairs = {{42, lastcut::FootSide::Left, 11}, {38, lastcut::FootSide::Right, 21}, {45, lastcut::FootSide::Left, 31}};

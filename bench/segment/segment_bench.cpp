@@ -7,10 +7,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstring>
 #include <ctime>
 #include <numbers>
 #include <vector>
+
+#include <CLI/CLI.hpp>
 
 #include "engine/core/engine_error.hpp"
 #include "engine/lastgen/generate_last.hpp"
@@ -102,7 +103,13 @@ void sweep_table() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc > 1 && std::strcmp(argv[1], "--sweep") == 0)
+  bool sweep = false;
+  CLI::App app{"Orientation and segmentation speed on generated last scans (0.2 mm noise, 3 holes, random pose); "
+               "with --sweep a correctness table over EU 35-47, both sides"};
+  app.add_flag("--sweep", sweep,
+               "the correctness table over EU 35..47 x left/right at 20k triangles instead of the speed table");
+  CLI11_PARSE(app, argc, argv);
+  if (sweep)
     sweep_table();
   else
     speed_table();

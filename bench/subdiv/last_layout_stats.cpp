@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "engine/lastgen/generate_last.hpp"
 #include "engine/lastgen/last_shape.hpp"
 
@@ -24,9 +26,20 @@ Eigen::Vector3d centroid(const TriMesh& mesh, Eigen::Index f) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int triangles = argc > 1 ? std::stoi(argv[1]) : 5000;
-  const int eu = argc > 2 ? std::stoi(argv[2]) : 0;
-  const FootSide side = argc > 3 && std::string(argv[3]) == "left" ? FootSide::Left : FootSide::Right;
+  int triangles = 5000;
+  int eu = 0;
+  std::string side_name = "right";
+  CLI::App app{"How even the Bezier last's triangles are: area spread, where the smallest and largest sit, the "
+               "widest one-ring hole a simulated scan can punch, generation time"};
+  app.add_option("triangles", triangles, "target triangle count of the last")
+      ->capture_default_str()
+      ->check(CLI::Range(2000, 2'000'000));
+  app.add_option("eu_size", eu, "EU size of the last (35..47), 0 for the default last")
+      ->capture_default_str()
+      ->check(CLI::Range(35, 47) | CLI::IsMember({0}));
+  app.add_option("side", side_name, "foot side")->capture_default_str()->check(CLI::IsMember({"right", "left"}));
+  CLI11_PARSE(app, argc, argv);
+  const FootSide side = side_name == "left" ? FootSide::Left : FootSide::Right;
   LastParams params = eu > 0 ? LastParams::for_eu_size(eu, side) : LastParams{};
   params.side = side;
   params.target_triangles = triangles;

@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "engine/lastgen/generate_last.hpp"
 #include "engine/lastgen/last_control_mesh.hpp"
 #include "engine/subdiv/sample_surface.hpp"
@@ -161,12 +163,17 @@ void render_generated(Image& image, int x0, LastParams params, const Camera& cam
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2) {
-    std::fprintf(stderr, "usage: render_reflection_lines OUT.ppm [control_quads] [side|toe|generated]\n");
-    return 2;
-  }
-  const int control_quads = argc > 2 ? std::stoi(argv[2]) : 600;
-  const std::string view = argc > 3 ? argv[3] : "side";
+  std::string out_path;
+  int control_quads = 600;
+  std::string view = "side";
+  CLI::App app{"Reflection lines on the Bezier surface of a generated last's quad control mesh at n = 3 and n = 4, "
+               "side by side, as a binary PPM"};
+  app.add_option("OUT.ppm", out_path, "picture to write (binary PPM, 1280 x 420 pixels)")->required();
+  app.add_option("control_quads", control_quads, "about this many quads in the control mesh")->capture_default_str();
+  app.add_option("view", view, "side, toe, or generated (left panel: the generator's 50k-triangle Bezier last)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"side", "toe", "generated"}));
+  CLI11_PARSE(app, argc, argv);
   const bool generated = view == "generated";
   const LastParams params = LastParams::for_eu_size(42, FootSide::Right);
   const LastShape shape(params);
@@ -185,10 +192,10 @@ int main(int argc, char** argv) {
     render_panel(image, 0, control, 3, camera, stripe_axis);
   }
   render_panel(image, kPanelWidth, control, 4, camera, stripe_axis);
-  std::ofstream out(argv[1], std::ios::binary);
+  std::ofstream out(out_path, std::ios::binary);
   out << "P6\n" << image.width << " " << image.height << "\n255\n";
   out.write(reinterpret_cast<const char*>(image.rgb.data()), static_cast<std::streamsize>(image.rgb.size()));
-  std::printf("wrote %s: %d control quads, %s (left) and n = 4 (right)\n", argv[1], control.quad_count(),
+  std::printf("wrote %s: %d control quads, %s (left) and n = 4 (right)\n", out_path.c_str(), control.quad_count(),
               generated ? "the generated Bezier last" : "n = 3");
   return out ? 0 : 1;
 }

@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "engine/lastgen/last_control_mesh.hpp"
 #include "engine/subdiv/sample_surface.hpp"
 
@@ -29,7 +31,11 @@ struct RatioStats {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int control_quads = argc > 1 ? std::stoi(argv[1]) : 1500;
+  int control_quads = 1500;
+  CLI::App app{"Bezier subdivision on the control mesh of a generated EU 42 last: subdivide_bezier time per detail n "
+               "and the sample spread at extraordinary vs regular vertices"};
+  app.add_option("control_quads", control_quads, "about this many quads in the control mesh")->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
   const LastParams params = LastParams::for_eu_size(42, FootSide::Right);
   const LastShape shape(params);
   const auto build_start = std::chrono::steady_clock::now();

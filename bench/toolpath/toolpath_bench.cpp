@@ -7,12 +7,13 @@
 #include <cmath>
 #include <chrono>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <CLI/CLI.hpp>
 
 #include "engine/core/engine_error.hpp"
 #include "engine/nest/nest_json.hpp"
@@ -50,17 +51,15 @@ int main(int argc, char** argv) {
   double time_limit_s = 2.0;
   int repeat = 5;
   std::filesystem::path layouts_dir, save_dir;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--time-limit" && i + 1 < argc) time_limit_s = std::stod(argv[++i]);
-    else if (arg == "--layouts" && i + 1 < argc) layouts_dir = argv[++i];
-    else if (arg == "--save" && i + 1 < argc) save_dir = argv[++i];
-    else if (arg == "--repeat" && i + 1 < argc) repeat = std::max(1, std::stoi(argv[++i]));
-    else {
-      std::fprintf(stderr, "usage: bench_toolpath [--time-limit S] [--layouts DIR] [--save DIR] [--repeat N]\n");
-      return 2;
-    }
-  }
+  CLI::App app{"Cutting-order benchmark: tool-up travel of our piece order vs the layout's own order on the ESICUP "
+               "instances, and the time to plan and write HPGL and G-code"};
+  app.add_option("--time-limit", time_limit_s, "nester time limit per instance (s)")->capture_default_str();
+  app.add_option("--layouts", layouts_dir, "read saved layouts <instance>.json from this folder instead of nesting");
+  app.add_option("--save", save_dir, "write each instance's layout into this folder as <instance>.json");
+  app.add_option("--repeat", repeat, "plan and write each program N times, report the medians (below 1: once)")
+      ->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+  repeat = std::max(1, repeat);
   const std::filesystem::path esicup = std::filesystem::path(LASTCUT_SHARED_DATA_DIR) / "nesting" / "esicup";
   std::vector<std::filesystem::path> instances;
   for (const auto& entry : std::filesystem::directory_iterator(esicup)) {
