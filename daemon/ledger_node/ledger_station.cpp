@@ -62,8 +62,7 @@ bool LedgerNode::cut_batch(ledger::LedgerClient& client, const ledger::BatchClai
       if (stopping_) return false;
     }
   };
-  const std::optional<std::string> program =
-      claim.cut_file.empty() ? std::nullopt : read_cut_program(store_.absolute(claim.cut_file));
+  const std::optional<std::string> program = read_cut_program(store_.absolute(claim.cut_file));
   if (!program) {
     const std::string reason = "the cut file " + claim.cut_file + " is missing or empty in the shared folder";
     spdlog::error("{}: held: {}", label, reason);

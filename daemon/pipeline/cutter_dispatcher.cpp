@@ -131,8 +131,7 @@ bool CutterDispatcher::cut_batch(const std::string& batch_id) {
   if (!last_problem_.empty()) spdlog::info("cutter {}: ready again ({})", name_, probe.state);
   last_problem_.clear();
 
-  const std::optional<std::string> program =
-      batch->cut_file.empty() ? std::nullopt : read_cut_program(spool_.batch_dir(batch_id) / batch->cut_file);
+  const std::optional<std::string> program = read_cut_program(spool_.batch_dir(batch_id) / batch->cut_file);
   if (!program) {
     batch->reason = "the cut file " + batch->cut_file + " is missing or empty";
     hold_batch(spool_, *batch);

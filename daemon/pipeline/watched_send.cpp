@@ -3,10 +3,14 @@
 
 #include <fstream>
 #include <sstream>
+#include <system_error>
 
 namespace lastcut::daemon {
 
 std::optional<std::string> read_cut_program(const std::filesystem::path& cut_file) {
+  // A batch with no cut-file name gives its folder here: refused with every other non-file.
+  std::error_code ignored;  // a path that cannot be examined is refused like a missing file
+  if (!std::filesystem::is_regular_file(cut_file, ignored)) return std::nullopt;
   std::ifstream in(cut_file, std::ios::binary);
   std::ostringstream program;
   program << in.rdbuf();

@@ -14,7 +14,8 @@
 namespace lastcut::daemon {
 
 // The cut file's bytes exactly as stored (what an operator inspects or replays with `lastcut send`
-// is what the machine gets); nullopt when the file is missing, unreadable or empty.
+// is what the machine gets); nullopt when the file is missing, unreadable or empty, or not a regular
+// file (a folder: what a batch without a cut-file name joins to, so callers need no check of their own).
 std::optional<std::string> read_cut_program(const std::filesystem::path& cut_file);
 
 // drivers::send_job, with `worker` busy on `task` in `monitor` meanwhile: every progress report is a

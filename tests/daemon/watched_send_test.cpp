@@ -28,6 +28,7 @@ TEST(ReadCutProgram, RefusesAMissingOrEmptyFile) {
   std::ofstream(folder / "empty.nc").close();
   EXPECT_FALSE(read_cut_program(folder / "empty.nc"));
   EXPECT_FALSE(read_cut_program(folder.path()));  // a folder is no cut file
+  EXPECT_FALSE(read_cut_program(folder / ""));     // nor is a batch's folder joined to an empty cut-file name
 }
 
 TEST(SendWatched, AFailedSendLeavesNoWorkerBusy) {
