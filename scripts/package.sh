@@ -5,10 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root="$(pwd)"
-bash scripts/setup.sh
-SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
-DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends \
-  debhelper dpkg-dev fakeroot lintian help2man >/dev/null
+bash scripts/setup.sh  # installs the packaging tools too (debhelper, dpkg-dev, fakeroot, lintian, help2man)
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 git archive --format=tar --prefix=lastcut/ HEAD | tar -x -C "$work"
