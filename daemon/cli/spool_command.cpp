@@ -13,7 +13,7 @@
 #include "daemon/cli/commands.hpp"
 #include "daemon/cli/ledger_status.hpp"
 #include "daemon/config/config_loader.hpp"
-#include "daemon/pipeline/engine_steps.hpp"
+#include "daemon/station/engine_steps.hpp"
 #include "daemon/spool/spool.hpp"
 
 namespace lastcut::cli {

@@ -6,8 +6,8 @@
 #include <spdlog/spdlog.h>
 
 #include "daemon/ledger_node/ledger_node.hpp"
-#include "daemon/pipeline/engine_steps.hpp"
-#include "daemon/pipeline/job_mold_options.hpp"
+#include "daemon/station/engine_steps.hpp"
+#include "daemon/station/job_mold_options.hpp"
 #include "engine/core/durable_file.hpp"
 
 namespace lastcut::daemon {

@@ -8,8 +8,8 @@
 #include <unordered_map>
 
 #include "daemon/ledger_node/ledger_node.hpp"
-#include "daemon/pipeline/engine_steps.hpp"
-#include "daemon/pipeline/hide_step.hpp"
+#include "daemon/station/engine_steps.hpp"
+#include "daemon/station/hide_step.hpp"
 #include "engine/core/durable_file.hpp"
 #include "engine/nest/hide_file.hpp"
 

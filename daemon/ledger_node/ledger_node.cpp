@@ -154,15 +154,19 @@ Result<JobTicket> ticket_from_ledger(const std::string& text) {
 void LedgerNode::job_event(long long job_id, const std::string& scan_name, const std::string& ticket_json,
                            long long batch_id, JobStage stage, const std::string& reason) {
   if (!observer_) return;
-  JobState state;
-  state.id = std::to_string(job_id);
-  state.scan_name = scan_name;
-  if (Result<JobTicket> ticket = ticket_from_ledger(ticket_json)) state.ticket = *ticket;
-  state.batch_id = batch_id ? std::to_string(batch_id) : "";
-  state.stage = stage;
-  state.reason = reason;
-  state.updated_at = utc_now_iso();
-  observer_->job_changed(state);
+  JobEvent event;
+  event.job_id = std::to_string(job_id);
+  event.scan_name = scan_name;
+  if (Result<JobTicket> ticket = ticket_from_ledger(ticket_json)) {
+    event.order = ticket->order;
+    event.material = ticket->material;
+    event.cutter = ticket->cutter;
+  }
+  event.batch_id = batch_id ? std::to_string(batch_id) : "";
+  event.stage = stage;
+  event.reason = reason;
+  event.at = utc_now_iso();
+  observer_->job_changed(event);
 }
 
 void LedgerNode::batch_event(const ledger::BatchClaim& claim, JobStage stage, const std::string& reason) {

@@ -30,10 +30,10 @@
 #include "daemon/ledger/lease_keeper.hpp"
 #include "daemon/ledger/ledger_client.hpp"
 #include "daemon/ledger_node/shared_store.hpp"
-#include "daemon/pipeline/job_flow.hpp"
-#include "daemon/pipeline/progress_monitor.hpp"
-#include "daemon/pipeline/status_observer.hpp"
-#include "daemon/spool/job_ticket.hpp"
+#include "daemon/station/job_flow.hpp"
+#include "daemon/station/progress_monitor.hpp"
+#include "daemon/job/status_observer.hpp"
+#include "daemon/job/job_ticket.hpp"
 #include "daemon/watch/hot_folder.hpp"
 
 namespace lastcut::daemon {

@@ -7,7 +7,7 @@
 #include <spdlog/spdlog.h>
 
 #include "daemon/ledger_node/ledger_node.hpp"
-#include "daemon/pipeline/watched_send.hpp"
+#include "daemon/station/watched_send.hpp"
 #include "drivers/cutter.hpp"
 
 namespace lastcut::daemon {

@@ -10,9 +10,9 @@
 #include <spdlog/spdlog.h>
 
 #include "daemon/ledger_node/ledger_node.hpp"
-#include "daemon/pipeline/ticket_targets.hpp"
-#include "daemon/spool/job_ticket.hpp"
-#include "daemon/spool/sha256.hpp"
+#include "daemon/station/ticket_targets.hpp"
+#include "daemon/job/job_ticket.hpp"
+#include "daemon/job/sha256.hpp"
 #include "engine/core/durable_file.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/nest/hide_file.hpp"

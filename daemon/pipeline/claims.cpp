@@ -5,8 +5,8 @@
 
 #include "daemon/pipeline/job_outcomes.hpp"
 #include "daemon/pipeline/pipeline.hpp"
-#include "daemon/pipeline/ticket_targets.hpp"
-#include "daemon/spool/sha256.hpp"
+#include "daemon/station/ticket_targets.hpp"
+#include "daemon/job/sha256.hpp"
 #include "engine/core/durable_file.hpp"
 
 namespace lastcut::daemon {

@@ -3,7 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include "daemon/pipeline/job_outcomes.hpp"
-#include "daemon/pipeline/watched_send.hpp"
+#include "daemon/station/watched_send.hpp"
 #include "drivers/cutter.hpp"
 
 namespace lastcut::daemon {

@@ -15,8 +15,8 @@
 #include <thread>
 
 #include "daemon/config/daemon_config.hpp"
-#include "daemon/pipeline/progress_monitor.hpp"
-#include "daemon/pipeline/status_observer.hpp"
+#include "daemon/station/progress_monitor.hpp"
+#include "daemon/job/status_observer.hpp"
 #include "daemon/pipeline/work_queue.hpp"
 #include "daemon/spool/spool.hpp"
 #include "drivers/cutter.hpp"

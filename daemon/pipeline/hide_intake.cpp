@@ -7,10 +7,10 @@
 
 #include <spdlog/spdlog.h>
 
-#include "daemon/pipeline/hide_step.hpp"
+#include "daemon/station/hide_step.hpp"
 #include "daemon/pipeline/job_outcomes.hpp"
 #include "daemon/pipeline/pipeline.hpp"
-#include "daemon/pipeline/ticket_targets.hpp"
+#include "daemon/station/ticket_targets.hpp"
 #include "engine/core/durable_file.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/nest/hide_file.hpp"

@@ -4,7 +4,7 @@
 
 #include <spdlog/spdlog.h>
 
-#include "daemon/pipeline/engine_steps.hpp"
+#include "daemon/station/engine_steps.hpp"
 #include "engine/core/durable_file.hpp"
 
 namespace lastcut::daemon {

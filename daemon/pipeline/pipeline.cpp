@@ -22,7 +22,8 @@ Status Pipeline::start() {
   spool_ = std::make_unique<Spool>(settings->paths.spool_dir);
   if (Status prepared = spool_->prepare(); !prepared) return prepared;
   if (observer_) {
-    spool_->on_job_written([observer = observer_](const JobState& state) { observer->job_changed(state); });
+    spool_->on_job_written(
+        [observer = observer_](const JobState& state) { observer->job_changed(job_event_of(state)); });
   }
   for (const auto& [name, section] : settings->cutters) {
     dispatchers_[name] = std::make_unique<CutterDispatcher>(name, *spool_, monitor_, [this, cutter = name] {

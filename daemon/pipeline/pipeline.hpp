@@ -20,9 +20,9 @@
 
 #include "daemon/config/daemon_config.hpp"
 #include "daemon/pipeline/cutter_dispatcher.hpp"
-#include "daemon/pipeline/job_flow.hpp"
-#include "daemon/pipeline/progress_monitor.hpp"
-#include "daemon/pipeline/status_observer.hpp"
+#include "daemon/station/job_flow.hpp"
+#include "daemon/station/progress_monitor.hpp"
+#include "daemon/job/status_observer.hpp"
 #include "daemon/pipeline/work_queue.hpp"
 #include "daemon/spool/spool.hpp"
 #include "daemon/watch/hot_folder.hpp"

@@ -13,7 +13,7 @@
 //   unfinished durable writes (temporary files) anywhere lastcutd writes -> removed
 #include <spdlog/spdlog.h>
 
-#include "daemon/pipeline/engine_steps.hpp"
+#include "daemon/station/engine_steps.hpp"
 #include "daemon/pipeline/job_outcomes.hpp"
 #include "daemon/pipeline/pipeline.hpp"
 #include "engine/core/durable_file.hpp"

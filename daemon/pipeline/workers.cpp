@@ -5,8 +5,8 @@
 
 #include <spdlog/spdlog.h>
 
-#include "daemon/pipeline/engine_steps.hpp"
-#include "daemon/pipeline/job_mold_options.hpp"
+#include "daemon/station/engine_steps.hpp"
+#include "daemon/station/job_mold_options.hpp"
 #include "daemon/pipeline/job_outcomes.hpp"
 #include "daemon/pipeline/pipeline.hpp"
 

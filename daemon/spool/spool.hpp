@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "daemon/spool/job_state.hpp"
+#include "daemon/job/job_state.hpp"
 #include "engine/core/status.hpp"
 
 namespace lastcut::daemon {

@@ -154,15 +154,15 @@ void MqttStatus::on_publish(mosquitto*, void* self, int message_id) {
   }
 }
 
-void MqttStatus::job_changed(const JobState& state) {
-  Message event{topics_.job_event(state.id), job_event_payload(state, config_.station).dump()};
+void MqttStatus::job_changed(const JobEvent& event) {
+  Message message{topics_.job_event(event.job_id), job_event_payload(event, config_.station).dump()};
   {
     std::lock_guard lock(mutex_);
     if (events_.size() >= static_cast<std::size_t>(config_.queue_limit)) {
       events_.pop_front();
       ++dropped_events_;
     }
-    events_.push_back(std::move(event));
+    events_.push_back(std::move(message));
   }
   wake_.notify_all();
 }

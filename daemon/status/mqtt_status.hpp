@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "daemon/config/daemon_config.hpp"
-#include "daemon/pipeline/status_observer.hpp"
+#include "daemon/job/status_observer.hpp"
 #include "daemon/status/status_topics.hpp"
 #include "engine/core/status.hpp"
 
@@ -48,7 +48,7 @@ class MqttStatus final : public StatusObserver {
   // acknowledgement), then disconnects. Called after the pipeline has stopped.
   void stop();
 
-  void job_changed(const JobState& state) override;
+  void job_changed(const JobEvent& event) override;
   void cutter_changed(const CutterStatus& status) override;
 
  private:

@@ -16,23 +16,18 @@ nlohmann::json cutter_progress_payload(const CutterStatus& status, const std::st
           {"at", at}};
 }
 
-nlohmann::json job_event_payload(const JobState& state, const std::string& station) {
-  std::string note, at = state.updated_at;
-  if (state.history.is_array() && !state.history.empty()) {
-    const nlohmann::json& last = state.history.back();
-    note = last.value("note", "");
-    at = last.value("at", at);
-  }
-  return {{"job", state.id},
-          {"stage", std::string(to_string(state.stage))},
-          {"note", note},
-          {"reason", state.reason},
-          {"order", state.ticket.order},
-          {"scan", state.scan_name},
-          {"cutter", state.ticket.cutter},
-          {"batch", state.batch_id},
+nlohmann::json job_event_payload(const JobEvent& event, const std::string& station) {
+  return {{"job", event.job_id},
+          {"stage", std::string(to_string(event.stage))},
+          {"note", event.note},
+          {"reason", event.reason},
+          {"order", event.order},
+          {"scan", event.scan_name},
+          {"material", event.material},
+          {"cutter", event.cutter},
+          {"batch", event.batch_id},
           {"station", station},
-          {"at", at}};
+          {"at", event.at}};
 }
 
 }  // namespace lastcut::daemon

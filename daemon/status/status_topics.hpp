@@ -12,8 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "daemon/pipeline/status_observer.hpp"
-#include "daemon/spool/job_state.hpp"
+#include "daemon/job/status_observer.hpp"
+#include "daemon/job/job_event.hpp"
 
 namespace lastcut::daemon {
 
@@ -38,6 +38,6 @@ nlohmann::json cutter_state_payload(const CutterStatus& status, const std::strin
 nlohmann::json cutter_progress_payload(const CutterStatus& status, const std::string& at);
 // The job's stage after the write, the note of its last history entry (what happened), the
 // reason (failed, held, skipped) and what an operator recognises the job by.
-nlohmann::json job_event_payload(const JobState& state, const std::string& station);
+nlohmann::json job_event_payload(const JobEvent& event, const std::string& station);
 
 }  // namespace lastcut::daemon

@@ -8,7 +8,7 @@
 
 #include <spdlog/spdlog.h>
 
-#include "daemon/spool/job_ticket.hpp"
+#include "daemon/job/job_ticket.hpp"
 #include "daemon/watch/file_kind.hpp"
 #include "daemon/watch/scan_completeness.hpp"
 

@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "daemon/config/config_loader.hpp"
-#include "daemon/pipeline/job_mold_options.hpp"
-#include "daemon/spool/job_ticket.hpp"
+#include "daemon/station/job_mold_options.hpp"
+#include "daemon/job/job_ticket.hpp"
 #include "daemon_harness.hpp"
 
 namespace lastcut::daemon {

@@ -3,7 +3,7 @@
 // automatic plane; both give the two molds.
 #include <gtest/gtest.h>
 
-#include "daemon/pipeline/engine_steps.hpp"
+#include "daemon/station/engine_steps.hpp"
 #include "daemon_harness.hpp"
 #include "engine/lastgen/generate_last.hpp"
 

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "daemon/pipeline/engine_steps.hpp"
+#include "daemon/station/engine_steps.hpp"
 #include "daemon_harness.hpp"
 #include "engine/lastgen/generate_last.hpp"
 #include "engine/mesh/write_mesh.hpp"

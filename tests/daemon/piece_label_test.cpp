@@ -2,7 +2,7 @@
 // foot and half, short enough for a pen.
 #include <gtest/gtest.h>
 
-#include "daemon/pipeline/piece_label_text.hpp"
+#include "daemon/station/piece_label_text.hpp"
 
 namespace lastcut::daemon {
 namespace {

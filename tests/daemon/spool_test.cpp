@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "engine/core/durable_file.hpp"
-#include "daemon/spool/job_ticket.hpp"
-#include "daemon/spool/sha256.hpp"
+#include "daemon/job/job_ticket.hpp"
+#include "daemon/job/sha256.hpp"
 #include "daemon/spool/spool.hpp"
 #include "daemon_harness.hpp"
 

@@ -2,8 +2,8 @@
 // refused, and a state file with a missing or unknown stage reads as held with a one-line reason.
 #include <gtest/gtest.h>
 
-#include "daemon/spool/job_state.hpp"
-#include "daemon/spool/stages.hpp"
+#include "daemon/job/job_state.hpp"
+#include "daemon/job/stages.hpp"
 
 namespace lastcut::daemon {
 namespace {

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string>
 
-#include "daemon/pipeline/watched_send.hpp"
+#include "daemon/station/watched_send.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace lastcut::daemon {

@@ -1,5 +1,5 @@
 // Fuzz target: nesting on a hide read from a JSON hide file, what lastcutd does when a hide lands in
-// the hides folder for a cutter (daemon/pipeline/hide_step.cpp): read_hide_file, hide_batch with the
+// the hides folder for a cutter (daemon/station/hide_step.cpp): read_hide_file, hide_batch with the
 // waiting pieces (two shoe-mold pairs of one order and a single, every leather rule on: grades, the
 // toe's grade, grain, pairs on one hide), nest_batch (greedy, two rounds), the offcut. The hide_json
 // target stops where the reader accepts a hide; this one takes what mutations of a valid hide make of

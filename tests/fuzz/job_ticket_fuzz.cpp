@@ -1,4 +1,4 @@
-// Fuzz target: the job sidecar reader (daemon/spool/job_ticket.hpp), read_job_ticket on a
+// Fuzz target: the job sidecar reader (daemon/job/job_ticket.hpp), read_job_ticket on a
 // NAME.job.toml or NAME.job.json file. Sidecars are written by the workshop's order system or by
 // hand and dropped in the watch folder next to a scan: outside input the daemon reads unattended.
 // The daemon picks the format by extension; here an input starting with '{' (never valid TOML at
@@ -13,7 +13,7 @@
 #include <cstdint>
 #include <cstdlib>
 
-#include "daemon/spool/job_ticket.hpp"
+#include "daemon/job/job_ticket.hpp"
 #include "fuzz_input_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -1,5 +1,5 @@
 // Fuzz target: reading a reference pattern as SVG (engine/compare/reference_outline.hpp), what
-// lastcutd does when a job's sidecar names a reference pattern (daemon/pipeline/reference_check.cpp)
+// lastcutd does when a job's sidecar names a reference pattern (daemon/station/reference_check.cpp)
 // and what `lastcut compare MOLD REFERENCE` does: read_reference_outline parses the file and refuses
 // sizes and shapes no shoe pattern has (check_pattern_outline). The comparison itself is left out:
 // under the sanitizers one of real patterns takes 1-6 s (Clipper, at every trial motion of the

@@ -149,7 +149,7 @@ TEST(StatusTopics, AJobEventCarriesTheLastStepOfTheHistory) {
   state.advance(JobStage::Claimed, "taken from the watch folder");
   state.advance(JobStage::Held, "cutter c1 stopped");
   state.reason = "cutter c1 stopped";
-  const auto event = job_event_payload(state, "room-2");
+  const auto event = job_event_payload(job_event_of(state), "room-2");
   EXPECT_EQ(event["job"], "J1");
   EXPECT_EQ(event["stage"], "held");
   EXPECT_EQ(event["note"], "cutter c1 stopped");

@@ -1,4 +1,4 @@
-#include "daemon/pipeline/job_mold_options.hpp"
+#include "daemon/station/job_mold_options.hpp"
 
 namespace lastcut::daemon {
 

@@ -1,4 +1,4 @@
-#include "daemon/pipeline/ticket_targets.hpp"
+#include "daemon/station/ticket_targets.hpp"
 
 namespace lastcut::daemon {
 

@@ -1,6 +1,6 @@
 // The sidecar reader: TOML and JSON sidecars are turned into the same JSON object and checked
 // once, so both formats accept exactly the same keys.
-#include "daemon/spool/job_ticket.hpp"
+#include "daemon/job/job_ticket.hpp"
 
 #include <array>
 #include <fstream>

@@ -1,5 +1,5 @@
 // SHA-256 after FIPS PUB 180-4 (NIST 2015), sections 4.1.2, 4.2.2, 5.1.1, 6.2.2.
-#include "daemon/spool/sha256.hpp"
+#include "daemon/job/sha256.hpp"
 
 #include <array>
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include "daemon/pipeline/progress_monitor.hpp"
+#include "daemon/station/progress_monitor.hpp"
 
 namespace lastcut::daemon {
 

@@ -1,8 +1,8 @@
 // Scan -> molds for one job (engine/scan), then the molds as nest items (engine/nest/mold_items)
 // in the engine's JSON, so that nesting after a restart needs no recomputation and reads the same
 // form `lastcut nest` reads.
-#include "daemon/pipeline/engine_steps.hpp"
-#include "daemon/pipeline/piece_label_text.hpp"
+#include "daemon/station/engine_steps.hpp"
+#include "daemon/station/piece_label_text.hpp"
 #include "engine/core/durable_file.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/nest/mold_items.hpp"

@@ -1,5 +1,5 @@
 // Reading a cut file and sending it under the progress monitor's watch; see watched_send.hpp.
-#include "daemon/pipeline/watched_send.hpp"
+#include "daemon/station/watched_send.hpp"
 
 #include <fstream>
 #include <sstream>

@@ -20,7 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "daemon/config/daemon_config.hpp"
-#include "daemon/spool/job_ticket.hpp"
+#include "daemon/job/job_ticket.hpp"
 #include "engine/core/status.hpp"
 #include "engine/mold/mold.hpp"
 

@@ -1,11 +1,11 @@
 // A hide on a cutter's table -> the waiting pieces nested on it -> cut file, preview, report and
 // offcut (see hide_step.hpp).
-#include "daemon/pipeline/hide_step.hpp"
+#include "daemon/station/hide_step.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "daemon/pipeline/engine_steps.hpp"
+#include "daemon/station/engine_steps.hpp"
 #include "engine/core/durable_file.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/nest/hide_batch.hpp"

@@ -4,7 +4,7 @@
 // a bad job never spoils a batch.
 #include <set>
 
-#include "daemon/pipeline/engine_steps.hpp"
+#include "daemon/station/engine_steps.hpp"
 #include "engine/core/durable_file.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/nest/nest_json.hpp"

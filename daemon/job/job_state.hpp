@@ -11,8 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "daemon/spool/job_ticket.hpp"
-#include "daemon/spool/stages.hpp"
+#include "daemon/job/job_ticket.hpp"
+#include "daemon/job/stages.hpp"
 
 namespace lastcut::daemon {
 

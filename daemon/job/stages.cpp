@@ -1,4 +1,4 @@
-#include "daemon/spool/stages.hpp"
+#include "daemon/job/stages.hpp"
 
 #include <algorithm>
 #include <array>

@@ -7,7 +7,7 @@
 //   - else the uniform default_allowance_mm.
 // Balance notch spacings come from the sidecar or else the defaults (0 = off).
 #include "daemon/config/daemon_config.hpp"
-#include "daemon/spool/job_ticket.hpp"
+#include "daemon/job/job_ticket.hpp"
 #include "engine/mold/mold.hpp"
 
 namespace lastcut::daemon {

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "daemon/config/daemon_config.hpp"
-#include "daemon/pipeline/status_observer.hpp"
+#include "daemon/job/status_observer.hpp"
 #include "engine/core/status.hpp"
 
 namespace lastcut::daemon {

@@ -1,4 +1,4 @@
-#include "daemon/pipeline/piece_label_text.hpp"
+#include "daemon/station/piece_label_text.hpp"
 
 #include <filesystem>
 

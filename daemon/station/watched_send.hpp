@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "daemon/pipeline/progress_monitor.hpp"
+#include "daemon/station/progress_monitor.hpp"
 #include "drivers/cutter.hpp"
 
 namespace lastcut::daemon {

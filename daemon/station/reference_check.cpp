@@ -5,7 +5,7 @@
 #include <exception>
 #include <string>
 
-#include "daemon/pipeline/engine_steps.hpp"
+#include "daemon/station/engine_steps.hpp"
 #include "engine/compare/compare_report.hpp"
 #include "engine/compare/reference_outline.hpp"
 #include "engine/mold/mold_dxf.hpp"

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "daemon/config/daemon_config.hpp"
-#include "daemon/spool/job_ticket.hpp"
+#include "daemon/job/job_ticket.hpp"
 
 namespace lastcut::daemon {
 

@@ -1,4 +1,4 @@
-#include "daemon/spool/job_state.hpp"
+#include "daemon/job/job_state.hpp"
 
 #include <chrono>
 #include <cstdio>

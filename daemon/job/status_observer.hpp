@@ -1,12 +1,13 @@
 #pragma once
-// StatusObserver: what the pipeline tells whoever shows live status (daemon/status publishes it
-// over MQTT). Called from the pipeline's own threads (main, compute workers, one per cutter)
-// right after the change is durable; an implementation must return at once and never block,
-// and must be thread-safe. Without an observer the pipeline runs exactly as before.
+// StatusObserver: what a station tells whoever shows live status (daemon/status publishes it
+// over MQTT), the same on a spool and on a ledger node. Called from the station's own threads
+// (main, compute workers, one per cutter) right after the change is durable; an implementation
+// must return at once and never block, and must be thread-safe. Without an observer the station
+// runs exactly as before.
 #include <cstddef>
 #include <string>
 
-#include "daemon/spool/job_state.hpp"
+#include "daemon/job/job_event.hpp"
 
 namespace lastcut::daemon {
 
@@ -26,8 +27,8 @@ struct CutterStatus {
 class StatusObserver {
  public:
   virtual ~StatusObserver() = default;
-  // A job's state.json was written (a stage change, or a note on the way such as an attempt).
-  virtual void job_changed(const JobState& state) = 0;
+  // A job changed stage, or got a note on the way (such as an attempt).
+  virtual void job_changed(const JobEvent& event) = 0;
   // A cutter changed state or reported progress (at most every ~100 ms while sending).
   virtual void cutter_changed(const CutterStatus& status) = 0;
 };
