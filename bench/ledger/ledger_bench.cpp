@@ -18,6 +18,7 @@
 #include <pqxx/pqxx>
 
 #include "daemon/ledger/ledger_client.hpp"
+#include "daemon/ledger_node/ledger_batch_rule.hpp"
 #include "tests/support/postgres_server.hpp"
 
 namespace {
@@ -48,7 +49,9 @@ std::string hash_of(int node, int scan) {
 // A compute node's part of a batch, nothing nested: group computed jobs (no window), hand the
 // batch to its station.
 lastcut::Status make_nested_batch(LedgerClient& client) {
-  auto made = client.make_batch(5, 0, 30);
+  lastcut::daemon::BatchConfig rule;
+  rule.max_pieces = 5;  // every job here has 1 piece: batches of 5 jobs, as bench_spool's
+  auto made = client.make_batch(lastcut::daemon::ledger_batch_rule(rule), 30);
   if (!made) return made.status();
   if (!made->has_value()) return lastcut::Status::success();
   return client.mark_nested((*made)->lease, {"batches/" + std::to_string((*made)->batch_id) + "/cut.nc", 1, {}});

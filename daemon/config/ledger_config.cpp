@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <set>
+#include <utility>
 #include <sstream>
 
 #include "daemon/config/table_reader.hpp"
@@ -77,8 +78,13 @@ void read_ledger_table(const toml::table& table, const std::filesystem::path& ba
       errors.push_back(at("cutters", *cutters) + ": only a node with the role \"station\" has cutters cabled to it");
     }
   }
-  reader.number("batch_window_s", config.batch_window_s, 0, 3600);
-  reader.integer("max_batch_jobs", config.max_batch_jobs, 1, 1000);
+  // One batching rule for the spool and the ledger since schema 4: the ledger's own keys name the new one.
+  for (const auto& [old_key, new_key] : {std::pair{"batch_window_s", "[batch] window_s"},
+                                         std::pair{"max_batch_jobs", "[batch] max_pieces (pieces, not jobs)"}}) {
+    if (const toml::node* old = reader.node(old_key))
+      errors.push_back(at(old_key, *old) + ": no longer read; use " + new_key +
+                       ", the same batching rule as on one station (docs/multi-station.md, upgrading)");
+  }
   reader.number("lease_s", config.lease_s, 1, 3600);
   reader.number("heartbeat_s", config.heartbeat_s, 0.1, 1800);
   if (config.heartbeat_s > config.lease_s / 2) {

@@ -18,8 +18,6 @@ struct LedgerConfig {
   // The cutters cabled to this node (station role), each a [cutters.X] of the file; empty = all of
   // them. The others are listed only for their machine profiles (a compute node writes their cut files).
   std::vector<std::string> cutters;
-  double batch_window_s = 5;            // a computed job waits at most this long for company before nesting
-  int max_batch_jobs = 8;               // jobs nested together at most
 
   bool owns_cutter(const std::string& cutter) const;
 

@@ -1,5 +1,7 @@
 // The batch half of the ledger queue: computed jobs grouped per cutter and material and nested by
 // a compute node, claimed by the station that owns the cutter, marked sending before the first byte, then cut or held.
+#include <algorithm>
+
 #include <pqxx/pqxx>
 
 #include "daemon/ledger/ledger_transaction.hpp"
@@ -29,9 +31,11 @@ std::vector<long long> jobs_of(pqxx::work& tx, long long batch_id) {
 // The batch's jobs, their scans and tickets into `claim`, ascending (the hide's too, for a hide batch).
 void fill_jobs(pqxx::work& tx, BatchClaim& claim) {
   for (const pqxx::row& r : tx.exec_params(
-           "SELECT id, scan_sha256, scan_name, ticket FROM jobs WHERE batch_id = $1 ORDER BY id", claim.batch_id)) {
+           "SELECT id, scan_sha256, scan_name, ticket, coalesce(duplicate_of, 0) FROM jobs WHERE batch_id = $1"
+           " ORDER BY id",
+           claim.batch_id)) {
     claim.job_ids.push_back(r[0].as<long long>());
-    claim.job_scans.push_back(r[1].as<std::string>());
+    claim.job_folders.push_back(job_folder_name(r[1].as<std::string>(), r[0].as<long long>(), r[4].as<long long>()));
     claim.job_names.push_back(r[2].as<std::string>());
     claim.job_tickets.push_back(r[3].as<std::string>());
   }
@@ -45,28 +49,30 @@ void fill_jobs(pqxx::work& tx, BatchClaim& claim) {
 }
 
 
-Result<std::optional<BatchClaim>> LedgerClient::make_batch(int max_jobs, double window_s, double lease_s,
+Result<std::optional<BatchClaim>> LedgerClient::make_batch(const BatchChooser& choose, double lease_s,
                                                            const std::vector<std::string>& hide_materials) {
   using Claim = std::optional<BatchClaim>;
   return transact<Claim>("making a batch", [&](pqxx::work& tx) -> Result<Claim> {
-    const pqxx::result oldest = tx.exec_params(
-        "SELECT cutter, material, updated_at < now() - make_interval(secs => $1) FROM jobs"
-        " WHERE state = 'computed' AND material <> ALL($2::text[]) ORDER BY created_at, id LIMIT 1"
-        " FOR UPDATE SKIP LOCKED",
-        window_s, text_array(hide_materials));
-    if (oldest.empty()) return Claim();
-    BatchClaim claim;
-    claim.cutter = oldest[0][0].as<std::string>();
-    claim.material = oldest[0][1].as<std::string>();
-    const bool waited_long_enough = oldest[0][2].as<bool>();
-    std::vector<long long> ids;
+    std::vector<ComputedJob> waiting;
     for (const pqxx::row& r : tx.exec_params(
-             "SELECT id FROM jobs WHERE state = 'computed' AND cutter = $1 AND material = $2"
-             " ORDER BY created_at, id LIMIT $3 FOR UPDATE SKIP LOCKED",
-             claim.cutter, claim.material, max_jobs)) {
-      ids.push_back(r[0].as<long long>());
+             "SELECT id, material, cutter, pieces, extract(epoch FROM now() - updated_at) FROM jobs"
+             " WHERE state = 'computed' AND material <> ALL($1::text[]) ORDER BY updated_at, id"
+             " FOR UPDATE SKIP LOCKED",
+             text_array(hide_materials))) {
+      waiting.push_back({r[0].as<long long>(), r[1].as<std::string>(), r[2].as<std::string>(), r[3].as<int>(),
+                         r[4].as<double>()});
     }
-    if (!waited_long_enough && static_cast<int>(ids.size()) < max_jobs) return Claim();
+    const std::vector<long long> ids = waiting.empty() ? std::vector<long long>{} : choose(waiting);
+    if (ids.empty()) return Claim();
+    BatchClaim claim;
+    std::size_t offered = 0;
+    for (const ComputedJob& job : waiting) {
+      if (std::find(ids.begin(), ids.end(), job.job_id) == ids.end()) continue;
+      if (offered++ == 0) claim.cutter = job.cutter, claim.material = job.material;
+      if (job.cutter != claim.cutter || job.material != claim.material)
+        return Status::failure("the batching rule mixed cutters or materials in one batch");
+    }
+    if (offered != ids.size()) return Status::failure("the batching rule chose jobs that were not offered");
     claim.batch_id =
         tx.exec_params1(
               "INSERT INTO batches (cutter, material, state, created_by) VALUES ($1, $2, 'nesting', $3) RETURNING id",

@@ -14,6 +14,7 @@
 // Not thread-safe: one client per thread. No method throws; failures are one line. A connection
 // found dead is opened again within the call; while the server is down, calls fail with a line
 // starting "ledger unreachable" (unreachable() tells such failures apart).
+#include <functional>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -47,16 +48,30 @@ struct ScanEntry {
   std::string cutter;
 };
 
-struct Enqueued {
-  long long job_id = 0;
-  bool duplicate = false;  // the same bytes were already a job; nothing was added
-  std::string state;       // the job's state now
-  std::string origin;      // the node that first enqueued it
+// What enqueue() does with bytes that are already a job ([jobs] duplicate_policy, as on one station).
+enum class OnDuplicate {
+  Skip,     // no new job: the first one stays (an event `duplicate` on it)
+  Hold,     // a new job, `held` for an operator with the reason; `lastcut requeue` processes it
+  Process,  // a new job, `ready`: computed and cut again
 };
+
+struct Enqueued {
+  long long job_id = 0;       // the new job; with OnDuplicate::Skip the first job of these bytes
+  bool duplicate = false;     // the same bytes were already a job
+  long long duplicate_of = 0; // ... that job (the first of these bytes)
+  std::string state;          // the job's state now
+  std::string origin;         // the node that enqueued job_id
+  std::string reason;         // why held, "" otherwise
+};
+
+// The folder of a job's results in the shared folder (jobs/<this>): the scan's SHA-256, and for a
+// duplicate processed again (its sidecar may differ) "<sha256>-<job id>".
+std::string job_folder_name(const std::string& scan_sha256, long long job_id, long long duplicate_of);
 
 struct JobClaim {
   long long job_id = 0;
   ScanEntry scan;
+  std::string job_folder;  // job_folder_name()
   int attempts = 0;  // this claim included
   Lease lease;
 };
@@ -66,7 +81,7 @@ struct BatchClaim {
   std::string cutter;
   std::string material;
   std::vector<long long> job_ids;  // ascending
-  std::vector<std::string> job_scans;    // the scan_sha256 of each job_ids entry
+  std::vector<std::string> job_folders;  // job_folder_name() of each job_ids entry
   std::vector<std::string> job_names;    // the scan's file name of each job_ids entry
   std::vector<std::string> job_tickets;  // the ticket (JSON text) of each job_ids entry
   std::string cut_file;            // set once nested: the cut file's path inside the shared folder
@@ -126,6 +141,20 @@ struct JobRow {
   int attempts = 0;
 };
 
+// A computed job waiting for a strip batch, as make_batch offers it to the batching rule.
+struct ComputedJob {
+  long long job_id = 0;
+  std::string material, cutter;
+  int pieces = 1;
+  double waited_s = 0;  // since it was computed, by the database's clock
+};
+// The batching rule (daemon/station/batching_policy.hpp): given the waiting jobs oldest first, the
+// jobs of one due batch (one material and cutter), or none when no batch is due.
+using BatchChooser = std::function<std::vector<long long>(const std::vector<ComputedJob>&)>;
+// The hide rule (daemon/station/hide_policy.hpp): is a loaded hide due, given the computed jobs of
+// its material waiting, whether any is still ready or computing, and how long the hide has waited.
+using HideDue = std::function<bool(std::size_t computed_waiting, bool still_computing, double hide_waited_s)>;
+
 struct LedgerOverview {
   struct Node {
     std::string name, roles;  // roles "compute,station"
@@ -162,27 +191,28 @@ class LedgerClient {
                                      int max_attempts);
   Status heartbeat();
 
-  Result<Enqueued> enqueue(const ScanEntry& scan);
+  // Enters a scan as a `ready` job; bytes already known are handled by `on_duplicate`.
+  Result<Enqueued> enqueue(const ScanEntry& scan, OnDuplicate on_duplicate = OnDuplicate::Skip);
   // The oldest ready job, now `computing` under a lease of lease_s; nullopt when none waits.
   Result<std::optional<JobClaim>> claim_job(double lease_s);
   // Extends a lease by lease_s from now; "lease lost ..." when another node holds it now.
   Status renew(const Lease& lease, double lease_s);
-  Status mark_computed(const Lease& lease);
+  // The job's molds are in the shared folder: `computed`, with its pieces (molds x quantity) for batching.
+  Status mark_computed(const Lease& lease, int pieces = 1);
   Status mark_failed(const Lease& lease, const std::string& reason);
   // Computed, but held for an operator's review (a mold off its reference pattern).
   Status mark_held(const Lease& lease, const std::string& reason);
 
-  // Groups up to max_jobs computed jobs of one cutter and material into a batch that this node
-  // nests under a lease of lease_s (state `nesting`). The oldest computed job decides which cutter
-  // and material; it waits up to window_s for company unless max_jobs are already computed.
-  // nullopt when no group is due. Jobs of `hide_materials` are left alone: they wait for a hide.
-  Result<std::optional<BatchClaim>> make_batch(int max_jobs, double window_s, double lease_s,
+  // Offers the computed jobs that no other node is batching (oldest computed first) to `choose`,
+  // and makes the jobs it chooses one batch that this node nests under a lease of lease_s (state
+  // `nesting`), all in one transaction. nullopt when `choose` finds no batch due. Jobs of
+  // `hide_materials` are not offered: they wait for a hide.
+  Result<std::optional<BatchClaim>> make_batch(const BatchChooser& choose, double lease_s,
                                                const std::vector<std::string>& hide_materials = {});
-  // The oldest loaded hide (state `nesting` now) with up to max_jobs computed jobs of its material,
-  // oldest first, in a batch for the hide's cutter that this node nests under a lease of lease_s.
-  // Due once a job of the material is computed and none is still ready or computing, or the hide
-  // has waited window_s. nullopt when no hide is due.
-  Result<std::optional<BatchClaim>> make_hide_batch(int max_jobs, double window_s, double lease_s);
+  // The oldest loaded hide that `due` finds due (state `nesting` now) with up to max_jobs computed
+  // jobs of its material, oldest first, in a batch for the hide's cutter that this node nests under
+  // a lease of lease_s. nullopt when no hide is due.
+  Result<std::optional<BatchClaim>> make_hide_batch(const HideDue& due, int max_jobs, double lease_s);
   // The batch is nested and its cut file written: `queued` for its cutter's station. Rejected jobs
   // are failed with their reason and leave the batch; waiting ones (hides) go back to `computed`
   // with theirs; with none left the batch is `dissolved`. A hide ends `used`, or `empty` when

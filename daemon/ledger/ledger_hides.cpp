@@ -1,6 +1,8 @@
 // The hide half of the ledger queue (migration 003_hides.sql): a hide entered as lying on a
 // cutter's table, nested by a compute node with the computed jobs of its material (the jobs that
 // do not fit go back to wait for the next hide, see mark_nested), then cut like any batch.
+#include <optional>
+
 #include <pqxx/pqxx>
 
 #include "daemon/ledger/ledger_transaction.hpp"
@@ -27,23 +29,27 @@ Result<long long> LedgerClient::enter_hide(const HideEntry& hide) {
   });
 }
 
-Result<std::optional<BatchClaim>> LedgerClient::make_hide_batch(int max_jobs, double window_s, double lease_s) {
+Result<std::optional<BatchClaim>> LedgerClient::make_hide_batch(const HideDue& due, int max_jobs, double lease_s) {
   using Claim = std::optional<BatchClaim>;
   return transact<Claim>("nesting a hide", [&](pqxx::work& tx) -> Result<Claim> {
-    // The oldest loaded hide with a computed job of its material waiting, which either has waited
-    // window_s or has no job of its material still on the way.
-    const pqxx::result hide = tx.exec_params(
-        "SELECT h.id, h.cutter, h.material FROM hides h WHERE h.state = 'loaded'"
-        " AND EXISTS (SELECT 1 FROM jobs j WHERE j.state = 'computed' AND j.material = h.material)"
-        " AND (h.updated_at < now() - make_interval(secs => $1) OR NOT EXISTS (SELECT 1 FROM jobs j"
-        "      WHERE j.state IN ('ready', 'computing') AND j.material = h.material))"
-        " ORDER BY h.updated_at, h.id LIMIT 1 FOR UPDATE OF h SKIP LOCKED",
-        window_s);
-    if (hide.empty()) return Claim();
+    // The oldest loaded hide that the rule finds due, given the jobs of its material.
+    const pqxx::result loaded = tx.exec(
+        "SELECT h.id, h.cutter, h.material, extract(epoch FROM now() - h.updated_at),"
+        " (SELECT count(*) FROM jobs j WHERE j.state = 'computed' AND j.material = h.material),"
+        " EXISTS (SELECT 1 FROM jobs j WHERE j.state IN ('ready', 'computing') AND j.material = h.material)"
+        " FROM hides h WHERE h.state = 'loaded' ORDER BY h.updated_at, h.id FOR UPDATE OF h SKIP LOCKED");
+    std::optional<pqxx::row> hide;
+    for (const pqxx::row& r : loaded) {
+      if (due(r[4].as<long long>(), r[5].as<bool>(), r[3].as<double>())) {
+        hide = r;
+        break;
+      }
+    }
+    if (!hide) return Claim();
     BatchClaim claim;
-    const long long hide_id = hide[0][0].as<long long>();
-    claim.cutter = hide[0][1].as<std::string>();
-    claim.material = hide[0][2].as<std::string>();
+    const long long hide_id = (*hide)[0].as<long long>();
+    claim.cutter = (*hide)[1].as<std::string>();
+    claim.material = (*hide)[2].as<std::string>();
     std::vector<long long> ids;
     for (const pqxx::row& r : tx.exec_params(
              "SELECT id FROM jobs WHERE state = 'computed' AND material = $1 ORDER BY created_at, id LIMIT $2"

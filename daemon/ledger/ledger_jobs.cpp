@@ -127,12 +127,17 @@ Status LedgerClient::heartbeat() {
       .status();
 }
 
-Result<Enqueued> LedgerClient::enqueue(const ScanEntry& scan) {
+std::string job_folder_name(const std::string& scan_sha256, long long job_id, long long duplicate_of) {
+  return duplicate_of == 0 ? scan_sha256 : scan_sha256 + "-" + std::to_string(job_id);
+}
+
+Result<Enqueued> LedgerClient::enqueue(const ScanEntry& scan, OnDuplicate on_duplicate) {
   return transact<Enqueued>("entering scan " + scan.scan_name, [&](pqxx::work& tx) -> Result<Enqueued> {
     // ON CONFLICT waits for a node inserting the same bytes at this moment, then finds its row.
     const pqxx::result inserted = tx.exec_params(
         "INSERT INTO jobs (scan_sha256, scan_name, ticket, material, cutter, state, origin)"
-        " VALUES ($1, $2, $3, $4, $5, 'ready', $6) ON CONFLICT (scan_sha256) DO NOTHING RETURNING id",
+        " VALUES ($1, $2, $3, $4, $5, 'ready', $6)"
+        " ON CONFLICT (scan_sha256) WHERE duplicate_of IS NULL DO NOTHING RETURNING id",
         scan.scan_sha256, scan.scan_name, scan.ticket, scan.material, scan.cutter, node_);
     Enqueued out;
     if (!inserted.empty()) {
@@ -142,13 +147,29 @@ Result<Enqueued> LedgerClient::enqueue(const ScanEntry& scan) {
       add_event(tx, out.job_id, node_, "entered", scan.scan_name);
       return out;
     }
-    const pqxx::row known =
-        tx.exec_params1("SELECT id, state, origin FROM jobs WHERE scan_sha256 = $1", scan.scan_sha256);
-    out.job_id = known[0].as<long long>();
-    out.state = known[1].as<std::string>();
-    out.origin = known[2].as<std::string>();
+    const pqxx::row first = tx.exec_params1(
+        "SELECT id, state, origin FROM jobs WHERE scan_sha256 = $1 AND duplicate_of IS NULL", scan.scan_sha256);
     out.duplicate = true;
-    add_event(tx, out.job_id, node_, "duplicate", scan.scan_name + " dropped again");
+    out.duplicate_of = first[0].as<long long>();
+    const std::string same = "same scan bytes as job " + std::to_string(out.duplicate_of);
+    if (on_duplicate == OnDuplicate::Skip) {
+      out.job_id = out.duplicate_of;
+      out.state = first[1].as<std::string>();
+      out.origin = first[2].as<std::string>();
+      add_event(tx, out.job_id, node_, "duplicate", scan.scan_name + " dropped again");
+      return out;
+    }
+    const bool hold = on_duplicate == OnDuplicate::Hold;
+    out.state = hold ? "held" : "ready";
+    out.reason = hold ? same + " (duplicate held by policy)" : "";
+    out.origin = node_;
+    out.job_id = tx.exec_params1(
+                       "INSERT INTO jobs (scan_sha256, scan_name, ticket, material, cutter, state, origin, reason,"
+                       " duplicate_of) VALUES ($1, $2, $3, $4, $5, $6, $7, nullif($8, ''), $9) RETURNING id",
+                       scan.scan_sha256, scan.scan_name, scan.ticket, scan.material, scan.cutter, out.state, node_,
+                       out.reason, out.duplicate_of)[0]
+                     .as<long long>();
+    add_event(tx, out.job_id, node_, "entered", scan.scan_name + ": " + same + (hold ? ", held" : ", processed again"));
     return out;
   });
 }
@@ -157,13 +178,14 @@ Result<std::optional<JobClaim>> LedgerClient::claim_job(double lease_s) {
   using Claim = std::optional<JobClaim>;
   return transact<Claim>("claiming a job", [&](pqxx::work& tx) -> Result<Claim> {
     const pqxx::result found = tx.exec(
-        "SELECT id, scan_sha256, scan_name, ticket, material, cutter FROM jobs WHERE state = 'ready'"
-        " ORDER BY created_at, id LIMIT 1 FOR UPDATE SKIP LOCKED");
+        "SELECT id, scan_sha256, scan_name, ticket, material, cutter, coalesce(duplicate_of, 0) FROM jobs"
+        " WHERE state = 'ready' ORDER BY created_at, id LIMIT 1 FOR UPDATE SKIP LOCKED");
     if (found.empty()) return Claim();
     JobClaim claim;
     claim.job_id = found[0][0].as<long long>();
     claim.scan = {found[0][1].as<std::string>(), found[0][2].as<std::string>(), found[0][3].as<std::string>(),
                   found[0][4].as<std::string>(), found[0][5].as<std::string>()};
+    claim.job_folder = job_folder_name(claim.scan.scan_sha256, claim.job_id, found[0][6].as<long long>());
     claim.attempts = tx.exec_params1(
                            "UPDATE jobs SET state = 'computing', attempts = attempts + 1, updated_at = now()"
                            " WHERE id = $1 RETURNING attempts",
@@ -186,12 +208,13 @@ Status LedgerClient::renew(const Lease& lease, double lease_s) {
       .status();
 }
 
-Status LedgerClient::mark_computed(const Lease& lease) {
+Status LedgerClient::mark_computed(const Lease& lease, int pieces) {
   return transact<bool>("marking job " + std::to_string(lease.object_id) + " computed",
                         [&](pqxx::work& tx) -> Result<bool> {
                           if (Status held = check_lease(tx, node_, lease); !held) return held;
-                          tx.exec_params("UPDATE jobs SET state = 'computed', updated_at = now() WHERE id = $1",
-                                         lease.object_id);
+                          tx.exec_params(
+                              "UPDATE jobs SET state = 'computed', pieces = $2, updated_at = now() WHERE id = $1",
+                              lease.object_id, pieces);
                           release_lease(tx, lease);
                           add_event(tx, lease.object_id, node_, "computed");
                           return true;

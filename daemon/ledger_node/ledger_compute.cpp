@@ -5,8 +5,10 @@
 // node that still holds the lease (fencing), so a lost claim costs work, never a wrong state.
 #include <spdlog/spdlog.h>
 
+#include "daemon/ledger_node/ledger_batch_rule.hpp"
 #include "daemon/ledger_node/ledger_node.hpp"
 #include "daemon/station/engine_steps.hpp"
+#include "daemon/station/hide_policy.hpp"
 #include "daemon/station/job_mold_options.hpp"
 #include "engine/core/durable_file.hpp"
 
@@ -21,9 +23,6 @@ struct ScratchRemover {
     std::filesystem::remove_all(folder, ignored);
   }
 };
-
-// The most jobs offered to one hide, oldest first (a hide of 5 m^2 holds about 40 pairs of molds).
-constexpr int kHideMaxJobs = 64;
 
 void copy_references(const std::filesystem::path& from, const std::filesystem::path& job_dir) {
   std::error_code error;
@@ -48,10 +47,10 @@ void LedgerNode::compute_worker(int index) {
       continue;
     }
     // A hide on a cutter's table comes before strip batches: the cutter and its operator wait for it.
-    auto batch = job ? client->make_hide_batch(kHideMaxJobs, ledger().batch_window_s, ledger().lease_s)
+    auto batch = job ? client->make_hide_batch(ledger_hide_rule(config()->batch.window_s), kHideMaxJobs, ledger().lease_s)
                      : Result<std::optional<ledger::BatchClaim>>(job.status());
     if (batch && !batch->has_value())
-      batch = client->make_batch(ledger().max_batch_jobs, ledger().batch_window_s, ledger().lease_s, hide_materials());
+      batch = client->make_batch(ledger_batch_rule(config()->batch), ledger().lease_s, hide_materials());
     if (batch && batch->has_value()) {
       note_trouble(trouble, "", worker);
       nest_batch(*client, **batch, worker);
@@ -77,17 +76,17 @@ void LedgerNode::compute_job(ledger::LedgerClient& client, const ledger::JobClai
     return finish(client.mark_failed(claim.lease, ticket.error()), JobStage::Failed, ticket.error());
   }
   spdlog::info("{}: computing molds on {} (attempt {})", label, ledger().node, claim.attempts);
-  const std::filesystem::path final_dir = store_.job_dir(claim.scan.scan_sha256);
+  const std::filesystem::path final_dir = store_.job_dir(claim.job_folder);
   auto scratch = store_.scratch_for(final_dir, ledger().node);
   if (!scratch) return finish(Status::failure(scratch.error()), JobStage::Failed, "");
   const ScratchRemover remover{*scratch};  // whatever happens below; publishing renames it away first
   copy_references(store_.references(claim.scan.scan_sha256), *scratch);
 
   const auto start = Clock::now();
-  monitor_.begin(worker, label, config_->jobs.compute_timeout_s);
+  monitor_.begin(worker, label, config()->jobs.compute_timeout_s);
   const Result<MoldsMade> made =
       compute_molds(store_.scan(claim.scan.scan_sha256, claim.scan.scan_name), *scratch, *ticket,
-                    job_mold_options(*ticket, config_->jobs), config_->jobs.max_hole_across_mm);
+                    job_mold_options(*ticket, config()->jobs), config()->jobs.max_hole_across_mm);
   monitor_.end(worker);
   const double took_s = std::chrono::duration<double>(Clock::now() - start).count();
   if (!made) {
@@ -95,7 +94,7 @@ void LedgerNode::compute_job(ledger::LedgerClient& client, const ledger::JobClai
     return finish(client.mark_failed(claim.lease, made.error()), JobStage::Failed, made.error());
   }
   const Result<ReferenceCheck> checked =
-      check_against_references(*scratch, *ticket, config_->review.corner_tolerance_mm);
+      check_against_references(*scratch, *ticket, config()->review.corner_tolerance_mm);
   if (!checked) {
     spdlog::error("{}: failed: {}", label, checked.error());
     return finish(client.mark_failed(claim.lease, checked.error()), JobStage::Failed, checked.error());
@@ -122,7 +121,7 @@ void LedgerNode::compute_job(ledger::LedgerClient& client, const ledger::JobClai
     return finish(client.mark_held(claim.lease, checked->hold_reason), JobStage::Held, checked->hold_reason);
   }
   spdlog::info("{}: {} molds ready in {:.1f} s", label, made->piece_count, took_s);
-  finish(client.mark_computed(claim.lease), JobStage::Computed, "");
+  finish(client.mark_computed(claim.lease, made->piece_count * ticket->quantity), JobStage::Computed, "");
 }
 
 }  // namespace lastcut::daemon

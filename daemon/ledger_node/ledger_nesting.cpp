@@ -9,6 +9,7 @@
 
 #include "daemon/ledger_node/ledger_node.hpp"
 #include "daemon/station/engine_steps.hpp"
+#include "daemon/station/hide_policy.hpp"
 #include "daemon/station/hide_step.hpp"
 #include "engine/core/durable_file.hpp"
 #include "engine/nest/hide_file.hpp"
@@ -17,7 +18,7 @@ namespace lastcut::daemon {
 
 std::vector<std::string> LedgerNode::hide_materials() const {
   std::vector<std::string> names;
-  for (const auto& [name, material] : config_->materials)
+  for (const auto& [name, material] : config()->materials)
     if (material.kind == MaterialKind::Hide) names.push_back(name);
   return names;
 }
@@ -27,10 +28,10 @@ Status LedgerNode::nest_on_strip(const ledger::BatchClaim& claim, const Material
                                  ledger::NestedBatch& nested) {
   std::vector<BatchJobInput> inputs;
   for (std::size_t i = 0; i < claim.job_ids.size(); ++i) {
-    inputs.push_back({std::to_string(claim.job_ids[i]), store_.job_dir(claim.job_scans[i])});
+    inputs.push_back({std::to_string(claim.job_ids[i]), store_.job_dir(claim.job_folders[i])});
   }
   const Result<BatchMade> made =
-      build_batch(inputs, material, cutter, config_->paths.machines_dir, config_->batch.nest_time_s, scratch);
+      build_batch(inputs, material, cutter, config()->paths.machines_dir, config()->batch.nest_time_s, scratch);
   if (!made) return made.status();
   for (const auto& [job_id, reason] : made->rejected) nested.rejected.emplace_back(std::stoll(job_id), reason);
   nested.cut_file = made->cut_file;
@@ -53,13 +54,12 @@ Status LedgerNode::nest_on_hide(const ledger::BatchClaim& claim, const MaterialC
   std::vector<HideJobInput> inputs;
   for (std::size_t i = 0; i < claim.job_ids.size(); ++i) {
     const Result<JobTicket> ticket = ticket_from_ledger(claim.job_tickets[i]);
-    // job_ids ascend with entry into the ledger: the oldest gets the highest priority, after the sidecar's own.
-    const int age_rank = static_cast<int>(claim.job_ids.size() - i);
-    inputs.push_back({std::to_string(claim.job_ids[i]), store_.job_dir(claim.job_scans[i]),
-                      ticket ? ticket->order : "", (ticket ? ticket->priority : 0) * 100000 + age_rank});
+    // job_ids ascend with entry into the ledger: oldest first.
+    inputs.push_back({std::to_string(claim.job_ids[i]), store_.job_dir(claim.job_folders[i]), ticket ? ticket->order : "",
+                      hide_job_priority(ticket ? ticket->priority : 0, i, claim.job_ids.size())});
   }
   const Result<HideMade> made = build_hide(inputs, scratch, hide_file.filename().string(), material, cutter,
-                                           config_->paths.machines_dir, config_->batch.nest_time_s);
+                                           config()->paths.machines_dir, config()->batch.nest_time_s);
   if (!made) return made.status();
   for (const auto& [job_id, reason] : made->rejected) nested.rejected.emplace_back(std::stoll(job_id), reason);
   for (const auto& [job_id, reason] : made->waiting)
@@ -110,15 +110,15 @@ void LedgerNode::nest_batch(ledger::LedgerClient& client, const ledger::BatchCla
   ledger::NestedBatch nested;
   const std::filesystem::path final_dir = store_.batch_dir(claim.batch_id);
   auto scratch = store_.scratch_for(final_dir, ledger().node);
-  const auto material = config_->materials.find(claim.material);
-  const auto cutter = config_->cutters.find(claim.cutter);
+  const auto material = config()->materials.find(claim.material);
+  const auto cutter = config()->cutters.find(claim.cutter);
   Status made = scratch.status();
-  if (made && material == config_->materials.end())
+  if (made && material == config()->materials.end())
     made = Status::failure("material " + claim.material + " is not configured on node " + ledger().node);
-  else if (made && cutter == config_->cutters.end())
+  else if (made && cutter == config()->cutters.end())
     made = Status::failure("cutter " + claim.cutter + " is not configured on node " + ledger().node);
   else if (made) {
-    monitor_.begin(worker, label, config_->jobs.compute_timeout_s);
+    monitor_.begin(worker, label, config()->jobs.compute_timeout_s);
     made = on_hide ? nest_on_hide(claim, material->second, cutter->second, *scratch, nested)
                    : nest_on_strip(claim, material->second, cutter->second, *scratch, nested);
     monitor_.end(worker);

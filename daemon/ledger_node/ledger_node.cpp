@@ -7,15 +7,15 @@
 namespace lastcut::daemon {
 
 LedgerNode::LedgerNode(std::shared_ptr<const DaemonConfig> config)
-    : config_(std::move(config)), store_(config_->ledger->shared_dir) {}
+    : ledger_(*config->ledger), config_(std::move(config)), store_(ledger_.shared_dir) {}
 
 LedgerNode::~LedgerNode() { stop(); }
 
 Status LedgerNode::start() {
   if (Status prepared = store_.prepare(); !prepared) return prepared;
   std::error_code error;
-  std::filesystem::create_directories(config_->paths.spool_dir, error);
-  if (error) return Status::failure("spool folder " + config_->paths.spool_dir.string() + ": " + error.message());
+  std::filesystem::create_directories(config()->paths.spool_dir, error);
+  if (error) return Status::failure("spool folder " + config()->paths.spool_dir.string() + ": " + error.message());
 
   auto connected = ledger::LedgerClient::connect(ledger().url, ledger().node);
   if (!connected) return connected.status();
@@ -26,9 +26,9 @@ Status LedgerNode::start() {
     spdlog::info("ledger schema migrated from version {} to {}", migrated->version_before, migrated->version_after);
   }
   std::vector<std::string> cutters;
-  for (const auto& [name, section] : config_->cutters)
+  for (const auto& [name, section] : config()->cutters)
     if (ledger().owns_cutter(name)) cutters.push_back(name);
-  const auto registered = client_->register_node(ledger().roles, cutters, config_->jobs.max_attempts);
+  const auto registered = client_->register_node(ledger().roles, cutters, config()->jobs.max_attempts);
   if (!registered) return registered.status();
   for (long long id : registered->batches_held)
     spdlog::error("batch {}: this node stopped while sending it: held for an operator, never re-sent", id);
@@ -42,22 +42,22 @@ Status LedgerNode::start() {
 
   keeper_ = std::make_unique<ledger::LeaseKeeper>(ledger().url, ledger().node, ledger().lease_s, ledger().heartbeat_s,
                                                   [](const std::string& line) { spdlog::warn("{}", line); });
-  scans_.folder = std::make_unique<HotFolder>(config_->paths.watch_dir, config_->watch);
+  scans_.folder = std::make_unique<HotFolder>(config()->paths.watch_dir, config()->watch);
   if (Status watching = scans_.folder->start(); !watching) return watching;
-  if (!config_->paths.hides_dir.empty()) {
-    hides_.folder = std::make_unique<HotFolder>(config_->paths.hides_dir, config_->watch, HotFolderContent::Hides);
+  if (!config()->paths.hides_dir.empty()) {
+    hides_.folder = std::make_unique<HotFolder>(config()->paths.hides_dir, config()->watch, HotFolderContent::Hides);
     if (Status watching = hides_.folder->start(); !watching) return watching;
-    spdlog::info("hides folder {} ({}): hides entered here lie on their cutter's table", config_->paths.hides_dir.string(),
+    spdlog::info("hides folder {} ({}): hides entered here lie on their cutter's table", config()->paths.hides_dir.string(),
                  hides_.folder->mode_description());
   }
   if (ledger().has_role("compute")) {
-    for (int i = 0; i < config_->jobs.compute_workers; ++i) threads_.emplace_back([this, i] { compute_worker(i + 1); });
+    for (int i = 0; i < config()->jobs.compute_workers; ++i) threads_.emplace_back([this, i] { compute_worker(i + 1); });
   }
   for (const std::string& cutter : cutters) threads_.emplace_back([this, cutter] { station_worker(cutter); });
   std::string roles;
   for (const std::string& role : ledger().roles) roles += (roles.empty() ? "" : "+") + role;
   spdlog::info("ledger node {} ({}): watching {} ({}), shared folder {}, {} cutter(s) cabled here", ledger().node,
-               roles, config_->paths.watch_dir.string(), scans_.folder->mode_description(),
+               roles, config()->paths.watch_dir.string(), scans_.folder->mode_description(),
                store_.root().string(), cutters.size());
   return Status::success();
 }
@@ -84,8 +84,8 @@ std::string LedgerNode::status_line() const {
          (keeper_ && !keeper_->reachable() ? "; ledger unreachable" : "");
 }
 
-std::string LedgerNode::reload(std::shared_ptr<const DaemonConfig>) {
-  return "a ledger node applies a new configuration when lastcutd is restarted";
+std::string LedgerNode::reload(std::shared_ptr<const DaemonConfig> next) {
+  return config_.reload(*next);
 }
 
 void LedgerNode::stop() {
@@ -96,7 +96,7 @@ void LedgerNode::stop() {
   }
   // A cut in progress may finish within the grace time; then it is interrupted (and held).
   const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                           std::chrono::duration<double>(config_->jobs.stop_grace_s));
+                                           std::chrono::duration<double>(config()->jobs.stop_grace_s));
   while (cuts_in_progress_ > 0 && Clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(50));
   if (cuts_in_progress_ > 0) {
     spdlog::warn("stopping: the cut in progress is interrupted and its batch held");

@@ -5,7 +5,7 @@
 //   watch folder --intake (main thread)--> shared/scans/<sha> + ledger job `ready`
 //   hides folder --intake (main thread)--> shared/hides/<sha> + ledger hide `loaded` on its cutter
 //   compute role: claim job (lease) -> molds into shared/jobs/<sha> -> `computed`
-//                 group computed jobs (batch_window_s, max_batch_jobs) -> nest -> shared/batches/<id> -> `queued`
+//                 group computed jobs ([batch] window_s, max_pieces) -> nest -> shared/batches/<id> -> `queued`
 //                 a loaded hide + the computed jobs of its material -> nest on it -> shared/batches/<id> -> `queued`
 //                 (the jobs that did not fit: `computed` again, waiting for the next hide, with the reason)
 //   station role: one thread per cutter cabled here: claim its queued batch -> `sending` -> cut | held
@@ -30,6 +30,7 @@
 #include "daemon/ledger/lease_keeper.hpp"
 #include "daemon/ledger/ledger_client.hpp"
 #include "daemon/ledger_node/shared_store.hpp"
+#include "daemon/station/config_reload.hpp"
 #include "daemon/station/job_flow.hpp"
 #include "daemon/station/progress_monitor.hpp"
 #include "daemon/job/status_observer.hpp"
@@ -61,12 +62,16 @@ class LedgerNode : public JobFlow {
   }
   std::string stuck(Clock::time_point now) const override { return monitor_.stuck(now); }
   std::string status_line() const override;
-  // A ledger node applies a new configuration at its next start only (the line says so).
+  // As on a spool (station/config_reload.hpp): the batch rule, materials, cutter settings apply at
+  // once; paths, workers, the set of cutters and [ledger] at the next start (the line says so).
   std::string reload(std::shared_ptr<const DaemonConfig> config) override;
   void stop() override;
 
  private:
-  const LedgerConfig& ledger() const { return *config_->ledger; }
+  // The [ledger] table as started: a reload keeps it until restart (station/config_reload.hpp).
+  const LedgerConfig& ledger() const { return ledger_; }
+  // The running configuration; SIGHUP replaces it (any thread may read it).
+  std::shared_ptr<const DaemonConfig> config() const { return config_.get(); }
   // One folder files are dropped into: the watch folder (scans) or the hides folder.
   struct Intake {
     std::string name;  // "watch folder", "hides folder"
@@ -108,7 +113,8 @@ class LedgerNode : public JobFlow {
                  JobStage stage, const std::string& reason);
   void batch_event(const ledger::BatchClaim& claim, JobStage stage, const std::string& reason);
 
-  std::shared_ptr<const DaemonConfig> config_;
+  const LedgerConfig ledger_;
+  RunningConfig config_;
   SharedStore store_;
   StatusObserver* observer_ = nullptr;
   Intake scans_{"watch folder", nullptr, &LedgerNode::enter};

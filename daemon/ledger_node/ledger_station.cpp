@@ -14,7 +14,7 @@ namespace lastcut::daemon {
 
 void LedgerNode::station_worker(const std::string& cutter) {
   const std::string worker = "cutter " + cutter;
-  const CutterSection section = config_->cutters.at(cutter);
+  const CutterSection section = config()->cutters.at(cutter);
   std::unique_ptr<ledger::LedgerClient> client;
   std::string trouble, cutter_trouble;
   // A batch this station was sending when it died stays the cutter's news until its next batch.

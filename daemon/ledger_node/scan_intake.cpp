@@ -1,6 +1,6 @@
 // Intake on a ledger node (main thread): a ready scan from the watch folder is copied into the
-// shared folder under its hash and entered in the ledger; the same bytes entered on any node are one
-// job. Entered scans move to <spool>/entered/, refused ones (bad sidecar, unknown material or
+// shared folder under its hash and entered in the ledger; bytes already entered on any node are
+// skipped, held or processed again by [jobs] duplicate_policy, as on one station. Entered scans move to <spool>/entered/, refused ones (bad sidecar, unknown material or
 // cutter, a cut-off file) to <spool>/failed/ with NAME.reason; while the ledger cannot be reached a
 // scan stays in the watch folder and is offered again.
 // Hides take the same path from the hides folder (docs/hides.md): checked as on one station (an
@@ -36,6 +36,15 @@ bool move_into(const std::filesystem::path& folder, const ReadyScan& ready) {
 }
 
 // The ledger or the share away: nothing was entered, the file waits where it was dropped.
+ledger::OnDuplicate on_duplicate(const DaemonConfig& config) {
+  switch (config.jobs.duplicate_policy) {
+    case DuplicatePolicy::Hold: return ledger::OnDuplicate::Hold;
+    case DuplicatePolicy::Process: return ledger::OnDuplicate::Process;
+    case DuplicatePolicy::Skip: break;
+  }
+  return ledger::OnDuplicate::Skip;
+}
+
 bool not_the_files_fault(const Status& entered) {
   return entered.error().rfind("ledger unreachable", 0) == 0 || entered.error().rfind("shared folder unusable", 0) == 0;
 }
@@ -64,13 +73,14 @@ void LedgerNode::take(const ReadyScan& ready, Intake& intake) {
 
 Status LedgerNode::enter(const ReadyScan& ready) {
   if (!ready.incompleteness.empty()) return Status::failure(ready.incompleteness);
+  const auto settings = config();
   JobTicket ticket;
   if (!ready.sidecar.empty()) {
     Result<JobTicket> read = read_job_ticket(ready.sidecar);
     if (!read) return read.status();
     ticket = *read;
   }
-  if (const std::string unknown_target = settle_ticket_targets(ticket, *config_); !unknown_target.empty())
+  if (const std::string unknown_target = settle_ticket_targets(ticket, *settings); !unknown_target.empty())
     return Status::failure(unknown_target);
   const auto hash = sha256_file_hex(ready.scan);
   if (!hash) return Status::failure("the scan cannot be read (it vanished or is not readable)");
@@ -93,22 +103,36 @@ Status LedgerNode::enter(const ReadyScan& ready) {
     if (Status copied = copy_file_durably(from, to); !copied)
       return Status::failure("shared folder unusable: reference pattern " + file + " not copied: " + copied.error());
   }
-  const Result<ledger::Enqueued> job =
-      client_->enqueue({*hash, name, ticket_to_json(ticket).dump(), ticket.material, ticket.cutter});
+  const Result<ledger::Enqueued> job = client_->enqueue(
+      {*hash, name, ticket_to_json(ticket).dump(), ticket.material, ticket.cutter}, on_duplicate(*settings));
   if (!job) return job.status();
-  if (!move_into(config_->paths.spool_dir / "entered", ready)) {
+  if (!move_into(settings->paths.spool_dir / "entered", ready)) {
     // Entered: offering it again would only find the duplicate, so nothing is lost either way.
     spdlog::warn("watch folder: {} is in the ledger as job {} but stays in the watch folder", name, job->job_id);
   }
-  if (job->duplicate) {
-    ++duplicates_;
-    spdlog::info("{}: same bytes as job {} (entered by {}, now {}): not entered again", name, job->job_id, job->origin,
-                 job->state);
-  } else {
+  if (!job->duplicate) {
     ++entered_;
     spdlog::info("job {}: {} entered in the ledger (material {}, cutter {})", job->job_id, name, ticket.material,
                  ticket.cutter);
     job_event(job->job_id, name, ticket_to_json(ticket).dump(), 0, JobStage::Claimed, "");
+    return Status::success();
+  }
+  ++duplicates_;
+  const std::string same = "same scan bytes as job " + std::to_string(job->duplicate_of);
+  switch (settings->jobs.duplicate_policy) {
+    case DuplicatePolicy::Skip:
+      spdlog::info("{}: {} (entered by {}, now {}) - not entered again (duplicate, skipped)", name, same, job->origin,
+                   job->state);
+      break;
+    case DuplicatePolicy::Hold:
+      spdlog::warn("job {}: {}: {} - held (after checking, `lastcut requeue {}`)", job->job_id, name, job->reason,
+                   job->job_id);
+      job_event(job->job_id, name, ticket_to_json(ticket).dump(), 0, JobStage::Held, job->reason);
+      break;
+    case DuplicatePolicy::Process:
+      spdlog::info("job {}: {}: {} - processed again (policy)", job->job_id, name, same);
+      job_event(job->job_id, name, ticket_to_json(ticket).dump(), 0, JobStage::Claimed, "");
+      break;
   }
   return Status::success();
 }
@@ -126,7 +150,7 @@ Status LedgerNode::enter_hide(const ReadyScan& ready) {
   }
   std::string material, cutter;
   if (const std::string unknown = settle_hide_targets(hide.hide_id, hide.material, hide.cutter,
-                                                      hide_sidecar_path(ready.scan).string(), *config_, material, cutter);
+                                                      hide_sidecar_path(ready.scan).string(), *config(), material, cutter);
       !unknown.empty())
     return Status::failure(unknown);
   const auto hash = sha256_file_hex(ready.scan);
@@ -151,7 +175,7 @@ Status LedgerNode::enter_hide(const ReadyScan& ready) {
   const Result<long long> entered =
       client_->enter_hide({hide.hide_id, material, cutter, store_.relative(shared / name), hide.area_m2});
   if (!entered) return entered.status();
-  if (!move_into(config_->paths.spool_dir / "hides", ready)) {
+  if (!move_into(config()->paths.spool_dir / "hides", ready)) {
     spdlog::warn("hides folder: {} is in the ledger as hide {} but stays in the hides folder", name, hide.hide_id);
   }
   spdlog::info("hide {} ({}, {:.2f} m^2) lies on cutter {}: entered in the ledger; the computed jobs of {} are "
@@ -164,14 +188,14 @@ void LedgerNode::refuse(const ReadyScan& ready, const std::string& reason) {
   ++refused_;
   const std::string name = ready.scan.filename().string();
   spdlog::error("{}: refused, not entered in the ledger: {}", name, reason);
-  const std::filesystem::path failed = config_->paths.spool_dir / "failed";
+  const std::filesystem::path failed = config()->paths.spool_dir / "failed";
   if (!move_into(failed, ready)) return;
   if (Status written = write_file_durably(failed / (name + ".reason"), reason + "\n"); !written)
     spdlog::error("{}: the reason cannot be written next to it in {}: {}", name, failed.string(), written.error());
 }
 
 void LedgerNode::sweep() {
-  const Result<ledger::SweepOutcome> swept = client_->sweep_expired(config_->jobs.max_attempts);
+  const Result<ledger::SweepOutcome> swept = client_->sweep_expired(config()->jobs.max_attempts);
   if (!swept) {
     note_trouble(sweep_trouble_, swept.error(), "leases of vanished nodes");
     return;

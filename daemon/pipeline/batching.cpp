@@ -1,6 +1,8 @@
-// Batch nesting: molds of computed jobs are collected per material and cutter, and nested
-// together once the window (batch.window_s, counted from the first job) has passed or enough
-// pieces (batch.max_pieces) wait. Nesting several orders on one sheet saves leather.
+// Batch nesting on a spool: computed jobs of strip materials wait in strip_waiting_, and the
+// station's batching rule (daemon/station/batching_policy.hpp, the same on a ledger) says when a
+// group of them is nested together. Nesting several orders on one sheet saves leather.
+#include <algorithm>
+
 #include <spdlog/spdlog.h>
 
 #include "daemon/pipeline/job_outcomes.hpp"
@@ -13,42 +15,37 @@ void Pipeline::add_to_batcher(const JobState& state) {
     add_to_hide_pool(state);  // nested when a hide of this material arrives (hide_intake.cpp)
     return;
   }
-  const std::string key = state.ticket.material + "|" + state.ticket.cutter;
-  auto [it, inserted] = open_batches_.try_emplace(key);
-  if (inserted || it->second.job_ids.empty()) it->second.opened = Clock::now();
-  it->second.job_ids.push_back(state.id);
-  it->second.pieces += std::max(1, state.piece_count);
+  strip_waiting_.push_back({state.id, state.ticket.material, state.ticket.cutter, state.piece_count, Clock::now()});
   // Closed at once when full: many jobs may finish within one tick (after a burst of files),
   // and a batch must never grow past max_pieces (it would no longer fit the table).
-  const int max_pieces = config()->batch.max_pieces;
-  if (max_pieces > 0 && it->second.pieces >= max_pieces) close_batch(it->first, it->second);
+  close_due_batches(Clock::now(), false);
 }
 
 void Pipeline::close_due_batches(Clock::time_point now, bool force) {
-  const auto settings = config();
-  for (auto& [key, open] : open_batches_) {
-    if (open.job_ids.empty()) continue;
-    const bool window_over =
-        std::chrono::duration<double>(now - open.opened).count() >= settings->batch.window_s;
-    const bool full = settings->batch.max_pieces > 0 && open.pieces >= settings->batch.max_pieces;
-    if (force || window_over || full) close_batch(key, open);
+  std::vector<WaitingJob> waiting;
+  for (const StripWaiting& job : strip_waiting_)
+    waiting.push_back({job.id, job.material, job.cutter, job.pieces,
+                       std::chrono::duration<double>(now - job.since).count()});
+  for (const DueBatch& due : due_batches(waiting, config()->batch, force)) {
+    std::erase_if(strip_waiting_, [&](const StripWaiting& job) {
+      return std::find(due.job_ids.begin(), due.job_ids.end(), job.id) != due.job_ids.end();
+    });
+    close_batch(due);
   }
 }
 
-void Pipeline::close_batch(const std::string& key, OpenBatch& open) {
+void Pipeline::close_batch(const DueBatch& due) {
   BatchState batch;
   batch.id = spool_->new_batch_id();
-  const auto bar = key.find('|');
-  batch.material = key.substr(0, bar);
-  batch.cutter = key.substr(bar + 1);
+  batch.material = due.material;
+  batch.cutter = due.cutter;
   batch.stage = BatchStage::Nesting;
   batch.created_at = batch.updated_at = utc_now_iso();
   // Only jobs still waiting in work/ (an operator may have moved one meanwhile).
-  for (const std::string& id : open.job_ids) {
+  for (const std::string& id : due.job_ids) {
     auto state = spool_->read_state(JobFolder::Work, id);
     if (state && state->stage == JobStage::Computed && state->stage_problem.empty()) batch.job_ids.push_back(id);
   }
-  open = OpenBatch{};
   if (batch.job_ids.empty()) return;
   std::error_code error;
   std::filesystem::create_directories(spool_->batch_dir(batch.id), error);

@@ -1,12 +1,15 @@
 // Hides (docs/hides.md): the jobs of a hide material wait in a pool per material; a hide file
 // dropped into paths.hides is claimed into the spool as a hide batch (batches/BID/ with the hide
-// file, its sidecar and batch.json), the waiting jobs are nested on it, and the cut goes to the
-// cutter whose table the hide lies on through that cutter's dispatcher, with the same at-most-once
-// stages as a strip batch. Jobs that did not fit go back to the pool with the reason.
+// file, its sidecar and batch.json) that lies on its cutter's table until the hide rule
+// (daemon/station/hide_policy.hpp, the same on a ledger) finds it due; then up to kHideMaxJobs
+// waiting jobs are nested on it, and the cut goes to the cutter through that cutter's dispatcher,
+// with the same at-most-once stages as a strip batch. Jobs that did not fit go back to the pool
+// with the reason.
 #include <algorithm>
 
 #include <spdlog/spdlog.h>
 
+#include "daemon/station/hide_policy.hpp"
 #include "daemon/station/hide_step.hpp"
 #include "daemon/pipeline/job_outcomes.hpp"
 #include "daemon/pipeline/pipeline.hpp"
@@ -88,29 +91,69 @@ void Pipeline::take_hide(const ReadyScan& ready) {
     fail_hide(batch, unknown);
     return;
   }
-  for (const std::string& id : hide_waiting_[batch.material]) {
-    auto state = spool_->read_state(JobFolder::Work, id);
-    if (state && state->stage == JobStage::Computed && state->stage_problem.empty()) batch.job_ids.push_back(id);
-  }
-  hide_waiting_[batch.material].clear();
   if (Status written = spool_->write_batch(batch); !written) {
     fail_hide(batch, "hide " + hide.hide_id + ": batch.json not written: " + written.error());
     return;
   }
-  for (const std::string& id : batch.job_ids) {
-    auto state = spool_->read_state(JobFolder::Work, id);
-    if (!state) continue;
-    state->batch_id = batch.id;
-    state->reason.clear();
-    state->advance(JobStage::Batched, "nested on hide " + hide.hide_id + " (batch " + batch.id + ")");
-    if (Status written = spool_->write_state(JobFolder::Work, *state); !written) {
-      report_job_problem(*spool_, JobFolder::Work, *state,
-                         "not part of hide batch " + batch.id + ": state not written: " + written.error());
-    }
+  spdlog::info("hide {} ({}, {:.2f} m^2) lies on cutter {}: batch {} for the computed jobs of {}", hide.hide_id, name,
+               hide.area_m2, batch.cutter, batch.id, batch.material);
+  loaded_hides_.push_back({batch.id, Clock::now()});
+}
+
+bool Pipeline::computing_material(const std::string& material) const {
+  for (const std::string& id : known_jobs_) {
+    const auto state = spool_->read_state(JobFolder::Work, id);
+    if (state && state->stage == JobStage::Claimed && state->ticket.material == material) return true;
   }
-  spdlog::info("hide {} ({}, {:.2f} m^2) lies on cutter {}: nesting {} waiting job(s) of {} in batch {}",
-               hide.hide_id, name, hide.area_m2, batch.cutter, batch.job_ids.size(), batch.material, batch.id);
-  tasks_.push({true, batch.id});
+  return false;
+}
+
+void Pipeline::nest_due_hides(Clock::time_point now) {
+  const double window_s = config()->batch.window_s;
+  for (auto loaded = loaded_hides_.begin(); loaded != loaded_hides_.end();) {
+    auto batch = spool_->read_batch(loaded->batch_id);
+    if (!batch || batch->stage != BatchStage::Nesting) {  // gone meanwhile (an operator)
+      loaded = loaded_hides_.erase(loaded);
+      continue;
+    }
+    std::vector<std::string>& pool = hide_waiting_[batch->material];
+    std::erase_if(pool, [&](const std::string& id) {
+      const auto state = spool_->read_state(JobFolder::Work, id);
+      return !state || state->stage != JobStage::Computed || !state->stage_problem.empty();
+    });
+    const double waited_s = std::chrono::duration<double>(now - loaded->since).count();
+    if (pool.empty() || !hide_is_due(pool.size(), computing_material(batch->material), waited_s, window_s)) {
+      ++loaded;
+      continue;
+    }
+    const std::size_t offered = std::min<std::size_t>(pool.size(), kHideMaxJobs);
+    batch->job_ids.assign(pool.begin(), pool.begin() + static_cast<std::ptrdiff_t>(offered));
+    pool.erase(pool.begin(), pool.begin() + static_cast<std::ptrdiff_t>(offered));
+    batch->updated_at = utc_now_iso();
+    if (Status written = spool_->write_batch(*batch); !written) {
+      // The jobs stay in the pool; the hide is offered again next turn.
+      pool.insert(pool.begin(), batch->job_ids.begin(), batch->job_ids.end());
+      spdlog::error("hide {} (batch {}): batch.json not written: {}", batch->hide_id, batch->id, written.error());
+      ++loaded;
+      continue;
+    }
+    for (const std::string& id : batch->job_ids) {
+      auto state = spool_->read_state(JobFolder::Work, id);
+      if (!state) continue;
+      state->batch_id = batch->id;
+      state->reason.clear();
+      state->advance(JobStage::Batched, "nested on hide " + batch->hide_id + " (batch " + batch->id + ")");
+      if (Status written = spool_->write_state(JobFolder::Work, *state); !written) {
+        report_job_problem(*spool_, JobFolder::Work, *state,
+                           "not part of hide batch " + batch->id + ": state not written: " + written.error());
+      }
+    }
+    spdlog::info("hide {} on cutter {}: nesting {} waiting job(s) of {} in batch {}{}", batch->hide_id, batch->cutter,
+                 batch->job_ids.size(), batch->material, batch->id,
+                 pool.empty() ? "" : " (" + std::to_string(pool.size()) + " wait for the next hide)");
+    tasks_.push({true, batch->id});
+    loaded = loaded_hides_.erase(loaded);
+  }
 }
 
 void Pipeline::build_hide_task(BatchState& batch, const std::string& worker) {
@@ -122,13 +165,12 @@ void Pipeline::build_hide_task(BatchState& batch, const std::string& worker) {
     if (!state || state->batch_id != batch.id) continue;
     states.emplace(id, *state);
   }
-  // batch.job_ids is oldest first: the oldest job gets the highest priority, after the sidecar's own.
+  // batch.job_ids is oldest first.
   for (const std::string& id : batch.job_ids) {
     const auto it = states.find(id);
     if (it == states.end()) continue;
-    const int age_rank = static_cast<int>(batch.job_ids.size() - inputs.size());
     inputs.push_back({id, spool_->job_dir(JobFolder::Work, id), it->second.ticket.order,
-                      it->second.ticket.priority * 100000 + age_rank});
+                      hide_job_priority(it->second.ticket.priority, inputs.size(), batch.job_ids.size())});
   }
   const auto material = settings->materials.find(batch.material);
   const auto cutter = settings->cutters.find(batch.cutter);

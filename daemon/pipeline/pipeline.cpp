@@ -12,10 +12,7 @@ Pipeline::Pipeline(std::shared_ptr<const DaemonConfig> config) : config_(std::mo
 
 Pipeline::~Pipeline() { stop(); }
 
-std::shared_ptr<const DaemonConfig> Pipeline::config() const {
-  std::lock_guard lock(config_mutex_);
-  return config_;
-}
+std::shared_ptr<const DaemonConfig> Pipeline::config() const { return config_.get(); }
 
 Status Pipeline::start() {
   const auto settings = config();
@@ -67,6 +64,7 @@ void Pipeline::tick(Clock::time_point now) {
     if (state && state->stage == JobStage::Computed && state->stage_problem.empty()) add_to_batcher(*state);
   }
   close_due_batches(now, false);
+  nest_due_hides(now);
   if (now >= next_work_scan_) {
     scan_work_folder();
     next_work_scan_ = now + std::chrono::seconds(1);
@@ -82,8 +80,7 @@ void Pipeline::write_status_file() {
   for (const auto& [name, dispatcher] : dispatchers_) {
     cutters[name] = {{"condition", dispatcher->condition()}, {"queued_batches", dispatcher->queued()}};
   }
-  std::size_t waiting = 0;
-  for (const auto& [key, open] : open_batches_) waiting += open.job_ids.size();
+  const std::size_t waiting = strip_waiting_.size();
   nlohmann::json waiting_for_hide = nlohmann::json::object();
   for (const auto& [material, ids] : hide_waiting_)
     if (!ids.empty()) waiting_for_hide[material] = ids.size();
@@ -107,8 +104,7 @@ void Pipeline::write_status_file() {
 }
 
 std::string Pipeline::status_line() const {
-  std::size_t waiting = 0;
-  for (const auto& [key, open] : open_batches_) waiting += open.job_ids.size();
+  const std::size_t waiting = strip_waiting_.size();
   std::string line = std::to_string(known_jobs_.size()) + " job(s) in work, " + std::to_string(tasks_.size()) +
                      " to compute, " + std::to_string(waiting) + " waiting for a batch";
   for (const auto& [name, dispatcher] : dispatchers_) {
@@ -119,29 +115,7 @@ std::string Pipeline::status_line() const {
 }
 
 std::string Pipeline::reload(std::shared_ptr<const DaemonConfig> next) {
-  const auto current = config();
-  std::string kept;
-  auto keep = [&](bool changed, const char* what) {
-    if (changed) kept += std::string(kept.empty() ? "" : ", ") + what;
-  };
-  keep(next->paths.watch_dir != current->paths.watch_dir, "paths.watch");
-  keep(next->paths.spool_dir != current->paths.spool_dir, "paths.spool");
-  keep(next->paths.hides_dir != current->paths.hides_dir, "paths.hides");
-  keep(next->watch.mode != current->watch.mode, "watch.mode");
-  keep(next->jobs.compute_workers != current->jobs.compute_workers, "jobs.compute_workers");
-  bool same_cutters = next->cutters.size() == current->cutters.size();
-  for (const auto& [name, section] : next->cutters) same_cutters = same_cutters && current->cutters.count(name);
-  keep(!same_cutters, "the list of cutters");
-  auto merged = std::make_shared<DaemonConfig>(*next);
-  merged->paths = current->paths;
-  merged->watch = current->watch;
-  merged->jobs.compute_workers = current->jobs.compute_workers;
-  if (!same_cutters) merged->cutters = current->cutters;
-  {
-    std::lock_guard lock(config_mutex_);
-    config_ = merged;
-  }
-  return kept.empty() ? "" : kept + " changed: kept the running value until restart";
+  return config_.reload(*next);
 }
 
 void Pipeline::stop() {

@@ -25,6 +25,8 @@
 #include "daemon/job/status_observer.hpp"
 #include "daemon/pipeline/work_queue.hpp"
 #include "daemon/spool/spool.hpp"
+#include "daemon/station/batching_policy.hpp"
+#include "daemon/station/config_reload.hpp"
 #include "daemon/watch/hot_folder.hpp"
 
 namespace lastcut::daemon {
@@ -59,10 +61,11 @@ class Pipeline : public JobFlow {
     bool is_batch = false;
     std::string id;
   };
-  struct OpenBatch {
-    std::vector<std::string> job_ids;
-    int pieces = 0;
-    Clock::time_point opened;
+  // A computed job waiting for a strip batch (batching_policy.hpp decides when).
+  struct StripWaiting {
+    std::string id, material, cutter;
+    int pieces = 1;
+    Clock::time_point since;
   };
 
   std::shared_ptr<const DaemonConfig> config() const;
@@ -82,20 +85,22 @@ class Pipeline : public JobFlow {
   // batching.cpp
   void add_to_batcher(const JobState& state);
   void close_due_batches(Clock::time_point now, bool force);
-  void close_batch(const std::string& key, OpenBatch& open);
+  void close_batch(const DueBatch& due);
   void enqueue_batch(const BatchState& batch);
   // hide_intake.cpp
   bool is_hide_material(const std::string& material) const;
   void add_to_hide_pool(const JobState& state);
   void take_hide(const ReadyScan& ready);
+  // Nests each loaded hide that the hide rule finds due (daemon/station/hide_policy.hpp).
+  void nest_due_hides(Clock::time_point now);
+  bool computing_material(const std::string& material) const;
   void fail_hide(BatchState& batch, const std::string& reason);
   void build_hide_task(BatchState& batch, const std::string& worker);
   void scan_work_folder();
   // spool/status.json for `lastcut status`: cutters' conditions, queue sizes, pid, time.
   void write_status_file();
 
-  mutable std::mutex config_mutex_;
-  std::shared_ptr<const DaemonConfig> config_;
+  RunningConfig config_;
   std::unique_ptr<Spool> spool_;
   StatusObserver* observer_ = nullptr;
   std::unique_ptr<HotFolder> hot_folder_;
@@ -108,8 +113,13 @@ class Pipeline : public JobFlow {
   // Main thread only.
   std::set<std::string> known_jobs_;                  // ids in work/ that have been routed
   std::map<std::string, std::string> hash_to_job_;    // sha256 -> first job id with those bytes
-  std::map<std::string, OpenBatch> open_batches_;     // "material|cutter" -> collecting
+  std::vector<StripWaiting> strip_waiting_;           // computed, waiting for a strip batch, oldest first
   std::map<std::string, std::vector<std::string>> hide_waiting_;  // hide material -> jobs waiting, oldest first
+  struct LoadedHide {
+    std::string batch_id;
+    Clock::time_point since;
+  };
+  std::vector<LoadedHide> loaded_hides_;  // hides on a cutter's table, waiting for jobs, oldest first
   Clock::time_point next_work_scan_{};
   Clock::time_point next_status_file_{};
   std::string status_file_error_;  // last failure writing status.json, "" when it worked

@@ -85,7 +85,9 @@ void Pipeline::recover_batch(const std::string& batch_id) {
   switch (batch->stage) {
     case BatchStage::Nesting:
       if (!batch->hide_file.empty() && std::filesystem::exists(spool_->batch_dir(batch_id) / batch->hide_file)) {
-        tasks_.push({true, batch_id});  // the hide is still on the table: nest its jobs again
+        // The hide is still on the table: nest its jobs again, or wait for jobs as before.
+        if (batch->job_ids.empty()) loaded_hides_.push_back({batch_id, Clock::now()});
+        else tasks_.push({true, batch_id});
         return;
       }
       batch->stage = BatchStage::Abandoned;

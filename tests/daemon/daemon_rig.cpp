@@ -19,7 +19,8 @@ DaemonRig::DaemonRig(const std::string& name, RigOptions options)
                      "[jobs]\nduplicate_policy = \"" + options_.duplicate_policy + "\"\n"
                      "default_material = \"calf\"\ndefault_cutter = \"" + options_.cutters.front() + "\"\n"
                      "stop_grace_s = 20\n"
-                     "[batch]\nwindow_s = " + std::to_string(options_.batch_window_s) + "\nnest_time_s = 0.3\n"
+                     "[batch]\nwindow_s = " + std::to_string(options_.batch_window_s) +
+                     "\nmax_pieces = " + std::to_string(options_.batch_max_pieces) + "\nnest_time_s = 0.3\n"
                      "[materials.calf]\nwidth_mm = 800\nlength_mm = 1200\nspacing_mm = 3\n";
   for (const std::string& cutter : options_.cutters) {
     // Both simulators record the exact bytes they were sent, so a cut file can be found in them.

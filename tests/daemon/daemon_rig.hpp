@@ -21,6 +21,7 @@ struct RigOptions {
   std::set<std::string> grbl_cutters;             // these are grbl tables (G-code); the others HPGL plotters
   std::string duplicate_policy = "skip";
   double batch_window_s = 0;
+  int batch_max_pieces = 0;                       // [batch] max_pieces (0: no limit)
   std::string extra_config;                       // appended to the generated TOML
   std::string extra_paths;                        // appended to its [paths] table (e.g. hides = "hides")
   // When set (the built grbl_sim.exe), the grbl cutters are the real grbl 1.1h firmware behind a

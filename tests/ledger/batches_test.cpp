@@ -121,24 +121,24 @@ TEST_F(BatchesTest, ClaimedButNotSendingGoesBackToTheQueue) {
 
 TEST_F(BatchesTest, AComputedJobWaitsForCompanyUpToTheWindow) {
   // cutter-1 has 2 computed jobs: fewer than 3, so they wait for the window...
-  auto early = compute_->make_batch(3, 0.5, 30);
+  auto early = compute_->make_batch(batch_rule(0.5, 3), 30);
   ASSERT_TRUE(early.ok()) << early.error();
   EXPECT_FALSE(early->has_value());
   // ... unless the group is full,
-  auto full = compute_->make_batch(2, 0.5, 30);
+  auto full = compute_->make_batch(batch_rule(0.5, 2), 30);
   ASSERT_TRUE(full.ok() && full->has_value());
   EXPECT_EQ((*full)->job_ids.size(), 2u);
-  EXPECT_EQ((*full)->job_scans, (std::vector<std::string>{scan(1).scan_sha256, scan(2).scan_sha256}));
+  EXPECT_EQ((*full)->job_folders, (std::vector<std::string>{scan(1).scan_sha256, scan(2).scan_sha256}));
   EXPECT_EQ(query("SELECT state FROM batches WHERE id = " + std::to_string((*full)->batch_id)), "nesting");
   // ... or the oldest has waited long enough (cutter-2's single job).
   std::this_thread::sleep_for(std::chrono::milliseconds(600));
-  auto late = compute_->make_batch(3, 0.5, 30);
+  auto late = compute_->make_batch(batch_rule(0.5, 3), 30);
   ASSERT_TRUE(late.ok() && late->has_value());
   EXPECT_EQ((*late)->cutter, "cutter-2");
 }
 
 TEST_F(BatchesTest, NestedRejectsFailAloneAndAnEmptyBatchIsDissolved) {
-  auto made = compute_->make_batch(10, 0, 30);
+  auto made = compute_->make_batch(batch_rule(0, 10), 30);
   ASSERT_TRUE(made.ok() && made->has_value());
   const auto& ids = (*made)->job_ids;
   ASSERT_EQ(ids.size(), 2u);
@@ -148,7 +148,7 @@ TEST_F(BatchesTest, NestedRejectsFailAloneAndAnEmptyBatchIsDissolved) {
             "failed:-:a mold is wider");
   EXPECT_EQ(query("SELECT state || ':' || cut_file || ':' || pieces FROM batches"), "queued:batches/x/cut.nc:3");
 
-  auto alone = compute_->make_batch(10, 0, 30);  // cutter-2's job, which cannot be placed at all
+  auto alone = compute_->make_batch(batch_rule(0, 10), 30);  // cutter-2's job, which cannot be placed at all
   ASSERT_TRUE(alone.ok() && alone->has_value());
   ASSERT_TRUE(compute_->mark_nested((*alone)->lease, {"", 0, {{(*alone)->job_ids[0], "too wide"}}}).ok());
   EXPECT_EQ(query("SELECT state FROM batches WHERE id = " + std::to_string((*alone)->batch_id)), "dissolved");
@@ -158,7 +158,7 @@ TEST_F(BatchesTest, NestedRejectsFailAloneAndAnEmptyBatchIsDissolved) {
 }
 
 TEST_F(BatchesTest, ANestingNodeThatVanishesLeavesItsJobsToBeRegrouped) {
-  auto made = compute_->make_batch(10, 0, 0.3);
+  auto made = compute_->make_batch(batch_rule(0, 10), 0.3);
   ASSERT_TRUE(made.ok() && made->has_value());
   std::this_thread::sleep_for(std::chrono::milliseconds(600));
   auto swept = station1_->sweep_expired(3);

@@ -32,6 +32,38 @@ TEST_F(EnqueueClaimTest, TheSameScanOnTwoNodesIsOneJob) {
             "entered@node-a,duplicate@node-b");
 }
 
+TEST_F(EnqueueClaimTest, KnownBytesAreHeldOrEnteredAgainByTheDuplicatePolicy) {
+  auto a = client("node-a");
+  ASSERT_TRUE(a);
+  auto first = a->enqueue(scan(7));
+  ASSERT_TRUE(first.ok()) << first.error();
+  ledger::ScanEntry again = scan(7);
+  again.scan_name = "copy-of-7.stl";
+  auto held = a->enqueue(again, ledger::OnDuplicate::Hold);
+  ASSERT_TRUE(held.ok()) << held.error();
+  EXPECT_TRUE(held->duplicate);
+  EXPECT_NE(held->job_id, first->job_id);
+  EXPECT_EQ(held->duplicate_of, first->job_id);
+  EXPECT_EQ(held->state, "held");
+  EXPECT_EQ(held->reason, "same scan bytes as job " + std::to_string(first->job_id) + " (duplicate held by policy)");
+  auto processed = a->enqueue(again, ledger::OnDuplicate::Process);
+  ASSERT_TRUE(processed.ok()) << processed.error();
+  EXPECT_EQ(processed->state, "ready");
+  EXPECT_EQ(processed->duplicate_of, first->job_id);
+  EXPECT_EQ(query("SELECT string_agg(state || ':' || coalesce(duplicate_of::text, '-'), ',' ORDER BY id) FROM jobs"),
+            "ready:-,held:" + std::to_string(first->job_id) + ",ready:" + std::to_string(first->job_id));
+  // The duplicate processed again computes into a folder of its own (its sidecar may differ).
+  auto claimed = a->claim_job(30);
+  ASSERT_TRUE(claimed.ok() && claimed->has_value());
+  EXPECT_EQ((*claimed)->job_folder, scan(7).scan_sha256);
+  auto second = a->claim_job(30);
+  ASSERT_TRUE(second.ok() && second->has_value());
+  EXPECT_EQ((*second)->job_folder, scan(7).scan_sha256 + "-" + std::to_string(processed->job_id));
+  // The held one is processed after `lastcut requeue`.
+  EXPECT_TRUE(a->requeue_held(held->job_id).ok());
+  EXPECT_EQ(query("SELECT state FROM jobs WHERE id = " + std::to_string(held->job_id)), "ready");
+}
+
 TEST_F(EnqueueClaimTest, OldestReadyJobFirstAndNothingWhenEmpty) {
   auto a = client("node-a");
   ASSERT_TRUE(a);

@@ -35,19 +35,19 @@ class HidesTest : public LedgerTest {
 
 TEST_F(HidesTest, AHideTakesItsMaterialsJobsAndTheMisfitsWaitAgain) {
   // No hide yet: a strip batch takes the calf job only, the leather jobs wait.
-  auto strip = compute_->make_batch(10, 0, 30, {"leather"});
+  auto strip = compute_->make_batch(batch_rule(0, 10), 30, {"leather"});
   ASSERT_TRUE(strip.ok() && strip->has_value()) << strip.error();
   EXPECT_EQ((*strip)->material, "calf");
   EXPECT_EQ((*strip)->job_ids.size(), 1u);
   EXPECT_EQ((*strip)->hide_id, 0);
-  auto none = compute_->make_hide_batch(64, 0, 30);
+  auto none = compute_->make_hide_batch(daemon::ledger_hide_rule(0), 64, 30);
   ASSERT_TRUE(none.ok());
   EXPECT_FALSE(none->has_value()) << "no hide is loaded";
 
   auto entered = station_->enter_hide(hide("K-17"));
   ASSERT_TRUE(entered.ok()) << entered.error();
   EXPECT_EQ(query("SELECT state || ':' || cutter || ':' || entered_by FROM hides"), "loaded:cutter-1:station");
-  auto made = compute_->make_hide_batch(64, 0, 30);
+  auto made = compute_->make_hide_batch(daemon::ledger_hide_rule(0), 64, 30);
   ASSERT_TRUE(made.ok() && made->has_value()) << made.error();
   const ledger::BatchClaim& claim = **made;
   EXPECT_EQ(claim.hide_id, *entered);
@@ -78,10 +78,10 @@ TEST_F(HidesTest, AHideTakesItsMaterialsJobsAndTheMisfitsWaitAgain) {
   EXPECT_EQ(query("SELECT count(*) FROM jobs WHERE state = 'batched' AND batch_id = " + std::to_string(claim.batch_id)),
             "2");
   // The waiting job is not put on a strip, and the used hide is not nested again.
-  auto after = compute_->make_batch(10, 0, 30, {"leather"});
+  auto after = compute_->make_batch(batch_rule(0, 10), 30, {"leather"});
   ASSERT_TRUE(after.ok());
   EXPECT_FALSE(after->has_value());
-  auto again = compute_->make_hide_batch(64, 0, 30);
+  auto again = compute_->make_hide_batch(daemon::ledger_hide_rule(0), 64, 30);
   ASSERT_TRUE(again.ok());
   EXPECT_FALSE(again->has_value());
 
@@ -94,7 +94,7 @@ TEST_F(HidesTest, AHideTakesItsMaterialsJobsAndTheMisfitsWaitAgain) {
 
 TEST_F(HidesTest, AnEmptyHideMayBeLoadedAgainAVanishedNestingLeavesItLoaded) {
   ASSERT_TRUE(station_->enter_hide(hide("S-1")).ok());
-  auto made = compute_->make_hide_batch(64, 0, 30);
+  auto made = compute_->make_hide_batch(daemon::ledger_hide_rule(0), 64, 30);
   ASSERT_TRUE(made.ok() && made->has_value());
   ledger::NestedBatch nothing;
   for (long long id : (*made)->job_ids) nothing.waiting.emplace_back(id, "waiting for a hide of leather: too small");
@@ -107,7 +107,7 @@ TEST_F(HidesTest, AnEmptyHideMayBeLoadedAgainAVanishedNestingLeavesItLoaded) {
   // Loaded again (a larger piece of the same hide ID after trimming, say): nested again, by a node
   // whose lease then runs out: the sweep dissolves its batch and the hide lies there, loaded.
   ASSERT_TRUE(station_->enter_hide(hide("S-1")).ok());
-  auto lost = compute_->make_hide_batch(64, 0, 0.3);
+  auto lost = compute_->make_hide_batch(daemon::ledger_hide_rule(0), 64, 0.3);
   ASSERT_TRUE(lost.ok() && lost->has_value());
   auto swept = sweep_after_expiry(*station_, 0.3);
   ASSERT_TRUE(swept.ok()) << swept.error();
@@ -115,7 +115,7 @@ TEST_F(HidesTest, AnEmptyHideMayBeLoadedAgainAVanishedNestingLeavesItLoaded) {
   EXPECT_EQ(query("SELECT state FROM hides"), "loaded");
   EXPECT_EQ(query("SELECT count(*) FROM jobs WHERE state = 'computed' AND batch_id IS NULL AND material = 'leather'"),
             "3");
-  auto retaken = station_->make_hide_batch(64, 0, 30);
+  auto retaken = station_->make_hide_batch(daemon::ledger_hide_rule(0), 64, 30);
   ASSERT_TRUE(retaken.ok() && retaken->has_value());
   EXPECT_EQ((*retaken)->job_ids.size(), 3u);
   EXPECT_EQ(compute_->mark_nested((*lost)->lease, {}).error().rfind("lease lost", 0), 0u)
@@ -125,10 +125,10 @@ TEST_F(HidesTest, AnEmptyHideMayBeLoadedAgainAVanishedNestingLeavesItLoaded) {
 TEST_F(HidesTest, AHideWaitsWhileJobsOfItsMaterialAreStillComputing) {
   ASSERT_TRUE(compute_->enqueue(scan(5, "cutter-1", "leather")).ok());  // ready, not computed yet
   ASSERT_TRUE(station_->enter_hide(hide("W-1")).ok());
-  auto early = compute_->make_hide_batch(64, 30, 30);
+  auto early = compute_->make_hide_batch(daemon::ledger_hide_rule(30), 64, 30);
   ASSERT_TRUE(early.ok());
   EXPECT_FALSE(early->has_value()) << "job 5 is still on its way and the hide has not waited 30 s";
-  auto late = compute_->make_hide_batch(64, 0, 30);  // a window of 0 s: it has waited long enough
+  auto late = compute_->make_hide_batch(daemon::ledger_hide_rule(0), 64, 30);  // a window of 0 s: it has waited long enough
   ASSERT_TRUE(late.ok() && late->has_value());
   EXPECT_EQ((*late)->job_ids.size(), 3u);
 }

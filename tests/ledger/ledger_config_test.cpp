@@ -91,31 +91,33 @@ colour = "blue"
 
 TEST_F(LedgerConfigTest, CabledCuttersAndBatching) {
   const std::string table = "[ledger]\nurl = \"postgres://h/db\"\nnode = \"n\"\nshared_dir = \"s\"\n";
-  const auto station = load(table + "roles = [\"station\"]\ncutters = [\"a\"]\nbatch_window_s = 2\nmax_batch_jobs = 3\n");
+  const auto station = load(table + "roles = [\"station\"]\ncutters = [\"a\"]\n");
   ASSERT_TRUE(station.config) << station.error;
   const LedgerConfig& ledger = *station.config->ledger;
   EXPECT_EQ(ledger.cutters, std::vector<std::string>{"a"});
   EXPECT_TRUE(ledger.owns_cutter("a"));
   EXPECT_FALSE(ledger.owns_cutter("b"));
-  EXPECT_DOUBLE_EQ(ledger.batch_window_s, 2);
-  EXPECT_EQ(ledger.max_batch_jobs, 3);
   // Without the list a station owns every cutter of its file; a compute node owns none.
   const auto all = load(table + "roles = [\"station\"]\n");
   ASSERT_TRUE(all.config) << all.error;
   EXPECT_TRUE(all.config->ledger->owns_cutter("a"));
-  EXPECT_DOUBLE_EQ(all.config->ledger->batch_window_s, 5);
-  EXPECT_EQ(all.config->ledger->max_batch_jobs, 8);
   const auto compute = load(table + "roles = [\"compute\"]\n");
   ASSERT_TRUE(compute.config) << compute.error;
   EXPECT_FALSE(compute.config->ledger->owns_cutter("a"));
 
-  const auto wrong = load(table + "roles = [\"compute\"]\ncutters = [\"z\"]\nmax_batch_jobs = 0\n");
+  // The ledger's own batch keys of schema 3 and before name the one [batch] rule that replaced them.
+  const auto wrong = load(table + "roles = [\"compute\"]\ncutters = [\"z\"]\nbatch_window_s = 2\nmax_batch_jobs = 3\n");
   ASSERT_FALSE(wrong.config);
   const std::string file = (folder_ / "lastcut.toml").string() + ": ";
   EXPECT_EQ(wrong.error,
             file + "ledger.cutters (line " + std::to_string(line_of(5)) +
                 "): only a node with the role \"station\" has cutters cabled to it\n" + file +
-                "ledger.max_batch_jobs (line " + std::to_string(line_of(6)) + "): 0 is outside 1 .. 1000");
+                "ledger.batch_window_s (line " + std::to_string(line_of(6)) +
+                "): no longer read; use [batch] window_s, the same batching rule as on one station"
+                " (docs/multi-station.md, upgrading)\n" +
+                file + "ledger.max_batch_jobs (line " + std::to_string(line_of(7)) +
+                "): no longer read; use [batch] max_pieces (pieces, not jobs), the same batching rule as on one"
+                " station (docs/multi-station.md, upgrading)");
   const auto unknown = load(table + "roles = [\"station\"]\ncutters = [\"z\"]\n");
   ASSERT_FALSE(unknown.config);
   EXPECT_EQ(unknown.error, file + "ledger.cutters: \"z\" is not a [cutters.*] table");

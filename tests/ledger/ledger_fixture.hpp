@@ -11,6 +11,7 @@
 #include <pqxx/pqxx>
 
 #include "daemon/ledger/ledger_client.hpp"
+#include "daemon/ledger_node/ledger_batch_rule.hpp"
 #include "tests/support/postgres_server.hpp"
 
 namespace lastcut::test {
@@ -70,11 +71,19 @@ inline ledger::ScanEntry scan(int n, const std::string& cutter = "cutter-1", con
   return {hex, "scan-" + std::to_string(n) + ".stl", "", material, cutter};
 }
 
+// The station's batching rule with a window and a piece limit (every test job has 1 piece).
+inline ledger::BatchChooser batch_rule(double window_s, int max_pieces) {
+  daemon::BatchConfig rule;
+  rule.window_s = window_s;
+  rule.max_pieces = max_pieces;
+  return daemon::ledger_batch_rule(rule);
+}
+
 // What a compute node does to a batch (nothing is really nested here): groups the oldest computed
 // jobs (no window) and hands the batch to its station with a cut file named after it. nullopt when
 // nothing is computed; the failure of a ledger call fails the test.
 inline std::optional<long long> nest_batch(ledger::LedgerClient& compute, int max_jobs) {
-  auto made = compute.make_batch(max_jobs, 0, 30);
+  auto made = compute.make_batch(batch_rule(0, max_jobs), 30);
   EXPECT_TRUE(made.ok()) << made.error();
   if (!made || !made->has_value()) return std::nullopt;
   const long long id = (*made)->batch_id;

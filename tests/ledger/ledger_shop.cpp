@@ -63,9 +63,10 @@ std::string LedgerShop::node_config(const ShopNode& node) const {
                      options_.extra_paths +
                      "[watch]\nmode = \"inotify\"\nrescan_interval_s = 2\nstable_checks = 2\n"
                      "stable_interval_s = 0.1\nincomplete_grace_s = 0.5\n"
-                     "[jobs]\ndefault_material = \"calf\"\ndefault_cutter = \"" + options_.cutters.front().name + "\"\n"
+                     "[jobs]\nduplicate_policy = \"" + options_.duplicate_policy + "\"\ndefault_material = \"calf\"\ndefault_cutter = \"" + options_.cutters.front().name + "\"\n"
                      "stop_grace_s = 20\n"
-                     "[batch]\nnest_time_s = 0.3\n"
+                     "[batch]\nnest_time_s = 0.3\nwindow_s = " + std::to_string(options_.batch_window_s) +
+                     "\nmax_pieces = " + std::to_string(options_.max_pieces) + "\n"
                      "[materials.calf]\nwidth_mm = 800\nlength_mm = 1200\nspacing_mm = 3\n" +
                      options_.extra_config;
   std::vector<std::string> cabled;
@@ -79,9 +80,7 @@ std::string LedgerShop::node_config(const ShopNode& node) const {
   }
   toml += "[ledger]\nurl = \"" + url_ + "\"\nnode = \"" + node.name + "\"\nroles = " + toml_list(node.roles) +
           "\nshared_dir = \"" + shared_dir().string() + "\"\nlease_s = " + std::to_string(options_.lease_s) +
-          "\nheartbeat_s = " + std::to_string(options_.heartbeat_s) +
-          "\nbatch_window_s = " + std::to_string(options_.batch_window_s) +
-          "\nmax_batch_jobs = " + std::to_string(options_.max_batch_jobs) + "\n";
+          "\nheartbeat_s = " + std::to_string(options_.heartbeat_s) + "\n";
   if (!cabled.empty()) toml += "cutters = " + toml_list(cabled) + "\n";
   toml += "[status]\nmqtt_url = \"" + broker_->url() + "\"\nstation = \"" + node.name + "\"\nkeepalive_s = 5\n";
   return toml;
@@ -143,6 +142,10 @@ std::string LedgerShop::start_node(const std::string& node) {
   if (ready()) return "";
   return node + " not ready after 30 s" + (nodes_[node]->running() ? "" : " (exited)") + ": " +
          tail(read_text(log_file(node)).substr(before), 4000);
+}
+
+void LedgerShop::signal_node(const std::string& node, int signal) {
+  if (auto it = nodes_.find(node); it != nodes_.end() && it->second) it->second->signal(signal);
 }
 
 void LedgerShop::kill_node(const std::string& node) {

@@ -36,8 +36,9 @@ struct ShopOptions {
   std::vector<ShopCutter> cutters;     // the first one is [jobs] default_cutter
   double lease_s = 2.5;
   double heartbeat_s = 0.5;
-  double batch_window_s = 1;
-  int max_batch_jobs = 4;
+  double batch_window_s = 1;  // [batch] window_s
+  int max_pieces = 8;           // [batch] max_pieces: about 4 jobs of 2 molds
+  std::string duplicate_policy = "skip";  // [jobs] duplicate_policy
   std::string extra_paths;   // more [paths] keys for every node (e.g. hides = "hides")
   std::string extra_config;  // more tables for every node (e.g. a [materials.leather] of kind "hide")
 };
@@ -78,6 +79,7 @@ class LedgerShop {
   // appended across restarts). "" on success, else the log.
   std::string start_node(const std::string& node);
   void kill_node(const std::string& node);                         // SIGKILL
+  void signal_node(const std::string& node, int signal);           // e.g. SIGHUP: reload
   int stop_node(const std::string& node, double timeout_s = 60);   // SIGTERM; the exit status (-1: timeout)
   bool node_running(const std::string& node);
 

@@ -1,0 +1,161 @@
+#include "tests/station/station_under_test.hpp"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/daemon/daemon_rig.hpp"
+#include "tests/ledger/ledger_shop.hpp"
+
+namespace lastcut::daemon::testing {
+namespace {
+
+const char* kLeather =
+    "[materials.leather]\nkind = \"hide\"\ncutter = \"cutter-1\"\npairs = \"any\"\nspacing_mm = 3\n"
+    "rotation_step_deg = 90\n";
+
+class SpoolStation : public StationUnderTest {
+ public:
+  SpoolStation(const std::string& name, const StationSettings& settings) : rig_(name, options(settings)) {}
+
+  std::string start() override {
+    rig_.start_cutters();
+    rig_.start_daemon();
+    return ::testing::Test::HasFatalFailure() ? "lastcutd did not start: " + log() : "";
+  }
+  std::filesystem::path watch() const override { return rig_.watch(); }
+  std::filesystem::path hides() const override { return rig_.root() / "hides"; }
+  std::filesystem::path config_file() const override { return rig_.config_file(); }
+  std::string log() const override { return read_text(rig_.daemon_log()); }
+  std::vector<SeenJob> jobs() const override {
+    std::vector<SeenJob> seen;
+    for (const char* folder : {"work", "done", "failed", "held"}) {
+      for (const auto& [id, state] : rig_.jobs(folder)) {
+        std::string stage = state.value("stage", "");
+        if (stage == "claimed") stage = "computing";
+        if (stage == "cut") stage = "done";
+        seen.push_back({id, state.value("scan", ""), stage, state.value("reason", ""), state.value("batch", "")});
+      }
+    }
+    return seen;
+  }
+  std::string hide_state(const std::string& hide_id) const override {
+    std::error_code error;
+    for (std::filesystem::directory_iterator it(rig_.spool() / "batches", error), end; !error && it != end;
+         it.increment(error)) {
+      const auto batch = nlohmann::json::parse(read_text(it->path() / "batch.json"), nullptr, false);
+      if (batch.is_discarded() || !batch.contains("hide") || batch["hide"].value("id", "") != hide_id) continue;
+      const std::string stage = batch.value("stage", "");
+      if (stage == "nesting") return batch.value("jobs", nlohmann::json::array()).empty() ? "loaded" : "nesting";
+      if (stage == "empty" || stage == "abandoned") return "empty";
+      return "used";  // queued, sending, cut, held: nested
+    }
+    return "";
+  }
+  void signal(int signal) override { rig_.daemon()->signal(signal); }
+  int stop() override { return rig_.stop_daemon(); }
+
+ private:
+  static RigOptions options(const StationSettings& settings) {
+    RigOptions options;
+    options.duplicate_policy = settings.duplicate_policy;
+    options.batch_window_s = settings.window_s;
+    options.batch_max_pieces = settings.max_pieces;
+    if (settings.hides) {
+      options.extra_paths = "hides = \"hides\"\n";
+      options.extra_config = kLeather;
+    }
+    return options;
+  }
+  mutable DaemonRig rig_;
+};
+
+class LedgerStation : public StationUnderTest {
+ public:
+  LedgerStation(const std::string& name, const StationSettings& settings) : shop_(name, options(settings)) {}
+
+  std::string start() override {
+    if (std::string trouble = shop_.start_services(); !trouble.empty()) return trouble;
+    if (std::string trouble = shop_.start_cutter("cutter-1"); !trouble.empty()) return trouble;
+    return shop_.start_node(kNode);
+  }
+  std::filesystem::path watch() const override { return shop_.watch(kNode); }
+  std::filesystem::path hides() const override { return shop_.node_dir(kNode) / "hides"; }
+  std::filesystem::path config_file() const override { return shop_.config_file(kNode); }
+  std::string log() const override { return read_text(shop_.log_file(kNode)); }
+  std::vector<SeenJob> jobs() const override {
+    std::vector<SeenJob> seen;
+    for (const auto& row : shop_.rows("SELECT id, scan_name, state, coalesce(reason, ''), coalesce(batch_id::text, '')"
+                                      " FROM jobs ORDER BY id")) {
+      const std::string state = row[2] == "ready" ? "computing" : row[2];
+      seen.push_back({row[0], row[1], state, row[3], row[4]});
+    }
+    return seen;
+  }
+  std::string hide_state(const std::string& hide_id) const override {
+    return shop_.value("SELECT state FROM hides WHERE name = '" + hide_id + "'");
+  }
+  void signal(int signal) override { shop_.signal_node(kNode, signal); }
+  int stop() override { return shop_.stop_node(kNode); }
+
+ private:
+  static constexpr const char* kNode = "station-a";
+  static ShopOptions options(const StationSettings& settings) {
+    ShopOptions options;
+    options.nodes = {{kNode, {"compute", "station"}}};
+    options.cutters = {{"cutter-1", "hpgl", kNode}};
+    options.duplicate_policy = settings.duplicate_policy;
+    options.batch_window_s = settings.window_s;
+    options.max_pieces = settings.max_pieces;
+    if (settings.hides) {
+      options.extra_paths = "hides = \"hides\"\n";
+      options.extra_config = kLeather;
+    }
+    return options;
+  }
+  mutable LedgerShop shop_;
+};
+
+}  // namespace
+
+std::unique_ptr<StationUnderTest> StationUnderTest::make(StoreKind kind, const std::string& name,
+                                                         const StationSettings& settings) {
+  if (kind == StoreKind::Spool) return std::make_unique<SpoolStation>(name, settings);
+  return std::make_unique<LedgerStation>(name, settings);
+}
+
+SeenJob StationUnderTest::job(const std::string& scan) const {
+  SeenJob found;
+  for (const SeenJob& seen : jobs())
+    if (seen.scan == scan) found = seen;  // ids ascend with time in both stores: the newest stays
+  return found;
+}
+
+int StationUnderTest::requeue(const std::string& job_id) const {
+  const auto out = config_file().parent_path() / "requeue.txt";
+  return run_command({binary("lastcut").string(), "requeue", job_id, "--config", config_file().string()}, out);
+}
+
+void StationUnderTest::drop_scan(const std::string& name, const std::string& tag, const std::string& ticket) const {
+  const auto staging = config_file().parent_path() / "staging";
+  std::filesystem::create_directories(staging);
+  write_variant(small_last(40, "left", 7), staging / (tag + ".stl"), tag);
+  drop_copy(tag, name, ticket);
+}
+
+void StationUnderTest::drop_copy(const std::string& tag, const std::string& as, const std::string& ticket) const {
+  const auto staging = config_file().parent_path() / "staging";
+  if (!ticket.empty())
+    write_text(watch() / (std::filesystem::path(as).stem().string() + ".job.toml"), ticket);
+  drop(staging / (tag + ".stl"), watch(), as);  // a copy: the same tag may be dropped again
+}
+
+void StationUnderTest::edit_config(const std::string& from, const std::string& to) const {
+  std::string text = read_text(config_file());
+  const auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from << " not in " << text;
+  text.replace(at, from.size(), to);
+  write_text(config_file(), text);
+}
+
+}  // namespace lastcut::daemon::testing
