@@ -60,6 +60,20 @@ constexpr auto kAllBatchStages = values_of(kBatchStages);
 
 }  // namespace
 
+bool has_ended(JobStage stage) {
+  switch (stage) {
+    case JobStage::Claimed:
+    case JobStage::Computed:
+    case JobStage::Batched:
+    case JobStage::Sending: return false;
+    case JobStage::Cut:
+    case JobStage::Failed:
+    case JobStage::Held:
+    case JobStage::Skipped: return true;
+  }
+  return true;
+}
+
 bool in_progress(BatchStage stage) {
   switch (stage) {
     case BatchStage::Nesting:

@@ -22,6 +22,8 @@ enum class BatchStage { Nesting, Queued, Sending, Cut, Held, Abandoned, Empty };
 
 // Nesting, queued or sending: the batch still carries its jobs on (they wait for it).
 bool in_progress(BatchStage stage);
+// Cut, failed, held or skipped: the job has left work/ (or is leaving it).
+bool has_ended(JobStage stage);
 
 std::string_view to_string(JobStage stage);
 std::string_view to_string(BatchStage stage);

@@ -18,10 +18,13 @@ Status Pipeline::start() {
   const auto settings = config();
   spool_ = std::make_unique<Spool>(settings->paths.spool_dir);
   if (Status prepared = spool_->prepare(); !prepared) return prepared;
-  if (observer_) {
-    spool_->on_job_written(
-        [observer = observer_](const JobState& state) { observer->job_changed(job_event_of(state)); });
-  }
+  spool_->on_job_written([this, observer = observer_](const JobState& state) {
+    if (has_ended(state.stage)) {
+      std::lock_guard lock(ended_mutex_);
+      ended_incoming_.insert(state.id);
+    }
+    if (observer) observer->job_changed(job_event_of(state));
+  });
   for (const auto& [name, section] : settings->cutters) {
     dispatchers_[name] = std::make_unique<CutterDispatcher>(name, *spool_, monitor_, [this, cutter = name] {
       const auto current = config();

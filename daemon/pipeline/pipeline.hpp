@@ -127,6 +127,11 @@ class Pipeline : public JobFlow {
   // Filled by workers, drained by the main thread.
   std::mutex computed_mutex_;
   std::vector<std::string> computed_;
+  // Jobs whose state was written as ended (any thread), drained into ended_ (main thread): a known
+  // job found in work/ again with a live stage was requeued by an operator, however soon after it left.
+  std::mutex ended_mutex_;
+  std::set<std::string> ended_incoming_;
+  std::set<std::string> ended_;
 };
 
 }  // namespace lastcut::daemon

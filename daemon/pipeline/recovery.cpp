@@ -181,16 +181,32 @@ void Pipeline::route(const std::string& job_id) {
 }
 
 void Pipeline::scan_work_folder() {
+  {
+    std::lock_guard lock(ended_mutex_);
+    ended_.merge(ended_incoming_);
+  }
   std::set<std::string> present;
   for (const std::string& id : spool_->list(JobFolder::Work)) {
     present.insert(id);
+    if (known_jobs_.count(id) && ended_.count(id)) {
+      // Ended, yet in work/: still on its way out, or already handed back by `lastcut requeue`.
+      const auto state = spool_->read_state(JobFolder::Work, id);
+      if (!state || has_ended(state->stage)) continue;
+      ended_.erase(id);
+      known_jobs_.erase(id);
+    }
     if (!known_jobs_.count(id)) {
       spdlog::info("job {}: back in work/ (requeued by an operator)", id);
       route(id);
     }
   }
   for (auto it = known_jobs_.begin(); it != known_jobs_.end();) {
-    it = present.count(*it) ? std::next(it) : known_jobs_.erase(it);
+    if (present.count(*it)) {
+      ++it;
+      continue;
+    }
+    ended_.erase(*it);
+    it = known_jobs_.erase(it);
   }
 }
 

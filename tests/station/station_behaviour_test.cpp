@@ -125,8 +125,8 @@ TEST_P(StationBehaviour, AHideLoadedWhileNothingWaitsStaysOnItsTable) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BothStores, StationBehaviour, ::testing::Values(StoreKind::Spool, StoreKind::Ledger),
-                         [](const ::testing::TestParamInfo<StoreKind>& info) {
-                           return info.param == StoreKind::Spool ? "Spool" : "Ledger";
+                         [](const ::testing::TestParamInfo<StoreKind>& store) {
+                           return store.param == StoreKind::Spool ? "Spool" : "Ledger";
                          });
 
 }  // namespace
