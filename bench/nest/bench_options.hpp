@@ -1,6 +1,6 @@
 #pragma once
 // The options nest_bench and hide_bench share (--data --limits --threads --workers --seed --only
-// --rounds --sweeps --svg-dir) and the NestOptions they make, with one ThreadTeam (daemon/cli/thread_team.hpp)
+// --rounds --sweeps --svg-dir --digest) and the NestOptions they make, with one ThreadTeam (daemon/cli/thread_team.hpp)
 // started once for all runs: a sweep's tasks do not start threads.
 #include <cstdint>
 #include <filesystem>
@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "daemon/cli/thread_team.hpp"
+#include "engine/nest/layout.hpp"
 #include "engine/nest/nest_options.hpp"
 
 namespace lastcut::bench {
@@ -25,6 +26,7 @@ struct BenchOptions {
   long rounds = 0;                      // > 0: this many improvement rounds instead of the time limits
   long sweeps = 0;                      // > 0 (strips): this many separation steps instead of the time limits
   std::filesystem::path svg_dir;        // when set: a picture of every layout
+  int digest = 0;                       // 1: a digest of every layout's placements (a refactor must keep them)
   double rotation_step_deg = NestOptions{}.free_rotation_step_deg;  // poses of freely rotating pieces
 
   // Registers the shared options on the benchmark's command line (CLI11: --help, unknown options refused).
@@ -38,6 +40,11 @@ struct BenchOptions {
  private:
   std::unique_ptr<ThreadTeam> team_;
 };
+
+// FNV-1a (64 bit, hex) over every placement's item, hide, copy, mirror flag and the exact bits of its
+// rotation and position: two layouts with the same digest place every piece identically, so a
+// refactor that must not change results is checked exactly, not by the summary figures.
+std::string layout_digest(const Layout& layout);
 
 // "a,b,c" -> {"a", "b", "c"}.
 std::vector<std::string> split_list(const std::string& text);

@@ -5,10 +5,12 @@
 // hides used, the area lower bound (the fewest hides, largest usable area first, whose usable area
 // covers the pieces' area), utilisation of the used hides' usable area (outline minus holes).
 // Usage: hide_bench [--data DIR] [--limits 10,60] [--threads 2] [--workers 4] [--seed 1]
-//                   [--only NAME[,NAME...]] [--methods search,greedy] [--rounds N] [--svg-dir DIR] [--trace 1]
+//                   [--only NAME[,NAME...]] [--methods search,greedy] [--rounds N] [--svg-dir DIR] [--trace 1] [--digest 1]
 //   --trace 1: every improvement on stderr (seconds since start, hides used, utilisation) and, per
 //              final layout, each used hide's fill and what the least-filled one would need (by area)
 //   --rounds N: N improvement rounds instead of the time limits (a fixed budget: compares two versions on the same work)
+//   --digest 1: after each table, a digest of every layout's placements (with --rounds: identical digests
+//               before and after a change = the change kept every layout)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -109,6 +111,7 @@ int main(int argc, char** argv) {
     std::vector<int> hides_sum(methods.size(), 0);
     std::vector<double> utilisation_sum(methods.size(), 0);
     int bound_sum = 0, count = 0;
+    std::vector<std::string> digests;  // below the table, not inside it
     for (const auto& instance : instances) {
       if (!selected(instance)) continue;
       int demanded = 0;
@@ -135,6 +138,7 @@ int main(int argc, char** argv) {
         utilisation_sum[m] += layout.utilisation;
         if (!svg_dir.empty())
           lastcut::write_layout_svg(svg_dir / ("hides-" + instance.name + "-" + methods[m] + ".svg"), layout, instance);
+        if (bench.digest) digests.push_back("digest " + instance.name + " " + methods[m] + ": " + lastcut::bench::layout_digest(layout));
         std::printf("| %s | %s | %zu / %d | %d | %d | %.2f | %.1f | %s |\n", instance.name.c_str(), methods[m].c_str(),
                     layout.placements.size(), demanded, lastcut::used_bin_count(layout), bound, 100 * layout.utilisation, seconds,
                     problems.empty() ? "yes" : problems.front().c_str());
@@ -144,6 +148,8 @@ int main(int argc, char** argv) {
     for (size_t m = 0; m < methods.size(); ++m)
       std::printf("| **all** | %s | | %d | %d | %.2f (mean) | | |\n", methods[m].c_str(), hides_sum[m], bound_sum,
                   count ? 100 * utilisation_sum[m] / count : 0.0);
+    if (!digests.empty()) std::printf("\n");
+    for (const std::string& line : digests) std::printf("%s\n", line.c_str());
   }
   std::printf("\ninvalid layouts: %d\n", invalid);
   return invalid == 0 ? 0 : 1;

@@ -11,6 +11,8 @@
 //                                   proportional to the work, so two variants of the search compare
 //                                   on equal CPU under any machine load)
 //                   [--trace 1]    (every improvement on stderr: seconds since start, strip length)
+//                   [--digest 1]   (below each table, a digest of every layout's placements: with --sweeps,
+//                                   identical digests before and after a change = the change kept every layout)
 //        nest_bench --limits 20 --svg-dir DIR --instance FILE   (options before --instance)
 #include <algorithm>
 #include <chrono>
@@ -80,6 +82,7 @@ int main(int argc, char** argv) {
     std::printf("| instance | pieces | utilisation %% | strip length | best-known %% | gap (points) | valid |\n|---|---|---|---|---|---|---|\n");
     double gap_sum = 0, worst_gap = 0;
     int count = 0;
+    std::vector<std::string> digests;  // below the table, not inside it
     for (const auto& file : json_files(bench.data / "esicup")) {
       if (!selected(file)) continue;
       const lastcut::NestInstance instance = lastcut::read_nest_instance(file);
@@ -104,12 +107,16 @@ int main(int argc, char** argv) {
       const double best = kBestKnown.count(file.stem()) ? kBestKnown.at(file.stem()) : 0;
       const double gap = best - 100 * layout.utilisation;
       gap_sum += gap, worst_gap = std::max(worst_gap, gap), ++count;
+      if (bench.digest) digests.push_back("digest " + instance.name + ": " + lastcut::bench::layout_digest(layout));
       std::printf("| %s | %zu | %.2f | %.3f | %.2f | %.2f | %s |\n", instance.name.c_str(), layout.placements.size(),
                   100 * layout.utilisation, layout.strip_length.value_or(0), best, gap,
                   problems.empty() ? "yes" : problems.front().c_str());
       std::fflush(stdout);
     }
     if (count) std::printf("| **average** | | | | | %.2f (worst %.2f) | |\n", gap_sum / count, worst_gap);
+    if (!digests.empty()) std::printf("\n");
+    for (const std::string& line : digests) std::printf("%s\n", line.c_str());
+    digests.clear();
 
     std::printf("\n## leather hides, %g s, %d threads, seed %llu\n\n", limit, bench.threads, static_cast<unsigned long long>(bench.seed));
     std::printf("| instance | pieces placed / demanded | hides used / available | utilisation of used hides %% | valid |\n|---|---|---|---|---|\n");
@@ -124,11 +131,14 @@ int main(int argc, char** argv) {
       int demanded = 0, available = 0;
       for (const auto& item : instance.items) demanded += item.demand;
       for (const auto& bin : instance.bins) available += bin.stock;
+      if (bench.digest) digests.push_back("digest " + instance.name + ": " + lastcut::bench::layout_digest(layout));
       std::printf("| %s | %zu / %d | %d / %d | %.2f | %s |\n", instance.name.c_str(), layout.placements.size(), demanded,
                   lastcut::used_bin_count(layout), available, 100 * layout.utilisation,
                   problems.empty() ? "yes" : problems.front().c_str());
       std::fflush(stdout);
     }
+    if (!digests.empty()) std::printf("\n");
+    for (const std::string& line : digests) std::printf("%s\n", line.c_str());
   }
   std::printf("\ninvalid layouts: %d\n", invalid);
   return invalid == 0 ? 0 : 1;
