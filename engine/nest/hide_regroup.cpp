@@ -5,7 +5,6 @@
 #include <map>
 #include <utility>
 
-#include "engine/nest/hide_search.hpp"
 #include "engine/nest/known_failures.hpp"
 
 namespace lastcut::nest_detail {
@@ -27,9 +26,10 @@ struct Packing {
 class Regroup {
  public:
   Regroup(const NestInstance& instance, const HidePieces& pieces, const NestOptions& options,
-          const std::vector<int>& target_slots, const Deadline& deadline, const RegroupBudget& budget, std::uint64_t seed)
+          const std::vector<int>& target_slots, const Deadline& deadline, const RegroupBudget& budget, std::uint64_t seed,
+          const HidePackingOracle& oracle)
       : instance_(instance), pieces_(pieces), options_(options), slots_(target_slots), deadline_(deadline),
-        budget_(budget), random_(seed), seed_(seed) {}
+        budget_(budget), random_(seed), seed_(seed), oracle_(oracle) {}
 
   std::optional<HidePlacement> run(const std::vector<int>& units);
 
@@ -60,6 +60,7 @@ class Regroup {
   const RegroupBudget budget_;
   Random random_;
   std::uint64_t seed_;
+  const HidePackingOracle& oracle_;  // one hide's packing: the hide search on it alone
   std::vector<std::vector<int>> on_;  // per target hide: its units
   std::map<std::pair<size_t, std::vector<int>>, Packing> cache_;
   KnownFailures failures_;  // per target hide, the unit sets the oracle could not pack there
@@ -113,7 +114,7 @@ const Packing& Regroup::pack(size_t target, std::vector<int> units, int effort) 
   packing.effort = effort;
   const HidePieces one_pieces = prepare_hide_pieces(one, alone);
   if (one_pieces.unplaced.empty() && one_pieces.item_of.size() == parent_piece.size()) {
-    const HidePlacement found = search_hide_placement(one, one_pieces, alone);
+    const HidePlacement found = oracle_(one, one_pieces, alone);
     packing.complete = true;
     for (size_t p = 0; p < parent_piece.size(); ++p) {
       const int parent = parent_piece[p];
@@ -221,12 +222,12 @@ std::optional<HidePlacement> Regroup::run(const std::vector<int>& units) {
 std::optional<HidePlacement> regroup_onto(const NestInstance& instance, const HidePieces& pieces,
                                           const NestOptions& options, const std::vector<int>& placed_slot_of,
                                           const std::vector<int>& target_slots, const Deadline& deadline,
-                                          const RegroupBudget& budget, std::uint64_t seed) {
+                                          const RegroupBudget& budget, std::uint64_t seed, const HidePackingOracle& oracle) {
   if (target_slots.empty()) return std::nullopt;
   std::vector<int> units;
   for (size_t u = 0; u < pieces.units.size(); ++u)
     if (placed_slot_of[static_cast<size_t>(pieces.units[u].front())] >= 0) units.push_back(static_cast<int>(u));
-  return Regroup(instance, pieces, options, target_slots, deadline, budget, seed).run(units);
+  return Regroup(instance, pieces, options, target_slots, deadline, budget, seed, oracle).run(units);
 }
 
 }  // namespace lastcut::nest_detail

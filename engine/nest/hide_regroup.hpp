@@ -23,6 +23,7 @@
 // could not hold. Deterministic for the seed when the oracle runs on a
 // round budget (NestOptions::iteration_limit set); otherwise its time budget decides its answers.
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -37,11 +38,15 @@ struct RegroupBudget {
   long most_oracle_calls = 400;
 };
 
+// The best placement of an instance with one hide (one bin, stock 1), `pieces` prepared from it: the
+// hide search on that hide alone, handed in by the search (this file does not call it by name).
+using HidePackingOracle = std::function<HidePlacement(const NestInstance&, const HidePieces&, const NestOptions&)>;
+
 // Every unit placed in `placed` (units left over stay so) onto `target_slots`, each hide packed by
-// the hide search alone; nullopt when no grouping was found before `deadline` or the call budget.
+// `oracle` alone; nullopt when no grouping was found before `deadline` or the call budget.
 std::optional<HidePlacement> regroup_onto(const NestInstance& instance, const HidePieces& pieces,
                                           const NestOptions& options, const std::vector<int>& placed_slot_of,
                                           const std::vector<int>& target_slots, const Deadline& deadline,
-                                          const RegroupBudget& budget, std::uint64_t seed);
+                                          const RegroupBudget& budget, std::uint64_t seed, const HidePackingOracle& oracle);
 
 }  // namespace lastcut::nest_detail

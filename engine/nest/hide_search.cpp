@@ -324,7 +324,7 @@ std::optional<HideSearch::State> HideSearch::regroup(const State& s, long turn) 
   if (units > kRegroupUnitsPerHide * static_cast<long>(targets.size())) return std::nullopt;
   const Deadline slice(std::min(deadline_.seconds_left(), std::max(kRegroupMin_s, 0.9 * deadline_.seconds_left())));
   auto found = regroup_onto(instance_, pieces_, options_, s.slot_of, targets, slice, RegroupBudget{},
-                            stream_seed(options_.seed, static_cast<std::uint64_t>(turn), 29));
+                            stream_seed(options_.seed, static_cast<std::uint64_t>(turn), 29), search_hide_placement);
   if (!found) return std::nullopt;
   return State{std::move(found->slot_of), std::move(found->state)};
 }

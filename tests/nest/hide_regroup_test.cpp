@@ -7,6 +7,7 @@
 #include <set>
 
 #include "engine/nest/hide_regroup.hpp"
+#include "engine/nest/hide_search.hpp"
 #include "engine/nest/layout_check.hpp"
 #include "hide_assignment.hpp"
 #include "nest_test_instances.hpp"
@@ -41,7 +42,7 @@ TEST(HideRegroup, FindsTheOnlyGroupingThatPacksWhereWorstFitFails) {
   // Worst fit by fill, largest first: strip, strip, then the big square beside a strip (92 % by area).
   const std::vector<int> placed(4, 0);
   const Deadline deadline(120);
-  const auto found = regroup_onto(instance, pieces, options, placed, {0, 1}, deadline, RegroupBudget{}, 7);
+  const auto found = regroup_onto(instance, pieces, options, placed, {0, 1}, deadline, RegroupBudget{}, 7, search_hide_placement);
   ASSERT_TRUE(found.has_value());
   EXPECT_TRUE(check_layout(hide_layout(instance, pieces, found->slot_of, found->state, {}), instance).empty());
   std::set<int> strips, squares;
@@ -62,9 +63,9 @@ TEST(HideRegroup, ReportsNoneWhenNoGroupingPacks) {
   const NestOptions options = round_budget();
   const HidePieces pieces = prepare_hide_pieces(instance, options);
   const Deadline deadline(120);
-  EXPECT_FALSE(regroup_onto(instance, pieces, options, std::vector<int>(3, 0), {0}, deadline, RegroupBudget{}, 7));
+  EXPECT_FALSE(regroup_onto(instance, pieces, options, std::vector<int>(3, 0), {0}, deadline, RegroupBudget{}, 7, search_hide_placement));
   // Units left over in the layout given stay left over: two squares onto two hides is a grouping.
-  const auto two = regroup_onto(instance, pieces, options, {0, 1, -1}, {0, 1}, deadline, RegroupBudget{}, 7);
+  const auto two = regroup_onto(instance, pieces, options, {0, 1, -1}, {0, 1}, deadline, RegroupBudget{}, 7, search_hide_placement);
   ASSERT_TRUE(two.has_value());
   EXPECT_EQ(two->slot_of[2], -1);
   EXPECT_NE(two->slot_of[0], two->slot_of[1]);
