@@ -11,6 +11,9 @@ namespace {
 
 constexpr int kSamplesPerOrientation = 12;
 constexpr int kMinSamples = 120;
+// Largest factor of a unit's area in a perturbed order, minus one: enough that units up to 1.6 times
+// apart in area change places, so a restart reaches other layouts; the largest still tend to go first.
+constexpr double kOrderNoise = 0.6;
 
 int samples_for(const PreparedItem& item) {
   return std::max(kMinSamples, kSamplesPerOrientation * static_cast<int>(item.orientations.size()));
@@ -32,6 +35,16 @@ std::vector<int> unit_order_by_value(const HidePieces& pieces) {
     return pieces.unit_area_mm2[a] > pieces.unit_area_mm2[b];
   });
   return order;
+}
+
+std::vector<int> perturbed_order(const HidePieces& pieces, std::vector<int> units, Random& random, bool priorities_first) {
+  std::vector<double> key(pieces.units.size(), 0);
+  for (int u : units) key[u] = pieces.unit_area_mm2[u] * (1 + kOrderNoise * random.uniform());
+  std::stable_sort(units.begin(), units.end(), [&](int a, int b) {
+    if (priorities_first && pieces.unit_priority[a] != pieces.unit_priority[b]) return pieces.unit_priority[a] > pieces.unit_priority[b];
+    return key[a] > key[b];
+  });
+  return units;
 }
 
 HideAssignment greedy_hides(const NestInstance& instance, const HidePieces& pieces, const std::vector<int>& unit_order,

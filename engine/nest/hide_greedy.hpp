@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "engine/nest/hide_pieces.hpp"
+#include "engine/nest/nest_random.hpp"
 
 namespace lastcut::nest_detail {
 
@@ -27,5 +28,10 @@ HideAssignment greedy_hides(const NestInstance& instance, const HidePieces& piec
 
 // Units by priority (highest first), then area (largest first).
 std::vector<int> unit_order_by_value(const HidePieces& pieces);
+
+// `units` in a perturbed largest-first order (the iterated greedy's restart, Ruiz & Stuetzle 2007):
+// each unit's area times a random factor in [1, 1.6), the factors drawn from `random` in the order of
+// `units`; with priorities_first, a higher priority first whatever the areas.
+std::vector<int> perturbed_order(const HidePieces& pieces, std::vector<int> units, Random& random, bool priorities_first);
 
 }  // namespace lastcut::nest_detail

@@ -1,6 +1,7 @@
 #include "engine/nest/hide_nester.hpp"
 
 #include <algorithm>
+#include <numeric>
 
 #include "engine/nest/hide_greedy.hpp"
 #include "engine/nest/hide_search.hpp"
@@ -17,6 +18,8 @@ Layout nest_hides_greedy(const NestInstance& instance, const HidePieces& pieces,
   HideAssignment best = greedy_hides(instance, pieces, order, stream_seed(options.seed, 0, 0));
   if (options.on_improvement) options.on_improvement(finish_hides(instance, pieces, best.slot_of, best.state, false, options.seed));
 
+  std::vector<int> units(pieces.units.size());
+  std::iota(units.begin(), units.end(), 0);
   const int threads = std::max(1, options.threads);
   std::vector<HideAssignment> results(threads);
   for (long round = 1; !pieces.units.empty() && (!options.iteration_limit || round <= *options.iteration_limit); ++round) {
@@ -25,13 +28,7 @@ Layout nest_hides_greedy(const NestInstance& instance, const HidePieces& pieces,
     for (int w = 0; w < threads; ++w) {
       tasks.push_back([&, w, round] {
         Random random(stream_seed(options.seed, round, w));
-        std::vector<double> key(pieces.units.size());
-        for (size_t u = 0; u < pieces.units.size(); ++u) key[u] = pieces.unit_area_mm2[u] * (1 + 0.6 * random.uniform());
-        std::vector<int> perturbed = order;
-        std::stable_sort(perturbed.begin(), perturbed.end(), [&](int a, int b) {
-          if (pieces.unit_priority[a] != pieces.unit_priority[b]) return pieces.unit_priority[a] > pieces.unit_priority[b];
-          return key[a] > key[b];
-        });
+        const std::vector<int> perturbed = perturbed_order(pieces, units, random, true);
         results[w] = greedy_hides(instance, pieces, perturbed, random.next());
       });
     }

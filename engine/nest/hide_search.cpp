@@ -243,9 +243,7 @@ bool HideSearch::repack(State& s, int target, long k, std::uint64_t seed) const 
   std::vector<int> units = units_on(s, partner);
   for (int u : units_on(s, target)) units.push_back(u);
   Random random(stream_seed(seed, 0, 13));
-  std::vector<double> key(pieces_.units.size(), 0);
-  for (int u : units) key[u] = pieces_.unit_area_mm2[u] * (1 + 0.6 * random.uniform());
-  std::stable_sort(units.begin(), units.end(), [&](int a, int b) { return key[a] > key[b]; });
+  units = perturbed_order(pieces_, units, random, false);
   if (!repack_hides(instance_, pieces_, s.slot_of, s.state, {partner, target}, units, seed)) return false;
   return concentration(pieces_, s.slot_of) > before * (1 + 1e-9);
 }
@@ -336,13 +334,9 @@ bool HideSearch::any_left_over(const State& s) const {
 HideSearch::State HideSearch::restart(long restarts) const {
   // The greedy in a perturbed largest-first order (priorities first), as the iterated greedy does.
   Random random(stream_seed(options_.seed, static_cast<std::uint64_t>(restarts), 17));
-  std::vector<double> key(pieces_.units.size());
-  for (size_t u = 0; u < pieces_.units.size(); ++u) key[u] = pieces_.unit_area_mm2[u] * (1 + 0.6 * random.uniform());
-  std::vector<int> order = unit_order_by_value(pieces_);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    if (pieces_.unit_priority[a] != pieces_.unit_priority[b]) return pieces_.unit_priority[a] > pieces_.unit_priority[b];
-    return key[a] > key[b];
-  });
+  std::vector<int> units(pieces_.units.size());
+  std::iota(units.begin(), units.end(), 0);
+  const std::vector<int> order = perturbed_order(pieces_, units, random, true);
   const HideAssignment start = greedy_hides(instance_, pieces_, order, random.next());
   return {start.slot_of, start.state};
 }
