@@ -8,13 +8,16 @@
 // of Baldacci, Boschetti, Ganovelli & Maniezzo (Discrete Applied Mathematics 163, 2014).
 //
 // Start: the greedy of engine/nest/hide_greedy (units by priority, then area; hides largest usable
-// area first). Then rounds, each one move that is kept only when it ends feasible:
+// area first). Then rounds, each one move that is kept only when it ends feasible. The state is
+// engine/nest/hide_search_state (its better_than is the objective), each move is a file of its own
+// (engine/nest/hide_moves.hpp lists them), which move runs on which attempt is the table of
+// engine/nest/hide_schedule, and the tuning constants are engine/nest/hide_search_tuning.hpp:
 // - insert: a unit left over (highest value first) goes onto one of the two used hides with the most
 //   free area, else one of the first two unopened hides (opening order): at a free sampled spot if there is one,
 //   otherwise dropped in and the hide separated. A unit that fails is not tried again until a hide
 //   has been closed (knapsack form).
 // - move: one unit of a little-filled hide (the least filled first, the smaller hide on a tie; after
-//   4 failed attempts the next hide) goes, by the same insertion, onto a hide at least as full.
+//   per_target failed attempts the next hide) goes, by the same insertion, onto a hide at least as full.
 // - chain (every other attempt, at every level): an ejection chain (engine/nest/hide_eject) empties a
 //   used hide as a whole, the used hides in turn, least filled first, into the others by separation,
 //   ejecting what cannot be separated; on every other round an unused smaller hide joins the
@@ -40,11 +43,13 @@
 // leather, then the most concentrated). The search runs until the budget (or, at the area bound, where
 // only shrinks and replacing chains are left, until 40 of them in a row failed; with pieces still left
 // over, as on one hide in the knapsack form, such a failed run starts a new trajectory instead).
-// Regrouping: once the best layout has kept its number of hides for kRegroupAfterRounds rounds, and
-// the first hides of the opening order, one fewer than it uses, could hold its pieces at 74 % by area
-// with at most 10 units a hide on average, the layout is regrouped onto those hides (engine/nest/hide_regroup: which units go on which hide
-// searched as bin packing, each hide's packing asked of this search on that hide alone), within 90 %
-// of the time left; once per number of hides. Found, it becomes the trajectory and the best layout.
+// Regrouping (engine/nest/hide_move_regroup): once the best layout has kept its number of hides for
+// regroup_after_rounds rounds, and the first hides of the opening order, one fewer than it uses, could
+// hold its pieces at regroup_fill by area with at most regroup_units_per_hide units a hide on average,
+// the layout is regrouped onto those hides (engine/nest/hide_regroup: which units go on which hide
+// searched as bin packing, each hide's packing asked of this search on that hide alone, handed to it
+// as a callback), within regroup_time_share of the time left; once per number of hides. Found, it
+// becomes the trajectory and the best layout.
 // The moves above carry one unit at a time between packed hides and stall where the pieces are large
 // next to the hides (Baldacci Test6 stayed on 11 hides whatever the seed; regrouped, 10); with many
 // small units a hide (shoe batches) the moves do well and each per-hide search is long.
