@@ -39,8 +39,8 @@
 // at a random pose instead of the hide's centre; a success resets it. Restarts: the outcome hangs on
 // a few lucky moves early on, so a trajectory that still uses more hides than the best one after a
 // failed cycle (one as good as the best: after three) is dropped for a new one from the greedy in a
-// perturbed order; the best of all trajectories is returned (the fewest hides, then the least
-// leather, then the most concentrated). The search runs until the budget (or, at the area bound, where
+// perturbed order; the best of all trajectories is returned (the most placed area, then the fewest
+// hides, then the least leather, then the most concentrated: HideSearchState::better_than). The search runs until the budget (or, at the area bound, where
 // only shrinks and replacing chains are left, until 40 of them in a row failed; with pieces still left
 // over, as on one hide in the knapsack form, such a failed run starts a new trajectory instead).
 // Regrouping (engine/nest/hide_move_regroup): once the best layout has kept its number of hides for
