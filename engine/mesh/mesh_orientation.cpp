@@ -59,6 +59,7 @@ void keep_largest_component(TriMesh& mesh, MeshTopology& topology, double debris
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) removed[static_cast<size_t>(f)] = piece[static_cast<size_t>(f)] != ranked[0].second;
   mesh_detail::drop_faces(mesh, removed);
   mesh_detail::drop_unreferenced_vertices(mesh);
+  // Dropping renumbers faces and vertices: the topology of the mesh as it now is.
   topology = build_mesh_topology(mesh.F, mesh.V.rows());
 }
 
@@ -98,6 +99,7 @@ int orient_outward(TriMesh& mesh, MeshTopology& topology, IntakeReport& report) 
     flipped = static_cast<int>(mesh.F.rows()) - flipped;
     turned = true;
   }
+  // A turned face lists its corners the other way: its half-edges, and who is across them, change.
   if (turned) topology = build_mesh_topology(mesh.F, mesh.V.rows());
   return flipped;
 }

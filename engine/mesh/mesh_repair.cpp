@@ -144,15 +144,19 @@ int flag_faces_in_extra_fans(const TriMesh& mesh, const MeshTopology& topology, 
 int remove_non_manifold_faces(TriMesh& mesh, MeshTopology& topology) {
   std::vector<char> removed(static_cast<size_t>(mesh.F.rows()), 0);
   // Removing faces can leave a new bow tie behind; a few rounds settle every case seen in scans.
+  // The topology leaves the flagged faces out, so it is rebuilt after each step that flagged some.
   for (int round = 0; round < 4; ++round) {
     topology = build_mesh_topology(mesh.F, mesh.V.rows(), removed);
     const int crowded = flag_faces_on_crowded_edges(mesh, topology, removed);
     if (crowded > 0) topology = build_mesh_topology(mesh.F, mesh.V.rows(), removed);
     const int fans = flag_faces_in_extra_fans(mesh, topology, removed);
-    if (crowded + fans == 0) break;
+    // No new fan: another round would rebuild this same topology and flag nothing (every face of a
+    // crowded edge is flagged, and leaving faces out never crowds an edge).
+    if (fans == 0) break;
   }
   const int dropped = drop_faces(mesh, removed);
   mesh_detail::drop_unreferenced_vertices(mesh);
+  // Dropping renumbers faces and vertices: the topology of the mesh as it now is.
   if (dropped > 0) topology = build_mesh_topology(mesh.F, mesh.V.rows());
   return dropped;
 }
