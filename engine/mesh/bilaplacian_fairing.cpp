@@ -13,8 +13,15 @@ namespace lastcut {
 void fair_vertices_bilaplacian(TriMesh& mesh, const std::vector<int>& free,
                                const std::vector<Eigen::Vector3d>& directions) {
   if (free.empty()) return;
+  fair_vertices_bilaplacian(mesh, build_mesh_topology(mesh.F, mesh.V.rows()), free, directions);
+}
+
+void fair_vertices_bilaplacian(TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& free,
+                               const std::vector<Eigen::Vector3d>& directions) {
+  if (free.empty()) return;
   const Eigen::Index vertex_count = mesh.V.rows();
-  const MeshTopology topology = build_mesh_topology(mesh.F, vertex_count);
+  if (topology.vertex_count() != vertex_count || topology.face_count() != mesh.F.rows())
+    throw EngineError("hole fairing: the mesh topology was built for another mesh");
 
   // The scale-dependent umbrella operator as a sparse matrix: U = A - I with A the neighbours' average
   // weighted by inverse edge length (Desbrun et al. 1999), so that denser sampling on one side of a

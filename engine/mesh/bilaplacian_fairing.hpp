@@ -10,6 +10,7 @@
 // pulled towards its denser side.
 #include <vector>
 
+#include "engine/core/mesh_topology.hpp"
 #include "engine/core/tri_mesh.hpp"
 
 namespace lastcut {
@@ -21,6 +22,11 @@ namespace lastcut {
 // flat without folds stays without folds, only its heights are faired).
 // Throws EngineError when the system is singular (a free region with no fixed vertex around it).
 void fair_vertices_bilaplacian(TriMesh& mesh, const std::vector<int>& free,
+                               const std::vector<Eigen::Vector3d>& directions = {});
+
+// The same with the mesh's topology already built (build_mesh_topology(mesh.F, mesh.V.rows())). Only
+// vertices move, so it stays the mesh's topology. Throws EngineError when it was built for another mesh.
+void fair_vertices_bilaplacian(TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& free,
                                const std::vector<Eigen::Vector3d>& directions = {});
 
 }  // namespace lastcut

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <vector>
 
+#include "engine/core/engine_error.hpp"
 #include "engine/core/mesh_topology.hpp"
 #include "engine/mesh/bilaplacian_fairing.hpp"
 
@@ -159,12 +160,11 @@ void drop_faces(TriMesh& mesh, const std::vector<char>& remove, std::vector<int>
 // covers without a fold; the patch then replaces those faces along the surface. Only loops of the
 // holes to close are touched (hole_of_vertex >= 0 on them); the vertices of every removed face join
 // that hole, so a widened hole is still known as the scan's hole it grew from. Returns the number of
-// faces removed.
-int trim_holes_to_star_shapes(TriMesh& mesh, std::vector<int>& hole_of_vertex) {
+// faces removed. topology: mesh's, rebuilt after each round that drops faces so that it stays so.
+int trim_holes_to_star_shapes(TriMesh& mesh, MeshTopology& topology, std::vector<int>& hole_of_vertex) {
   constexpr int kRounds = 30;
   int removed_total = 0;
   for (int round = 0; round < kRounds; ++round) {
-    const MeshTopology topology = build_mesh_topology(mesh.F, mesh.V.rows());
     std::vector<char> remove(static_cast<size_t>(mesh.F.rows()), 0);
     std::vector<int> hole_of_face(static_cast<size_t>(mesh.F.rows()), -1);
     int removed = 0;
@@ -215,6 +215,8 @@ int trim_holes_to_star_shapes(TriMesh& mesh, std::vector<int>& hole_of_vertex) {
       }
     }
     drop_faces(mesh, remove, hole_of_vertex);
+    // Dropping renumbers faces and vertices: the next round and the patches read the trimmed mesh.
+    topology = build_mesh_topology(mesh.F, mesh.V.rows());
   }
   return removed_total;
 }
@@ -322,11 +324,18 @@ double loop_across_mm(const Eigen::MatrixXd& V, const std::vector<int>& loop) {
 }
 
 std::vector<HoleRepair> fill_holes(TriMesh& mesh, double max_across_mm) {
+  MeshTopology topology = build_mesh_topology(mesh.F, mesh.V.rows());
+  return fill_holes(mesh, topology, max_across_mm);
+}
+
+std::vector<HoleRepair> fill_holes(TriMesh& mesh, MeshTopology& topology, double max_across_mm) {
+  if (topology.vertex_count() != mesh.V.rows() || topology.face_count() != mesh.F.rows())
+    throw EngineError("hole filling: the mesh topology was built for another mesh");
   // The holes to close, and their sizes as the scan had them (trimming widens them a little).
   constexpr std::size_t kLargestLoopChecked = 4000;  // a loop this long is an opening, not a scan hole
   std::vector<HoleRepair> repairs;
   std::vector<int> hole_of_vertex(static_cast<size_t>(mesh.V.rows()), -1);
-  for (const std::vector<int>& loop : build_mesh_topology(mesh.F, mesh.V.rows()).boundary_loops) {
+  for (const std::vector<int>& loop : topology.boundary_loops) {
     if (loop.size() < 3 || loop.size() > kLargestLoopChecked) continue;
     const double across_mm = loop_across_mm(mesh.V, loop);
     if (across_mm > max_across_mm) continue;
@@ -334,9 +343,9 @@ std::vector<HoleRepair> fill_holes(TriMesh& mesh, double max_across_mm) {
     repairs.push_back({across_mm, 0, false});
   }
   if (repairs.empty()) return {};
-  trim_holes_to_star_shapes(mesh, hole_of_vertex);
+  trim_holes_to_star_shapes(mesh, topology, hole_of_vertex);
   // The loops run along the faces' own edges; at a pinch a loop takes whichever boundary edge comes first.
-  const std::vector<std::vector<int>> loops = build_mesh_topology(mesh.F, mesh.V.rows()).boundary_loops;
+  const std::vector<std::vector<int>>& loops = topology.boundary_loops;  // read before the patches change it
   std::vector<Eigen::RowVector3d> new_vertices;
   std::vector<Eigen::RowVector3i> new_faces;
   std::vector<Eigen::Vector3d> new_normals;  // per new vertex: its hole's plane normal (it moves only along it)
@@ -360,7 +369,10 @@ std::vector<HoleRepair> fill_holes(TriMesh& mesh, double max_across_mm) {
   for (std::size_t i = 0; i < new_faces.size(); ++i) mesh.F.row(old_f + static_cast<Eigen::Index>(i)) = new_faces[i];
   std::vector<int> patch_vertices(new_vertices.size());
   for (std::size_t i = 0; i < new_vertices.size(); ++i) patch_vertices[i] = static_cast<int>(old_v) + static_cast<int>(i);
-  fair_vertices_bilaplacian(mesh, patch_vertices, new_normals);
+  // The patches add faces: the closed mesh's topology, for the fairing (which moves vertices only)
+  // and for the caller.
+  if (!new_faces.empty()) topology = build_mesh_topology(mesh.F, mesh.V.rows());
+  fair_vertices_bilaplacian(mesh, topology, patch_vertices, new_normals);
   return repairs;
 }
 

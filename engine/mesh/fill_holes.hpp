@@ -29,6 +29,7 @@
 // faired the same way, and reported (HoleRepair::fan).
 #include <vector>
 
+#include "engine/core/mesh_topology.hpp"
 #include "engine/core/tri_mesh.hpp"
 
 namespace lastcut {
@@ -47,7 +48,13 @@ struct HoleRepair {
 // mesh: V #V x 3 mm, F #F x 3, consistently oriented. Closes every boundary loop up to max_across_mm
 // across; replaces the faces at those holes' ragged edges and appends the patches (vertex and face
 // indices change). Returns one entry per closed hole, in the order of the scan's boundary loops.
-// Throws EngineError if the fairing system cannot be solved.
+// topology: mesh's (build_mesh_topology(mesh.F, mesh.V.rows())); on return the topology of the mesh
+// with its holes closed, for the steps after it. It is rebuilt once per change of the faces: after
+// each trimming round that removes some, and once when the patches are added.
+// Throws EngineError if the fairing system cannot be solved or the topology is another mesh's.
+std::vector<HoleRepair> fill_holes(TriMesh& mesh, MeshTopology& topology, double max_across_mm);
+
+// The same, building the mesh's topology itself.
 std::vector<HoleRepair> fill_holes(TriMesh& mesh, double max_across_mm);
 
 }  // namespace lastcut

@@ -13,7 +13,7 @@
 namespace lastcut {
 
 struct OrientedLast {
-  TriMesh mesh;                       // the scan in the canonical frame, mm
+  TriMesh mesh;                       // the scan in the canonical frame, mm; F is the scan's (so is its topology)
   Eigen::Affine3d scan_to_canonical;  // rigid (rotation det +1 and translation), mm
   FootSide side;                      // meaningless when side_unnamed (then Left, to orient the split plane)
   bool side_unnamed = false;          // a symmetric last and no side named: its halves get neutral names

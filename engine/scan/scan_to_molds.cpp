@@ -148,7 +148,8 @@ ScanResult scan_to_molds(const std::filesystem::path& scan, const ScanOptions& o
     result.notes.insert(result.notes.end(), oriented.notes.begin(), oriented.notes.end());
     result.warnings = oriented.warnings;
     clock.lap("orient");
-    Segmentation halves = segment_last(oriented, options.segment_options);
+    // Orienting moves the vertices only: the intake's topology is the oriented last's.
+    Segmentation halves = segment_last(oriented, intake.topology, options.segment_options);
     result.notes.insert(result.notes.end(), halves.notes.begin(), halves.notes.end());
     result.repairs = halves.repairs;
     for (const HoleRepair& repair : halves.repairs)

@@ -113,6 +113,10 @@ bool meets_at_sharp_rim(const TriMesh& mesh, const MeshTopology& topology, const
 }  // namespace
 
 BandCut cut_band(const OrientedLast& last, const SegmentOptions& options) {
+  return cut_band(last, build_mesh_topology(last.mesh.F, last.mesh.V.rows()), options);
+}
+
+BandCut cut_band(const OrientedLast& last, const MeshTopology& last_topology, const SegmentOptions& options) {
   if (!(options.sole_angle_rad < 0.0 && options.top_angle_rad > 0.0))
     throw EngineError("segmentation angles must be negative for the sole and positive for the top");
   if (options.smoothing_passes < 0) throw EngineError("segmentation smoothing passes must not be negative");
@@ -124,7 +128,8 @@ BandCut cut_band(const OrientedLast& last, const SegmentOptions& options) {
   result.snap_fraction = kSnapFraction;
   TriMesh& mesh = result.mesh;
   mesh = last.mesh;
-  result.repairs = fill_holes(mesh, options.max_hole_fill_diameter_mm);
+  MeshTopology topology = last_topology;  // hole filling changes it along with the mesh
+  result.repairs = fill_holes(mesh, topology, options.max_hole_fill_diameter_mm);
   if (!result.repairs.empty()) {
     std::string sizes;
     for (const HoleRepair& repair : result.repairs)
@@ -135,7 +140,6 @@ BandCut cut_band(const OrientedLast& last, const SegmentOptions& options) {
   }
 
   // Step 2: sole and top regions, and their contours (Dijkstra, then eq. 22).
-  const MeshTopology topology = build_mesh_topology(mesh.F, mesh.V.rows());
   const Eigen::VectorXd areas = triangle_areas(mesh);
   const double edge_mm = mean_edge_length_mm(mesh);
   const Eigen::VectorXd elevation =
@@ -194,7 +198,7 @@ BandCut cut_band(const OrientedLast& last, const SegmentOptions& options) {
   for (int column : {kSoleField, kTopField}) cut_along_zero_level(mesh, fields, column, kSnapFraction);
 
   // Step 3: the split plane from those smooth curves (not from the staircase of mesh edges, whose
-  // shape follows the triangulation).
+  // shape follows the triangulation). The two cuts split faces and add vertices: the cut mesh's topology.
   const MeshTopology level_topology = build_mesh_topology(mesh.F, mesh.V.rows());
   auto level_loop = [&](int column) {
     std::vector<char> region(static_cast<std::size_t>(mesh.F.rows()));
@@ -238,6 +242,7 @@ Segmentation split_band(const BandCut& band, const SplitPlane& plane) {
                                           : mean(kPlaneField) > 0.0 ? kMedial
                                                                      : kLateral;
   }
+  // The plane cut split faces and added vertices: the topology of the mesh the halves come from.
   const MeshTopology cut_topology = build_mesh_topology(mesh.F, mesh.V.rows());
   // An unnamed symmetric last is split as a left one (medial -Y), named by side of Y instead.
   result.medial = extract_half(mesh, cut_topology, labels, kMedial, fields, band.side_unnamed ? kNeutralHalfMinusY : "medial");
@@ -256,7 +261,11 @@ Segmentation split_band(const BandCut& band, const SplitPlane& plane) {
 }
 
 Segmentation segment_last(const OrientedLast& last, const SegmentOptions& options) {
-  const BandCut band = cut_band(last, options);
+  return segment_last(last, build_mesh_topology(last.mesh.F, last.mesh.V.rows()), options);
+}
+
+Segmentation segment_last(const OrientedLast& last, const MeshTopology& topology, const SegmentOptions& options) {
+  const BandCut band = cut_band(last, topology, options);
   const SplitPlane plane = place_split_plane(band, options);
   Segmentation result = split_band(band, plane);
   if (options.split_rule == SplitRule::Expert)

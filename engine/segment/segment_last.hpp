@@ -83,12 +83,17 @@ struct BandCut {
   std::vector<std::string> notes;
 };
 
-// last: an oriented last (engine/orient/orient_last.hpp). Deterministic.
-// Throws EngineError when a step fails (no sole, no top cut, a half that is not one sheet).
+// last: an oriented last (engine/orient/orient_last.hpp); topology: of last.mesh, which has the
+// scan's faces (MeshIntake::topology). Deterministic.
+// Throws EngineError when a step fails (no sole, no top cut, a half that is not one sheet) or the
+// topology was built for another mesh.
+Segmentation segment_last(const OrientedLast& last, const MeshTopology& topology, const SegmentOptions& options = {});
+// The same, building last.mesh's topology itself.
 Segmentation segment_last(const OrientedLast& last, const SegmentOptions& options = {});
 
 // The three stages of segment_last, for callers that split one last by more than one plane.
-// Each throws EngineError like segment_last.
+// Each throws EngineError like segment_last; topology as there.
+BandCut cut_band(const OrientedLast& last, const MeshTopology& topology, const SegmentOptions& options = {});
 BandCut cut_band(const OrientedLast& last, const SegmentOptions& options = {});
 SplitPlane place_split_plane(const BandCut& band, const SegmentOptions& options = {});
 Segmentation split_band(const BandCut& band, const SplitPlane& plane);
