@@ -10,12 +10,6 @@
 
 namespace lastcut {
 
-void fair_vertices_bilaplacian(TriMesh& mesh, const std::vector<int>& free,
-                               const std::vector<Eigen::Vector3d>& directions) {
-  if (free.empty()) return;
-  fair_vertices_bilaplacian(mesh, build_mesh_topology(mesh.F, mesh.V.rows()), free, directions);
-}
-
 void fair_vertices_bilaplacian(TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& free,
                                const std::vector<Eigen::Vector3d>& directions) {
   if (free.empty()) return;

@@ -15,17 +15,15 @@
 
 namespace lastcut {
 
-// mesh: V #V x 3 mm, F #F x 3; free: vertex indices to move (each must have a neighbour). Solves the
-// linear system U(U(p))_v = 0 for the free vertices v (SparseLU) and writes them into mesh.V.
+// mesh: V #V x 3 mm, F #F x 3; topology: mesh's (build_mesh_topology(mesh.F, mesh.V.rows())), still
+// the mesh's afterwards (only vertices move); free: vertex indices to move (each must have a
+// neighbour). Solves the linear system U(U(p))_v = 0 for the free vertices v (SparseLU) and writes
+// them into mesh.V.
 // directions: empty, or one unit vector per free vertex: the vertex then moves only along it (from
 // where it is), and the condition holds along it (a height field over a plane: a patch laid out
 // flat without folds stays without folds, only its heights are faired).
-// Throws EngineError when the system is singular (a free region with no fixed vertex around it).
-void fair_vertices_bilaplacian(TriMesh& mesh, const std::vector<int>& free,
-                               const std::vector<Eigen::Vector3d>& directions = {});
-
-// The same with the mesh's topology already built (build_mesh_topology(mesh.F, mesh.V.rows())). Only
-// vertices move, so it stays the mesh's topology. Throws EngineError when it was built for another mesh.
+// Throws EngineError when the system is singular (a free region with no fixed vertex around it), or
+// the topology was built for another mesh.
 void fair_vertices_bilaplacian(TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& free,
                                const std::vector<Eigen::Vector3d>& directions = {});
 
