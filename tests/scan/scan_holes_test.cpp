@@ -187,5 +187,29 @@ TEST_F(ScanHoles, AFortyMillimetreHoleIsRefusedWithOneClearLineUnlessTheLimitIsR
   for (const SegmentResult& segment : result.segments) EXPECT_EQ(segment.measures.flipped_triangles, 0) << segment.name;
 }
 
+// fill_holes keeps the topology it is given in step with the mesh (trimming drops faces, the patches
+// add some), so segmentation need not build it again: what it hands back is what a fresh build gives.
+TEST_F(ScanHoles, TheTopologyHandedBackIsTheClosedMeshs) {
+  TriMesh holed = with_ragged_holes(last_, side_holes(last_, {10.0, 20.0, 30.0}));
+  const Eigen::Index faces_before = holed.F.rows();
+  MeshTopology topology = build_mesh_topology(holed.F, holed.V.rows());
+  ASSERT_EQ(fill_holes(holed, topology, 30.0).size(), 3u);
+  ASSERT_NE(holed.F.rows(), faces_before);
+  const MeshTopology fresh = build_mesh_topology(holed.F, holed.V.rows());
+  EXPECT_EQ(topology.out_offsets, fresh.out_offsets);
+  EXPECT_EQ(topology.out_half_edges, fresh.out_half_edges);
+  EXPECT_EQ(topology.out_targets, fresh.out_targets);
+  EXPECT_EQ(topology.across, fresh.across);
+  EXPECT_EQ(topology.same_direction, fresh.same_direction);
+  EXPECT_EQ(topology.neighbor_offsets, fresh.neighbor_offsets);
+  EXPECT_EQ(topology.neighbors, fresh.neighbors);
+  EXPECT_EQ(topology.boundary_loops, fresh.boundary_loops);
+  EXPECT_EQ(topology.boundary_half_edges, fresh.boundary_half_edges);
+
+  // A topology of another mesh is refused, not read out of range.
+  TriMesh other = with_ragged_holes(last_, side_holes(last_, {10.0}));
+  EXPECT_THROW(fill_holes(other, topology, 30.0), EngineError);
+}
+
 }  // namespace
 }  // namespace lastcut
