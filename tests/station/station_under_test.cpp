@@ -10,9 +10,17 @@
 namespace lastcut::daemon::testing {
 namespace {
 
-const char* kLeather =
-    "[materials.leather]\nkind = \"hide\"\ncutter = \"cutter-1\"\npairs = \"any\"\nspacing_mm = 3\n"
-    "rotation_step_deg = 90\n";
+// The settings both rigs spell alike, into either rig's options (RigOptions or ShopOptions).
+template <typename Options>
+void apply_common(const StationSettings& settings, Options& options) {
+  options.duplicate_policy = settings.duplicate_policy;
+  options.batch_window_s = settings.window_s;
+  if (!settings.hides) return;
+  options.extra_paths = "hides = \"hides\"\n";
+  options.extra_config =
+      "[materials.leather]\nkind = \"hide\"\ncutter = \"cutter-1\"\npairs = \"any\"\nspacing_mm = 3\n"
+      "rotation_step_deg = 90\n";
+}
 
 class SpoolStation : public StationUnderTest {
  public:
@@ -58,13 +66,8 @@ class SpoolStation : public StationUnderTest {
  private:
   static RigOptions options(const StationSettings& settings) {
     RigOptions options;
-    options.duplicate_policy = settings.duplicate_policy;
-    options.batch_window_s = settings.window_s;
+    apply_common(settings, options);
     options.batch_max_pieces = settings.max_pieces;
-    if (settings.hides) {
-      options.extra_paths = "hides = \"hides\"\n";
-      options.extra_config = kLeather;
-    }
     return options;
   }
   mutable DaemonRig rig_;
@@ -104,13 +107,8 @@ class LedgerStation : public StationUnderTest {
     ShopOptions options;
     options.nodes = {{kNode, {"compute", "station"}}};
     options.cutters = {{"cutter-1", "hpgl", kNode}};
-    options.duplicate_policy = settings.duplicate_policy;
-    options.batch_window_s = settings.window_s;
+    apply_common(settings, options);
     options.max_pieces = settings.max_pieces;
-    if (settings.hides) {
-      options.extra_paths = "hides = \"hides\"\n";
-      options.extra_config = kLeather;
-    }
     return options;
   }
   mutable LedgerShop shop_;
