@@ -99,7 +99,7 @@ TEST(DaemonHides, BadHideFilesGoToFailedWithTheReasonAndTheDaemonKeepsRunning) {
   EXPECT_EQ(reason("no-cutter.dxf"), "hide no-cutter: cutter \"cutter-9\" is not configured");
 
   // Still running: it answers `lastcut status`, and a good hide after the bad ones is taken (no
-  // piece waits, so nothing is cut and the hide batch says why). This one comes from the stock of
+  // piece waits, so it lies on its cutter's table waiting for work: daemon/station/hide_policy.hpp). This one comes from the stock of
   // digitized hides through `lastcut hide load`, which refuses what it cannot do with one line.
   ASSERT_TRUE(rig.daemon()->running());
   const auto stock = rig.root() / "stock";
@@ -123,8 +123,8 @@ TEST(DaemonHides, BadHideFilesGoToFailedWithTheReasonAndTheDaemonKeepsRunning) {
   EXPECT_EQ(loaded.first, 0) << loaded.second;
   EXPECT_NE(loaded.second.find("hide good (good.dxf, 0.60 m^2) now lies on cutter cutter-1"), std::string::npos) << loaded.second;
   const auto status_log = rig.root() / "status.txt";
-  ASSERT_TRUE(wait_until([&] { return read_text(rig.daemon_log()).find("no piece of leather was waiting for hide good") !=
-                                      std::string::npos; }, 30))
+  ASSERT_TRUE(wait_until([&] { return read_text(rig.daemon_log()).find("hide good (good.dxf, 0.60 m^2) lies on cutter "
+                                                                        "cutter-1: batch") != std::string::npos; }, 30))
       << read_text(rig.daemon_log());
   EXPECT_EQ(run_command({binary("lastcut").string(), "status", "--config", rig.config_file().string()}, status_log), 0);
   EXPECT_NE(read_text(status_log).find("lastcutd: running"), std::string::npos);

@@ -118,8 +118,9 @@ class LedgerStation : public StationUnderTest {
 
 std::unique_ptr<StationUnderTest> StationUnderTest::make(StoreKind kind, const std::string& name,
                                                          const StationSettings& settings) {
-  if (kind == StoreKind::Spool) return std::make_unique<SpoolStation>(name, settings);
-  return std::make_unique<LedgerStation>(name, settings);
+  // A folder per store: CTest runs the two cases of a behaviour at the same time.
+  if (kind == StoreKind::Spool) return std::make_unique<SpoolStation>(name + "-spool", settings);
+  return std::make_unique<LedgerStation>(name + "-ledger", settings);
 }
 
 SeenJob StationUnderTest::job(const std::string& scan) const {
