@@ -62,6 +62,7 @@ void LedgerNode::compute_worker(int index) {
 }
 
 void LedgerNode::compute_job(ledger::LedgerClient& client, const ledger::JobClaim& claim, const std::string& worker) {
+  const auto settings = config();  // one configuration for the whole step (SIGHUP may replace it)
   const std::string label = "job " + std::to_string(claim.job_id) + " (" + claim.scan.scan_name + ")";
   keeper_->keep(claim.lease);
   job_event(claim.job_id, claim.scan.scan_name, claim.scan.ticket, 0, JobStage::Claimed, "");
@@ -83,10 +84,10 @@ void LedgerNode::compute_job(ledger::LedgerClient& client, const ledger::JobClai
   copy_references(store_.references(claim.scan.scan_sha256), *scratch);
 
   const auto start = Clock::now();
-  monitor_.begin(worker, label, config()->jobs.compute_timeout_s);
+  monitor_.begin(worker, label, settings->jobs.compute_timeout_s);
   const Result<MoldsMade> made =
       compute_molds(store_.scan(claim.scan.scan_sha256, claim.scan.scan_name), *scratch, *ticket,
-                    job_mold_options(*ticket, config()->jobs), config()->jobs.max_hole_across_mm);
+                    job_mold_options(*ticket, settings->jobs), settings->jobs.max_hole_across_mm);
   monitor_.end(worker);
   const double took_s = std::chrono::duration<double>(Clock::now() - start).count();
   if (!made) {
@@ -94,7 +95,7 @@ void LedgerNode::compute_job(ledger::LedgerClient& client, const ledger::JobClai
     return finish(client.mark_failed(claim.lease, made.error()), JobStage::Failed, made.error());
   }
   const Result<ReferenceCheck> checked =
-      check_against_references(*scratch, *ticket, config()->review.corner_tolerance_mm);
+      check_against_references(*scratch, *ticket, settings->review.corner_tolerance_mm);
   if (!checked) {
     spdlog::error("{}: failed: {}", label, checked.error());
     return finish(client.mark_failed(claim.lease, checked.error()), JobStage::Failed, checked.error());

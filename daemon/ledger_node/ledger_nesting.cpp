@@ -26,12 +26,13 @@ std::vector<std::string> LedgerNode::hide_materials() const {
 Status LedgerNode::nest_on_strip(const ledger::BatchClaim& claim, const MaterialConfig& material,
                                  const CutterSection& cutter, const std::filesystem::path& scratch,
                                  ledger::NestedBatch& nested) {
+  const auto settings = config();  // one configuration for the whole step (SIGHUP may replace it)
   std::vector<BatchJobInput> inputs;
   for (std::size_t i = 0; i < claim.job_ids.size(); ++i) {
     inputs.push_back({std::to_string(claim.job_ids[i]), store_.job_dir(claim.job_folders[i])});
   }
   const Result<BatchMade> made =
-      build_batch(inputs, material, cutter, config()->paths.machines_dir, config()->batch.nest_time_s, scratch);
+      build_batch(inputs, material, cutter, settings->paths.machines_dir, settings->batch.nest_time_s, scratch);
   if (!made) return made.status();
   for (const auto& [job_id, reason] : made->rejected) nested.rejected.emplace_back(std::stoll(job_id), reason);
   nested.cut_file = made->cut_file;
@@ -43,6 +44,7 @@ Status LedgerNode::nest_on_strip(const ledger::BatchClaim& claim, const Material
 Status LedgerNode::nest_on_hide(const ledger::BatchClaim& claim, const MaterialConfig& material,
                                 const CutterSection& cutter, const std::filesystem::path& scratch,
                                 ledger::NestedBatch& nested) {
+  const auto settings = config();  // one configuration for the whole step (SIGHUP may replace it)
   // build_hide reads the hide file and its sidecar from the batch folder, where they stay with the layout.
   const std::filesystem::path hide_file = store_.absolute(claim.hide_file);
   for (const std::filesystem::path& file : {hide_file, hide_sidecar_path(hide_file)}) {
@@ -59,7 +61,7 @@ Status LedgerNode::nest_on_hide(const ledger::BatchClaim& claim, const MaterialC
                       hide_job_priority(ticket ? ticket->priority : 0, i, claim.job_ids.size())});
   }
   const Result<HideMade> made = build_hide(inputs, scratch, hide_file.filename().string(), material, cutter,
-                                           config()->paths.machines_dir, config()->batch.nest_time_s);
+                                           settings->paths.machines_dir, settings->batch.nest_time_s);
   if (!made) return made.status();
   for (const auto& [job_id, reason] : made->rejected) nested.rejected.emplace_back(std::stoll(job_id), reason);
   for (const auto& [job_id, reason] : made->waiting)
@@ -102,6 +104,7 @@ std::size_t LedgerNode::tell_job_outcomes(const ledger::BatchClaim& claim, const
 }
 
 void LedgerNode::nest_batch(ledger::LedgerClient& client, const ledger::BatchClaim& claim, const std::string& worker) {
+  const auto settings = config();  // one configuration for the whole step (SIGHUP may replace it)
   const bool on_hide = claim.hide_id != 0;
   const std::string label =
       on_hide ? "hide " + claim.hide_name + " (batch " + std::to_string(claim.batch_id) + ")"
@@ -110,15 +113,15 @@ void LedgerNode::nest_batch(ledger::LedgerClient& client, const ledger::BatchCla
   ledger::NestedBatch nested;
   const std::filesystem::path final_dir = store_.batch_dir(claim.batch_id);
   auto scratch = store_.scratch_for(final_dir, ledger().node);
-  const auto material = config()->materials.find(claim.material);
-  const auto cutter = config()->cutters.find(claim.cutter);
+  const auto material = settings->materials.find(claim.material);
+  const auto cutter = settings->cutters.find(claim.cutter);
   Status made = scratch.status();
-  if (made && material == config()->materials.end())
+  if (made && material == settings->materials.end())
     made = Status::failure("material " + claim.material + " is not configured on node " + ledger().node);
-  else if (made && cutter == config()->cutters.end())
+  else if (made && cutter == settings->cutters.end())
     made = Status::failure("cutter " + claim.cutter + " is not configured on node " + ledger().node);
   else if (made) {
-    monitor_.begin(worker, label, config()->jobs.compute_timeout_s);
+    monitor_.begin(worker, label, settings->jobs.compute_timeout_s);
     made = on_hide ? nest_on_hide(claim, material->second, cutter->second, *scratch, nested)
                    : nest_on_strip(claim, material->second, cutter->second, *scratch, nested);
     monitor_.end(worker);

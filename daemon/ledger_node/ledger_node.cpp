@@ -12,10 +12,11 @@ LedgerNode::LedgerNode(std::shared_ptr<const DaemonConfig> config)
 LedgerNode::~LedgerNode() { stop(); }
 
 Status LedgerNode::start() {
+  const auto settings = config();  // one configuration for the whole step (SIGHUP may replace it)
   if (Status prepared = store_.prepare(); !prepared) return prepared;
   std::error_code error;
-  std::filesystem::create_directories(config()->paths.spool_dir, error);
-  if (error) return Status::failure("spool folder " + config()->paths.spool_dir.string() + ": " + error.message());
+  std::filesystem::create_directories(settings->paths.spool_dir, error);
+  if (error) return Status::failure("spool folder " + settings->paths.spool_dir.string() + ": " + error.message());
 
   auto connected = ledger::LedgerClient::connect(ledger().url, ledger().node);
   if (!connected) return connected.status();
@@ -26,9 +27,9 @@ Status LedgerNode::start() {
     spdlog::info("ledger schema migrated from version {} to {}", migrated->version_before, migrated->version_after);
   }
   std::vector<std::string> cutters;
-  for (const auto& [name, section] : config()->cutters)
+  for (const auto& [name, section] : settings->cutters)
     if (ledger().owns_cutter(name)) cutters.push_back(name);
-  const auto registered = client_->register_node(ledger().roles, cutters, config()->jobs.max_attempts);
+  const auto registered = client_->register_node(ledger().roles, cutters, settings->jobs.max_attempts);
   if (!registered) return registered.status();
   for (long long id : registered->batches_held)
     spdlog::error("batch {}: this node stopped while sending it: held for an operator, never re-sent", id);
@@ -42,22 +43,22 @@ Status LedgerNode::start() {
 
   keeper_ = std::make_unique<ledger::LeaseKeeper>(ledger().url, ledger().node, ledger().lease_s, ledger().heartbeat_s,
                                                   [](const std::string& line) { spdlog::warn("{}", line); });
-  scans_.folder = std::make_unique<HotFolder>(config()->paths.watch_dir, config()->watch);
+  scans_.folder = std::make_unique<HotFolder>(settings->paths.watch_dir, settings->watch);
   if (Status watching = scans_.folder->start(); !watching) return watching;
-  if (!config()->paths.hides_dir.empty()) {
-    hides_.folder = std::make_unique<HotFolder>(config()->paths.hides_dir, config()->watch, HotFolderContent::Hides);
+  if (!settings->paths.hides_dir.empty()) {
+    hides_.folder = std::make_unique<HotFolder>(settings->paths.hides_dir, settings->watch, HotFolderContent::Hides);
     if (Status watching = hides_.folder->start(); !watching) return watching;
-    spdlog::info("hides folder {} ({}): hides entered here lie on their cutter's table", config()->paths.hides_dir.string(),
+    spdlog::info("hides folder {} ({}): hides entered here lie on their cutter's table", settings->paths.hides_dir.string(),
                  hides_.folder->mode_description());
   }
   if (ledger().has_role("compute")) {
-    for (int i = 0; i < config()->jobs.compute_workers; ++i) threads_.emplace_back([this, i] { compute_worker(i + 1); });
+    for (int i = 0; i < settings->jobs.compute_workers; ++i) threads_.emplace_back([this, i] { compute_worker(i + 1); });
   }
   for (const std::string& cutter : cutters) threads_.emplace_back([this, cutter] { station_worker(cutter); });
   std::string roles;
   for (const std::string& role : ledger().roles) roles += (roles.empty() ? "" : "+") + role;
   spdlog::info("ledger node {} ({}): watching {} ({}), shared folder {}, {} cutter(s) cabled here", ledger().node,
-               roles, config()->paths.watch_dir.string(), scans_.folder->mode_description(),
+               roles, settings->paths.watch_dir.string(), scans_.folder->mode_description(),
                store_.root().string(), cutters.size());
   return Status::success();
 }
