@@ -54,7 +54,7 @@ Status LedgerNode::start() {
   if (ledger().has_role("compute")) {
     for (int i = 0; i < settings->jobs.compute_workers; ++i) threads_.emplace_back([this, i] { compute_worker(i + 1); });
   }
-  for (const std::string& cutter : cutters) threads_.emplace_back([this, cutter] { station_worker(cutter); });
+  start_cutters(cutters);
   std::string roles;
   for (const std::string& role : ledger().roles) roles += (roles.empty() ? "" : "+") + role;
   spdlog::info("ledger node {} ({}): watching {} ({}), shared folder {}, {} cutter(s) cabled here", ledger().node,
@@ -81,7 +81,7 @@ void LedgerNode::tick(Clock::time_point now) {
 std::string LedgerNode::status_line() const {
   return "ledger node " + ledger().node + ": " + std::to_string(entered_) + " scan(s) entered, " +
          std::to_string(duplicates_) + " duplicate(s), " + std::to_string(refused_) + " refused; " +
-         std::to_string(cuts_in_progress_.load()) + " cut(s) in progress" +
+         std::to_string(cuts_in_progress()) + " cut(s) in progress" +
          (keeper_ && !keeper_->reachable() ? "; ledger unreachable" : "");
 }
 
@@ -95,14 +95,7 @@ void LedgerNode::stop() {
     std::lock_guard lock(pause_mutex_);
     pause_wake_.notify_all();
   }
-  // A cut in progress may finish within the grace time; then it is interrupted (and held).
-  const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                           std::chrono::duration<double>(config()->jobs.stop_grace_s));
-  while (cuts_in_progress_ > 0 && Clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  if (cuts_in_progress_ > 0) {
-    spdlog::warn("stopping: the cut in progress is interrupted and its batch held");
-    cancel_cut_ = true;
-  }
+  stop_cutters();
   for (std::thread& thread : threads_)
     if (thread.joinable()) thread.join();
   threads_.clear();

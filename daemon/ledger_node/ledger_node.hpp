@@ -8,7 +8,8 @@
 //                 group computed jobs ([batch] window_s, max_pieces) -> nest -> shared/batches/<id> -> `queued`
 //                 a loaded hide + the computed jobs of its material -> nest on it -> shared/batches/<id> -> `queued`
 //                 (the jobs that did not fit: `computed` again, waiting for the next hide, with the reason)
-//   station role: one thread per cutter cabled here: claim its queued batch -> `sending` -> cut | held
+//   station role: a CutterWorker per cutter cabled here (the spool's, against LedgerCutStore):
+//                 claim its queued batch -> `sending` -> cut | held | queued again
 //
 // Every claim holds a lease the LeaseKeeper thread renews; a state change is fenced by the lease's
 // epoch, so a node that lost a claim (a long pause, a cut network) only drops its work. The main
@@ -29,8 +30,10 @@
 #include "daemon/config/daemon_config.hpp"
 #include "daemon/ledger/lease_keeper.hpp"
 #include "daemon/ledger/ledger_client.hpp"
+#include "daemon/ledger_node/ledger_cut_store.hpp"
 #include "daemon/ledger_node/shared_store.hpp"
 #include "daemon/station/config_reload.hpp"
+#include "daemon/station/cutter_worker.hpp"
 #include "daemon/station/job_flow.hpp"
 #include "daemon/station/progress_monitor.hpp"
 #include "daemon/job/status_observer.hpp"
@@ -98,10 +101,10 @@ class LedgerNode : public JobFlow {
   // Logs and tells (MQTT) each claimed job how the nesting ended, in claim order; returns the jobs batched.
   std::size_t tell_job_outcomes(const ledger::BatchClaim& claim, const ledger::NestedBatch& nested);
   std::vector<std::string> hide_materials() const;
-  // ledger_station.cpp (one thread per cutter cabled here)
-  void station_worker(const std::string& cutter);
-  bool cut_batch(ledger::LedgerClient& client, const ledger::BatchClaim& claim, const CutterSection& section);
-  void report_cutter(const CutterStatus& status);
+  // ledger_station.cpp: a CutterWorker for each cutter cabled here, its batches in the ledger
+  void start_cutters(const std::vector<std::string>& cutters);
+  void stop_cutters();
+  int cuts_in_progress() const;
   // Worker threads: each has a connection of its own; false (after a pause) while none can be opened.
   bool connect_worker(std::unique_ptr<ledger::LedgerClient>& client, std::string& trouble, const std::string& worker);
   // Worker threads: waits up to `seconds` or until stop().
@@ -124,10 +127,14 @@ class LedgerNode : public JobFlow {
   ProgressMonitor monitor_;
   std::vector<std::thread> threads_;
   std::atomic<bool> stopping_{false};
-  std::atomic<bool> cancel_cut_{false};
   std::mutex pause_mutex_;
   std::condition_variable pause_wake_;
-  std::atomic<int> cuts_in_progress_{0};
+  // One per cutter cabled here: its batches in the ledger and the worker that cuts them.
+  struct Cutter {
+    std::unique_ptr<LedgerCutStore> store;
+    std::unique_ptr<CutterWorker> worker;
+  };
+  std::map<std::string, Cutter> cutters_;
   std::mutex ledger_condition_mutex_;
   bool ledger_down_ = false;  // as last logged by note_trouble(), for the whole node
 

@@ -61,24 +61,22 @@ void Pipeline::close_batch(const DueBatch& due) {
     auto state = spool_->read_state(JobFolder::Work, id);
     if (!state) continue;
     state->batch_id = batch.id;
-    state->advance(JobStage::Batched, "nested in batch " + batch.id);
-    if (Status state_written = spool_->write_state(JobFolder::Work, *state); !state_written) {
-      // Still "computed" on disk: nesting drops it from this batch, the next start nests it again.
-      report_job_problem(*spool_, JobFolder::Work, *state,
-                         "not part of batch " + batch.id + ": state not written: " + state_written.error());
-    }
+    // Not written: still "computed" on disk, nesting drops it from this batch, the next start nests it again.
+    set_job_stage(*spool_, *state, JobStage::Batched, "nested in batch " + batch.id,
+                  "not part of batch " + batch.id + ": state not written");
   }
   tasks_.push({true, batch.id});
 }
 
 void Pipeline::enqueue_batch(const BatchState& batch) {
-  const auto it = dispatchers_.find(batch.cutter);
-  if (it == dispatchers_.end()) {
+  const auto it = cutters_.find(batch.cutter);
+  if (it == cutters_.end()) {
     spdlog::error("batch {}: cutter {} is not configured; the batch stays queued in the spool", batch.id,
                   batch.cutter);
     return;
   }
-  it->second->enqueue(batch.id);
+  it->second.store->enqueue(batch.id);
+  it->second.worker->wake();
 }
 
 }  // namespace lastcut::daemon

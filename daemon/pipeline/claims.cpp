@@ -89,13 +89,8 @@ void Pipeline::take(const ReadyScan& ready) {
     const std::string reason = "same scan bytes as job " + state.duplicate_of;
     switch (settings->jobs.duplicate_policy) {
       case DuplicatePolicy::Skip:
-        claimed->reason = reason + " (duplicate, skipped)";
-        claimed->advance(JobStage::Skipped, claimed->reason);
-        if (Status moved = spool_->move_job(JobFolder::Work, JobFolder::Done, *claimed); !moved) {
-          report_job_problem(*spool_, JobFolder::Work, *claimed, "skipped, but not moved to done/: " + moved.error());
-          return;
-        }
-        spdlog::info("{}: {} - not cut again, moved to done/ as skipped", claimed->label(), claimed->reason);
+        set_job_stage(*spool_, *claimed, JobStage::Skipped, reason + " (duplicate, skipped)",
+                      "skipped, but not moved to done/");
         return;
       case DuplicatePolicy::Hold:
         hold_job(*spool_, *claimed, reason + " (duplicate held by policy)");

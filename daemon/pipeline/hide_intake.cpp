@@ -2,7 +2,7 @@
 // dropped into paths.hides is claimed into the spool as a hide batch (batches/BID/ with the hide
 // file, its sidecar and batch.json) that lies on its cutter's table until the hide rule
 // (daemon/station/hide_policy.hpp, the same on a ledger) finds it due; then up to kHideMaxJobs
-// waiting jobs are nested on it, and the cut goes to the cutter through that cutter's dispatcher,
+// waiting jobs are nested on it, and the cut goes to the cutter through that cutter's worker,
 // with the same at-most-once stages as a strip batch. Jobs that did not fit go back to the pool
 // with the reason.
 #include <algorithm>
@@ -142,11 +142,8 @@ void Pipeline::nest_due_hides(Clock::time_point now) {
       if (!state) continue;
       state->batch_id = batch->id;
       state->reason.clear();
-      state->advance(JobStage::Batched, "nested on hide " + batch->hide_id + " (batch " + batch->id + ")");
-      if (Status written = spool_->write_state(JobFolder::Work, *state); !written) {
-        report_job_problem(*spool_, JobFolder::Work, *state,
-                           "not part of hide batch " + batch->id + ": state not written: " + written.error());
-      }
+      set_job_stage(*spool_, *state, JobStage::Batched, "nested on hide " + batch->hide_id + " (batch " + batch->id + ")",
+                    "not part of hide batch " + batch->id + ": state not written");
     }
     spdlog::info("hide {} on cutter {}: nesting {} waiting job(s) of {} in batch {}{}", batch->hide_id, batch->cutter,
                  batch->job_ids.size(), batch->material, batch->id,
@@ -199,11 +196,7 @@ void Pipeline::build_hide_task(BatchState& batch, const std::string& worker) {
     }
     state.batch_id.clear();
     state.reason = "waiting for a hide of " + batch.material + ": " + waits;
-    state.advance(JobStage::Computed, state.reason);
-    if (Status written = spool_->write_state(JobFolder::Work, state); !written) {
-      report_job_problem(*spool_, JobFolder::Work, state, "state not written: " + written.error());
-    }
-    spdlog::info("{}: {}", state.label(), state.reason);
+    set_job_stage(*spool_, state, JobStage::Computed, state.reason);
     back_to_pool.push_back(id);
   }
   {

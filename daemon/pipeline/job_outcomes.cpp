@@ -29,38 +29,58 @@ Status append_problem(const Spool& spool, JobFolder folder, const std::string& j
   return write_report(file, report);
 }
 
-// Moves the job to its end folder with `stage` and `reason`; the report says the same.
-// Returns false (after logging) when the job could not be moved.
-bool end_job(const Spool& spool, JobState& state, JobStage stage, JobFolder to, const std::string& reason) {
-  state.reason = reason;
+// Marks the job's end in its report, then moves it there; false when it could not be moved.
+bool end_job(const Spool& spool, JobState& state, JobStage stage, const std::string& reason) {
+  std::string why = reason;
   if (Status reported = update_job_report(spool, JobFolder::Work, state.id,
                                           {{"stage", to_string(stage)}, {"reason", reason}});
       !reported) {
     spdlog::error("{}: {}", state.label(), reported.error());
-    state.reason += " (" + reported.error() + ")";
+    why += " (" + reported.error() + ")";
   }
-  state.advance(stage, state.reason);
-  if (Status moved = spool.move_job(JobFolder::Work, to, state); !moved) {
-    report_job_problem(spool, JobFolder::Work, state,
-                       "could not be moved to " + folder_name(to) + "/ (" + state.reason + "): " + moved.error());
-    return false;
+  return set_job_stage(spool, state, stage, why, "could not be moved out of work/ (" + why + ")");
+}
+
+// Where a job of `stage` lives: work/ until it ends.
+JobFolder folder_of(JobStage stage) {
+  switch (stage) {
+    case JobStage::Failed: return JobFolder::Failed;
+    case JobStage::Held: return JobFolder::Held;
+    case JobStage::Cut:
+    case JobStage::Skipped: return JobFolder::Done;
+    default: return JobFolder::Work;
   }
-  return true;
 }
 
 }  // namespace
 
-void fail_job(const Spool& spool, JobState state, const std::string& reason) {
-  if (end_job(spool, state, JobStage::Failed, JobFolder::Failed, reason)) {
-    spdlog::error("{}: {} - moved to failed/", state.label(), state.reason);
+bool set_job_stage(const Spool& spool, JobState& state, JobStage stage, const std::string& note,
+                   const std::string& if_not_written) {
+  const JobFolder to = folder_of(stage);
+  if (to != JobFolder::Work || stage == JobStage::Skipped) state.reason = note;
+  state.advance(stage, note);
+  if (Status moved = spool.move_job(JobFolder::Work, to, state); !moved) {
+    report_job_problem(spool, JobFolder::Work, state, if_not_written + ": " + moved.error());
+    return false;
   }
+  switch (stage) {
+    case JobStage::Failed: spdlog::error("{}: {} - moved to failed/", state.label(), note); break;
+    case JobStage::Held:
+      spdlog::warn("{}: {} - moved to held/ (after checking, `lastcut requeue {}`)", state.label(), note, state.id);
+      break;
+    default:
+      if (to == JobFolder::Work) spdlog::info("{}: {}", state.label(), note);
+      else spdlog::info("{}: {} - moved to {}/", state.label(), note, folder_name(to));
+  }
+  return true;
+}
+
+void fail_job(const Spool& spool, JobState state, const std::string& reason) {
+  end_job(spool, state, JobStage::Failed, reason);
 }
 
 void hold_job(const Spool& spool, JobState state, const std::string& reason) {
-  if (end_job(spool, state, JobStage::Held, JobFolder::Held, reason)) {
-    spdlog::warn("{}: {} - moved to held/ (after checking, `lastcut requeue {}`)", state.label(), state.reason,
-                 state.id);
-  }
+  end_job(spool, state, JobStage::Held, reason);
 }
 
 Status update_job_report(const Spool& spool, JobFolder folder, const std::string& job_id,
@@ -112,18 +132,13 @@ void complete_batch_jobs(const Spool& spool, const BatchState& batch) {
                                            {"jobs", batch.job_ids}}},
                                 {"cutter_answer", batch.cutter_answer},
                                 {"history", state->history}};
-    std::string note = "cut on " + batch.cutter + " in batch " + batch.id;
+    std::string note = fmt::format("cut on {} (batch {}, utilisation {:.1f} %)", batch.cutter, batch.id,
+                                   100.0 * batch.utilisation);
     if (Status reported = update_job_report(spool, JobFolder::Work, id, fields); !reported) {
       spdlog::error("{}: {}", state->label(), reported.error());
       note += " (" + reported.error() + ")";
     }
-    state->advance(JobStage::Cut, note);
-    if (Status moved = spool.move_job(JobFolder::Work, JobFolder::Done, *state); !moved) {
-      report_job_problem(spool, JobFolder::Work, *state, "cut, but could not be moved to done/: " + moved.error());
-      continue;
-    }
-    spdlog::info("{}: cut on {} (batch {}, utilisation {:.1f} %) - moved to done/", state->label(), batch.cutter,
-                 batch.id, 100.0 * batch.utilisation);
+    set_job_stage(spool, *state, JobStage::Cut, note, "cut, but could not be moved to done/");
   }
 }
 

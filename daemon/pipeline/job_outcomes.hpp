@@ -1,6 +1,6 @@
 #pragma once
-// The ends of a job's road, each one durable state write plus one folder rename, and one
-// operator log line: failed/ (bad input), held/ (an operator must decide), done/ (cut).
+// A spool job's changes of stage, all through set_job_stage(), and the ends of its road: failed/
+// (bad input), held/ (an operator must decide), done/ (cut or skipped).
 // report.json in the job folder collects the measures, timings, batch and cutter answer, and
 // every failure met on the way ("problems"), so no error is only in the log.
 #include <string>
@@ -11,6 +11,15 @@
 
 namespace lastcut::daemon {
 
+// The one place a spool job's stage changes (as cupsdSetJobState in the CUPS scheduler): `stage`
+// and `note` go into its state.json durably (the status observers hear of it through
+// Spool::on_job_written); an end stage also moves the job folder out of work/ (failed, held: their
+// folders; cut, skipped: done/) and makes `note` the job's reason; and the change is one log line,
+// "<job>: <note>" (for an end " - moved to <folder>/"), an error when failed, a warning when held.
+// False when it could not be written or moved: the job stays in work/, and the problem is logged
+// and noted in its report as "<if_not_written>: <error>".
+bool set_job_stage(const Spool& spool, JobState& state, JobStage stage, const std::string& note,
+                   const std::string& if_not_written = "state not written");
 // work/ID -> failed/ID; the original scan stays there with the reason.
 void fail_job(const Spool& spool, JobState state, const std::string& reason);
 // work/ID -> held/ID with the reason and what the operator can do.

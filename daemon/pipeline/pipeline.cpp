@@ -26,14 +26,15 @@ Status Pipeline::start() {
     if (observer) observer->job_changed(job_event_of(state));
   });
   for (const auto& [name, section] : settings->cutters) {
-    dispatchers_[name] = std::make_unique<CutterDispatcher>(name, *spool_, monitor_, [this, cutter = name] {
+    Cutter& cutter = cutters_[name];
+    cutter.store = std::make_unique<SpoolCutStore>(name, *spool_);
+    cutter.worker = std::make_unique<CutterWorker>(name, *cutter.store, monitor_, [this, name = name] {
       const auto current = config();
-      const auto it = current->cutters.find(cutter);
+      const auto it = current->cutters.find(name);
       return it != current->cutters.end() ? it->second : CutterSection{};
     });
     if (observer_) {
-      dispatchers_[name]->on_status(
-          [observer = observer_](const CutterStatus& status) { observer->cutter_changed(status); });
+      cutter.worker->on_status([observer = observer_](const CutterStatus& status) { observer->cutter_changed(status); });
     }
   }
   index_hashes();
@@ -45,10 +46,10 @@ Status Pipeline::start() {
     if (Status watching = hide_folder_->start(); !watching) return watching;
     spdlog::info("hides folder {} ({})", settings->paths.hides_dir.string(), hide_folder_->mode_description());
   }
-  for (auto& [name, dispatcher] : dispatchers_) dispatcher->start();
+  for (auto& [name, cutter] : cutters_) cutter.worker->start(CutterStatus{name, "idle", "", "", 0, 0, 0, 0});
   for (int i = 0; i < settings->jobs.compute_workers; ++i) workers_.emplace_back([this, i] { compute_worker(i + 1); });
   spdlog::info("watching {} ({}); spool {}; {} cutter(s); duplicates: {}", settings->paths.watch_dir.string(),
-               hot_folder_->mode_description(), settings->paths.spool_dir.string(), dispatchers_.size(),
+               hot_folder_->mode_description(), settings->paths.spool_dir.string(), cutters_.size(),
                to_string(settings->jobs.duplicate_policy));
   return Status::success();
 }
@@ -80,8 +81,8 @@ void Pipeline::tick(Clock::time_point now) {
 
 void Pipeline::write_status_file() {
   nlohmann::json cutters = nlohmann::json::object();
-  for (const auto& [name, dispatcher] : dispatchers_) {
-    cutters[name] = {{"condition", dispatcher->condition()}, {"queued_batches", dispatcher->queued()}};
+  for (const auto& [name, cutter] : cutters_) {
+    cutters[name] = {{"condition", cutter.worker->condition()}, {"queued_batches", cutter.store->queued()}};
   }
   const std::size_t waiting = strip_waiting_.size();
   nlohmann::json waiting_for_hide = nlohmann::json::object();
@@ -110,9 +111,9 @@ std::string Pipeline::status_line() const {
   const std::size_t waiting = strip_waiting_.size();
   std::string line = std::to_string(known_jobs_.size()) + " job(s) in work, " + std::to_string(tasks_.size()) +
                      " to compute, " + std::to_string(waiting) + " waiting for a batch";
-  for (const auto& [name, dispatcher] : dispatchers_) {
-    line += "; " + name + ": " + dispatcher->condition();
-    if (dispatcher->queued() > 0) line += ", " + std::to_string(dispatcher->queued()) + " batch(es) queued";
+  for (const auto& [name, cutter] : cutters_) {
+    line += "; " + name + ": " + cutter.worker->condition();
+    if (cutter.store->queued() > 0) line += ", " + std::to_string(cutter.store->queued()) + " batch(es) queued";
   }
   return line;
 }
@@ -131,11 +132,11 @@ void Pipeline::stop() {
   const double grace_s = config()->jobs.stop_grace_s;
   // In parallel: each cutter gets the whole grace time for the cut in its hands.
   std::vector<std::thread> stopping;
-  for (auto& [name, dispatcher] : dispatchers_) {
-    stopping.emplace_back([&dispatcher = dispatcher, grace_s] { dispatcher->stop(grace_s); });
+  for (auto& [name, cutter] : cutters_) {
+    stopping.emplace_back([&worker = *cutter.worker, grace_s] { worker.stop(grace_s); });
   }
   for (auto& thread : stopping) thread.join();
-  dispatchers_.clear();
+  cutters_.clear();
   {
     // A stopped daemon says so: status must not show a stale "running".
     std::error_code error;

@@ -3,10 +3,10 @@
 //
 //   watch folder --claim--> work/ID --compute worker--> molds (computed)
 //     --batcher (per material and cutter: window_s or max_pieces)--> batches/BID (nest, cut file)
-//     --one dispatcher per cutter--> done/ID | held/ID       (bad input anywhere: failed/ID)
+//     --one cutter worker per cutter--> done/ID | held/ID       (bad input anywhere: failed/ID)
 //
 // The main thread claims files, routes jobs and closes batches; compute workers make molds and
-// batches; each cutter has its own dispatcher thread. Only ids travel between threads; the
+// batches; each cutter has its own worker thread (station/cutter_worker.hpp on a SpoolCutStore). Only ids travel between threads; the
 // spool on disk is the truth, so start() first recovers whatever a crash left behind:
 // computing is at-least-once (redone), cutting is at-most-once (an interrupted cut is held).
 #include <chrono>
@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "daemon/config/daemon_config.hpp"
-#include "daemon/pipeline/cutter_dispatcher.hpp"
+#include "daemon/pipeline/spool_cut_store.hpp"
 #include "daemon/station/job_flow.hpp"
 #include "daemon/station/progress_monitor.hpp"
 #include "daemon/job/status_observer.hpp"
@@ -27,6 +27,7 @@
 #include "daemon/spool/spool.hpp"
 #include "daemon/station/batching_policy.hpp"
 #include "daemon/station/config_reload.hpp"
+#include "daemon/station/cutter_worker.hpp"
 #include "daemon/watch/hot_folder.hpp"
 
 namespace lastcut::daemon {
@@ -108,7 +109,12 @@ class Pipeline : public JobFlow {
   ProgressMonitor monitor_;
   WorkQueue<Task> tasks_;
   std::vector<std::thread> workers_;
-  std::map<std::string, std::unique_ptr<CutterDispatcher>> dispatchers_;
+  // One per cutter: its queue of batches on the spool and the worker that cuts them.
+  struct Cutter {
+    std::unique_ptr<SpoolCutStore> store;
+    std::unique_ptr<CutterWorker> worker;
+  };
+  std::map<std::string, Cutter> cutters_;
 
   // Main thread only.
   std::set<std::string> known_jobs_;                  // ids in work/ that have been routed

@@ -165,11 +165,8 @@ void Pipeline::route(const std::string& job_id) {
         return;
       }
       state->batch_id.clear();
-      state->advance(JobStage::Computed, "its batch did not finish; nested again");
-      if (Status written = spool_->write_state(JobFolder::Work, *state); !written) {
-        report_job_problem(*spool_, JobFolder::Work, *state,
-                           "state not written, nested again anyway: " + written.error());
-      }
+      set_job_stage(*spool_, *state, JobStage::Computed, "its batch did not finish; nested again",
+                    "state not written, nested again anyway");
       add_to_batcher(*state);
       return;
     }

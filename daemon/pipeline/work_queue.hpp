@@ -1,7 +1,6 @@
 #pragma once
-// WorkQueue: a closable FIFO handed between the daemon's threads (main loop -> compute workers,
-// main loop -> one dispatcher per cutter). Holds job and batch ids only, never geometry, so the
-// memory of a long queue stays small.
+// WorkQueue: a closable FIFO handed from the main loop to the compute workers. Holds job and
+// batch ids only, never geometry, so the memory of a long queue stays small.
 #include <chrono>
 #include <condition_variable>
 #include <deque>

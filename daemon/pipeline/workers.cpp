@@ -39,11 +39,9 @@ void Pipeline::compute_job(const std::string& job_id, const std::string& worker)
   }
   // Counted before the work: if this scan crashes the daemon, the next start knows.
   ++state->attempts;
-  state->advance(JobStage::Claimed, "computing molds, attempt " + std::to_string(state->attempts));
-  if (Status written = spool_->write_state(JobFolder::Work, *state); !written) {
-    // Without the count on disk a scan that crashes lastcutd would be computed forever.
-    report_job_problem(*spool_, JobFolder::Work, *state,
-                       "not computed, its attempt cannot be counted: " + written.error());
+  // Without the count on disk a scan that crashes lastcutd would be computed forever.
+  if (!set_job_stage(*spool_, *state, JobStage::Claimed, "computing molds, attempt " + std::to_string(state->attempts),
+                     "not computed, its attempt cannot be counted")) {
     return;
   }
   const auto job_dir = spool_->job_dir(JobFolder::Work, job_id);
@@ -82,14 +80,11 @@ void Pipeline::compute_job(const std::string& job_id, const std::string& worker)
     fail_job(*spool_, *state, "molds made but " + reported.error());
     return;
   }
-  state->advance(JobStage::Computed, std::to_string(outcome->piece_count) + " molds");
-  if (Status written = spool_->write_state(JobFolder::Work, *state); !written) {
-    report_job_problem(*spool_, JobFolder::Work, *state,
-                       "molds made, but the state is not written (computed again at the next start): " +
-                           written.error());
+  if (!set_job_stage(*spool_, *state, JobStage::Computed,
+                     fmt::format("{} molds ready in {:.1f} s", outcome->piece_count, took_s),
+                     "molds made, but the state is not written (computed again at the next start)")) {
     return;
   }
-  spdlog::info("{}: {} molds ready in {:.1f} s", state->label(), outcome->piece_count, took_s);
   // What the engine noticed but got past (a side contradicting the sidecar, a scan hole closed)
   // must reach the operator's log, not only report.json.
   if (const auto warnings = outcome->measures.find("warnings"); warnings != outcome->measures.end()) {

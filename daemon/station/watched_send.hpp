@@ -1,8 +1,6 @@
 #pragma once
-// The sending half the two cutter workers share (the spool's CutterDispatcher and a ledger node's
-// station): the stored cut file read whole, and drivers::send_job under the progress monitor's
-// watch. What comes before (claiming, marking the batch `sending`) and after (cut, queued again,
-// held) stays with each worker: one writes the spool, the other the ledger.
+// The sending half of the cutter worker (cutter_worker.hpp): the stored cut file read whole, and
+// drivers::send_job under the progress monitor's watch.
 #include <atomic>
 #include <filesystem>
 #include <optional>

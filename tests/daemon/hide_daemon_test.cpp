@@ -158,7 +158,7 @@ TEST(DaemonHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
   EXPECT_EQ(count_occurrences(on_cutter_1, cut_k), 0);
   const std::string log_after = read_text(rig.daemon_log());  // the log is appended across the restart
   ASSERT_EQ(log_after.compare(0, log_before.size(), log_before), 0);
-  EXPECT_EQ(log_after.find("cutting batch " + batch_k, log_before.size()), std::string::npos) << "sent again after the restart";
+  EXPECT_EQ(log_after.find("batch " + batch_k + ": cutting", log_before.size()), std::string::npos) << "sent again after the restart";
   // (Killed as soon as batch.json said "sending": the log line of the cut may not have come yet.)
 
   std::map<std::string, std::string> batch_of_job;

@@ -1,0 +1,55 @@
+#pragma once
+// LedgerCutStore: one cutter's batches in the shop's PostgreSQL ledger, for the CutterWorker of
+// the node the cutter is cabled to (daemon/station/cutter_worker.hpp). A claim holds a lease the
+// LeaseKeeper renews; every change is fenced by the lease's epoch, so a node that lost the claim
+// (a long pause, a cut network) only drops it. The end of a cut is written again and again while
+// the ledger is away, until it lands: a cut that happened is never forgotten, nor sent again.
+// The cut file is read from the shared folder exactly as the nesting node wrote it.
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "daemon/config/ledger_config.hpp"
+#include "daemon/job/job_state.hpp"
+#include "daemon/ledger/lease_keeper.hpp"
+#include "daemon/ledger/ledger_client.hpp"
+#include "daemon/ledger_node/shared_store.hpp"
+#include "daemon/station/cut_store.hpp"
+
+namespace lastcut::daemon {
+
+class LedgerCutStore : public CutStore {
+ public:
+  // Waits up to the given seconds (or until the node stops: then false).
+  using Pause = std::function<bool(double seconds)>;
+  // Tells the status observer the jobs of a batch changed stage.
+  using BatchEvent = std::function<void(const ledger::BatchClaim& claim, JobStage stage, const std::string& reason)>;
+
+  LedgerCutStore(std::string cutter, const LedgerConfig& ledger, const SharedStore& shared, ledger::LeaseKeeper& keeper,
+                 Pause pause, BatchEvent batch_event);
+
+  bool may_have_work() override { return true; }  // other nodes nest this cutter's batches
+  Result<std::optional<CutOrder>> claim() override;
+  Status mark_sending(const CutOrder& order) override;
+  CutEnd record_end(const CutOrder& order, CutEnd end, const std::string& reason,
+                    const std::vector<std::string>& cutter_answer) override;
+
+ private:
+  // Writes a change of the claimed batch, again while the ledger is away; false when it cannot
+  // land (the lease was lost, or the node stops).
+  bool record(const std::function<Status()>& change);
+  // The claim ends: its lease is no longer renewed.
+  void let_go();
+
+  std::string cutter_;
+  const LedgerConfig& ledger_;
+  const SharedStore& shared_;
+  ledger::LeaseKeeper& keeper_;
+  Pause pause_;
+  BatchEvent batch_event_;
+  std::unique_ptr<ledger::LedgerClient> client_;  // this cutter's own connection (worker thread only)
+  std::optional<ledger::BatchClaim> claimed_;
+};
+
+}  // namespace lastcut::daemon

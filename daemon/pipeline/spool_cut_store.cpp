@@ -1,0 +1,124 @@
+#include "daemon/pipeline/spool_cut_store.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include "daemon/pipeline/job_outcomes.hpp"
+
+namespace lastcut::daemon {
+namespace {
+
+// The one place a spool batch changes stage at the cutter: batch.json, then the state.json of
+// each of its jobs still in work/ for the steps that keep them there (sending, queued again).
+// The ends (cut, held) of the jobs are written by complete_batch_jobs / hold_batch_jobs together
+// with their move out of work/. A failure is logged and noted in the jobs' reports; false when
+// batch.json could not be written.
+bool set_batch_stage(const Spool& spool, BatchState& batch, BatchStage stage, const std::string& note) {
+  batch.stage = stage;
+  batch.updated_at = utc_now_iso();
+  if (Status written = spool.write_batch(batch); !written) {
+    report_batch_problem(spool, batch, std::string(to_string(stage)) + " (" + note + "), but batch.json not written: " +
+                                           written.error());
+    return false;
+  }
+  JobStage job_stage = JobStage::Batched;
+  switch (stage) {
+    case BatchStage::Queued: job_stage = JobStage::Batched; break;
+    case BatchStage::Sending: job_stage = JobStage::Sending; break;
+    case BatchStage::Nesting:
+    case BatchStage::Cut:
+    case BatchStage::Held:
+    case BatchStage::Abandoned:
+    case BatchStage::Empty: return true;
+  }
+  for (const std::string& id : batch.job_ids) {
+    auto state = spool.read_state(JobFolder::Work, id);
+    if (!state || state->batch_id != batch.id) continue;
+    set_job_stage(spool, *state, job_stage, note);
+  }
+  return true;
+}
+
+}  // namespace
+
+void SpoolCutStore::enqueue(const std::string& batch_id) {
+  std::lock_guard lock(mutex_);
+  queue_.push_back(batch_id);
+}
+
+std::size_t SpoolCutStore::queued() const {
+  std::lock_guard lock(mutex_);
+  return queue_.size();
+}
+
+bool SpoolCutStore::may_have_work() {
+  std::lock_guard lock(mutex_);
+  return !queue_.empty();
+}
+
+Result<std::optional<CutOrder>> SpoolCutStore::claim() {
+  while (true) {
+    std::string batch_id;
+    {
+      std::lock_guard lock(mutex_);
+      if (queue_.empty()) return std::optional<CutOrder>{};
+      batch_id = queue_.front();
+      queue_.pop_front();
+    }
+    const auto batch = spool_.read_batch(batch_id);
+    // Finished or taken back meanwhile; a batch.json without a known stage is held by recovery.
+    if (!batch || batch->stage != BatchStage::Queued || !batch->stage_problem.empty()) continue;
+    return std::optional<CutOrder>{CutOrder{batch_id, spool_.batch_dir(batch_id) / batch->cut_file, batch->cut_file,
+                                            batch_id.substr(0, 16), batch->job_ids.size(), batch->piece_count}};
+  }
+}
+
+Status SpoolCutStore::mark_sending(const CutOrder& order) {
+  auto batch = spool_.read_batch(order.batch_id);
+  if (!batch) {
+    give_back(order);
+    return Status::failure("batch.json of " + order.batch_id + " unreadable");
+  }
+  if (!set_batch_stage(spool_, *batch, BatchStage::Sending, "sending to cutter " + cutter_)) {
+    give_back(order);
+    return Status::failure("batch.json of " + order.batch_id + " not written (see the jobs' reports)");
+  }
+  return Status::success();
+}
+
+void SpoolCutStore::give_back(const CutOrder& order) {
+  std::lock_guard lock(mutex_);
+  queue_.push_front(order.batch_id);
+}
+
+CutEnd SpoolCutStore::record_end(const CutOrder& order, CutEnd end, const std::string& reason,
+                                 const std::vector<std::string>& cutter_answer) {
+  auto batch = spool_.read_batch(order.batch_id);
+  if (!batch) {
+    spdlog::error("batch {}: batch.json unreadable, its {} could not be written", order.batch_id, to_string(end));
+    return end;
+  }
+  batch->cutter_answer = cutter_answer;
+  batch->reason = reason;
+  switch (end) {
+    case CutEnd::Cut:
+      // Cut, even if batch.json cannot say so: the jobs must reach done/, never be cut again.
+      set_batch_stage(spool_, *batch, BatchStage::Cut, "the cutter reported the job finished");
+      complete_batch_jobs(spool_, *batch);
+      return CutEnd::Cut;
+    case CutEnd::NotSent:
+      if (set_batch_stage(spool_, *batch, BatchStage::Queued, "cutter refused before cutting: " + reason)) {
+        give_back(order);
+        return CutEnd::NotSent;
+      }
+      // Still `sending` on disk, which recovery would hold: hold it now and say why.
+      batch->reason = "cutter " + cutter_ + " refused batch " + order.batch_id + " before cutting (" + reason +
+                      "), and its return to the queue could not be written";
+      break;
+    case CutEnd::Held: break;
+  }
+  set_batch_stage(spool_, *batch, BatchStage::Held, batch->reason);
+  hold_batch_jobs(spool_, *batch, batch->reason);
+  return CutEnd::Held;
+}
+
+}  // namespace lastcut::daemon
