@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
   lastcut::cli::add_nest_command(app, exit_code);
   lastcut::cli::add_toolpath_command(app, exit_code);
   lastcut::cli::add_send_command(app, exit_code);
-  lastcut::cli::add_spool_commands(app, exit_code);
+  lastcut::cli::add_status_commands(app, exit_code);
   lastcut::cli::add_generate_command(app, exit_code);
   lastcut::cli::add_subdivide_command(app, exit_code);
   lastcut::cli::add_compare_command(app, exit_code);

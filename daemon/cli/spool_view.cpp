@@ -1,0 +1,161 @@
+// The spool's StoreView (store_view.hpp): the folders of one station read directly, and
+// spool/status.json, which a running lastcutd rewrites every 2 s (its cutters, queues, pid).
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "daemon/cli/store_view.hpp"
+#include "daemon/spool/spool.hpp"
+#include "daemon/station/engine_steps.hpp"
+
+namespace lastcut::cli {
+namespace {
+
+using daemon::JobFolder;
+
+nlohmann::json read_json(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) return nullptr;
+  auto json = nlohmann::json::parse(in, nullptr, false);
+  return json.is_discarded() ? nlohmann::json(nullptr) : json;
+}
+
+nlohmann::json job_summary(const daemon::JobState& state, JobFolder folder) {
+  return {{"id", state.id},         {"folder", daemon::folder_name(folder)}, {"stage", daemon::to_string(state.stage)},
+          {"order", state.ticket.order}, {"scan", state.scan_name},         {"cutter", state.ticket.cutter},
+          {"material", state.ticket.material}, {"reason", state.reason},  {"updated_at", state.updated_at}};
+}
+
+JobLine job_line(const nlohmann::json& job) {
+  return {job.value("id", ""),    job.value("stage", ""), job.value("folder", ""),
+          job.value("order", ""), job.value("scan", ""),  job.value("reason", "")};
+}
+
+// The document `lastcut status --json` prints for a spool (docs/daemon.md).
+nlohmann::json collect_status(const daemon::Spool& spool, std::size_t recent_count) {
+  nlohmann::json status;
+  const nlohmann::json daemon_status = read_json(spool.root() / "status.json");
+  status["daemon"] = daemon_status.is_null() ? nlohmann::json{{"running", false}} : daemon_status;
+  if (!daemon_status.is_null()) status["daemon"]["running"] = true;
+  nlohmann::json counts, work = nlohmann::json::array(), held = nlohmann::json::array();
+  std::vector<std::pair<std::string, nlohmann::json>> finished;
+  for (JobFolder folder : {JobFolder::Work, JobFolder::Done, JobFolder::Failed, JobFolder::Held}) {
+    const auto ids = spool.list(folder);
+    counts[daemon::folder_name(folder)] = ids.size();
+    // Only the newest finished jobs are read: status stays fast with months of history.
+    const std::size_t first = folder == JobFolder::Work || folder == JobFolder::Held || ids.size() <= recent_count
+                                  ? 0 : ids.size() - recent_count;
+    for (std::size_t i = first; i < ids.size(); ++i) {
+      auto state = spool.read_state(folder, ids[i]);
+      if (!state) continue;
+      const nlohmann::json summary = job_summary(*state, folder);
+      if (folder == JobFolder::Work) work.push_back(summary);
+      else if (folder == JobFolder::Held) held.push_back(summary);
+      if (folder != JobFolder::Work) finished.emplace_back(state->updated_at, summary);
+    }
+  }
+  std::sort(finished.begin(), finished.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  nlohmann::json recent = nlohmann::json::array();
+  for (std::size_t i = 0; i < finished.size() && i < recent_count; ++i) recent.push_back(finished[i].second);
+  nlohmann::json batches = nlohmann::json::array();
+  for (const std::string& id : spool.list_batches()) {
+    auto batch = spool.read_batch(id);
+    // A batch.json without a known stage is shown too: it is held until an operator looks.
+    if (batch && (daemon::in_progress(batch->stage) || !batch->stage_problem.empty())) {
+      batches.push_back({{"id", batch->id}, {"cutter", batch->cutter}, {"stage", daemon::to_string(batch->stage)},
+                         {"jobs", batch->job_ids}, {"pieces", batch->piece_count}, {"reason", batch->reason}});
+    }
+  }
+  status["counts"] = counts;
+  status["work"] = work;
+  status["held"] = held;
+  status["active_batches"] = batches;
+  status["recent"] = recent;
+  return status;
+}
+
+std::string format(const char* pattern, auto... values) {
+  char text[512];
+  std::snprintf(text, sizeof(text), pattern, values...);
+  return text;
+}
+
+class SpoolView : public StoreView {
+ public:
+  explicit SpoolView(const std::string& root) : spool_(root) {}
+
+  Result<StoreOverview> overview(std::size_t recent_count) override {
+    StoreOverview overview;
+    overview.json = collect_status(spool_, recent_count);
+    const nlohmann::json& status = overview.json;
+    const auto& counts = status["counts"];
+    overview.headline = format("spool %s: %d in work, %d done, %d failed, %d held", spool_.root().c_str(),
+                               counts.value("work", 0), counts.value("done", 0), counts.value("failed", 0),
+                               counts.value("held", 0));
+    const auto& daemon_status = status["daemon"];
+    overview.station_lines.push_back(
+        daemon_status.value("running", false)
+            ? format("lastcutd: running (pid %ld, status of %s)", daemon_status.value("pid", 0L),
+                     daemon_status.value("updated_at", "?").c_str())
+            : format("lastcutd: not running (no %s/status.json)", spool_.root().c_str()));
+    if (daemon_status.contains("cutters")) {
+      for (const auto& [name, cutter] : daemon_status["cutters"].items()) {
+        overview.cutter_lines.push_back(format("cutter %-12s %s, %d batch(es) queued", name.c_str(),
+                                               cutter.value("condition", "?").c_str(), cutter.value("queued_batches", 0)));
+      }
+    }
+    if (daemon_status.contains("waiting_for_hide")) {
+      for (const auto& [material, count] : daemon_status["waiting_for_hide"].items())
+        overview.waiting_for_hide[material] = count.get<long long>();
+    }
+    for (const auto& batch : status["active_batches"]) {
+      const std::string reason = batch.value("reason", "");
+      overview.batch_lines.push_back(format("batch %s for %s: %s, %zu job(s), %d pieces%s", batch.value("id", "").c_str(),
+                                            batch.value("cutter", "").c_str(), batch.value("stage", "").c_str(),
+                                            batch["jobs"].size(), batch.value("pieces", 0),
+                                            reason.empty() ? "" : (" - " + reason).c_str()));
+    }
+    for (const auto& job : status["work"]) overview.in_work.push_back(job_line(job));
+    for (const auto& job : status["held"]) overview.held.push_back(job_line(job));
+    for (const auto& job : status["recent"]) overview.recent.push_back(job_line(job));
+    return overview;
+  }
+
+  std::string id_problem(const std::string& /*job_id: any folder name; requeue says when it is unknown*/) const override {
+    return "";
+  }
+
+  Result<std::string> requeue(const std::string& id, bool again) override {
+    const auto folder = spool_.locate(id);
+    if (!folder) return Status::failure("no job " + id + " in " + spool_.root().string());
+    if (*folder == JobFolder::Work) return Status::failure("job " + id + " is already in work");
+    auto state = spool_.read_state(*folder, id);
+    if (!state) return Status::failure("job " + id + ": state.json is unreadable");
+    if (*folder == JobFolder::Done && state->stage != daemon::JobStage::Skipped && !again) {
+      return Status::failure("job " + id + " was already cut; add --again to cut it once more");
+    }
+    std::error_code error;
+    const bool has_molds = std::filesystem::exists(spool_.job_dir(*folder, id) / daemon::kItemsFile, error);
+    const bool recompute = *folder == JobFolder::Failed || !has_molds;
+    state->batch_id.clear();
+    state->reason.clear();
+    state->attempts = 0;
+    state->advance(recompute ? daemon::JobStage::Claimed : daemon::JobStage::Computed,
+                   "requeued by an operator from " + daemon::folder_name(*folder) + "/");
+    if (Status moved = spool_.move_job(*folder, JobFolder::Work, *state); !moved) return moved;
+    return "job " + id + " is back in work/; lastcutd takes it up within a second";
+  }
+
+ private:
+  daemon::Spool spool_;
+};
+
+}  // namespace
+
+std::unique_ptr<StoreView> make_spool_view(const std::string& spool_dir) {
+  return std::make_unique<SpoolView>(spool_dir);
+}
+
+}  // namespace lastcut::cli

@@ -1,0 +1,94 @@
+// `lastcut status` and `lastcut requeue ID`: the operator's view of the jobs and the one decision
+// the daemon never takes alone (cutting a held job again). Written once against StoreView
+// (store_view.hpp): the configuration decides whether that is the station's spool or the shop's ledger.
+#include <cstdio>
+#include <string>
+
+#include "daemon/cli/commands.hpp"
+#include "daemon/cli/store_view.hpp"
+#include "daemon/config/config_loader.hpp"
+
+namespace lastcut::cli {
+
+Result<std::unique_ptr<StoreView>> open_store_view(const std::string& config_file, const std::string& spool_dir) {
+  if (!spool_dir.empty()) return make_spool_view(spool_dir);
+  const auto loaded = daemon::load_daemon_config(config_file);
+  if (!loaded.config) return Status::failure(loaded.error);
+  if (loaded.config->ledger) {
+    std::vector<std::string> hide_materials;
+    for (const auto& [name, material] : loaded.config->materials)
+      if (material.kind == daemon::MaterialKind::Hide) hide_materials.push_back(name);
+    return make_ledger_view(*loaded.config->ledger, std::move(hide_materials));
+  }
+  return make_spool_view(loaded.config->paths.spool_dir.string());
+}
+
+namespace {
+
+void print_jobs(const char* heading, const std::vector<JobLine>& jobs) {
+  if (!jobs.empty()) std::printf("%s\n", heading);
+  for (const JobLine& job : jobs) {
+    std::printf("  %-20s %-9s %-8s %-10s %-24s %s\n", job.id.c_str(), job.state.c_str(), job.where.c_str(),
+                job.order.empty() ? "-" : job.order.c_str(), job.scan.c_str(), job.reason.c_str());
+  }
+}
+
+void print_overview(const StoreOverview& overview) {
+  std::printf("%s\n", overview.headline.c_str());
+  for (const std::string& line : overview.station_lines) std::printf("  %s\n", line.c_str());
+  for (const std::string& line : overview.cutter_lines) std::printf("  %s\n", line.c_str());
+  for (const auto& [material, count] : overview.waiting_for_hide) {
+    std::printf("  %lld job(s) of %s waiting for a hide (drop a hide file in the hides folder, or lastcut hide load)\n",
+                count, material.c_str());
+  }
+  for (const std::string& line : overview.batch_lines) std::printf("  %s\n", line.c_str());
+  print_jobs("in work:", overview.in_work);
+  print_jobs("held (waiting for an operator: lastcut requeue ID):", overview.held);
+  print_jobs("recent:", overview.recent);
+}
+
+}  // namespace
+
+void add_status_commands(CLI::App& app, int& exit_code) {
+  static std::string config_file = "/etc/lastcut/lastcut.toml";
+  static std::string spool_dir;
+  static bool as_json = false;
+  static std::size_t recent_count = 10;
+  // One line on stderr and the exit status: 2 when the command cannot know where the jobs are, 1
+  // when the store refused or could not be reached.
+  const auto fail = [&exit_code](const char* command, const std::string& why, int code) {
+    std::fprintf(stderr, "lastcut %s: %s\n", command, why.c_str());
+    exit_code = code;
+  };
+  auto* status = app.add_subcommand("status", "queue, cutters and recent jobs of the spool or the shop's ledger");
+  status->add_option("-c,--config", config_file, "lastcutd configuration (its spool folder or [ledger])");
+  status->add_option("--spool", spool_dir, "spool folder (instead of reading the configuration)");
+  status->add_option("--recent", recent_count, "how many recent jobs to list");
+  status->add_flag("--json", as_json, "print the store's JSON document instead of text");
+  status->callback([fail] {
+    auto view = open_store_view(config_file, spool_dir);
+    if (!view) return fail("status", view.error(), 2);
+    const Result<StoreOverview> overview = (*view)->overview(recent_count);
+    if (!overview) return fail("status", overview.error(), 1);
+    if (as_json) std::printf("%s\n", overview->json.dump(2).c_str());
+    else print_overview(*overview);
+  });
+
+  static std::string job_id;
+  static bool again = false;
+  auto* requeue = app.add_subcommand("requeue", "send a held (or failed) job through the pipeline again");
+  requeue->add_option("id", job_id, "job id (see lastcut status)")->required();
+  requeue->add_option("-c,--config", config_file, "lastcutd configuration (its spool folder or [ledger])");
+  requeue->add_option("--spool", spool_dir, "spool folder (instead of reading the configuration)");
+  requeue->add_flag("--again", again, "also requeue a job that was already cut (cut it once more; spool only)");
+  requeue->callback([fail] {
+    auto view = open_store_view(config_file, spool_dir);
+    if (!view) return fail("requeue", view.error(), 2);
+    if (const std::string problem = (*view)->id_problem(job_id); !problem.empty()) return fail("requeue", problem, 2);
+    const Result<std::string> requeued = (*view)->requeue(job_id, again);
+    if (!requeued) return fail("requeue", requeued.error(), 1);
+    std::printf("%s\n", requeued->c_str());
+  });
+}
+
+}  // namespace lastcut::cli

@@ -1,0 +1,63 @@
+#pragma once
+// StoreView: what `lastcut status` and `lastcut requeue` need from the store that keeps the jobs,
+// the spool folder of one station (spool_view.cpp) or the shop's PostgreSQL ledger
+// (ledger_view.cpp). The two commands (status_command.cpp) are written once against it: one
+// overview printed one way, one requeue. Both read the store directly, so they work whether
+// lastcutd runs or not; the ledger's view shows the whole shop from any node.
+#include <cstddef>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "daemon/config/ledger_config.hpp"
+#include "engine/core/status.hpp"
+
+namespace lastcut::cli {
+
+// One job as an operator finds it.
+struct JobLine {
+  std::string id;
+  std::string state;   // the store's word: claimed, computed, batched, sending, cut, held, failed, skipped / ready, ...
+  std::string where;   // spool: its folder (work, done, held, failed); ledger: "on <node>" while a node holds it
+  std::string order;   // the ticket's order, "" when none
+  std::string scan;    // the scan's file name
+  std::string reason;  // why held, failed, waiting; "" otherwise
+};
+
+struct StoreOverview {
+  std::string headline;                    // "spool /var/spool/lastcut: 2 in work, ..." or "ledger URL: 3 done, ..."
+  std::vector<std::string> station_lines;  // the daemon or the nodes: running, pid, heartbeat
+  std::vector<std::string> cutter_lines;   // each cutter's condition and queued batches
+  std::map<std::string, long long> waiting_for_hide;  // hide material -> computed jobs waiting for a hide
+  std::vector<std::string> batch_lines;    // batches in progress or held (spool), hides (ledger)
+  std::vector<JobLine> in_work, held, recent;
+  nlohmann::json json;                     // `--json`: the store's own document (docs/daemon.md, multi-station.md)
+};
+
+class StoreView {
+ public:
+  virtual ~StoreView() = default;
+  // The store's overview with the `recent_count` newest finished jobs; an error line when the store
+  // cannot be read (the ledger away).
+  virtual Result<StoreOverview> overview(std::size_t recent_count) = 0;
+  // "" when `job_id` has the form of this store's ids, else why not (the caller exits 2).
+  virtual std::string id_problem(const std::string& job_id) const = 0;
+  // Puts a held or failed job back in the queue (`again`: also a job already cut, where the store
+  // allows it). The line to print, or why not.
+  virtual Result<std::string> requeue(const std::string& job_id, bool again) = 0;
+};
+
+// The view of the store the configuration names: the ledger when it has [ledger], else its spool
+// folder; `spool_dir` (--spool) names a spool folder directly. An error line when the
+// configuration cannot be read.
+Result<std::unique_ptr<StoreView>> open_store_view(const std::string& config_file, const std::string& spool_dir);
+
+// The two views (spool_view.cpp, ledger_view.cpp). `hide_materials`: the configuration's materials
+// of kind hide, whose computed jobs wait for a hide.
+std::unique_ptr<StoreView> make_spool_view(const std::string& spool_dir);
+std::unique_ptr<StoreView> make_ledger_view(const daemon::LedgerConfig& ledger, std::vector<std::string> hide_materials);
+
+}  // namespace lastcut::cli
