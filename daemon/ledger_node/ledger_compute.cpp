@@ -9,7 +9,7 @@
 #include "daemon/ledger_node/ledger_node.hpp"
 #include "daemon/station/engine_steps.hpp"
 #include "daemon/station/hide_policy.hpp"
-#include "daemon/station/job_mold_options.hpp"
+#include "daemon/station/job_molds.hpp"
 #include "engine/core/durable_file.hpp"
 
 namespace lastcut::daemon {
@@ -83,28 +83,15 @@ void LedgerNode::compute_job(ledger::LedgerClient& client, const ledger::JobClai
   const ScratchRemover remover{*scratch};  // whatever happens below; publishing renames it away first
   copy_references(store_.references(claim.scan.scan_sha256), *scratch);
 
-  const auto start = Clock::now();
-  monitor_.begin(worker, label, settings->jobs.compute_timeout_s);
-  const Result<MoldsMade> made =
-      compute_molds(store_.scan(claim.scan.scan_sha256, claim.scan.scan_name), *scratch, *ticket,
-                    job_mold_options(*ticket, settings->jobs), settings->jobs.max_hole_across_mm);
-  monitor_.end(worker);
-  const double took_s = std::chrono::duration<double>(Clock::now() - start).count();
-  if (!made) {
-    spdlog::error("{}: failed: {}", label, made.error());
-    return finish(client.mark_failed(claim.lease, made.error()), JobStage::Failed, made.error());
+  const JobMolds molds = make_job_molds(store_.scan(claim.scan.scan_sha256, claim.scan.scan_name), *scratch, *ticket,
+                                        *settings, monitor_, worker, label, label);
+  if (molds.verdict == JobMolds::Verdict::Failed) {
+    spdlog::error("{}: failed: {}", label, molds.reason);
+    return finish(client.mark_failed(claim.lease, molds.reason), JobStage::Failed, molds.reason);
   }
-  const Result<ReferenceCheck> checked =
-      check_against_references(*scratch, *ticket, settings->review.corner_tolerance_mm);
-  if (!checked) {
-    spdlog::error("{}: failed: {}", label, checked.error());
-    return finish(client.mark_failed(claim.lease, checked.error()), JobStage::Failed, checked.error());
-  }
-  nlohmann::json report{{"job", claim.job_id},          {"scan", claim.scan.scan_name},
-                        {"sha256", claim.scan.scan_sha256}, {"ticket", nlohmann::json::parse(claim.scan.ticket)},
-                        {"molds", made->piece_count},      {"node", ledger().node},
-                        {"measures", made->measures},      {"timings_s", {{"molds", took_s}}}};
-  if (!checked->comparisons.empty()) report["compare"] = checked->comparisons;
+  nlohmann::json report = molds.report;
+  report.update({{"job", claim.job_id}, {"scan", claim.scan.scan_name}, {"sha256", claim.scan.scan_sha256},
+                 {"ticket", nlohmann::json::parse(claim.scan.ticket)}, {"node", ledger().node}});
   if (Status written = write_file_durably(*scratch / kReportFile, report.dump(1)); !written) {
     return finish(Status::failure("molds made, report not written: " + written.error()), JobStage::Failed, "");
   }
@@ -114,15 +101,12 @@ void LedgerNode::compute_job(ledger::LedgerClient& client, const ledger::JobClai
   if (Status published = store_.publish(*scratch, final_dir); !published) {
     return finish(Status::failure("molds made but not published: " + published.error()), JobStage::Claimed, "");
   }
-  if (const auto warnings = made->measures.find("warnings"); warnings != made->measures.end()) {
-    for (const auto& warning : *warnings) spdlog::warn("{}: {}", label, warning.get<std::string>());
+  if (molds.verdict == JobMolds::Verdict::HeldForReview) {
+    spdlog::warn("{}: held for review: {}", label, molds.reason);
+    return finish(client.mark_held(claim.lease, molds.reason), JobStage::Held, molds.reason);
   }
-  if (!checked->hold_reason.empty()) {
-    spdlog::warn("{}: held for review: {}", label, checked->hold_reason);
-    return finish(client.mark_held(claim.lease, checked->hold_reason), JobStage::Held, checked->hold_reason);
-  }
-  spdlog::info("{}: {} molds ready in {:.1f} s", label, made->piece_count, took_s);
-  finish(client.mark_computed(claim.lease, made->piece_count * ticket->quantity), JobStage::Computed, "");
+  spdlog::info("{}: {} molds ready in {:.1f} s", label, molds.molds, molds.took_s);
+  finish(client.mark_computed(claim.lease, molds.pieces), JobStage::Computed, "");
 }
 
 }  // namespace lastcut::daemon

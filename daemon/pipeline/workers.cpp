@@ -6,7 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include "daemon/station/engine_steps.hpp"
-#include "daemon/station/job_mold_options.hpp"
+#include "daemon/station/job_molds.hpp"
 #include "daemon/pipeline/job_outcomes.hpp"
 #include "daemon/pipeline/pipeline.hpp"
 
@@ -45,54 +45,28 @@ void Pipeline::compute_job(const std::string& job_id, const std::string& worker)
     return;
   }
   const auto job_dir = spool_->job_dir(JobFolder::Work, job_id);
-  const auto start = std::chrono::steady_clock::now();
-  monitor_.begin(worker, "molds of job " + job_id, settings->jobs.compute_timeout_s);
-  const Result<MoldsMade> outcome =
-      compute_molds(job_dir / state->scan_name, job_dir, state->ticket, job_mold_options(state->ticket, settings->jobs),
-                    settings->jobs.max_hole_across_mm);
-  const double took_s = seconds_since(start);
-  if (!outcome) {
-    monitor_.end(worker);
-    fail_job(*spool_, *state, outcome.error());
+  const JobMolds molds = make_job_molds(job_dir / state->scan_name, job_dir, state->ticket, *settings, monitor_, worker,
+                                        "molds of job " + job_id, state->label());
+  if (molds.verdict == JobMolds::Verdict::Failed) {
+    fail_job(*spool_, *state, molds.reason);
     return;
   }
-  // Inside the bracket too: a comparison with a reference pattern is computation on the job's
-  // behalf, and one that hung must starve the watchdog like a hung flattening.
-  const Result<ReferenceCheck> checked =
-      check_against_references(job_dir, state->ticket, settings->review.corner_tolerance_mm);
-  monitor_.end(worker);
-  if (!checked) {
-    fail_job(*spool_, *state, checked.error());
-    return;
-  }
-  state->piece_count = outcome->piece_count * state->ticket.quantity;
-  nlohmann::json report{{"job", job_id},
-                        {"scan", state->scan_name},
-                        {"sha256", state->sha256},
-                        {"ticket", ticket_to_json(state->ticket)},
-                        {"molds", outcome->piece_count},
-                        {"pieces", state->piece_count},
-                        {"measures", outcome->measures},
-                        {"timings_s", {{"molds", took_s}}}};
-  if (!checked->comparisons.empty()) report["compare"] = checked->comparisons;
-  const Status reported = update_job_report(*spool_, JobFolder::Work, job_id, report);
-  if (!reported) {
+  state->piece_count = molds.pieces;
+  nlohmann::json report = molds.report;
+  report.update({{"job", job_id}, {"scan", state->scan_name}, {"sha256", state->sha256},
+                 {"ticket", ticket_to_json(state->ticket)}});
+  if (Status reported = update_job_report(*spool_, JobFolder::Work, job_id, report); !reported) {
     fail_job(*spool_, *state, "molds made but " + reported.error());
     return;
   }
   if (!set_job_stage(*spool_, *state, JobStage::Computed,
-                     fmt::format("{} molds ready in {:.1f} s", outcome->piece_count, took_s),
+                     fmt::format("{} molds ready in {:.1f} s", molds.molds, molds.took_s),
                      "molds made, but the state is not written (computed again at the next start)")) {
     return;
   }
-  // What the engine noticed but got past (a side contradicting the sidecar, a scan hole closed)
-  // must reach the operator's log, not only report.json.
-  if (const auto warnings = outcome->measures.find("warnings"); warnings != outcome->measures.end()) {
-    for (const auto& warning : *warnings) spdlog::warn("{}: {}", state->label(), warning.get<std::string>());
-  }
-  if (!checked->hold_reason.empty()) {
+  if (molds.verdict == JobMolds::Verdict::HeldForReview) {
     // Computed first: `lastcut requeue` of the held job then nests it as it is (the operator's approval).
-    hold_job(*spool_, *state, checked->hold_reason);
+    hold_job(*spool_, *state, molds.reason);
     return;
   }
   std::lock_guard lock(computed_mutex_);

@@ -1,0 +1,49 @@
+#include "daemon/station/job_molds.hpp"
+
+#include <chrono>
+
+#include <spdlog/spdlog.h>
+
+#include "daemon/station/engine_steps.hpp"
+#include "daemon/station/job_mold_options.hpp"
+
+namespace lastcut::daemon {
+
+JobMolds make_job_molds(const std::filesystem::path& scan, const std::filesystem::path& job_dir, const JobTicket& ticket,
+                        const DaemonConfig& settings, ProgressMonitor& monitor, const std::string& worker,
+                        const std::string& task, const std::string& label) {
+  JobMolds molds;
+  const auto start = std::chrono::steady_clock::now();
+  monitor.begin(worker, task, settings.jobs.compute_timeout_s);
+  const Result<MoldsMade> made = compute_molds(scan, job_dir, ticket, job_mold_options(ticket, settings.jobs),
+                                               settings.jobs.max_hole_across_mm);
+  molds.took_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!made) {
+    monitor.end(worker);
+    molds.reason = made.error();
+    return molds;
+  }
+  const Result<ReferenceCheck> checked = check_against_references(job_dir, ticket, settings.review.corner_tolerance_mm);
+  monitor.end(worker);
+  if (!checked) {
+    molds.reason = checked.error();
+    return molds;
+  }
+  molds.molds = made->piece_count;
+  molds.pieces = made->piece_count * ticket.quantity;
+  molds.report = {{"molds", molds.molds},
+                  {"pieces", molds.pieces},
+                  {"measures", made->measures},
+                  {"timings_s", {{"molds", molds.took_s}}}};
+  if (!checked->comparisons.empty()) molds.report["compare"] = checked->comparisons;
+  // What the engine noticed but got past (a side contradicting the sidecar, a scan hole closed)
+  // must reach the operator's log, not only report.json.
+  if (const auto warnings = made->measures.find("warnings"); warnings != made->measures.end()) {
+    for (const auto& warning : *warnings) spdlog::warn("{}: {}", label, warning.get<std::string>());
+  }
+  molds.verdict = checked->hold_reason.empty() ? JobMolds::Verdict::Computed : JobMolds::Verdict::HeldForReview;
+  molds.reason = checked->hold_reason;
+  return molds;
+}
+
+}  // namespace lastcut::daemon

@@ -1,0 +1,39 @@
+#pragma once
+// The molds step of a job as every station runs it, whichever store keeps the job: the engine's
+// molds (compute_molds) and the comparison with the reference patterns the ticket names
+// (check_against_references), both inside the progress monitor's bracket, since a comparison that
+// hangs must starve the systemd watchdog like a hung flattening; the job report's fields; the
+// engine's warnings in the operator's log. What the store does with the verdict (a spool's
+// set_job_stage, the ledger's mark_computed / mark_held / mark_failed) stays with the store.
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "daemon/config/daemon_config.hpp"
+#include "daemon/job/job_ticket.hpp"
+#include "daemon/station/progress_monitor.hpp"
+
+namespace lastcut::daemon {
+
+struct JobMolds {
+  enum class Verdict {
+    Failed,         // bad input or a step that could not be done: `reason` says why
+    HeldForReview,  // molds made, but a corner lies beyond the tolerance from its reference pattern
+    Computed,       // molds made and, where references were named, within tolerance
+  };
+  Verdict verdict = Verdict::Failed;
+  std::string reason;     // Failed: why; HeldForReview: the worst corner
+  int molds = 0;          // molds made
+  int pieces = 0;         // molds x the ticket's quantity: what batching counts
+  double took_s = 0;      // the engine's time for the molds
+  nlohmann::json report;  // molds, pieces, measures, timings_s and, when references were named, compare
+};
+
+// Makes the molds of `scan` into job_dir (molds/, items.json; the reference copies are expected in
+// job_dir), as `worker` busy on `task` in `monitor`; `label` names the job in log lines.
+JobMolds make_job_molds(const std::filesystem::path& scan, const std::filesystem::path& job_dir, const JobTicket& ticket,
+                        const DaemonConfig& settings, ProgressMonitor& monitor, const std::string& worker,
+                        const std::string& task, const std::string& label);
+
+}  // namespace lastcut::daemon
