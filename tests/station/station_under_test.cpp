@@ -4,8 +4,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include <csignal>
+
 #include "tests/daemon/daemon_rig.hpp"
 #include "tests/ledger/ledger_shop.hpp"
+#include "tests/station/left_batches.hpp"
 
 namespace lastcut::daemon::testing {
 namespace {
@@ -24,10 +27,11 @@ void apply_common(const StationSettings& settings, Options& options) {
 
 class SpoolStation : public StationUnderTest {
  public:
-  SpoolStation(const std::string& name, const StationSettings& settings) : rig_(name, options(settings)) {}
+  SpoolStation(const std::string& name, const StationSettings& settings)
+      : fault_(settings.cutter_fault), rig_(name, options(settings)) {}
 
   std::string start() override {
-    rig_.start_cutters();
+    if (std::string trouble = start_cutter(fault_); !trouble.empty()) return trouble;
     rig_.start_daemon();
     return ::testing::Test::HasFatalFailure() ? "lastcutd did not start: " + log() : "";
   }
@@ -60,8 +64,45 @@ class SpoolStation : public StationUnderTest {
     }
     return "";
   }
+  std::string batch_state(const std::string& batch) const override {
+    return batch_json(batch).value("stage", "");
+  }
+  std::string cut_file(const std::string& batch) const override {
+    const std::string name = batch_json(batch).value("cut_file", "");
+    return name.empty() ? "" : read_text(rig_.spool() / "batches" / batch / name);
+  }
   void signal(int signal) override { rig_.daemon()->signal(signal); }
   int stop() override { return rig_.stop_daemon(); }
+  void kill() override { rig_.kill_daemon(); }
+  std::string restart() override {
+    // The log is appended across runs: this run's "lastcutd ready" comes after what is there now.
+    const std::size_t before = log().size();
+    rig_.start_daemon();
+    if (wait_until([&] { return log().find("lastcutd ready", before) != std::string::npos; }, 30)) return "";
+    return "lastcutd did not start again: " + log().substr(before);
+  }
+  std::string start_cutter(const std::string& fault) override {
+    stop_cutter();
+    const auto run = rig_.root() / ("cutter-1-run-" + std::to_string(++runs_));
+    std::string error;
+    cutter_ = start_simulator("hpgl", rig_.root() / "cutter-1.tty", run, fault, run.string() + ".log", error);
+    return cutter_ ? "" : error;
+  }
+  void stop_cutter() override {
+    if (cutter_ && cutter_->running()) {
+      cutter_->signal(SIGTERM);
+      cutter_->wait(10);
+    }
+  }
+  std::vector<std::string> received_per_run() const override {
+    std::vector<std::string> runs;
+    for (int run = 1; run <= runs_; ++run)
+      runs.push_back(simulator_received("hpgl", rig_.root() / ("cutter-1-run-" + std::to_string(run))));
+    return runs;
+  }
+  std::string leave_batch(LeftBatch kind, const std::string& scan, const std::string& cut_program) override {
+    return leave_spool_batch(rig_.spool(), ++left_, kind, scan, cut_program);
+  }
 
  private:
   static RigOptions options(const StationSettings& settings) {
@@ -70,16 +111,28 @@ class SpoolStation : public StationUnderTest {
     options.batch_max_pieces = settings.max_pieces;
     return options;
   }
+  nlohmann::json batch_json(const std::string& batch) const {
+    if (batch.empty()) return nlohmann::json::object();
+    const auto json = nlohmann::json::parse(read_text(rig_.spool() / "batches" / batch / "batch.json"), nullptr, false);
+    return json.is_object() ? json : nlohmann::json::object();
+  }
+  // cutter-1 is this class's own simulator (not the rig's), one record folder per run; declared
+  // before the rig, so that lastcutd is stopped before its cutter goes.
+  std::unique_ptr<Process> cutter_;
+  int runs_ = 0;
+  int left_ = 0;  // batches left by leave_batch
+  std::string fault_;
   mutable DaemonRig rig_;
 };
 
 class LedgerStation : public StationUnderTest {
  public:
-  LedgerStation(const std::string& name, const StationSettings& settings) : shop_(name, options(settings)) {}
+  LedgerStation(const std::string& name, const StationSettings& settings)
+      : fault_(settings.cutter_fault), shop_(name, options(settings)) {}
 
   std::string start() override {
     if (std::string trouble = shop_.start_services(); !trouble.empty()) return trouble;
-    if (std::string trouble = shop_.start_cutter("cutter-1"); !trouble.empty()) return trouble;
+    if (std::string trouble = shop_.start_cutter("cutter-1", fault_); !trouble.empty()) return trouble;
     return shop_.start_node(kNode);
   }
   std::filesystem::path watch() const override { return shop_.watch(kNode); }
@@ -98,8 +151,23 @@ class LedgerStation : public StationUnderTest {
   std::string hide_state(const std::string& hide_id) const override {
     return shop_.value("SELECT state FROM hides WHERE name = '" + hide_id + "'");
   }
+  std::string batch_state(const std::string& batch) const override {
+    return batch.empty() ? "" : shop_.value("SELECT state FROM batches WHERE id = " + batch);
+  }
+  std::string cut_file(const std::string& batch) const override {
+    const std::string name = batch.empty() ? "" : shop_.value("SELECT cut_file FROM batches WHERE id = " + batch);
+    return name.empty() ? "" : read_text(shop_.shared_dir() / name);
+  }
   void signal(int signal) override { shop_.signal_node(kNode, signal); }
   int stop() override { return shop_.stop_node(kNode); }
+  void kill() override { shop_.kill_node(kNode); }
+  std::string restart() override { return shop_.start_node(kNode); }
+  std::string start_cutter(const std::string& fault) override { return shop_.start_cutter("cutter-1", fault); }
+  void stop_cutter() override { shop_.stop_cutter("cutter-1"); }
+  std::vector<std::string> received_per_run() const override { return shop_.received_per_run("cutter-1"); }
+  std::string leave_batch(LeftBatch kind, const std::string& scan, const std::string& cut_program) override {
+    return leave_ledger_batch(shop_.url(), shop_.shared_dir(), kind, scan, cut_program);
+  }
 
  private:
   static constexpr const char* kNode = "station-a";
@@ -111,6 +179,7 @@ class LedgerStation : public StationUnderTest {
     options.max_pieces = settings.max_pieces;
     return options;
   }
+  std::string fault_;
   mutable LedgerShop shop_;
 };
 
@@ -133,6 +202,16 @@ SeenJob StationUnderTest::job(const std::string& scan) const {
 int StationUnderTest::requeue(const std::string& job_id) const {
   const auto out = config_file().parent_path() / "requeue.txt";
   return run_command({binary("lastcut").string(), "requeue", job_id, "--config", config_file().string()}, out);
+}
+
+std::string StationUnderTest::status() const {
+  const auto out = config_file().parent_path() / "status.txt";
+  std::filesystem::remove(out);
+  const int exit_status =
+      run_command({binary("lastcut").string(), "status", "--config", config_file().string()}, out);
+  const std::string text = read_text(out);
+  EXPECT_EQ(exit_status, 0) << text;
+  return text;
 }
 
 void StationUnderTest::drop_scan(const std::string& name, const std::string& tag, const std::string& ticket) const {
