@@ -8,10 +8,14 @@
 //  - [batch] max_pieces: a batch closes when its pieces reach the limit, without waiting the window.
 //  - SIGHUP: a shorter window applies to jobs already waiting.
 //  - a hide loaded while no job waits stays on its table, and the next job of its material is cut on it.
+//  - `lastcut status` lists a held job under "held" with its reason, and a cut job among the recent.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <csignal>
+#include <iterator>
 #include <set>
+#include <sstream>
 
 #include "tests/daemon/daemon_harness.hpp"
 #include "tests/daemon/hide_samples.hpp"
@@ -32,6 +36,35 @@ class StationBehaviour : public ::testing::TestWithParam<StoreKind> {
     return station.job(scan).state == state;
   }
 };
+
+// The rows `lastcut status` prints under the heading that starts with `heading`: the indented lines
+// up to the next heading.
+std::vector<std::string> rows_under(const std::string& status, const std::string& heading) {
+  std::vector<std::string> rows;
+  std::istringstream lines(status);
+  bool under = false;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("  ", 0) != 0) under = line.rfind(heading, 0) == 0;
+    else if (under) rows.push_back(line);
+  }
+  return rows;
+}
+
+// Whether one of `rows` is the row of `job`: its id first, its scan name a word of its own, and
+// ending with `reason` (both stores print the reason last).
+bool lists(const std::vector<std::string>& rows, const SeenJob& job, const std::string& reason) {
+  for (const std::string& row : rows) {
+    std::istringstream words(row);
+    std::vector<std::string> seen{std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()};
+    if (seen.empty() || seen.front() != job.id || std::find(seen.begin(), seen.end(), job.scan) == seen.end()) continue;
+    const auto end = row.find_last_not_of(' ');
+    const std::string text = end == std::string::npos ? "" : row.substr(0, end + 1);
+    if (text.size() >= reason.size() && text.compare(text.size() - reason.size(), reason.size(), reason) == 0) return true;
+  }
+  return false;
+}
+
+constexpr const char* kHeldHeading = "held (waiting for an operator: lastcut requeue ID):";
 
 TEST_P(StationBehaviour, ADuplicateIsHeldByPolicyAndCutAfterARequeue) {
   StationSettings settings;
@@ -121,6 +154,23 @@ TEST_P(StationBehaviour, AHideLoadedWhileNothingWaitsStaysOnItsTable) {
   station->drop_scan("leather.stl", "leather", "material = \"leather\"\n");
   ASSERT_TRUE(wait_until([&] { return reached(*station, "leather.stl", "done"); }, 90)) << station->log();
   EXPECT_EQ(station->hide_state("H-1"), "used");
+  EXPECT_EQ(station->stop(), 0);
+}
+
+TEST_P(StationBehaviour, StatusShowsAHeldJobWithItsReasonAndACutJobAmongTheRecent) {
+  StationSettings settings;
+  settings.duplicate_policy = "hold";
+  auto station = start("behaviour-status", settings);
+  station->drop_scan("first.stl", "shown");
+  ASSERT_TRUE(wait_until([&] { return reached(*station, "first.stl", "done"); }, 90)) << station->log();
+  station->drop_copy("shown", "again.stl");
+  ASSERT_TRUE(wait_until([&] { return reached(*station, "again.stl", "held"); }, 30)) << station->log();
+  const SeenJob cut = station->job("first.stl"), held = station->job("again.stl");
+  const std::string status = station->status();
+  const auto held_rows = rows_under(status, kHeldHeading);
+  EXPECT_TRUE(lists(held_rows, held, "same scan bytes as job " + cut.id + " (duplicate held by policy)")) << status;
+  EXPECT_FALSE(lists(held_rows, cut, "")) << status;
+  EXPECT_TRUE(lists(rows_under(status, "recent:"), cut, "")) << status;
   EXPECT_EQ(station->stop(), 0);
 }
 
