@@ -8,6 +8,8 @@
 //  - [batch] max_pieces: a batch closes when its pieces reach the limit, without waiting the window.
 //  - SIGHUP: a shorter window applies to jobs already waiting.
 //  - a hide loaded while no job waits stays on its table, and the next job of its material is cut on it.
+//  - [hides] at most 64 jobs (kHideMaxJobs) are offered to one hide, the oldest; the rest wait for
+//    the next hide, however high their priority.
 //  - `lastcut status` lists a held job under "held" with its reason, and a cut job among the recent.
 #include <gtest/gtest.h>
 
@@ -19,6 +21,7 @@
 
 #include "tests/daemon/daemon_harness.hpp"
 #include "tests/daemon/hide_samples.hpp"
+#include "daemon/station/hide_policy.hpp"
 #include "tests/station/station_under_test.hpp"
 
 namespace lastcut::daemon::testing {
@@ -171,6 +174,73 @@ TEST_P(StationBehaviour, StatusShowsAHeldJobWithItsReasonAndACutJobAmongTheRecen
   EXPECT_TRUE(lists(held_rows, held, "same scan bytes as job " + cut.id + " (duplicate held by policy)")) << status;
   EXPECT_FALSE(lists(held_rows, cut, "")) << status;
   EXPECT_TRUE(lists(rows_under(status, "recent:"), cut, "")) << status;
+  EXPECT_EQ(station->stop(), 0);
+}
+
+// At most kHideMaxJobs (64) jobs go on one hide, the oldest; the rest wait for the next hide. 64
+// small generated lasts of leather (molds in about 0.1 s each), then "urgent.stl" with the highest
+// priority, the newest job: the nester would place it first, yet H-1 is not offered it. H-1 (as big as
+// the plotter's work area) takes the first pieces that fit, the other offered jobs wait with "did not
+// fit on hide H-1"; urgent.stl waits without having been offered, and is cut on the next hide, H-2.
+TEST_P(StationBehaviour, AtMost64JobsGoOnOneHideAndTheRestWaitForTheNext) {
+  StationSettings settings;
+  settings.hides = true;
+  auto station = start("behaviour-hide-cap", settings);
+  const auto staging = station->config_file().parent_path() / "staging";
+  std::filesystem::create_directories(staging);
+  std::filesystem::create_directories(station->hides());
+  const auto leather = [&] {
+    std::vector<SeenJob> found;
+    for (const SeenJob& job : station->jobs())
+      if (job.scan.rfind("cap-", 0) == 0) found.push_back(job);
+    return found;
+  };
+  for (int i = 0; i < kHideMaxJobs; ++i) {
+    const std::string tag = "cap-" + std::to_string(i);
+    station->drop_scan(tag + ".stl", tag, "material = \"leather\"\n");
+  }
+  ASSERT_TRUE(wait_until([&] { return leather().size() == static_cast<std::size_t>(kHideMaxJobs); }, 60))
+      << station->log();
+  station->drop_scan("urgent.stl", "urgent", "material = \"leather\"\npriority = 9\n");
+  const auto all_computed = [&] {
+    const auto jobs = leather();
+    return reached(*station, "urgent.stl", "computed") &&
+           std::all_of(jobs.begin(), jobs.end(), [](const SeenJob& job) { return job.state == "computed"; });
+  };
+  ASSERT_TRUE(wait_until(all_computed, 90)) << station->log();
+  // Each hide of its own size, inside the plotter's 1189 x 841 mm work area.
+  const auto load_hide = [&](const std::string& id, double length_mm) {
+    write_hide_json(staging / (id + ".json"), length_mm, 800);
+    write_text(station->hides() / (id + ".toml"), "id = \"" + id + "\"\n");
+    drop(staging / (id + ".json"), station->hides(), id + ".json");
+  };
+  load_hide("H-1", 1150);
+  ASSERT_TRUE(wait_until([&] { return station->hide_state("H-1") == "used"; }, 60)) << station->log();
+  const std::string did_not_fit = "waiting for a hide of leather: did not fit on hide H-1";
+  std::string hide_batch;
+  const auto offered_to_h1 = [&](const SeenJob& job) {
+    return (job.state == "done" && job.batch == hide_batch) ||
+           (job.state == "computed" && job.batch.empty() && job.reason.rfind(did_not_fit, 0) == 0);
+  };
+  // The hide's batch is cut; the offered jobs that did not fit wait again.
+  ASSERT_TRUE(wait_until(
+      [&] {
+        const auto jobs = leather();
+        for (const SeenJob& job : jobs)
+          if (job.state == "done") hide_batch = job.batch;
+        return !hide_batch.empty() && std::all_of(jobs.begin(), jobs.end(), offered_to_h1);
+      },
+      60))
+      << station->log();
+  const SeenJob urgent = station->job("urgent.stl");
+  EXPECT_EQ(urgent.state, "computed");
+  EXPECT_EQ(urgent.batch, "");
+  EXPECT_EQ(urgent.reason.find("H-1"), std::string::npos) << urgent.reason;
+
+  load_hide("H-2", 1140);
+  ASSERT_TRUE(wait_until([&] { return reached(*station, "urgent.stl", "done"); }, 60)) << station->log();
+  EXPECT_NE(station->job("urgent.stl").batch, hide_batch);
+  EXPECT_EQ(station->hide_state("H-2"), "used");
   EXPECT_EQ(station->stop(), 0);
 }
 
