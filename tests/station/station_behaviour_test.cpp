@@ -11,6 +11,8 @@
 //  - [hides] at most 64 jobs (kHideMaxJobs) are offered to one hide, the oldest; the rest wait for
 //    the next hide, however high their priority.
 //  - `lastcut status` lists a held job under "held" with its reason, and a cut job among the recent.
+//  - a batch whose record this lastcutd cannot trust is held with its job and the reason, never cut
+//    (spool: batch.json with an unknown stage; ledger: `sending` left by a vanished node).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -38,6 +40,7 @@ class StationBehaviour : public ::testing::TestWithParam<StoreKind> {
   static bool reached(const StationUnderTest& station, const std::string& scan, const std::string& state) {
     return station.job(scan).state == state;
   }
+  bool spool() const { return GetParam() == StoreKind::Spool; }
 };
 
 // The rows `lastcut status` prints under the heading that starts with `heading`: the indented lines
@@ -242,6 +245,39 @@ TEST_P(StationBehaviour, AtMost64JobsGoOnOneHideAndTheRestWaitForTheNext) {
   EXPECT_NE(station->job("urgent.stl").batch, hide_batch);
   EXPECT_EQ(station->hide_state("H-2"), "used");
   EXPECT_EQ(station->stop(), 0);
+}
+
+// A record of a batch this lastcutd cannot trust is held with its job for an operator, never cut.
+// On the spool: batch.json with a stage this lastcutd does not know ('xyz', a newer lastcutd or a
+// hand edit). The ledger cannot keep such a row (CHECK constraints on every state column; a ledger
+// of a newer schema refuses an older node at start), so there it is what the ledger CAN have: a
+// batch left `sending` by a node that vanished (its lease ran out). A well-formed queued batch left
+// beside it is cut: the plotter takes what it is sent.
+TEST_P(StationBehaviour, ABatchWhoseRecordCannotBeTrustedIsHeldAndNeverCut) {
+  auto station = start("behaviour-untrusted", StationSettings{});
+  ASSERT_EQ(station->stop(), 0);
+  const std::string untrusted =
+      station->leave_batch(LeftBatch::Untrusted, "untrusted.stl", "IN;SP1;PU0,0;PD222,0;PU;SP0;\n");
+  station->leave_batch(LeftBatch::Queued, "queued.stl", "IN;SP1;PU0,0;PD333,0;PU;SP0;\n");
+  ASSERT_EQ(station->restart(), "");
+  ASSERT_TRUE(wait_until([&] { return reached(*station, "untrusted.stl", "held") && reached(*station, "queued.stl", "done"); },
+                         30))
+      << station->log();
+  const std::string reason =
+      spool() ? "batch " + untrusted + ": batch.json has an unknown stage 'xyz'; not sent, an operator must check it"
+              : "station station-gone stopped answering while sending batch " + untrusted +
+                    ": check the cutter's table, then lastcut requeue";
+  const SeenJob held = station->job("untrusted.stl");
+  EXPECT_EQ(held.reason, reason);
+  EXPECT_EQ(station->batch_state(untrusted), "held");
+  const std::string status = station->status();
+  EXPECT_TRUE(lists(rows_under(status, kHeldHeading), held, reason)) << status;
+  EXPECT_EQ(station->stop(), 0);
+  station->stop_cutter();
+  const auto runs = station->received_per_run();
+  ASSERT_EQ(runs.size(), 1u);
+  EXPECT_EQ(count_occurrences(runs[0], "PD222"), 0) << runs[0];
+  EXPECT_EQ(count_occurrences(runs[0], "PD333"), 1) << runs[0];
 }
 
 INSTANTIATE_TEST_SUITE_P(BothStores, StationBehaviour, ::testing::Values(StoreKind::Spool, StoreKind::Ledger),
