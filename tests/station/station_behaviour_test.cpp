@@ -13,6 +13,8 @@
 //  - `lastcut status` lists a held job under "held" with its reason, and a cut job among the recent.
 //  - a batch whose record this lastcutd cannot trust is held with its job and the reason, never cut
 //    (spool: batch.json with an unknown stage; ledger: `sending` left by a vanished node).
+//  - at most once across SIGKILL: a batch being sent when lastcutd dies is held with its job after
+//    the restart, and the plotter never receives its cut file again.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -278,6 +280,44 @@ TEST_P(StationBehaviour, ABatchWhoseRecordCannotBeTrustedIsHeldAndNeverCut) {
   ASSERT_EQ(runs.size(), 1u);
   EXPECT_EQ(count_occurrences(runs[0], "PD222"), 0) << runs[0];
   EXPECT_EQ(count_occurrences(runs[0], "PD333"), 1) << runs[0];
+}
+
+// At most once across a crash: lastcutd SIGKILLed while its plotter takes a batch (the plotter hangs
+// at line 20) and started again holds the batch and its job with the reason, and never sends the
+// cut file again: the plotter (switched off and on: a new simulator run) gets only the next batch.
+TEST_P(StationBehaviour, ABatchBeingSentWhenLastcutdIsKilledIsHeldAndNeverSentAgain) {
+  StationSettings settings;
+  settings.cutter_fault = "stall-at-line=20";
+  auto station = start("behaviour-killed", settings);
+  station->drop_scan("killed.stl", "killed");
+  ASSERT_TRUE(wait_until([&] { return station->batch_state(station->job("killed.stl").batch) == "sending"; }, 90))
+      << station->log();
+  const std::string batch = station->job("killed.stl").batch;
+  station->kill();
+  ASSERT_EQ(station->start_cutter(), "");
+  ASSERT_EQ(station->restart(), "");
+  ASSERT_TRUE(wait_until([&] { return reached(*station, "killed.stl", "held"); }, 30)) << station->log();
+  EXPECT_EQ(station->job("killed.stl").reason,
+            spool() ? "lastcutd stopped (crash or power cut) while batch " + batch +
+                          " was being sent to cutter cutter-1; pieces may be partly cut"
+                    : "station station-a stopped answering while sending batch " + batch +
+                          ": check the cutter's table, then lastcut requeue");
+  EXPECT_EQ(station->batch_state(batch), "held");
+  // The station cuts again after its restart; a held batch sent again would come before this one.
+  station->drop_scan("after.stl", "after");
+  ASSERT_TRUE(wait_until([&] { return reached(*station, "after.stl", "done"); }, 90)) << station->log();
+  EXPECT_EQ(station->stop(), 0);
+  station->stop_cutter();
+
+  const std::string cut = station->cut_file(batch);
+  ASSERT_GT(cut.size(), 200u);
+  const auto runs = station->received_per_run();
+  ASSERT_EQ(runs.size(), 2u);
+  EXPECT_EQ(count_occurrences(runs[0], cut), 0) << "the stalled cut never completed";
+  EXPECT_FALSE(runs[0].empty());  // what reached the stalled plotter before the kill: the cut's beginning
+  EXPECT_LT(runs[0].size(), cut.size());
+  EXPECT_EQ(cut.compare(0, runs[0].size(), runs[0]), 0) << runs[0];
+  EXPECT_EQ(runs[1], station->cut_file(station->job("after.stl").batch)) << "after the restart: only the next batch";
 }
 
 INSTANTIATE_TEST_SUITE_P(BothStores, StationBehaviour, ::testing::Values(StoreKind::Spool, StoreKind::Ledger),
