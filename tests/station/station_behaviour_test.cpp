@@ -290,7 +290,14 @@ TEST_P(StationBehaviour, ABatchBeingSentWhenLastcutdIsKilledIsHeldAndNeverSentAg
   settings.cutter_fault = "stall-at-line=20";
   auto station = start("behaviour-killed", settings);
   station->drop_scan("killed.stl", "killed");
-  ASSERT_TRUE(wait_until([&] { return station->batch_state(station->job("killed.stl").batch) == "sending"; }, 90))
+  // Killed once the plotter has taken the batch's first lines (the simulator writes its record twice a
+  // second): `sending` is written before the first byte goes out.
+  ASSERT_TRUE(wait_until(
+      [&] {
+        return station->batch_state(station->job("killed.stl").batch) == "sending" &&
+               !station->received_per_run().back().empty();
+      },
+      90))
       << station->log();
   const std::string batch = station->job("killed.stl").batch;
   station->kill();
