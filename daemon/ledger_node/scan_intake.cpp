@@ -159,7 +159,16 @@ Status LedgerNode::enter_hide(const ReadyScan& ready) {
   // The files first, then the row: a hide in the ledger always finds its file in the shared folder.
   const std::filesystem::path shared = store_.hide_dir(*hash);
   std::error_code exists_error;
-  if (!std::filesystem::exists(shared, exists_error)) {
+  if (std::filesystem::exists(shared, exists_error)) {
+    // The same bytes entered before under another name (stock hides cut to one outline): this
+    // hide's own file and sidecar join them, each written whole before the row names it.
+    for (const std::filesystem::path& file : {ready.scan, ready.sidecar}) {
+      if (file.empty() || std::filesystem::exists(shared / file.filename(), exists_error)) continue;
+      if (Status copied = copy_file_durably(file, shared / file.filename()); !copied) {
+        return Status::failure("shared folder unusable: " + copied.error());
+      }
+    }
+  } else {
     auto scratch = store_.scratch_for(shared, ledger().node);
     Status copied = scratch.status();
     for (const std::filesystem::path& file : {ready.scan, ready.sidecar}) {

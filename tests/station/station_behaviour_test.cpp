@@ -213,7 +213,7 @@ TEST_P(StationBehaviour, AtMost64JobsGoOnOneHideAndTheRestWaitForTheNext) {
            std::all_of(jobs.begin(), jobs.end(), [](const SeenJob& job) { return job.state == "computed"; });
   };
   ASSERT_TRUE(wait_until(all_computed, 90)) << station->log();
-  // Each hide of its own size, inside the plotter's 1189 x 841 mm work area.
+  // Hides inside the plotter's 1189 x 841 mm work area (a bigger one is refused at nesting).
   const auto load_hide = [&](const std::string& id, double length_mm) {
     write_hide_json(staging / (id + ".json"), length_mm, 800);
     write_text(station->hides() / (id + ".toml"), "id = \"" + id + "\"\n");
@@ -242,7 +242,8 @@ TEST_P(StationBehaviour, AtMost64JobsGoOnOneHideAndTheRestWaitForTheNext) {
   EXPECT_EQ(urgent.batch, "");
   EXPECT_EQ(urgent.reason.find("H-1"), std::string::npos) << urgent.reason;
 
-  load_hide("H-2", 1140);
+  // H-2 is cut to the same outline as H-1: the same bytes under another ID must be a hide of its own.
+  load_hide("H-2", 1150);
   ASSERT_TRUE(wait_until([&] { return reached(*station, "urgent.stl", "done"); }, 60)) << station->log();
   EXPECT_NE(station->job("urgent.stl").batch, hide_batch);
   EXPECT_EQ(station->hide_state("H-2"), "used");
