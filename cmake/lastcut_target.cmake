@@ -5,6 +5,12 @@ function(lastcut_warnings target)
                                            -Wno-missing-field-initializers)
 endfunction()
 
+# `sanitize_tests`: what the ASan + UBSan tree (scripts/test.sh) builds: the tests labelled
+# `sanitize` and the programs (lastcut, lastcutd, lastcut-sim) tests run, not every other test.
+if(NOT TARGET sanitize_tests)
+  add_custom_target(sanitize_tests)
+endif()
+
 # lastcut_library(NAME SOURCES... [DEPS ...]): one engine/driver/daemon module as a static library.
 # The include root is the repository, so headers are included as "engine/flatten/arap.hpp".
 function(lastcut_library name)
@@ -41,6 +47,9 @@ function(lastcut_test name)
     set(lock_property RESOURCE_LOCK ${ARG_RESOURCE_LOCK})
   endif()
   include(GoogleTest)
+  if("sanitize" IN_LIST ARG_LABELS)
+    add_dependencies(sanitize_tests ${name})
+  endif()
   gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT ${ARG_TIMEOUT} LABELS "${ARG_LABELS}" ${lock_property})
 endfunction()
 
@@ -55,4 +64,5 @@ function(lastcut_program name)
     target_compile_options(${name} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer)
     target_link_options(${name} PRIVATE -fsanitize=address,undefined)
   endif()
+  add_dependencies(sanitize_tests ${name})
 endfunction()
