@@ -29,7 +29,8 @@ class LedgerCutStore : public CutStore {
   LedgerCutStore(std::string cutter, const LedgerConfig& ledger, const SharedStore& shared, ledger::LeaseKeeper& keeper,
                  Pause pause, BatchEvent batch_event);
 
-  bool may_have_work() override { return true; }  // other nodes nest this cutter's batches
+  // Other nodes nest this cutter's batches: one may always wait, unnamed until claimed.
+  std::optional<std::string> next_batch() override { return std::string(); }
   Result<std::optional<CutOrder>> claim() override;
   Status mark_sending(const CutOrder& order) override;
   CutEnd record_end(const CutOrder& order, CutEnd end, const std::string& reason,

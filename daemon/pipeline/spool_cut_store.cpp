@@ -50,9 +50,10 @@ std::size_t SpoolCutStore::queued() const {
   return queue_.size();
 }
 
-bool SpoolCutStore::may_have_work() {
+std::optional<std::string> SpoolCutStore::next_batch() {
   std::lock_guard lock(mutex_);
-  return !queue_.empty();
+  if (queue_.empty()) return std::nullopt;
+  return queue_.front();
 }
 
 Result<std::optional<CutOrder>> SpoolCutStore::claim() {

@@ -22,7 +22,7 @@ class SpoolCutStore : public CutStore {
   void enqueue(const std::string& batch_id);
   std::size_t queued() const;
 
-  bool may_have_work() override;
+  std::optional<std::string> next_batch() override;
   Result<std::optional<CutOrder>> claim() override;
   Status mark_sending(const CutOrder& order) override;
   CutEnd record_end(const CutOrder& order, CutEnd end, const std::string& reason,

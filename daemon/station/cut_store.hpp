@@ -44,9 +44,11 @@ class CutStore {
  public:
   virtual ~CutStore() = default;
 
-  // Whether a batch may wait for this cutter: the worker probes the cutter only then. Must be cheap;
-  // a store that cannot tell without a round trip answers true.
-  virtual bool may_have_work() = 0;
+  // The batch next in line for this cutter, named in the cutter's status while the cutter is not
+  // ready: "" when one may wait but the store cannot name it without a round trip (a ledger shared
+  // with other nodes), nullopt when none waits. The worker probes the cutter only when a batch may
+  // wait. Must be cheap.
+  virtual std::optional<std::string> next_batch() = 0;
   // Claims this cutter's oldest queued batch: nullopt when none waits, an error line when the store
   // cannot be asked now (the worker logs it once per change and asks again later).
   virtual Result<std::optional<CutOrder>> claim() = 0;

@@ -94,14 +94,15 @@ void CutterWorker::run() {
 }
 
 double CutterWorker::turn() {
-  if (!store_.may_have_work()) return kIdleWait_s;
+  const std::optional<std::string> next = store_.next_batch();
+  if (!next) return kIdleWait_s;
   const CutterSection section = settings_();
   const drivers::ProbeResult probe = drivers::probe_cutter({section.link, cutter_, ""});
   if (!probe.ready) {
-    note_cutter_problem(probe.reason.empty() ? probe.state : probe.reason, probe.state, section.retry_interval_s);
+    note_cutter_problem(probe.reason.empty() ? probe.state : probe.reason, probe.state, *next, section.retry_interval_s);
     return section.retry_interval_s;
   }
-  note_cutter_problem("", probe.state, section.retry_interval_s);
+  note_cutter_problem("", probe.state, *next, section.retry_interval_s);
   if (stopping_) return 0;  // no new claim while stopping
   const Result<std::optional<CutOrder>> claimed = store_.claim();
   note_store_trouble(claimed ? "" : claimed.error());
@@ -185,10 +186,11 @@ bool CutterWorker::cut(const CutOrder& order, const CutterSection& section) {
   return true;
 }
 
-void CutterWorker::note_cutter_problem(const std::string& problem, const std::string& state, double retry_s) {
+void CutterWorker::note_cutter_problem(const std::string& problem, const std::string& state,
+                                       const std::string& next_batch, double retry_s) {
   if (!problem.empty()) {
     set_condition("waiting: " + problem);
-    if (reported_state_ != "waiting" || problem != cutter_problem_) report("waiting", "", problem);
+    if (reported_state_ != "waiting" || problem != cutter_problem_) report("waiting", next_batch, problem);
     if (problem != cutter_problem_) {
       spdlog::warn("cutter {}: not ready ({}); its batches wait, retrying every {} s", cutter_, problem, retry_s);
     }

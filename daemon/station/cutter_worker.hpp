@@ -55,7 +55,9 @@ class CutterWorker {
   bool cut(const CutOrder& order, const CutterSection& section);
   void set_condition(const std::string& condition);
   // Logs a change of the cutter's or the store's trouble once ("" = no trouble now).
-  void note_cutter_problem(const std::string& problem, const std::string& state, double retry_s);
+  // `next_batch` is named in the status report ("" when the store cannot name it).
+  void note_cutter_problem(const std::string& problem, const std::string& state, const std::string& next_batch,
+                           double retry_s);
   void note_store_trouble(const std::string& trouble);
   void report(const std::string& state, const std::string& batch_id, const std::string& reason,
               const drivers::SendProgress& progress = {});

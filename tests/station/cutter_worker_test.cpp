@@ -37,9 +37,10 @@ class FakeCutStore : public CutStore {
   bool cannot_requeue = false;      // NotSent comes back Held, as the spool's when it cannot write the batch back
   std::function<void()> on_claim;   // runs between the worker's probe and its send
 
-  bool may_have_work() override {
-    calls.push_back("may_have_work");
-    return has_work;
+  std::optional<std::string> next_batch() override {
+    calls.push_back("next_batch");
+    if (!has_work) return std::nullopt;
+    return queue.empty() ? std::string() : queue.front().batch_id;
   }
   Result<std::optional<CutOrder>> claim() override {
     calls.push_back("claim");
@@ -143,7 +144,7 @@ TEST_F(CutterWorkerTest, AReadyPlotterCutsTheStoredFileOnceAndTheBatchEndsCut) {
   start_plotter();
   queue("B1");
   EXPECT_EQ(worker.turn(), 0.0) << "after a cut the next batch is asked for at once";
-  EXPECT_EQ(store.calls, (Calls{"may_have_work", "claim", "sending B1", "end B1 cut"}));
+  EXPECT_EQ(store.calls, (Calls{"next_batch", "claim", "sending B1", "end B1 cut"}));
   EXPECT_EQ(received(), kCutFile);
   ASSERT_GE(reports.size(), 2u);
   EXPECT_EQ(reports.front().state, "sending");
@@ -160,7 +161,7 @@ TEST_F(CutterWorkerTest, WhenSendingCannotBeMarkedNothingReachesThePlotter) {
   queue("B1");
   store.sending_error = "cannot write state.json: No space left on device";
   EXPECT_EQ(worker.turn(), section.retry_interval_s);
-  EXPECT_EQ(store.calls, (Calls{"may_have_work", "claim", "sending B1"})) << "no end: the store decides what comes next";
+  EXPECT_EQ(store.calls, (Calls{"next_batch", "claim", "sending B1"})) << "no end: the store decides what comes next";
   EXPECT_EQ(received(), "");
   EXPECT_EQ(log.count("its state `sending` could not be written: cannot write state.json"), 1) << log.text();
 }
@@ -171,8 +172,8 @@ TEST_F(CutterWorkerTest, AMissingOrEmptyCutFileIsHeldBeforeThePointOfNoReturn) {
   queue("B2", "");
   EXPECT_EQ(worker.turn(), 0.0);
   EXPECT_EQ(worker.turn(), 0.0);
-  EXPECT_EQ(store.calls, (Calls{"may_have_work", "claim", "end B1 held: the cut file B1.hpgl is missing or empty",
-                                "may_have_work", "claim", "end B2 held: the cut file B2.hpgl is missing or empty"}));
+  EXPECT_EQ(store.calls, (Calls{"next_batch", "claim", "end B1 held: the cut file B1.hpgl is missing or empty",
+                                "next_batch", "claim", "end B2 held: the cut file B2.hpgl is missing or empty"}));
   EXPECT_EQ(received(), "");
   EXPECT_EQ(states(), (Calls{"held", "held"}));
   EXPECT_EQ(reports.back().batch, "B2");
@@ -183,15 +184,16 @@ TEST_F(CutterWorkerTest, NoBatchIsClaimedWhileThePlotterCannotTakeItAndEachChang
   queue("B1");  // the plotter is switched off: nothing at its port yet
   EXPECT_EQ(worker.turn(), section.retry_interval_s);
   EXPECT_EQ(worker.turn(), section.retry_interval_s);
-  EXPECT_EQ(store.calls, (Calls{"may_have_work", "may_have_work"}));
+  EXPECT_EQ(store.calls, (Calls{"next_batch", "next_batch"}));
   ASSERT_EQ(states(), (Calls{"waiting"})) << "one report per change, not one per try";
+  EXPECT_EQ(reports[0].batch, "B1") << "the status names the batch that waits";
   EXPECT_NE(reports[0].reason, "");
   EXPECT_EQ(worker.condition(), "waiting: " + reports[0].reason);
   EXPECT_EQ(log.count("cutter bench: not ready (" + reports[0].reason + ")"), 1) << log.text();
 
   start_plotter();  // switched on: the batch is claimed and cut
   EXPECT_EQ(worker.turn(), 0.0);
-  EXPECT_EQ(store.calls, (Calls{"may_have_work", "may_have_work", "may_have_work", "claim", "sending B1", "end B1 cut"}));
+  EXPECT_EQ(store.calls, (Calls{"next_batch", "next_batch", "next_batch", "claim", "sending B1", "end B1 cut"}));
   EXPECT_EQ(states().at(1), "idle") << "ready again before the batch starts";
   EXPECT_EQ(reports.back().state, "idle");
   EXPECT_EQ(log.count("cutter bench: ready again"), 1) << log.text();
@@ -203,7 +205,7 @@ TEST_F(CutterWorkerTest, APlotterThatFaultsMidJobLeavesTheBatchHeldNeverCut) {
   queue("B1");
   EXPECT_EQ(worker.turn(), 0.0);
   ASSERT_EQ(store.calls.size(), 4u) << ::testing::PrintToString(store.calls);
-  EXPECT_EQ((Calls{store.calls.begin(), store.calls.begin() + 3}), (Calls{"may_have_work", "claim", "sending B1"}));
+  EXPECT_EQ((Calls{store.calls.begin(), store.calls.begin() + 3}), (Calls{"next_batch", "claim", "sending B1"}));
   const std::string end = store.calls[3];
   const std::string prefix = "end B1 held: cutter bench stopped while cutting batch B1: ";
   const std::string suffix = "; pieces may be partly cut";
@@ -252,7 +254,7 @@ TEST_F(CutterWorkerTest, WithNoWorkInTheStoreThePlotterIsNotAsked) {
   queue("B1");
   store.has_work = false;  // nothing at the port either: a probe would report the cutter waiting
   EXPECT_GT(worker.turn(), 0);
-  EXPECT_EQ(store.calls, (Calls{"may_have_work"}));
+  EXPECT_EQ(store.calls, (Calls{"next_batch"}));
   EXPECT_EQ(states(), Calls{});
   EXPECT_EQ(worker.condition(), "idle");
 }
