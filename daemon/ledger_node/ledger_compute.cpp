@@ -65,18 +65,18 @@ void LedgerNode::compute_job(ledger::LedgerClient& client, const ledger::JobClai
   const auto settings = config();  // one configuration for the whole step (SIGHUP may replace it)
   const std::string label = "job " + std::to_string(claim.job_id) + " (" + claim.scan.scan_name + ")";
   keeper_->keep(claim.lease);
-  job_event(claim.job_id, claim.scan.scan_name, claim.scan.ticket, 0, JobStage::Claimed, "");
-  const auto finish = [&](const Status& marked, JobStage stage, const std::string& reason) {
+  job_changed(claim.job_id, claim.scan.scan_name, claim.scan.ticket, 0, JobStage::Claimed, "",
+              "computing molds on " + ledger().node + " (attempt " + std::to_string(claim.attempts) + ")");
+  // The one way out: the ledger's fenced change, then what it says (job_changed).
+  const auto finish = [&](const Status& marked, JobStage stage, const std::string& reason, const std::string& note = "") {
     keeper_->drop(claim.lease);
     if (!marked) spdlog::warn("{}: {}; the work is dropped", label, marked.error());
-    else job_event(claim.job_id, claim.scan.scan_name, claim.scan.ticket, 0, stage, reason);
+    else job_changed(claim.job_id, claim.scan.scan_name, claim.scan.ticket, 0, stage, reason, note);
   };
   const Result<JobTicket> ticket = ticket_from_ledger(claim.scan.ticket);
   if (!ticket) {
-    spdlog::error("{}: failed: {}", label, ticket.error());
     return finish(client.mark_failed(claim.lease, ticket.error()), JobStage::Failed, ticket.error());
   }
-  spdlog::info("{}: computing molds on {} (attempt {})", label, ledger().node, claim.attempts);
   const std::filesystem::path final_dir = store_.job_dir(claim.job_folder);
   auto scratch = store_.scratch_for(final_dir, ledger().node);
   if (!scratch) return finish(Status::failure(scratch.error()), JobStage::Failed, "");
@@ -86,7 +86,6 @@ void LedgerNode::compute_job(ledger::LedgerClient& client, const ledger::JobClai
   const JobMolds molds = make_job_molds(store_.scan(claim.scan.scan_sha256, claim.scan.scan_name), *scratch, *ticket,
                                         *settings, monitor_, worker, label, label);
   if (molds.verdict == JobMolds::Verdict::Failed) {
-    spdlog::error("{}: failed: {}", label, molds.reason);
     return finish(client.mark_failed(claim.lease, molds.reason), JobStage::Failed, molds.reason);
   }
   nlohmann::json report = molds.report;
@@ -102,11 +101,10 @@ void LedgerNode::compute_job(ledger::LedgerClient& client, const ledger::JobClai
     return finish(Status::failure("molds made but not published: " + published.error()), JobStage::Claimed, "");
   }
   if (molds.verdict == JobMolds::Verdict::HeldForReview) {
-    spdlog::warn("{}: held for review: {}", label, molds.reason);
     return finish(client.mark_held(claim.lease, molds.reason), JobStage::Held, molds.reason);
   }
-  spdlog::info("{}: {} molds ready in {:.1f} s", label, molds.molds, molds.took_s);
-  finish(client.mark_computed(claim.lease, molds.pieces), JobStage::Computed, "");
+  finish(client.mark_computed(claim.lease, molds.pieces), JobStage::Computed, "",
+         fmt::format("{} molds ready in {:.1f} s", molds.molds, molds.took_s));
 }
 
 }  // namespace lastcut::daemon

@@ -91,14 +91,12 @@ std::size_t LedgerNode::tell_job_outcomes(const ledger::BatchClaim& claim, const
     if (found == outcome_of.end()) {
       if (nested.cut_file.empty()) continue;  // nothing is cut: the reason is logged for the batch
       ++kept;
-      job_event(job_id, name, claim.job_tickets[i], claim.batch_id, JobStage::Batched, "");
+      job_changed(job_id, name, claim.job_tickets[i], claim.batch_id, JobStage::Batched, "");
       continue;
     }
     const auto& [stage, reason] = found->second;
-    if (stage == JobStage::Failed) spdlog::error("job {} ({}): failed: {}", job_id, name, *reason);
-    else spdlog::info("job {} ({}): {}", job_id, name, *reason);
     // A waiting job is back among the computed ones: no batch.
-    job_event(job_id, name, claim.job_tickets[i], stage == JobStage::Failed ? claim.batch_id : 0, stage, *reason);
+    job_changed(job_id, name, claim.job_tickets[i], stage == JobStage::Failed ? claim.batch_id : 0, stage, *reason);
   }
   return kept;
 }

@@ -34,7 +34,7 @@ Status LedgerNode::start() {
   for (long long id : registered->batches_held)
     spdlog::error("batch {}: this node stopped while sending it: held for an operator, never re-sent", id);
   for (const ledger::HeldJob& job : registered->jobs_held) {
-    job_event(job.job_id, job.scan_name, job.ticket, job.batch_id, JobStage::Held, job.reason);
+    job_changed(job.job_id, job.scan_name, job.ticket, job.batch_id, JobStage::Held, job.reason);
     held_at_start_[job.cutter] = {job.cutter, "held", std::to_string(job.batch_id), job.reason, 0, 0, 0, 0};
   }
   const std::size_t handed_back = registered->jobs_requeued.size() + registered->batches_requeued.size() +
@@ -145,8 +145,17 @@ Result<JobTicket> ticket_from_ledger(const std::string& text) {
   }
 }
 
-void LedgerNode::job_event(long long job_id, const std::string& scan_name, const std::string& ticket_json,
-                           long long batch_id, JobStage stage, const std::string& reason) {
+void LedgerNode::job_changed(long long job_id, const std::string& scan_name, const std::string& ticket_json,
+                             long long batch_id, JobStage stage, const std::string& reason, const std::string& note) {
+  const std::string label = "job " + std::to_string(job_id) + " (" + scan_name + ")";
+  const std::string& text = reason.empty() ? note : reason;
+  if (stage == JobStage::Failed) {
+    spdlog::error("{}: failed: {}", label, text);
+  } else if (stage == JobStage::Held) {
+    spdlog::warn("{}: held: {} (after checking, `lastcut requeue {}`)", label, text, job_id);
+  } else if (!text.empty()) {
+    spdlog::info("{}: {}", label, text);
+  }
   if (!observer_) return;
   JobEvent event;
   event.job_id = std::to_string(job_id);
@@ -165,7 +174,7 @@ void LedgerNode::job_event(long long job_id, const std::string& scan_name, const
 
 void LedgerNode::batch_event(const ledger::BatchClaim& claim, JobStage stage, const std::string& reason) {
   for (std::size_t i = 0; i < claim.job_ids.size(); ++i) {
-    job_event(claim.job_ids[i], claim.job_names[i], claim.job_tickets[i], claim.batch_id, stage, reason);
+    job_changed(claim.job_ids[i], claim.job_names[i], claim.job_tickets[i], claim.batch_id, stage, reason);
   }
 }
 

@@ -111,9 +111,13 @@ class LedgerNode : public JobFlow {
   void pause(double seconds);
   // One log line per change of a thread's trouble (the ledger away, a cutter not ready), not per try.
   void note_trouble(std::string& last, const std::string& now, const std::string& what);
-  // A job's change for the status observer (MQTT): its scan, order, cutter, material and batch.
-  void job_event(long long job_id, const std::string& scan_name, const std::string& ticket_json, long long batch_id,
-                 JobStage stage, const std::string& reason);
+  // What a job's change says once the ledger took it (the change itself is the fenced LedgerClient
+  // call before it), the counterpart of a spool's set_job_stage: one log line "job N (scan): ..."
+  // (an error when failed, a warning when held; none when neither `reason` nor `note` says
+  // anything) and the job event for the status observer (MQTT) with its order, cutter, material
+  // and batch. `reason`: why failed, held or waiting, also in the event; `note`: a log line only.
+  void job_changed(long long job_id, const std::string& scan_name, const std::string& ticket_json, long long batch_id,
+                   JobStage stage, const std::string& reason, const std::string& note = "");
   void batch_event(const ledger::BatchClaim& claim, JobStage stage, const std::string& reason);
 
   const LedgerConfig ledger_;

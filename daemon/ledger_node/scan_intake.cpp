@@ -112,9 +112,8 @@ Status LedgerNode::enter(const ReadyScan& ready) {
   }
   if (!job->duplicate) {
     ++entered_;
-    spdlog::info("job {}: {} entered in the ledger (material {}, cutter {})", job->job_id, name, ticket.material,
-                 ticket.cutter);
-    job_event(job->job_id, name, ticket_to_json(ticket).dump(), 0, JobStage::Claimed, "");
+    job_changed(job->job_id, name, ticket_to_json(ticket).dump(), 0, JobStage::Claimed, "",
+                "entered in the ledger (material " + ticket.material + ", cutter " + ticket.cutter + ")");
     return Status::success();
   }
   ++duplicates_;
@@ -125,13 +124,11 @@ Status LedgerNode::enter(const ReadyScan& ready) {
                    job->state);
       break;
     case DuplicatePolicy::Hold:
-      spdlog::warn("job {}: {}: {} - held (after checking, `lastcut requeue {}`)", job->job_id, name, job->reason,
-                   job->job_id);
-      job_event(job->job_id, name, ticket_to_json(ticket).dump(), 0, JobStage::Held, job->reason);
+      job_changed(job->job_id, name, ticket_to_json(ticket).dump(), 0, JobStage::Held, job->reason);
       break;
     case DuplicatePolicy::Process:
-      spdlog::info("job {}: {}: {} - processed again (policy)", job->job_id, name, same);
-      job_event(job->job_id, name, ticket_to_json(ticket).dump(), 0, JobStage::Claimed, "");
+      job_changed(job->job_id, name, ticket_to_json(ticket).dump(), 0, JobStage::Claimed, "",
+                  same + " - processed again (policy)");
       break;
   }
   return Status::success();
@@ -223,7 +220,7 @@ void LedgerNode::sweep() {
     spdlog::warn("batches {}: claimed by a station that vanished before sending, queued again",
                  list(swept->batches_requeued));
   for (const ledger::HeldJob& job : swept->jobs_held)
-    job_event(job.job_id, job.scan_name, job.ticket, job.batch_id, JobStage::Held, job.reason);
+    job_changed(job.job_id, job.scan_name, job.ticket, job.batch_id, JobStage::Held, job.reason);
   if (!swept->batches_held.empty())
     spdlog::error("batches {}: their station vanished while sending: held for an operator, never re-sent",
                   list(swept->batches_held));

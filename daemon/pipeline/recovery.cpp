@@ -73,6 +73,14 @@ void Pipeline::hold_recovered_batch(BatchState& batch, const std::string& reason
 void Pipeline::recover_batch(const std::string& batch_id) {
   auto batch = spool_->read_batch(batch_id);
   if (!batch) {
+    // Killed between making the folder and its first batch.json (the temporaries are gone by now):
+    // nothing was in it, its jobs are still computed in work/ and are nested again.
+    std::error_code error;
+    if (std::filesystem::is_empty(spool_->batch_dir(batch_id), error) &&
+        std::filesystem::remove(spool_->batch_dir(batch_id), error)) {
+      spdlog::info("recovery: batch {} was being created when lastcutd stopped; its empty folder is removed", batch_id);
+      return;
+    }
     // Its jobs follow their own stage (route): nested again, or held if it was being sent.
     spdlog::warn("recovery: batch {} has no readable batch.json; left as it is", batch_id);
     return;

@@ -119,6 +119,10 @@ TEST(DaemonRecovery, UnfinishedWritesAreRemovedAndRealFilesKept) {
   write_batch(rig, batch_id, id, "cut", "IN;\n");
   write_text(rig.spool() / "batches" / batch_id / ".tmp-cut.plt-4242", "IN;PU");
   write_text(rig.spool() / ".tmp-status.json-4242", "{");
+  // Killed between making a batch folder and writing its first batch.json: only a temporary in it.
+  const auto unborn = rig.spool() / "batches" / "B20261121-235002-001";
+  std::filesystem::create_directories(unborn);
+  write_text(unborn / ".tmp-batch.json-4242", "{\"st");
 
   rig.start_daemon();
   ASSERT_TRUE(wait_until([&] { return rig.settled(1); }, 30)) << read_text(rig.daemon_log());
@@ -131,7 +135,7 @@ TEST(DaemonRecovery, UnfinishedWritesAreRemovedAndRealFilesKept) {
   EXPECT_EQ(read_text(rig.spool() / "batches" / batch_id / "cut.plt"), "IN;\n");
   for (const auto& leftover : {done / "molds" / ".tmp-report.json-4242", done / ".tmp-state.json-4242",
                                done / ".tmp-pieces.json-4242", rig.spool() / "batches" / batch_id / ".tmp-cut.plt-4242",
-                               rig.spool() / ".tmp-status.json-4242"}) {
+                               rig.spool() / ".tmp-status.json-4242", unborn}) {
     EXPECT_FALSE(std::filesystem::exists(leftover)) << leftover;
   }
 }
