@@ -17,18 +17,12 @@ nlohmann::json hide_json(const ledger::HideRow& hide) {
           {"entered_by", hide.entered_by}};
 }
 
-std::string format(const char* pattern, auto... values) {
-  char text[512];
-  std::snprintf(text, sizeof(text), pattern, values...);
-  return text;
-}
-
 std::string hide_line(const ledger::HideRow& hide) {
   const std::string detail =
       hide.batch_id != 0 && hide.state == "used"
-          ? format("batch %lld, %d pieces, %.1f %% of its usable area", hide.batch_id, hide.pieces, 100.0 * hide.utilisation)
+          ? format_line("batch %lld, %d pieces, %.1f %% of its usable area", hide.batch_id, hide.pieces, 100.0 * hide.utilisation)
           : hide.reason;
-  return format("hide %-14s %-9s %-10s on %-12s %.2f m^2  %s", hide.name.c_str(), hide.state.c_str(),
+  return format_line("hide %-14s %-9s %-10s on %-12s %.2f m^2  %s", hide.name.c_str(), hide.state.c_str(),
                 hide.material.c_str(), hide.cutter.c_str(), hide.area_m2, detail.c_str());
 }
 
@@ -73,13 +67,13 @@ class LedgerView : public StoreView {
     for (const auto& node : overview_rows->nodes) {
       status["nodes"].push_back({{"name", node.name}, {"roles", node.roles}, {"heartbeat_age_s", node.heartbeat_age_s}});
       overview.station_lines.push_back(
-          format("node %-16s %-16s heartbeat %.0f s ago", node.name.c_str(), node.roles.c_str(), node.heartbeat_age_s));
+          format_line("node %-16s %-16s heartbeat %.0f s ago", node.name.c_str(), node.roles.c_str(), node.heartbeat_age_s));
     }
     status["cutters"] = nlohmann::json::array();
     for (const auto& cutter : overview_rows->cutters) {
       status["cutters"].push_back(
           {{"name", cutter.name}, {"station", cutter.station}, {"queued_batches", cutter.queued_batches}});
-      overview.cutter_lines.push_back(format("cutter %-14s at %s, %lld batch(es) queued", cutter.name.c_str(),
+      overview.cutter_lines.push_back(format_line("cutter %-14s at %s, %lld batch(es) queued", cutter.name.c_str(),
                                              cutter.station.c_str(), cutter.queued_batches));
     }
     // Computed jobs of a hide material are waiting for a hide to be laid on a cutter's table.

@@ -76,12 +76,6 @@ nlohmann::json collect_status(const daemon::Spool& spool, std::size_t recent_cou
   return status;
 }
 
-std::string format(const char* pattern, auto... values) {
-  char text[512];
-  std::snprintf(text, sizeof(text), pattern, values...);
-  return text;
-}
-
 class SpoolView : public StoreView {
  public:
   explicit SpoolView(const std::string& root) : spool_(root) {}
@@ -91,18 +85,18 @@ class SpoolView : public StoreView {
     overview.json = collect_status(spool_, recent_count);
     const nlohmann::json& status = overview.json;
     const auto& counts = status["counts"];
-    overview.headline = format("spool %s: %d in work, %d done, %d failed, %d held", spool_.root().c_str(),
+    overview.headline = format_line("spool %s: %d in work, %d done, %d failed, %d held", spool_.root().c_str(),
                                counts.value("work", 0), counts.value("done", 0), counts.value("failed", 0),
                                counts.value("held", 0));
     const auto& daemon_status = status["daemon"];
     overview.station_lines.push_back(
         daemon_status.value("running", false)
-            ? format("lastcutd: running (pid %ld, status of %s)", daemon_status.value("pid", 0L),
+            ? format_line("lastcutd: running (pid %ld, status of %s)", daemon_status.value("pid", 0L),
                      daemon_status.value("updated_at", "?").c_str())
-            : format("lastcutd: not running (no %s/status.json)", spool_.root().c_str()));
+            : format_line("lastcutd: not running (no %s/status.json)", spool_.root().c_str()));
     if (daemon_status.contains("cutters")) {
       for (const auto& [name, cutter] : daemon_status["cutters"].items()) {
-        overview.cutter_lines.push_back(format("cutter %-12s %s, %d batch(es) queued", name.c_str(),
+        overview.cutter_lines.push_back(format_line("cutter %-12s %s, %d batch(es) queued", name.c_str(),
                                                cutter.value("condition", "?").c_str(), cutter.value("queued_batches", 0)));
       }
     }
@@ -112,7 +106,7 @@ class SpoolView : public StoreView {
     }
     for (const auto& batch : status["active_batches"]) {
       const std::string reason = batch.value("reason", "");
-      overview.batch_lines.push_back(format("batch %s for %s: %s, %zu job(s), %d pieces%s", batch.value("id", "").c_str(),
+      overview.batch_lines.push_back(format_line("batch %s for %s: %s, %zu job(s), %d pieces%s", batch.value("id", "").c_str(),
                                             batch.value("cutter", "").c_str(), batch.value("stage", "").c_str(),
                                             batch["jobs"].size(), batch.value("pieces", 0),
                                             reason.empty() ? "" : (" - " + reason).c_str()));

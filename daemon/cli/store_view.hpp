@@ -5,6 +5,7 @@
 // overview printed one way, one requeue. Both read the store directly, so they work whether
 // lastcutd runs or not; the ledger's view shows the whole shop from any node.
 #include <cstddef>
+#include <cstdio>
 #include <map>
 #include <memory>
 #include <string>
@@ -16,6 +17,13 @@
 #include "engine/core/status.hpp"
 
 namespace lastcut::cli {
+
+// One line of a table, printf-style (both views print fixed-width columns).
+inline std::string format_line(const char* pattern, auto... values) {
+  char text[512];
+  std::snprintf(text, sizeof(text), pattern, values...);
+  return text;
+}
 
 // One job as an operator finds it.
 struct JobLine {

@@ -25,6 +25,7 @@
 #include "daemon/ledger_node/ledger_node.hpp"
 #include "daemon/pipeline/pipeline.hpp"
 #include "daemon/service/operator_log.hpp"
+#include "daemon/station/station.hpp"
 #include "daemon/service/signal_events.hpp"
 #include "daemon/service/systemd_notify.hpp"
 #include "daemon/status/mqtt_client.hpp"
@@ -86,8 +87,8 @@ void reload(const std::string& file, lastcut::daemon::JobFlow& pipeline, lastcut
   notifier.ready();
 }
 
-// The flow is a Pipeline (one station, its own file spool) or a LedgerNode (one node of a shop on a
-// shared PostgreSQL ledger): the loop drives either the same way.
+// The flow is one Station (daemon/station/station.hpp), on its own file spool (Pipeline) or as a node
+// of a shop on a shared PostgreSQL ledger (LedgerNode): the loop drives either the same way.
 int serve(const std::string& file, lastcut::daemon::JobFlow& pipeline, lastcut::daemon::SignalEvents& signals,
           lastcut::daemon::SystemdNotifier& notifier, const lastcut::daemon::StatusConfig& running_status,
           lastcut::daemon::StatusObserver* observer) {
@@ -159,8 +160,13 @@ int run(const std::string& file) {
   }
   const auto config = std::make_shared<lastcut::daemon::DaemonConfig>(*loaded.config);
   std::unique_ptr<lastcut::daemon::JobFlow> flow;
-  if (config->ledger) flow = std::make_unique<lastcut::daemon::LedgerNode>(config);
-  else flow = std::make_unique<lastcut::daemon::Pipeline>(config);
+  // One station; its store is the shop's ledger with [ledger], else this station's own spool.
+  const bool on_ledger = config->ledger.has_value();
+  flow = std::make_unique<lastcut::daemon::Station>(
+      config, [on_ledger](const lastcut::daemon::RunningConfig& running) -> std::unique_ptr<lastcut::daemon::StationStore> {
+        if (on_ledger) return std::make_unique<lastcut::daemon::LedgerNode>(running);
+        return std::make_unique<lastcut::daemon::Pipeline>(running);
+      });
   int code = 0;
   try {
     code = serve(file, *flow, signals, notifier, loaded.config->status, live_status.get());

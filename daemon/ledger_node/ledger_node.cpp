@@ -1,17 +1,19 @@
-// LedgerNode: start and stop in one readable order, the main loop's turn, and the small helpers the
-// roles share. The roles themselves: scan_intake.cpp, ledger_compute.cpp, ledger_station.cpp.
+// LedgerNode: opening and closing the node's store, the main loop's turn, and the small helpers its
+// parts share. The parts: scan_intake.cpp, ledger_compute_store.cpp (the compute role's claims),
+// ledger_station.cpp and ledger_cut_store.cpp (the cutters cabled here).
 #include "daemon/ledger_node/ledger_node.hpp"
 
 #include <spdlog/spdlog.h>
 
 namespace lastcut::daemon {
 
-LedgerNode::LedgerNode(std::shared_ptr<const DaemonConfig> config)
-    : ledger_(*config->ledger), config_(std::move(config)), store_(ledger_.shared_dir) {}
+LedgerNode::LedgerNode(const RunningConfig& config)
+    : config_(config), ledger_(*config.get()->ledger), store_(ledger_.shared_dir) {}
 
-LedgerNode::~LedgerNode() { stop(); }
+LedgerNode::~LedgerNode() { close(); }
 
-Status LedgerNode::start() {
+Status LedgerNode::open(const StationLinks& links) {
+  links_ = links;
   const auto settings = config();  // one configuration for the whole step (SIGHUP may replace it)
   if (Status prepared = store_.prepare(); !prepared) return prepared;
   std::error_code error;
@@ -43,76 +45,49 @@ Status LedgerNode::start() {
 
   keeper_ = std::make_unique<ledger::LeaseKeeper>(ledger().url, ledger().node, ledger().lease_s, ledger().heartbeat_s,
                                                   [](const std::string& line) { spdlog::warn("{}", line); });
-  scans_.folder = std::make_unique<HotFolder>(settings->paths.watch_dir, settings->watch);
-  if (Status watching = scans_.folder->start(); !watching) return watching;
-  if (!settings->paths.hides_dir.empty()) {
-    hides_.folder = std::make_unique<HotFolder>(settings->paths.hides_dir, settings->watch, HotFolderContent::Hides);
-    if (Status watching = hides_.folder->start(); !watching) return watching;
-    spdlog::info("hides folder {} ({}): hides entered here lie on their cutter's table", settings->paths.hides_dir.string(),
-                 hides_.folder->mode_description());
-  }
   if (ledger().has_role("compute")) {
-    for (int i = 0; i < settings->jobs.compute_workers; ++i) threads_.emplace_back([this, i] { compute_worker(i + 1); });
+    compute_store_ = std::make_unique<LedgerComputeStore>(
+        ledger(), store_, *keeper_, [this] { return config(); },
+        [this](long long job_id, const std::string& scan_name, const std::string& ticket, long long batch_id,
+               JobStage stage, const std::string& reason, const std::string& note) {
+          job_changed(job_id, scan_name, ticket, batch_id, stage, reason, note);
+        });
   }
-  start_cutters(cutters);
-  std::string roles;
-  for (const std::string& role : ledger().roles) roles += (roles.empty() ? "" : "+") + role;
-  spdlog::info("ledger node {} ({}): watching {} ({}), shared folder {}, {} cutter(s) cabled here", ledger().node,
-               roles, settings->paths.watch_dir.string(), scans_.folder->mode_description(),
-               store_.root().string(), cutters.size());
+  open_cutters(cutters);
   return Status::success();
 }
 
 void LedgerNode::tick(Clock::time_point now) {
   if (stopping_) return;
-  for (Intake* intake : {&scans_, &hides_}) {
-    if (!intake->folder || now < intake->next) continue;
-    for (const ReadyScan& ready : intake->folder->collect_ready(now)) {
-      take(ready, *intake);
-      if (intake->next > now) break;  // the ledger is away: the rest wait too
-    }
-  }
   if (now >= next_sweep_) {
     sweep();
     next_sweep_ = now + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(ledger().heartbeat_s));
   }
 }
 
+std::string LedgerNode::where() const {
+  std::string roles;
+  for (const std::string& role : ledger().roles) roles += (roles.empty() ? "" : "+") + role;
+  return "ledger node " + ledger().node + " (" + roles + "), shared folder " + store_.root().string();
+}
+
 std::string LedgerNode::status_line() const {
   return "ledger node " + ledger().node + ": " + std::to_string(entered_) + " scan(s) entered, " +
-         std::to_string(duplicates_) + " duplicate(s), " + std::to_string(refused_) + " refused; " +
-         std::to_string(cuts_in_progress()) + " cut(s) in progress" +
+         std::to_string(duplicates_) + " duplicate(s), " + std::to_string(refused_) + " refused" +
          (keeper_ && !keeper_->reachable() ? "; ledger unreachable" : "");
 }
 
-std::string LedgerNode::reload(std::shared_ptr<const DaemonConfig> next) {
-  return config_.reload(*next);
+void LedgerNode::stopping() {
+  stopping_ = true;
+  std::lock_guard lock(pause_mutex_);
+  pause_wake_.notify_all();
 }
 
-void LedgerNode::stop() {
-  if (stopping_.exchange(true)) return;
-  {
-    std::lock_guard lock(pause_mutex_);
-    pause_wake_.notify_all();
-  }
-  stop_cutters();
-  for (std::thread& thread : threads_)
-    if (thread.joinable()) thread.join();
-  threads_.clear();
+void LedgerNode::close() {
+  stopping();
+  compute_store_.reset();
+  cutters_.clear();
   keeper_.reset();  // kept leases simply run out; the next start of this node hands them back at once
-}
-
-bool LedgerNode::connect_worker(std::unique_ptr<ledger::LedgerClient>& client, std::string& trouble,
-                                const std::string& worker) {
-  if (client) return true;
-  auto connected = ledger::LedgerClient::connect(ledger().url, ledger().node);
-  if (!connected) {
-    note_trouble(trouble, connected.error(), worker);
-    pause(ledger().heartbeat_s);
-    return false;
-  }
-  client = std::move(*connected);
-  return true;
 }
 
 void LedgerNode::pause(double seconds) {
@@ -156,7 +131,7 @@ void LedgerNode::job_changed(long long job_id, const std::string& scan_name, con
   } else if (!text.empty()) {
     spdlog::info("{}: {}", label, text);
   }
-  if (!observer_) return;
+  if (!links_.observer) return;
   JobEvent event;
   event.job_id = std::to_string(job_id);
   event.scan_name = scan_name;
@@ -169,7 +144,7 @@ void LedgerNode::job_changed(long long job_id, const std::string& scan_name, con
   event.stage = stage;
   event.reason = reason;
   event.at = utc_now_iso();
-  observer_->job_changed(event);
+  links_.observer->job_changed(event);
 }
 
 void LedgerNode::batch_event(const ledger::BatchClaim& claim, JobStage stage, const std::string& reason) {

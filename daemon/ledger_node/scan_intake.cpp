@@ -51,24 +51,20 @@ bool not_the_files_fault(const Status& entered) {
 
 }  // namespace
 
-void LedgerNode::take(const ReadyScan& ready, Intake& intake) {
-  const std::string name = ready.scan.filename().string();
-  std::error_code error;
-  if (!std::filesystem::exists(ready.scan, error)) {
-    intake.folder->forget(name);  // gone between listing and taking; a new event brings it back
-    return;
-  }
+StationStore::Intake LedgerNode::take_scan(const ReadyScan& ready) { return take(ready, scans_); }
+
+StationStore::Intake LedgerNode::take_hide(const ReadyScan& ready) { return take(ready, hides_); }
+
+StationStore::Intake LedgerNode::take(const ReadyScan& ready, FolderIntake& intake) {
   const Status entered = (this->*intake.enter)(ready);
   if (!entered && not_the_files_fault(entered)) {
     // Not the file's fault and nothing was entered: it waits where it was dropped.
     note_trouble(intake.trouble, entered.error(), intake.name + ": files wait in the " + intake.name);
-    intake.next = Clock::now() + std::chrono::seconds(2);
-    return;
+    return Intake::Later;
   }
   note_trouble(intake.trouble, "", intake.name);
-  intake.folder->forget(name);
-  if (!ready.sidecar.empty()) intake.folder->forget(ready.sidecar.filename().string());
   if (!entered) refuse(ready, entered.error());
+  return Intake::Taken;
 }
 
 Status LedgerNode::enter(const ReadyScan& ready) {

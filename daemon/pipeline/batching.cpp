@@ -65,7 +65,7 @@ void Pipeline::close_batch(const DueBatch& due) {
     set_job_stage(*spool_, *state, JobStage::Batched, "nested in batch " + batch.id,
                   "not part of batch " + batch.id + ": state not written");
   }
-  tasks_.push({true, batch.id});
+  to_nest(batch.id);
 }
 
 void Pipeline::enqueue_batch(const BatchState& batch) {
@@ -75,8 +75,8 @@ void Pipeline::enqueue_batch(const BatchState& batch) {
                   batch.cutter);
     return;
   }
-  it->second.store->enqueue(batch.id);
-  it->second.worker->wake();
+  it->second->enqueue(batch.id);
+  links_.wake_cutter(batch.cutter);
 }
 
 }  // namespace lastcut::daemon

@@ -39,11 +39,11 @@ void Pipeline::index_hashes() {
   }
 }
 
-void Pipeline::take(const ReadyScan& ready) {
+StationStore::Intake Pipeline::take_scan(const ReadyScan& ready) {
   const auto settings = config();
   const std::string name = ready.scan.filename().string();
   const auto hash = sha256_file_hex(ready.scan);
-  if (!hash) return;  // vanished between listing and hashing; a new event will bring it back
+  if (!hash) return Intake::Taken;  // vanished between listing and hashing; a new event will bring it back
   JobState state;
   state.sha256 = *hash;
   std::string problem = ready.incompleteness;
@@ -60,19 +60,17 @@ void Pipeline::take(const ReadyScan& ready) {
   if (duplicate) state.duplicate_of = earlier->second;
 
   const Result<std::string> claim = spool_->claim(ready.scan, ready.sidecar, state);
-  hot_folder_->forget(name);
-  if (!ready.sidecar.empty()) hot_folder_->forget(ready.sidecar.filename().string());
   if (!claim) {
     // Not in the spool: the scan stays in the watch folder and is offered again.
     spdlog::error("watch folder: {} could not be taken into the spool: {}", name, claim.error());
-    return;
+    return Intake::Taken;
   }
   const std::string& job_id = *claim;
   auto claimed = spool_->read_state(JobFolder::Work, job_id);
   if (!claimed) {
     // In the spool without a readable state: recovery hands it back to the watch folder.
     spdlog::error("job {}: state unreadable right after the claim; left for recovery at the next start", job_id);
-    return;
+    return Intake::Taken;
   }
   known_jobs_.insert(job_id);
   spdlog::info("{}: taken from the watch folder{} (material {}, cutter {})", claimed->label(),
@@ -83,7 +81,7 @@ void Pipeline::take(const ReadyScan& ready) {
                                       claimed->ticket);
   if (!problem.empty()) {
     fail_job(*spool_, *claimed, problem);
-    return;
+    return Intake::Taken;
   }
   if (duplicate) {
     const std::string reason = "same scan bytes as job " + state.duplicate_of;
@@ -91,10 +89,10 @@ void Pipeline::take(const ReadyScan& ready) {
       case DuplicatePolicy::Skip:
         set_job_stage(*spool_, *claimed, JobStage::Skipped, reason + " (duplicate, skipped)",
                       "skipped, but not moved to done/");
-        return;
+        return Intake::Taken;
       case DuplicatePolicy::Hold:
         hold_job(*spool_, *claimed, reason + " (duplicate held by policy)");
-        return;
+        return Intake::Taken;
       case DuplicatePolicy::Process:
         spdlog::info("{}: {} - processed again (policy)", claimed->label(), reason);
         break;
@@ -102,7 +100,8 @@ void Pipeline::take(const ReadyScan& ready) {
   } else {
     hash_to_job_[state.sha256] = job_id;
   }
-  tasks_.push({false, job_id});
+  to_compute(job_id);
+  return Intake::Taken;
 }
 
 }  // namespace lastcut::daemon

@@ -47,7 +47,7 @@ void Pipeline::fail_hide(BatchState& batch, const std::string& reason) {
   spdlog::error("hide file {}: {}; moved to failed/{}", batch.hide_file, reason, batch.id);
 }
 
-void Pipeline::take_hide(const ReadyScan& ready) {
+StationStore::Intake Pipeline::take_hide(const ReadyScan& ready) {
   const auto settings = config();
   const std::string name = ready.scan.filename().string();
   BatchState batch;
@@ -65,23 +65,21 @@ void Pipeline::take_hide(const ReadyScan& ready) {
                          : spool_->write_batch(batch);
   if (claimed && !batch.hide_sidecar.empty()) claimed = move_durably(ready.sidecar, dir / batch.hide_sidecar);
   if (claimed) claimed = move_durably(ready.scan, dir / name);
-  hide_folder_->forget(name);
-  if (!batch.hide_sidecar.empty()) hide_folder_->forget(batch.hide_sidecar);
   if (!claimed) {
     spdlog::error("hides folder: {} could not be taken into the spool: {}", name, claimed.error());
-    return;
+    return Intake::Taken;
   }
   HideFile hide;
   try {
     hide = read_hide_file(dir / name);
   } catch (const EngineError& failure) {
     fail_hide(batch, failure.what());
-    return;
+    return Intake::Taken;
   } catch (const std::exception& failure) {
     // A reader bug, not a refusal (nlohmann's type_error once escaped here and stopped the daemon): the
     // hide still goes to failed/ with the reason, and the daemon runs on.
     fail_hide(batch, name + ": unreadable hide file (" + failure.what() + ")");
-    return;
+    return Intake::Taken;
   }
   batch.hide_id = hide.hide_id;
   if (const std::string unknown = settle_hide_targets(hide.hide_id, hide.material, hide.cutter,
@@ -89,15 +87,16 @@ void Pipeline::take_hide(const ReadyScan& ready) {
                                                       batch.cutter);
       !unknown.empty()) {
     fail_hide(batch, unknown);
-    return;
+    return Intake::Taken;
   }
   if (Status written = spool_->write_batch(batch); !written) {
     fail_hide(batch, "hide " + hide.hide_id + ": batch.json not written: " + written.error());
-    return;
+    return Intake::Taken;
   }
   spdlog::info("hide {} ({}, {:.2f} m^2) lies on cutter {}: batch {} for the computed jobs of {}", hide.hide_id, name,
                hide.area_m2, batch.cutter, batch.id, batch.material);
   loaded_hides_.push_back({batch.id, Clock::now()});
+  return Intake::Taken;
 }
 
 bool Pipeline::computing_material(const std::string& material) const {
@@ -148,86 +147,9 @@ void Pipeline::nest_due_hides(Clock::time_point now) {
     spdlog::info("hide {} on cutter {}: nesting {} waiting job(s) of {} in batch {}{}", batch->hide_id, batch->cutter,
                  batch->job_ids.size(), batch->material, batch->id,
                  pool.empty() ? "" : " (" + std::to_string(pool.size()) + " wait for the next hide)");
-    tasks_.push({true, batch->id});
+    to_nest(batch->id);
     loaded = loaded_hides_.erase(loaded);
   }
-}
-
-void Pipeline::build_hide_task(BatchState& batch, const std::string& worker) {
-  const auto settings = config();
-  std::vector<HideJobInput> inputs;
-  std::map<std::string, JobState> states;
-  for (const std::string& id : batch.job_ids) {
-    auto state = spool_->read_state(JobFolder::Work, id);
-    if (!state || state->batch_id != batch.id) continue;
-    states.emplace(id, *state);
-  }
-  // batch.job_ids is oldest first.
-  for (const std::string& id : batch.job_ids) {
-    const auto it = states.find(id);
-    if (it == states.end()) continue;
-    inputs.push_back({id, spool_->job_dir(JobFolder::Work, id), it->second.ticket.order,
-                      hide_job_priority(it->second.ticket.priority, inputs.size(), batch.job_ids.size())});
-  }
-  const auto material = settings->materials.find(batch.material);
-  const auto cutter = settings->cutters.find(batch.cutter);
-  Result<HideMade> outcome = Status::failure("material " + batch.material + " or cutter " + batch.cutter +
-                                             " is no longer configured");
-  if (material != settings->materials.end() && cutter != settings->cutters.end()) {
-    monitor_.begin(worker, "nesting hide " + batch.hide_id, settings->jobs.compute_timeout_s);
-    outcome = build_hide(inputs, spool_->batch_dir(batch.id), batch.hide_file, material->second, cutter->second,
-                         settings->paths.machines_dir, settings->batch.nest_time_s);
-    monitor_.end(worker);
-  }
-  std::vector<std::string> kept;
-  std::vector<std::string> back_to_pool;
-  for (auto& [id, state] : states) {
-    std::string waits;
-    if (!outcome) {
-      waits = "hide " + batch.hide_id + " could not be nested: " + outcome.error();
-    } else if (auto rejected = outcome->rejected.find(id); rejected != outcome->rejected.end()) {
-      fail_job(*spool_, state, rejected->second);
-      continue;
-    } else if (auto waiting = outcome->waiting.find(id); waiting != outcome->waiting.end()) {
-      waits = waiting->second;
-    } else {
-      kept.push_back(id);
-      continue;
-    }
-    state.batch_id.clear();
-    state.reason = "waiting for a hide of " + batch.material + ": " + waits;
-    set_job_stage(*spool_, state, JobStage::Computed, state.reason);
-    back_to_pool.push_back(id);
-  }
-  {
-    std::lock_guard lock(computed_mutex_);
-    computed_.insert(computed_.end(), back_to_pool.begin(), back_to_pool.end());
-  }
-  batch.job_ids = kept;
-  batch.updated_at = utc_now_iso();
-  if (!outcome || kept.empty()) {
-    batch.stage = BatchStage::Empty;
-    batch.reason = !outcome           ? outcome.error()
-                   : inputs.empty()   ? "no piece of " + batch.material + " was waiting for hide " + batch.hide_id
-                                      : "no waiting job fitted on hide " + batch.hide_id;
-    if (Status written = spool_->write_batch(batch); !written)
-      spdlog::error("hide batch {}: {}, but batch.json not written: {}", batch.id, batch.reason, written.error());
-    spdlog::warn("hide {} (batch {}): {}; nothing is cut", batch.hide_id, batch.id, batch.reason);
-    return;
-  }
-  batch.stage = BatchStage::Queued;
-  batch.cut_file = outcome->cut_file;
-  batch.utilisation = outcome->utilisation;
-  batch.piece_count = outcome->piece_count;
-  if (Status written = spool_->write_batch(batch); !written) {
-    report_batch_problem(*spool_, batch, "nested, but not queued: batch.json not written: " + written.error());
-    return;
-  }
-  spdlog::info("hide {} (batch {}): {} job(s), {} pieces, utilisation of its usable area {:.1f} %, {} job(s) wait; "
-               "queued for {}",
-               batch.hide_id, batch.id, kept.size(), batch.piece_count, 100.0 * batch.utilisation, back_to_pool.size(),
-               batch.cutter);
-  enqueue_batch(batch);
 }
 
 }  // namespace lastcut::daemon

@@ -8,56 +8,40 @@
 
 namespace lastcut::daemon {
 
-Pipeline::Pipeline(std::shared_ptr<const DaemonConfig> config) : config_(std::move(config)) {}
-
-Pipeline::~Pipeline() { stop(); }
-
 std::shared_ptr<const DaemonConfig> Pipeline::config() const { return config_.get(); }
 
-Status Pipeline::start() {
+Status Pipeline::open(const StationLinks& links) {
+  links_ = links;
   const auto settings = config();
   spool_ = std::make_unique<Spool>(settings->paths.spool_dir);
   if (Status prepared = spool_->prepare(); !prepared) return prepared;
-  spool_->on_job_written([this, observer = observer_](const JobState& state) {
+  spool_->on_job_written([this, observer = links_.observer](const JobState& state) {
     if (has_ended(state.stage)) {
       std::lock_guard lock(ended_mutex_);
       ended_incoming_.insert(state.id);
     }
     if (observer) observer->job_changed(job_event_of(state));
   });
-  for (const auto& [name, section] : settings->cutters) {
-    Cutter& cutter = cutters_[name];
-    cutter.store = std::make_unique<SpoolCutStore>(name, *spool_);
-    cutter.worker = std::make_unique<CutterWorker>(name, *cutter.store, monitor_, [this, name = name] {
-      const auto current = config();
-      const auto it = current->cutters.find(name);
-      return it != current->cutters.end() ? it->second : CutterSection{};
-    });
-    if (observer_) {
-      cutter.worker->on_status([observer = observer_](const CutterStatus& status) { observer->cutter_changed(status); });
-    }
-  }
+  for (const auto& [name, section] : settings->cutters) cutters_[name] = std::make_unique<SpoolCutStore>(name, *spool_);
+  compute_store_ = std::make_unique<SpoolComputeStore>(
+      *spool_, [this] { return config(); },
+      SpoolComputeStore::Listeners{[this](const std::string& job_id) {
+                                     std::lock_guard lock(computed_mutex_);
+                                     computed_.push_back(job_id);
+                                   },
+                                   [this](const BatchState& batch) { enqueue_batch(batch); }});
   index_hashes();
   recover();
-  hot_folder_ = std::make_unique<HotFolder>(settings->paths.watch_dir, settings->watch);
-  if (Status watching = hot_folder_->start(); !watching) return watching;
-  if (!settings->paths.hides_dir.empty()) {
-    hide_folder_ = std::make_unique<HotFolder>(settings->paths.hides_dir, settings->watch, HotFolderContent::Hides);
-    if (Status watching = hide_folder_->start(); !watching) return watching;
-    spdlog::info("hides folder {} ({})", settings->paths.hides_dir.string(), hide_folder_->mode_description());
-  }
-  for (auto& [name, cutter] : cutters_) cutter.worker->start(CutterStatus{name, "idle", "", "", 0, 0, 0, 0});
-  for (int i = 0; i < settings->jobs.compute_workers; ++i) workers_.emplace_back([this, i] { compute_worker(i + 1); });
-  spdlog::info("watching {} ({}); spool {}; {} cutter(s); duplicates: {}", settings->paths.watch_dir.string(),
-               hot_folder_->mode_description(), settings->paths.spool_dir.string(), cutters_.size(),
-               to_string(settings->jobs.duplicate_policy));
   return Status::success();
 }
 
+std::vector<StationCutter> Pipeline::cutters() {
+  std::vector<StationCutter> places;
+  for (const auto& [name, store] : cutters_) places.push_back({name, store.get(), {name, "idle", "", "", 0, 0, 0, 0}});
+  return places;
+}
+
 void Pipeline::tick(Clock::time_point now) {
-  for (const ReadyScan& ready : hot_folder_->collect_ready(now)) take(ready);
-  if (hide_folder_)
-    for (const ReadyScan& ready : hide_folder_->collect_ready(now)) take_hide(ready);
   std::vector<std::string> computed;
   {
     std::lock_guard lock(computed_mutex_);
@@ -79,10 +63,20 @@ void Pipeline::tick(Clock::time_point now) {
   }
 }
 
+void Pipeline::to_compute(const std::string& job_id) {
+  compute_store_->add_job(job_id);
+  links_.wake_compute();
+}
+
+void Pipeline::to_nest(const std::string& batch_id) {
+  compute_store_->add_batch(batch_id);
+  links_.wake_compute();
+}
+
 void Pipeline::write_status_file() {
   nlohmann::json cutters = nlohmann::json::object();
-  for (const auto& [name, cutter] : cutters_) {
-    cutters[name] = {{"condition", cutter.worker->condition()}, {"queued_batches", cutter.store->queued()}};
+  for (const auto& [name, store] : cutters_) {
+    cutters[name] = {{"condition", links_.cutter_condition(name)}, {"queued_batches", store->queued()}};
   }
   const std::size_t waiting = strip_waiting_.size();
   nlohmann::json waiting_for_hide = nlohmann::json::object();
@@ -91,8 +85,8 @@ void Pipeline::write_status_file() {
   const nlohmann::json status{{"pid", static_cast<long>(::getpid())},
                               {"updated_at", utc_now_iso()},
                               {"watch_folder", config()->paths.watch_dir.string()},
-                              {"files_being_checked", hot_folder_ ? hot_folder_->pending_count() : 0},
-                              {"to_compute", tasks_.size()},
+                              {"files_being_checked", links_.files_being_checked()},
+                              {"to_compute", compute_store_->waiting()},
                               {"waiting_for_batch", waiting},
                               {"waiting_for_hide", waiting_for_hide},
                               {"cutters", cutters}};
@@ -107,43 +101,26 @@ void Pipeline::write_status_file() {
   }
 }
 
+std::string Pipeline::where() const { return "spool " + config()->paths.spool_dir.string(); }
+
 std::string Pipeline::status_line() const {
-  const std::size_t waiting = strip_waiting_.size();
-  std::string line = std::to_string(known_jobs_.size()) + " job(s) in work, " + std::to_string(tasks_.size()) +
-                     " to compute, " + std::to_string(waiting) + " waiting for a batch";
-  for (const auto& [name, cutter] : cutters_) {
-    line += "; " + name + ": " + cutter.worker->condition();
-    if (cutter.store->queued() > 0) line += ", " + std::to_string(cutter.store->queued()) + " batch(es) queued";
-  }
-  return line;
+  std::size_t queued = 0;
+  for (const auto& [name, store] : cutters_) queued += store->queued();
+  return std::to_string(known_jobs_.size()) + " job(s) in work, " + std::to_string(compute_store_->waiting()) +
+         " to compute, " + std::to_string(strip_waiting_.size()) + " waiting for a batch, " + std::to_string(queued) +
+         " batch(es) queued";
 }
 
-std::string Pipeline::reload(std::shared_ptr<const DaemonConfig> next) {
-  return config_.reload(*next);
-}
-
-void Pipeline::stop() {
+void Pipeline::close() {
   if (!spool_) return;
-  tasks_.clear_and_close();
-  for (auto& worker : workers_) {
-    if (worker.joinable()) worker.join();
-  }
-  workers_.clear();
-  const double grace_s = config()->jobs.stop_grace_s;
-  // In parallel: each cutter gets the whole grace time for the cut in its hands.
-  std::vector<std::thread> stopping;
-  for (auto& [name, cutter] : cutters_) {
-    stopping.emplace_back([&worker = *cutter.worker, grace_s] { worker.stop(grace_s); });
-  }
-  for (auto& thread : stopping) thread.join();
-  cutters_.clear();
+  compute_store_->clear();
   {
     // A stopped daemon says so: status must not show a stale "running".
     std::error_code error;
     std::filesystem::remove(spool_->root() / "status.json", error);
   }
-  hot_folder_.reset();
-  hide_folder_.reset();
+  compute_store_.reset();
+  cutters_.clear();
   spool_.reset();
 }
 

@@ -95,7 +95,7 @@ void Pipeline::recover_batch(const std::string& batch_id) {
       if (!batch->hide_file.empty() && std::filesystem::exists(spool_->batch_dir(batch_id) / batch->hide_file)) {
         // The hide is still on the table: nest its jobs again, or wait for jobs as before.
         if (batch->job_ids.empty()) loaded_hides_.push_back({batch_id, Clock::now()});
-        else tasks_.push({true, batch_id});
+        else to_nest(batch_id);
         return;
       }
       batch->stage = BatchStage::Abandoned;
@@ -160,7 +160,7 @@ void Pipeline::route(const std::string& job_id) {
     }
   };
   switch (state->stage) {
-    case JobStage::Claimed: tasks_.push({false, job_id}); return;
+    case JobStage::Claimed: to_compute(job_id); return;
     case JobStage::Computed: add_to_batcher(*state); return;
     case JobStage::Batched:
     case JobStage::Sending: {

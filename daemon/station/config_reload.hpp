@@ -31,6 +31,12 @@ class RunningConfig {
     std::lock_guard lock(mutex_);
     return config_;
   }
+  // The named cutter's current section: empty ({}) once a reload removed it.
+  CutterSection cutter_section(const std::string& name) const {
+    const auto current = get();
+    const auto it = current->cutters.find(name);
+    return it != current->cutters.end() ? it->second : CutterSection{};
+  }
   // Applies what applies while running; returns the line of what waits for a restart.
   std::string reload(const DaemonConfig& next) {
     std::lock_guard lock(mutex_);

@@ -32,6 +32,12 @@ CutEnd cut_end_of(drivers::SendOutcome outcome) {
   return CutEnd::Held;  // an outcome this code does not know: the safe side
 }
 
+void stop_cutter_workers(const std::vector<CutterWorker*>& workers, double grace_s) {
+  std::vector<std::thread> stopping;
+  for (CutterWorker* worker : workers) stopping.emplace_back([worker, grace_s] { worker->stop(grace_s); });
+  for (std::thread& thread : stopping) thread.join();
+}
+
 CutterWorker::CutterWorker(std::string cutter, CutStore& store, ProgressMonitor& monitor,
                            std::function<CutterSection()> settings)
     : cutter_(std::move(cutter)), store_(store), monitor_(monitor), settings_(std::move(settings)) {}

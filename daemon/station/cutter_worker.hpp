@@ -14,6 +14,7 @@
 #include <mutex>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "daemon/config/daemon_config.hpp"
 #include "daemon/job/status_observer.hpp"
@@ -21,6 +22,10 @@
 #include "daemon/station/progress_monitor.hpp"
 
 namespace lastcut::daemon {
+
+class CutterWorker;
+// Stops the workers in parallel: each gets the whole grace time for the cut in its hands.
+void stop_cutter_workers(const std::vector<CutterWorker*>& workers, double grace_s);
 
 class CutterWorker {
  public:

@@ -17,6 +17,7 @@
 
 #include "daemon/station/cutter_worker.hpp"
 #include "tests/drivers/sim_process.hpp"
+#include "tests/station/log_lines.hpp"
 
 namespace lastcut::daemon {
 namespace {
@@ -61,29 +62,7 @@ class FakeCutStore : public CutStore {
   }
 };
 
-// The daemon's log while the test runs, to count the lines a change of the cutter's condition makes.
-class LogLines {
- public:
-  LogLines() : sink_(std::make_shared<spdlog::sinks::ostream_sink_mt>(text_)) {
-    sink_->set_pattern("%v");
-    spdlog::default_logger()->sinks().push_back(sink_);
-  }
-  ~LogLines() {
-    auto& sinks = spdlog::default_logger()->sinks();
-    sinks.erase(std::remove(sinks.begin(), sinks.end(), sink_), sinks.end());
-  }
-  int count(const std::string& phrase) const {
-    const std::string text = text_.str();
-    int n = 0;
-    for (auto at = text.find(phrase); at != std::string::npos; at = text.find(phrase, at + 1)) ++n;
-    return n;
-  }
-  std::string text() const { return text_.str(); }
-
- private:
-  std::ostringstream text_;
-  std::shared_ptr<spdlog::sinks::ostream_sink_mt> sink_;
-};
+using testing::LogLines;
 
 // A small job: a square after pen-up moves, eleven instructions, so a fault at the third is mid-job.
 const std::string kCutFile = "IN;SP1;PU0,0;\nPD400,200;\nPD1200,200;\nPD1200,900;\nPD400,900;\nPD400,200;\nPU0,0;SP0;\n";

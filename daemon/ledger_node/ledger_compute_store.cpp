@@ -1,0 +1,303 @@
+#include "daemon/ledger_node/ledger_compute_store.hpp"
+
+#include <unordered_map>
+#include <utility>
+
+#include <spdlog/spdlog.h>
+
+#include "daemon/ledger_node/ledger_batch_rule.hpp"
+#include "daemon/ledger_node/ledger_node.hpp"
+#include "daemon/station/engine_steps.hpp"
+#include "daemon/station/hide_policy.hpp"
+#include "engine/core/durable_file.hpp"
+#include "engine/nest/hide_file.hpp"
+
+namespace lastcut::daemon {
+namespace {
+
+// A claim's scratch folder in the shared folder, removed when the claim ends, however it ends
+// (publishing renames it away first). Move-only: only the last owner removes it.
+class ScratchFolder {
+ public:
+  explicit ScratchFolder(std::filesystem::path path) : path_(std::move(path)) {}
+  ScratchFolder(ScratchFolder&& other) noexcept : path_(std::exchange(other.path_, {})) {}
+  ScratchFolder& operator=(ScratchFolder&&) = delete;
+  ~ScratchFolder() {
+    std::error_code ignored;
+    if (!path_.empty()) std::filesystem::remove_all(path_, ignored);
+  }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// What every claim of this node holds while it computes.
+struct ClaimContext {
+  ledger::LedgerClient& client;  // the claiming worker's own connection
+  ledger::LeaseKeeper& keeper;
+  const SharedStore& shared;
+  const LedgerConfig& ledger;
+  LedgerComputeStore::JobChanged job_changed;
+  ScratchFolder scratch;
+};
+
+class LedgerMoldsClaim : public ComputeClaim {
+ public:
+  LedgerMoldsClaim(ClaimContext context, ledger::JobClaim claim, MoldsWork work)
+      : context_(std::move(context)), claim_(std::move(claim)), work_(std::move(work)) {}
+
+  const MoldsWork* molds() const override { return &work_; }
+  const NestWork* nest() const override { return nullptr; }
+  void finish_nest(const NestResult&) override {}
+
+  void finish_molds(const JobMolds& molds) override {
+    ledger::LedgerClient& client = context_.client;
+    if (molds.verdict == JobMolds::Verdict::Failed) {
+      return finish(client.mark_failed(claim_.lease, molds.reason), JobStage::Failed, molds.reason);
+    }
+    nlohmann::json report = molds.report;
+    report.update({{"job", claim_.job_id}, {"scan", claim_.scan.scan_name}, {"sha256", claim_.scan.scan_sha256},
+                   {"ticket", nlohmann::json::parse(claim_.scan.ticket)}, {"node", context_.ledger.node}});
+    if (Status written = write_file_durably(work_.job_dir / kReportFile, report.dump(1)); !written) {
+      return finish(Status::failure("molds made, report not written: " + written.error()), JobStage::Failed, "");
+    }
+    if (context_.keeper.lost(claim_.lease)) {
+      return finish(Status::failure("lease lost while computing: another node has the job now"), JobStage::Claimed, "");
+    }
+    if (Status published = context_.shared.publish(work_.job_dir, context_.shared.job_dir(claim_.job_folder));
+        !published) {
+      return finish(Status::failure("molds made but not published: " + published.error()), JobStage::Claimed, "");
+    }
+    if (molds.verdict == JobMolds::Verdict::HeldForReview) {
+      return finish(client.mark_held(claim_.lease, molds.reason), JobStage::Held, molds.reason);
+    }
+    finish(client.mark_computed(claim_.lease, molds.pieces), JobStage::Computed, "",
+           fmt::format("{} molds ready in {:.1f} s", molds.molds, molds.took_s));
+  }
+
+ private:
+  // The one way out: the ledger's fenced change, then what it says (job_changed).
+  void finish(const Status& marked, JobStage stage, const std::string& reason, const std::string& note = "") {
+    context_.keeper.drop(claim_.lease);
+    if (!marked) spdlog::warn("{}: {}; the work is dropped", work_.label, marked.error());
+    else context_.job_changed(claim_.job_id, claim_.scan.scan_name, claim_.scan.ticket, 0, stage, reason, note);
+  }
+
+  ClaimContext context_;
+  ledger::JobClaim claim_;
+  MoldsWork work_;
+};
+
+class LedgerNestClaim : public ComputeClaim {
+ public:
+  LedgerNestClaim(ClaimContext context, ledger::BatchClaim claim, NestWork work)
+      : context_(std::move(context)), claim_(std::move(claim)), work_(std::move(work)) {}
+
+  const MoldsWork* molds() const override { return nullptr; }
+  const NestWork* nest() const override { return &work_; }
+  void finish_molds(const JobMolds&) override {}
+
+  void finish_nest(const NestResult& result) override {
+    const bool on_hide = claim_.hide_id != 0;
+    ledger::NestedBatch nested;
+    Status made = result.made;
+    if (made) {
+      for (const auto& [job_id, reason] : result.rejected) nested.rejected.emplace_back(std::stoll(job_id), reason);
+      for (const auto& [job_id, reason] : result.waiting)
+        nested.waiting.emplace_back(std::stoll(job_id), "waiting for a hide of " + claim_.material + ": " + reason);
+      nested.pieces = result.pieces;
+      nested.utilisation = result.utilisation;
+      if (on_hide && result.placed.empty()) nested.reason = "no waiting job fitted on hide " + claim_.hide_name;
+      if (!result.cut_file.empty()) {
+        const std::filesystem::path final_dir = context_.shared.batch_dir(claim_.batch_id);
+        nested.cut_file = context_.shared.relative(final_dir / result.cut_file);
+        made = context_.shared.publish(work_.batch_dir, final_dir);
+      }
+    }
+    if (!made) {
+      // Not the jobs' fault (no machine profile, the share full). A strip batch fails its jobs with
+      // the reason, so that it is seen (`lastcut requeue` hands them back once the cause is mended);
+      // the jobs of a hide wait for the next hide.
+      nested = {};
+      nested.reason = (on_hide ? "hide " + claim_.hide_name + " could not be nested: " : "batch could not be made: ") +
+                      made.error();
+      for (long long id : claim_.job_ids) {
+        if (on_hide) nested.waiting.emplace_back(id, "waiting for a hide of " + claim_.material + ": " + nested.reason);
+        else nested.rejected.emplace_back(id, nested.reason);
+      }
+    }
+    const Status marked = context_.client.mark_nested(claim_.lease, nested);
+    context_.keeper.drop(claim_.lease);
+    if (!marked) {
+      spdlog::warn("{}: {}; the nesting is dropped", work_.label, marked.error());
+      return;
+    }
+    const std::size_t kept = tell_job_outcomes(nested);
+    if (nested.cut_file.empty()) {
+      spdlog::warn("{}: {}; nothing is cut", work_.label, nested.reason.empty() ? "no job could be placed" : nested.reason);
+    } else if (on_hide) {
+      spdlog::info("{}: {} job(s), {} pieces, utilisation of its usable area {:.1f} %, {} job(s) wait; queued for {}",
+                   work_.label, kept, nested.pieces, 100.0 * nested.utilisation, nested.waiting.size(), claim_.cutter);
+    } else {
+      spdlog::info("{}: {} job(s), {} pieces nested on {} (utilisation {:.1f} %) in {:.1f} s; queued for {}",
+                   work_.label, kept, nested.pieces, claim_.material, 100.0 * nested.utilisation, result.took_s,
+                   claim_.cutter);
+    }
+  }
+
+ private:
+  // Logs and tells (MQTT) each claimed job how the nesting ended, in claim order; returns the jobs batched.
+  std::size_t tell_job_outcomes(const ledger::NestedBatch& nested) {
+    struct Outcome {
+      JobStage stage;
+      const std::string* reason;
+    };
+    std::unordered_map<long long, Outcome> outcome_of;
+    for (const auto& [job_id, reason] : nested.rejected) outcome_of.try_emplace(job_id, Outcome{JobStage::Failed, &reason});
+    for (const auto& [job_id, reason] : nested.waiting) outcome_of.try_emplace(job_id, Outcome{JobStage::Computed, &reason});
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < claim_.job_ids.size(); ++i) {
+      const long long job_id = claim_.job_ids[i];
+      const auto found = outcome_of.find(job_id);
+      if (found == outcome_of.end()) {
+        if (nested.cut_file.empty()) continue;  // nothing is cut: the reason is logged for the batch
+        ++kept;
+        context_.job_changed(job_id, claim_.job_names[i], claim_.job_tickets[i], claim_.batch_id, JobStage::Batched, "",
+                             "");
+        continue;
+      }
+      const auto& [stage, reason] = found->second;
+      // A waiting job is back among the computed ones: no batch.
+      context_.job_changed(job_id, claim_.job_names[i], claim_.job_tickets[i],
+                           stage == JobStage::Failed ? claim_.batch_id : 0, stage, *reason, "");
+    }
+    return kept;
+  }
+
+  ClaimContext context_;
+  ledger::BatchClaim claim_;
+  NestWork work_;
+};
+
+std::vector<std::string> hide_materials(const DaemonConfig& settings) {
+  std::vector<std::string> names;
+  for (const auto& [name, material] : settings.materials)
+    if (material.kind == MaterialKind::Hide) names.push_back(name);
+  return names;
+}
+
+// Reference patterns the intake copied beside the scan travel into the job's folder.
+void copy_references(const std::filesystem::path& from, const std::filesystem::path& job_dir) {
+  std::error_code error;
+  if (!std::filesystem::is_directory(from, error)) return;
+  for (const auto& entry : std::filesystem::directory_iterator(from, error)) {
+    std::filesystem::copy_file(entry.path(), job_dir / entry.path().filename(), error);
+  }
+}
+
+}  // namespace
+
+LedgerComputeStore::LedgerComputeStore(const LedgerConfig& ledger, const SharedStore& shared,
+                                       ledger::LeaseKeeper& keeper,
+                                       std::function<std::shared_ptr<const DaemonConfig>()> settings,
+                                       JobChanged job_changed)
+    : ledger_(ledger), shared_(shared), keeper_(keeper), settings_(std::move(settings)),
+      job_changed_(std::move(job_changed)) {}
+
+Result<std::unique_ptr<ComputeClaim>> LedgerComputeStore::claim(const std::string& worker) {
+  ledger::LedgerClient* client = nullptr;
+  {
+    std::lock_guard lock(clients_mutex_);
+    client = clients_[worker].get();
+  }
+  if (!client) {
+    auto connected = ledger::LedgerClient::connect(ledger_.url, ledger_.node);
+    if (!connected) return connected.status();
+    std::lock_guard lock(clients_mutex_);
+    clients_[worker] = std::move(*connected);
+    client = clients_[worker].get();
+  }
+  while (true) {
+    const auto settings = settings_();
+    auto job = client->claim_job(ledger_.lease_s);
+    if (!job) return job.status();
+    if (job->has_value()) {
+      if (auto opened = open_job(*client, std::move(**job))) return opened;
+      continue;  // ended at once (an unreadable ticket, no scratch folder): the next one
+    }
+    // A hide on a cutter's table comes before strip batches: the cutter and its operator wait for it.
+    auto batch = client->make_hide_batch(ledger_hide_rule(settings->batch.window_s), kHideMaxJobs, ledger_.lease_s);
+    if (batch && !batch->has_value())
+      batch = client->make_batch(ledger_batch_rule(settings->batch), ledger_.lease_s, hide_materials(*settings));
+    if (!batch) return batch.status();
+    if (!batch->has_value()) return std::unique_ptr<ComputeClaim>();
+    if (auto opened = open_batch(*client, std::move(**batch))) return opened;
+  }
+}
+
+std::unique_ptr<ComputeClaim> LedgerComputeStore::open_job(ledger::LedgerClient& client, ledger::JobClaim claim) {
+  const std::string label = "job " + std::to_string(claim.job_id) + " (" + claim.scan.scan_name + ")";
+  keeper_.keep(claim.lease);
+  job_changed_(claim.job_id, claim.scan.scan_name, claim.scan.ticket, 0, JobStage::Claimed, "",
+               "computing molds on " + ledger_.node + " (attempt " + std::to_string(claim.attempts) + ")");
+  const Result<JobTicket> ticket = ticket_from_ledger(claim.scan.ticket);
+  if (!ticket) {
+    keeper_.drop(claim.lease);
+    if (Status marked = client.mark_failed(claim.lease, ticket.error()); !marked)
+      spdlog::warn("{}: {}; the work is dropped", label, marked.error());
+    else job_changed_(claim.job_id, claim.scan.scan_name, claim.scan.ticket, 0, JobStage::Failed, ticket.error(), "");
+    return nullptr;
+  }
+  auto scratch = shared_.scratch_for(shared_.job_dir(claim.job_folder), ledger_.node);
+  if (!scratch) {
+    keeper_.drop(claim.lease);
+    spdlog::warn("{}: {}; the work is dropped", label, scratch.error());
+    return nullptr;
+  }
+  copy_references(shared_.references(claim.scan.scan_sha256), *scratch);
+  MoldsWork work{shared_.scan(claim.scan.scan_sha256, claim.scan.scan_name), *scratch, *ticket, label};
+  return std::make_unique<LedgerMoldsClaim>(ClaimContext{client, keeper_, shared_, ledger_, job_changed_, ScratchFolder(*scratch)},
+                                            std::move(claim), std::move(work));
+}
+
+std::unique_ptr<ComputeClaim> LedgerComputeStore::open_batch(ledger::LedgerClient& client, ledger::BatchClaim claim) {
+  const bool on_hide = claim.hide_id != 0;
+  keeper_.keep(claim.lease);
+  NestWork work;
+  work.label = on_hide ? "hide " + claim.hide_name + " (batch " + std::to_string(claim.batch_id) + ")"
+                       : "batch " + std::to_string(claim.batch_id);
+  work.material = claim.material;
+  work.cutter = claim.cutter;
+  work.hide_name = claim.hide_name;
+  for (std::size_t i = 0; i < claim.job_ids.size(); ++i) {
+    const Result<JobTicket> ticket = ticket_from_ledger(claim.job_tickets[i]);
+    // job_ids ascend with entry into the ledger: oldest first.
+    work.jobs.push_back({std::to_string(claim.job_ids[i]), shared_.job_dir(claim.job_folders[i]),
+                         ticket ? *ticket : JobTicket{}});
+  }
+  auto scratch = shared_.scratch_for(shared_.batch_dir(claim.batch_id), ledger_.node);
+  Status opened = scratch.status();
+  if (opened && on_hide) {
+    // build_hide reads the hide file and its sidecar from the batch folder, where they stay with the layout.
+    const std::filesystem::path hide_file = shared_.absolute(claim.hide_file);
+    work.hide_file = hide_file.filename().string();
+    for (const std::filesystem::path& file : {hide_file, hide_sidecar_path(hide_file)}) {
+      std::error_code error;
+      if (!opened || !std::filesystem::exists(file, error)) continue;  // a hide needs no sidecar
+      if (Status copied = copy_file_durably(file, *scratch / file.filename()); !copied)
+        opened = Status::failure("the hide file cannot be read from the shared folder: " + copied.error());
+    }
+  }
+  if (scratch) work.batch_dir = *scratch;
+  auto nest = std::make_unique<LedgerNestClaim>(
+      ClaimContext{client, keeper_, shared_, ledger_, job_changed_,
+                   ScratchFolder(scratch ? *scratch : std::filesystem::path())},
+      std::move(claim), std::move(work));
+  if (opened) return nest;
+  NestResult failed;
+  failed.made = opened;
+  nest->finish_nest(failed);  // its jobs fail (strip) or wait (hide) with the reason
+  return nullptr;
+}
+
+}  // namespace lastcut::daemon

@@ -1,0 +1,222 @@
+#include "daemon/pipeline/spool_compute_store.hpp"
+
+#include <algorithm>
+
+#include <spdlog/spdlog.h>
+
+#include "daemon/pipeline/job_outcomes.hpp"
+
+namespace lastcut::daemon {
+namespace {
+
+class SpoolMoldsClaim : public ComputeClaim {
+ public:
+  SpoolMoldsClaim(const Spool& spool, JobState state, MoldsWork work, std::function<void(const std::string&)> computed)
+      : spool_(spool), state_(std::move(state)), work_(std::move(work)), computed_(std::move(computed)) {}
+
+  const MoldsWork* molds() const override { return &work_; }
+  const NestWork* nest() const override { return nullptr; }
+  void finish_nest(const NestResult&) override {}
+
+  void finish_molds(const JobMolds& molds) override {
+    if (molds.verdict == JobMolds::Verdict::Failed) {
+      fail_job(spool_, state_, molds.reason);
+      return;
+    }
+    state_.piece_count = molds.pieces;
+    nlohmann::json report = molds.report;
+    report.update({{"job", state_.id}, {"scan", state_.scan_name}, {"sha256", state_.sha256},
+                   {"ticket", ticket_to_json(state_.ticket)}});
+    if (Status reported = update_job_report(spool_, JobFolder::Work, state_.id, report); !reported) {
+      fail_job(spool_, state_, "molds made but " + reported.error());
+      return;
+    }
+    if (!set_job_stage(spool_, state_, JobStage::Computed,
+                       fmt::format("{} molds ready in {:.1f} s", molds.molds, molds.took_s),
+                       "molds made, but the state is not written (computed again at the next start)")) {
+      return;
+    }
+    if (molds.verdict == JobMolds::Verdict::HeldForReview) {
+      // Computed first: `lastcut requeue` of the held job then nests it as it is (the operator's approval).
+      hold_job(spool_, state_, molds.reason);
+      return;
+    }
+    computed_(state_.id);
+  }
+
+ private:
+  const Spool& spool_;
+  JobState state_;
+  MoldsWork work_;
+  std::function<void(const std::string&)> computed_;
+};
+
+class SpoolNestClaim : public ComputeClaim {
+ public:
+  SpoolNestClaim(const Spool& spool, BatchState batch, std::map<std::string, JobState> states, NestWork work,
+                 const SpoolComputeStore::Listeners& listeners)
+      : spool_(spool), batch_(std::move(batch)), states_(std::move(states)), work_(std::move(work)),
+        listeners_(listeners) {}
+
+  const MoldsWork* molds() const override { return nullptr; }
+  const NestWork* nest() const override { return &work_; }
+  void finish_molds(const JobMolds&) override {}
+
+  void finish_nest(const NestResult& result) override {
+    const bool on_hide = !batch_.hide_file.empty();
+    std::size_t back_to_wait = 0;
+    for (auto& [id, state] : states_) {
+      if (const auto rejected = result.rejected.find(id); result.made && rejected != result.rejected.end()) {
+        fail_job(spool_, state, rejected->second);
+      } else if (std::find(result.placed.begin(), result.placed.end(), id) != result.placed.end()) {
+        if (Status reported = update_job_report(spool_, JobFolder::Work, id,
+                                                {{"timings_s", {{"nesting_and_cut_file", result.took_s}}}});
+            !reported) {
+          report_job_problem(spool_, JobFolder::Work, state, reported.error());
+        }
+      } else if (on_hide) {
+        // Not placed on this hide (or the hide could not be nested): it waits for the next one.
+        const auto waiting = result.waiting.find(id);
+        const std::string why = !result.made                    ? "hide " + batch_.hide_id + " could not be nested: " +
+                                                                    result.made.error()
+                                : waiting != result.waiting.end() ? waiting->second
+                                                                  : "no room left on hide " + batch_.hide_id;
+        state.batch_id.clear();
+        state.reason = "waiting for a hide of " + batch_.material + ": " + why;
+        set_job_stage(spool_, state, JobStage::Computed, state.reason);
+        listeners_.computed(id);
+        ++back_to_wait;
+      } else {
+        // A strip batch that could not be made at all: not the job's fault; an operator requeues it.
+        hold_job(spool_, state, "batch " + batch_.id + " could not be made: " +
+                                    (result.made ? std::string("its cut file was not made") : result.made.error()));
+      }
+    }
+    batch_.job_ids = result.placed;
+    batch_.updated_at = utc_now_iso();
+    if (result.placed.empty()) {
+      batch_.stage = BatchStage::Empty;
+      batch_.reason = !result.made       ? result.made.error()
+                      : !on_hide         ? "no job left in the batch"
+                      : states_.empty() ? "no piece of " + batch_.material + " was waiting for hide " + batch_.hide_id
+                                         : "no waiting job fitted on hide " + batch_.hide_id;
+      if (Status written = spool_.write_batch(batch_); !written) {
+        // Its jobs have left the batch already; recovery abandons it at the next start.
+        spdlog::error("{}: {}, but batch.json not written: {}", work_.label, batch_.reason, written.error());
+      }
+      if (on_hide) spdlog::warn("{}: {}; nothing is cut", work_.label, batch_.reason);
+      return;
+    }
+    batch_.stage = BatchStage::Queued;
+    batch_.cut_file = result.cut_file;
+    batch_.utilisation = result.utilisation;
+    batch_.piece_count = result.pieces;
+    if (Status written = spool_.write_batch(batch_); !written) {
+      // Still "nesting" on disk: the next start abandons it and nests its jobs again.
+      report_batch_problem(spool_, batch_, "nested, but not queued: batch.json not written: " + written.error());
+      return;
+    }
+    if (on_hide) {
+      spdlog::info("{}: {} job(s), {} pieces, utilisation of its usable area {:.1f} %, {} job(s) wait; queued for {}",
+                   work_.label, result.placed.size(), batch_.piece_count, 100.0 * batch_.utilisation, back_to_wait,
+                   batch_.cutter);
+    } else {
+      spdlog::info("{}: {} job(s), {} pieces nested on {} (utilisation {:.1f} %) in {:.1f} s; queued for {}",
+                   work_.label, result.placed.size(), batch_.piece_count, batch_.material, 100.0 * batch_.utilisation,
+                   result.took_s, batch_.cutter);
+    }
+    listeners_.queued(batch_);
+  }
+
+ private:
+  const Spool& spool_;
+  BatchState batch_;
+  std::map<std::string, JobState> states_;
+  NestWork work_;
+  const SpoolComputeStore::Listeners& listeners_;
+};
+
+}  // namespace
+
+SpoolComputeStore::SpoolComputeStore(const Spool& spool, std::function<std::shared_ptr<const DaemonConfig>()> settings,
+                                     Listeners listeners)
+    : spool_(spool), settings_(std::move(settings)), listeners_(std::move(listeners)) {}
+
+void SpoolComputeStore::add_job(const std::string& job_id) {
+  std::lock_guard lock(mutex_);
+  entries_.push_back({false, job_id});
+}
+
+void SpoolComputeStore::add_batch(const std::string& batch_id) {
+  std::lock_guard lock(mutex_);
+  entries_.push_back({true, batch_id});
+}
+
+std::size_t SpoolComputeStore::waiting() const {
+  std::lock_guard lock(mutex_);
+  return entries_.size();
+}
+
+void SpoolComputeStore::clear() {
+  std::lock_guard lock(mutex_);
+  entries_.clear();
+}
+
+Result<std::unique_ptr<ComputeClaim>> SpoolComputeStore::claim(const std::string&) {
+  while (true) {
+    Entry entry;
+    {
+      std::lock_guard lock(mutex_);
+      if (entries_.empty()) return std::unique_ptr<ComputeClaim>();
+      entry = std::move(entries_.front());
+      entries_.pop_front();
+    }
+    std::unique_ptr<ComputeClaim> claimed = entry.is_batch ? claim_batch(entry.id) : claim_job(entry.id);
+    if (claimed) return claimed;
+  }
+}
+
+std::unique_ptr<ComputeClaim> SpoolComputeStore::claim_job(const std::string& job_id) {
+  auto state = spool_.read_state(JobFolder::Work, job_id);
+  if (!state || state->stage != JobStage::Claimed || !state->stage_problem.empty()) return nullptr;
+  if (state->attempts >= settings_()->jobs.max_attempts) {
+    fail_job(spool_, *state,
+             "computing the molds stopped lastcutd " + std::to_string(state->attempts) +
+                 " times (crash or hang); the scan is kept for a developer to look at");
+    return nullptr;
+  }
+  // Counted before the work: if this scan crashes the daemon, the next start knows.
+  ++state->attempts;
+  // Without the count on disk a scan that crashes lastcutd would be computed forever.
+  if (!set_job_stage(spool_, *state, JobStage::Claimed, "computing molds, attempt " + std::to_string(state->attempts),
+                     "not computed, its attempt cannot be counted")) {
+    return nullptr;
+  }
+  const auto job_dir = spool_.job_dir(JobFolder::Work, job_id);
+  MoldsWork work{job_dir / state->scan_name, job_dir, state->ticket, state->label()};
+  return std::make_unique<SpoolMoldsClaim>(spool_, std::move(*state), std::move(work), listeners_.computed);
+}
+
+std::unique_ptr<ComputeClaim> SpoolComputeStore::claim_batch(const std::string& batch_id) {
+  auto batch = spool_.read_batch(batch_id);
+  if (!batch || batch->stage != BatchStage::Nesting || !batch->stage_problem.empty()) return nullptr;
+  const bool on_hide = !batch->hide_file.empty();
+  NestWork work;
+  work.label = on_hide ? "hide " + batch->hide_id + " (batch " + batch_id + ")" : "batch " + batch_id;
+  work.material = batch->material;
+  work.cutter = batch->cutter;
+  work.batch_dir = spool_.batch_dir(batch_id);
+  work.hide_file = batch->hide_file;
+  work.hide_name = batch->hide_id;
+  std::map<std::string, JobState> states;
+  // batch.job_ids is oldest first; only jobs still in this batch (an operator may have moved one).
+  for (const std::string& id : batch->job_ids) {
+    auto state = spool_.read_state(JobFolder::Work, id);
+    if (!state || state->batch_id != batch_id) continue;
+    work.jobs.push_back({id, spool_.job_dir(JobFolder::Work, id), state->ticket});
+    states.emplace(id, std::move(*state));
+  }
+  return std::make_unique<SpoolNestClaim>(spool_, std::move(*batch), std::move(states), std::move(work), listeners_);
+}
+
+}  // namespace lastcut::daemon

@@ -1,0 +1,84 @@
+#pragma once
+// ComputeStore: what the compute pool (compute_pool.hpp) needs from the store that keeps the jobs:
+// the spool of one station (daemon/pipeline/spool_compute_store.hpp) or the shop's PostgreSQL ledger
+// (daemon/ledger_node/ledger_compute_store.hpp). The pool owns the order of things and the engine
+// steps (the molds, a strip batch, a hide, each inside the progress monitor's bracket); the store
+// owns claiming, where the files go and what each outcome does to the job's state. A fake store
+// stands in for both in tests/station/compute_pool_test.cpp.
+//
+// Computing is AT LEAST ONCE: a claim the store loses (a crash, a lease that ran out) is computed
+// again; each finish_* writes the outcome only when the claim is still the store's.
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "daemon/job/job_ticket.hpp"
+#include "daemon/station/job_molds.hpp"
+#include "engine/core/status.hpp"
+
+namespace lastcut::daemon {
+
+// A job whose molds are to be made.
+struct MoldsWork {
+  std::filesystem::path scan;     // the scan's bytes
+  std::filesystem::path job_dir;  // molds/, items.json and report go here; the reference copies are in it
+  JobTicket ticket;
+  std::string label;  // "job 17 (left.ply)": log lines, the watchdog's "stuck on"
+};
+
+// One job of a batch or a hide, oldest first.
+struct NestJob {
+  std::string job_id;
+  std::filesystem::path job_dir;  // holds items.json
+  JobTicket ticket;
+};
+
+// A strip batch or a hide to nest.
+struct NestWork {
+  std::string label;  // "batch 4", "hide H-1 (batch 4)"
+  std::string material, cutter;
+  std::vector<NestJob> jobs;        // oldest first
+  std::filesystem::path batch_dir;  // layout, preview, cut file (and for a hide its report, offcut) go here
+  std::string hide_file;            // a hide: its file's name in batch_dir (sidecar beside it); "" for a strip
+  std::string hide_name;            // a hide: its id as the hides folder named it
+};
+
+// How a nesting ended, for every job of the work.
+struct NestResult {
+  Status made = Status::success();  // failure: nothing nested, not the jobs' fault (no profile, a file not written)
+  std::vector<std::string> placed;               // job ids on the layout, oldest first
+  std::map<std::string, std::string> rejected;   // job id -> why its pieces cannot be placed or read: it fails
+  std::map<std::string, std::string> waiting;    // a hide only: job id -> why it waits for the next hide
+  std::string cut_file;                          // file name in batch_dir; "" when nothing is cut
+  int pieces = 0;                                // pieces placed
+  double utilisation = 0;                        // 0..1 (of a hide's usable area)
+  double took_s = 0;                             // nesting and cut file
+};
+
+// One claimed job or batch; the worker holds it while it computes.
+class ComputeClaim {
+ public:
+  virtual ~ComputeClaim() = default;
+  // The work: exactly one of the two is set.
+  virtual const MoldsWork* molds() const = 0;
+  virtual const NestWork* nest() const = 0;
+  // Writes the outcome: the job computed, held for review or failed with the reason (molds), or the
+  // batch queued for its cutter with its jobs batched, failed, waiting (nest). Failures to write
+  // are logged; the claim then goes back as a lost claim would.
+  virtual void finish_molds(const JobMolds& molds) = 0;
+  virtual void finish_nest(const NestResult& result) = 0;
+};
+
+class ComputeStore {
+ public:
+  virtual ~ComputeStore() = default;
+  // The next job or batch to compute, claimed for `worker`: null when none waits now, an error line
+  // when the store cannot be asked (the pool logs it once per change and asks again later). A job
+  // the store itself must end first (attempts used up, an unreadable ticket) is ended here and
+  // never handed out.
+  virtual Result<std::unique_ptr<ComputeClaim>> claim(const std::string& worker) = 0;
+};
+
+}  // namespace lastcut::daemon
