@@ -7,6 +7,13 @@
 namespace lastcut::daemon {
 
 std::vector<DueBatch> due_batches(const std::vector<WaitingJob>& waiting, const BatchConfig& rule, bool force) {
+  if (rule.window_s <= 0) {
+    // No window: each job alone, at once, however many wait together (a ledger node's worker may
+    // find several computed at once; a spool's tick may bring several).
+    std::vector<DueBatch> alone;
+    for (const WaitingJob& job : waiting) alone.push_back({job.material, job.cutter, {job.id}, std::max(1, job.pieces)});
+    return alone;
+  }
   struct Open {
     DueBatch batch;
     double oldest_waited_s = 0;

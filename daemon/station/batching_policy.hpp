@@ -3,7 +3,8 @@
 // max_pieces, docs/daemon.md): computed jobs of one material and cutter are nested together;
 // taken oldest first, a group closes as soon as its pieces reach max_pieces (so a batch never
 // grows past what the table holds by more than its last job), and the group still open is due
-// once its oldest job has waited window_s. window_s = 0 nests every job alone at once;
+// once its oldest job has waited window_s. window_s = 0 nests every job alone at once, however
+// many wait together;
 // max_pieces = 0 sets no piece limit. A pure function of the waiting jobs and the clock: the
 // spool calls it each turn of its main loop, the ledger inside the transaction that forms a batch.
 #include <string>

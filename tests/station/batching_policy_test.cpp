@@ -22,10 +22,11 @@ std::vector<std::vector<std::string>> ids_of(const std::vector<DueBatch>& batche
 
 using Ids = std::vector<std::vector<std::string>>;
 
-TEST(BatchingPolicy, AWindowOfZeroMakesWhatWaitsDueAtOnce) {
-  const std::vector<WaitingJob> waiting{{"a", "calf", "c1", 2, 0}, {"b", "calf", "c1", 2, 0}};
-  // Due now with what waits: a spool that adds jobs one at a time so nests each alone.
-  EXPECT_EQ(ids_of(due_batches(waiting, rule(0, 0))), (Ids{{"a", "b"}}));
+TEST(BatchingPolicy, AWindowOfZeroNestsEachJobAloneAtOnce) {
+  // However many wait together (a ledger node's worker may find several computed at once): alone.
+  const std::vector<WaitingJob> waiting{{"a", "calf", "c1", 2, 0}, {"b", "calf", "c1", 2, 0}, {"c", "suede", "c1", 2, 0}};
+  EXPECT_EQ(ids_of(due_batches(waiting, rule(0, 0))), (Ids{{"a"}, {"b"}, {"c"}}));
+  EXPECT_EQ(ids_of(due_batches(waiting, rule(0, 8))), (Ids{{"a"}, {"b"}, {"c"}}));
 }
 
 TEST(BatchingPolicy, AGroupWaitsForItsWindowCountedFromItsOldestJob) {

@@ -129,6 +129,24 @@ TEST_P(StationBehaviour, ABatchClosesAtMaxPiecesWithoutWaitingItsWindow) {
   EXPECT_EQ(station->stop(), 0);
 }
 
+TEST_P(StationBehaviour, AWindowOfZeroNestsEachJobAloneAtOnce) {
+  StationSettings settings;
+  settings.window_s = 0;  // docs/daemon.md: each job nested alone, at once
+  settings.max_pieces = 0;
+  auto station = start("behaviour-alone", settings);
+  // Dropped together: on a ledger node the one compute worker claims all three scans before it
+  // forms a batch, so all three wait together; still each is nested alone.
+  for (const char* name : {"one", "two", "three"}) station->drop_scan(std::string(name) + ".stl", name);
+  ASSERT_TRUE(wait_until([&] {
+    return reached(*station, "one.stl", "done") && reached(*station, "two.stl", "done") &&
+           reached(*station, "three.stl", "done");
+  }, 120)) << station->log();
+  const std::set<std::string> batches{station->job("one.stl").batch, station->job("two.stl").batch,
+                                      station->job("three.stl").batch};
+  EXPECT_EQ(batches.size(), 3u) << station->log();
+  EXPECT_EQ(station->stop(), 0);
+}
+
 TEST_P(StationBehaviour, AReloadedWindowAppliesToJobsAlreadyWaiting) {
   StationSettings settings;
   settings.window_s = 600;
