@@ -3,13 +3,6 @@
 #include <spdlog/spdlog.h>
 
 namespace lastcut::daemon {
-namespace {
-
-// While the store cannot take files (the ledger away), the folder is offered again after this.
-constexpr auto kIntakeRetry = std::chrono::seconds(2);
-
-}  // namespace
-
 Station::Station(std::shared_ptr<const DaemonConfig> config,
                  const std::function<std::unique_ptr<StationStore>(const RunningConfig&)>& make_store)
     : config_(std::move(config)), store_(make_store(config_)) {}
@@ -32,18 +25,22 @@ Status Station::start() {
       if (cutter->name() == name) return cutter->condition();
     return std::string("not started");
   };
-  links.files_being_checked = [this] { return scans_.folder ? scans_.folder->pending_count() : std::size_t{0}; };
+  links.files_being_checked = [this] { return scans_ ? scans_->folder().pending_count() : std::size_t{0}; };
   // 1. The store: storage prepared, what an earlier run left put right, before any file is taken.
   started_ = true;
   if (Status opened = store_->open(links); !opened) return opened;
   // 2. The folders files are dropped into.
-  scans_.folder = std::make_unique<HotFolder>(settings->paths.watch_dir, settings->watch);
-  if (Status watching = scans_.folder->start(); !watching) return watching;
+  auto scan_folder = std::make_unique<HotFolder>(settings->paths.watch_dir, settings->watch);
+  if (Status watching = scan_folder->start(); !watching) return watching;
+  scans_ = std::make_unique<FolderIntake>(std::move(scan_folder),
+                                          [this](const ReadyScan& ready) { return store_->take_scan(ready); });
   if (!settings->paths.hides_dir.empty()) {
-    hides_.folder = std::make_unique<HotFolder>(settings->paths.hides_dir, settings->watch, HotFolderContent::Hides);
-    if (Status watching = hides_.folder->start(); !watching) return watching;
+    auto hide_folder = std::make_unique<HotFolder>(settings->paths.hides_dir, settings->watch, HotFolderContent::Hides);
+    if (Status watching = hide_folder->start(); !watching) return watching;
     spdlog::info("hides folder {} ({}): hides dropped here lie on their cutter's table",
-                 settings->paths.hides_dir.string(), hides_.folder->mode_description());
+                 settings->paths.hides_dir.string(), hide_folder->mode_description());
+    hides_ = std::make_unique<FolderIntake>(std::move(hide_folder),
+                                            [this](const ReadyScan& ready) { return store_->take_hide(ready); });
   }
   // 3. A worker for each cutter cabled here.
   for (const StationCutter& place : store_->cutters()) {
@@ -62,41 +59,24 @@ Status Station::start() {
     compute_pool_->start(settings->jobs.compute_workers);
   }
   spdlog::info("watching {} ({}); {}; {} compute worker(s); {} cutter(s); duplicates: {}",
-               settings->paths.watch_dir.string(), scans_.folder->mode_description(), store_->where(),
+               settings->paths.watch_dir.string(), scans_->folder().mode_description(), store_->where(),
                compute_pool_ ? settings->jobs.compute_workers : 0, cutters_.size(),
                to_string(settings->jobs.duplicate_policy));
   return Status::success();
 }
 
 void Station::tick(Clock::time_point now) {
-  if (stopped_) return;
-  take_ready(scans_, now);
-  take_ready(hides_, now);
+  if (stopped_ || !scans_) return;
+  scans_->take_ready(now);
+  if (hides_) hides_->take_ready(now);
   store_->tick(now);
 }
 
-void Station::take_ready(Intake& intake, Clock::time_point now) {
-  if (!intake.folder || now < intake.next) return;
-  for (const ReadyScan& ready : intake.folder->collect_ready(now)) {
-    std::error_code error;
-    if (!std::filesystem::exists(ready.scan, error)) {
-      intake.folder->forget(ready.scan.filename().string());  // gone meanwhile; a new event brings it back
-      continue;
-    }
-    if ((store_.get()->*intake.take)(ready) == StationStore::Intake::Later) {
-      intake.next = now + kIntakeRetry;  // the rest wait too
-      return;
-    }
-    intake.folder->forget(ready.scan.filename().string());
-    if (!ready.sidecar.empty()) intake.folder->forget(ready.sidecar.filename().string());
-  }
-}
-
-int Station::event_fd() const { return scans_.folder ? scans_.folder->event_fd() : -1; }
+int Station::event_fd() const { return scans_ ? scans_->folder().event_fd() : -1; }
 
 void Station::read_events() {
-  if (scans_.folder) scans_.folder->read_events();
-  if (hides_.folder) hides_.folder->read_events();  // its events are read here; tick() runs every 100 ms anyway
+  if (scans_) scans_->folder().read_events();
+  if (hides_) hides_->folder().read_events();  // its events are read here; tick() runs every 100 ms anyway
 }
 
 std::string Station::status_line() const {
@@ -120,8 +100,8 @@ void Station::stop() {
   cutters_.clear();
   compute_pool_.reset();
   store_->close();
-  scans_.folder.reset();
-  hides_.folder.reset();
+  scans_.reset();
+  hides_.reset();
 }
 
 }  // namespace lastcut::daemon

@@ -17,10 +17,10 @@
 #include "daemon/station/compute_pool.hpp"
 #include "daemon/station/config_reload.hpp"
 #include "daemon/station/cutter_worker.hpp"
+#include "daemon/station/folder_intake.hpp"
 #include "daemon/station/job_flow.hpp"
 #include "daemon/station/progress_monitor.hpp"
 #include "daemon/station/station_store.hpp"
-#include "daemon/watch/hot_folder.hpp"
 
 namespace lastcut::daemon {
 
@@ -46,20 +46,12 @@ class Station : public JobFlow {
   void stop() override;
 
  private:
-  // A folder files are dropped into: scans or hides.
-  struct Intake {
-    std::unique_ptr<HotFolder> folder;
-    StationStore::Intake (StationStore::*take)(const ReadyScan&) = nullptr;
-    Clock::time_point next{};  // while the store cannot take files: when to offer them again
-  };
-  void take_ready(Intake& intake, Clock::time_point now);
-
   RunningConfig config_;
   ProgressMonitor monitor_;
   StatusObserver* observer_ = nullptr;
   std::unique_ptr<StationStore> store_;
-  Intake scans_{nullptr, &StationStore::take_scan};
-  Intake hides_{nullptr, &StationStore::take_hide};  // folder null when paths.hides is not set
+  std::unique_ptr<FolderIntake> scans_;
+  std::unique_ptr<FolderIntake> hides_;  // null when paths.hides is not set
   std::unique_ptr<ComputePool> compute_pool_;       // null when this node does not compute
   std::vector<std::unique_ptr<CutterWorker>> cutters_;
   bool started_ = false;
