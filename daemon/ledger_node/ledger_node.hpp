@@ -26,7 +26,6 @@
 #include <memory>
 #include <mutex>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "daemon/config/daemon_config.hpp"
@@ -75,13 +74,13 @@ class LedgerNode : public StationStore {
   // The running configuration; SIGHUP replaces it (any thread may read it).
   std::shared_ptr<const DaemonConfig> config() const { return config_.get(); }
   // One folder files are dropped into: the watch folder (scans) or the hides folder.
-  struct FolderIntake {
+  struct DropFolder {
     std::string name;  // "watch folder", "hides folder"
     Status (LedgerNode::*enter)(const ReadyScan&) = nullptr;
     std::string trouble;  // as last logged
   };
   // scan_intake.cpp (main thread): scans and hides
-  Intake take(const ReadyScan& ready, FolderIntake& intake);
+  Intake take(const ReadyScan& ready, DropFolder& folder);
   Status enter(const ReadyScan& ready);
   Status enter_hide(const ReadyScan& ready);
   void refuse(const ReadyScan& ready, const std::string& reason);
@@ -105,8 +104,8 @@ class LedgerNode : public StationStore {
   const LedgerConfig ledger_;
   SharedStore store_;
   StationLinks links_;
-  FolderIntake scans_{"watch folder", &LedgerNode::enter, ""};
-  FolderIntake hides_{"hides folder", &LedgerNode::enter_hide, ""};
+  DropFolder scans_{"watch folder", &LedgerNode::enter, ""};
+  DropFolder hides_{"hides folder", &LedgerNode::enter_hide, ""};
   std::unique_ptr<ledger::LedgerClient> client_;  // main thread only
   std::unique_ptr<ledger::LeaseKeeper> keeper_;
   std::unique_ptr<LedgerComputeStore> compute_store_;  // null without the compute role

@@ -55,7 +55,7 @@ StationStore::Intake LedgerNode::take_scan(const ReadyScan& ready) { return take
 
 StationStore::Intake LedgerNode::take_hide(const ReadyScan& ready) { return take(ready, hides_); }
 
-StationStore::Intake LedgerNode::take(const ReadyScan& ready, FolderIntake& intake) {
+StationStore::Intake LedgerNode::take(const ReadyScan& ready, DropFolder& intake) {
   const Status entered = (this->*intake.enter)(ready);
   if (!entered && not_the_files_fault(entered)) {
     // Not the file's fault and nothing was entered: it waits where it was dropped.

@@ -138,7 +138,7 @@ TEST_F(BatchesTest, AComputedJobWaitsForCompanyUpToTheWindow) {
 }
 
 TEST_F(BatchesTest, NestedRejectsFailAloneAndAnEmptyBatchIsDissolved) {
-  auto made = compute_->make_batch(batch_rule(0, 10), 30);
+  auto made = compute_->make_batch(group_now(10), 30);
   ASSERT_TRUE(made.ok() && made->has_value());
   const auto& ids = (*made)->job_ids;
   ASSERT_EQ(ids.size(), 2u);
@@ -148,7 +148,7 @@ TEST_F(BatchesTest, NestedRejectsFailAloneAndAnEmptyBatchIsDissolved) {
             "failed:-:a mold is wider");
   EXPECT_EQ(query("SELECT state || ':' || cut_file || ':' || pieces FROM batches"), "queued:batches/x/cut.nc:3");
 
-  auto alone = compute_->make_batch(batch_rule(0, 10), 30);  // cutter-2's job, which cannot be placed at all
+  auto alone = compute_->make_batch(group_now(10), 30);  // cutter-2's job, which cannot be placed at all
   ASSERT_TRUE(alone.ok() && alone->has_value());
   ASSERT_TRUE(compute_->mark_nested((*alone)->lease, {"", 0, {{(*alone)->job_ids[0], "too wide"}}}).ok());
   EXPECT_EQ(query("SELECT state FROM batches WHERE id = " + std::to_string((*alone)->batch_id)), "dissolved");
@@ -158,7 +158,7 @@ TEST_F(BatchesTest, NestedRejectsFailAloneAndAnEmptyBatchIsDissolved) {
 }
 
 TEST_F(BatchesTest, ANestingNodeThatVanishesLeavesItsJobsToBeRegrouped) {
-  auto made = compute_->make_batch(batch_rule(0, 10), 0.3);
+  auto made = compute_->make_batch(group_now(10), 0.3);
   ASSERT_TRUE(made.ok() && made->has_value());
   std::this_thread::sleep_for(std::chrono::milliseconds(600));
   auto swept = station1_->sweep_expired(3);

@@ -35,7 +35,7 @@ class HidesTest : public LedgerTest {
 
 TEST_F(HidesTest, AHideTakesItsMaterialsJobsAndTheMisfitsWaitAgain) {
   // No hide yet: a strip batch takes the calf job only, the leather jobs wait.
-  auto strip = compute_->make_batch(batch_rule(0, 10), 30, {"leather"});
+  auto strip = compute_->make_batch(group_now(10), 30, {"leather"});
   ASSERT_TRUE(strip.ok() && strip->has_value()) << strip.error();
   EXPECT_EQ((*strip)->material, "calf");
   EXPECT_EQ((*strip)->job_ids.size(), 1u);
@@ -78,7 +78,7 @@ TEST_F(HidesTest, AHideTakesItsMaterialsJobsAndTheMisfitsWaitAgain) {
   EXPECT_EQ(query("SELECT count(*) FROM jobs WHERE state = 'batched' AND batch_id = " + std::to_string(claim.batch_id)),
             "2");
   // The waiting job is not put on a strip, and the used hide is not nested again.
-  auto after = compute_->make_batch(batch_rule(0, 10), 30, {"leather"});
+  auto after = compute_->make_batch(group_now(10), 30, {"leather"});
   ASSERT_TRUE(after.ok());
   EXPECT_FALSE(after->has_value());
   auto again = compute_->make_hide_batch(daemon::ledger_hide_rule(0), 64, 30);

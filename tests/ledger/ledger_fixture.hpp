@@ -79,11 +79,30 @@ inline ledger::BatchChooser batch_rule(double window_s, int max_pieces) {
   return daemon::ledger_batch_rule(rule);
 }
 
+// Groups the oldest computed jobs of one material and cutter at once, whatever they waited (the
+// station's rule forced, as for a stopping station), up to max_pieces: for tests of the ledger's
+// grouping itself. (A window of 0 would nest each job alone.)
+inline ledger::BatchChooser group_now(int max_pieces) {
+  return [max_pieces](const std::vector<ledger::ComputedJob>& computed) {
+    std::vector<daemon::WaitingJob> waiting;
+    for (const ledger::ComputedJob& job : computed)
+      waiting.push_back({std::to_string(job.job_id), job.material, job.cutter, job.pieces, job.waited_s});
+    daemon::BatchConfig rule;
+    rule.window_s = 3600;
+    rule.max_pieces = max_pieces;
+    std::vector<long long> ids;
+    const std::vector<daemon::DueBatch> due = daemon::due_batches(waiting, rule, true);
+    if (!due.empty())
+      for (const std::string& id : due.front().job_ids) ids.push_back(std::stoll(id));
+    return ids;
+  };
+}
+
 // What a compute node does to a batch (nothing is really nested here): groups the oldest computed
-// jobs (no window) and hands the batch to its station with a cut file named after it. nullopt when
+// jobs (group_now) and hands the batch to its station with a cut file named after it. nullopt when
 // nothing is computed; the failure of a ledger call fails the test.
 inline std::optional<long long> nest_batch(ledger::LedgerClient& compute, int max_jobs) {
-  auto made = compute.make_batch(batch_rule(0, max_jobs), 30);
+  auto made = compute.make_batch(group_now(max_jobs), 30);
   EXPECT_TRUE(made.ok()) << made.error();
   if (!made || !made->has_value()) return std::nullopt;
   const long long id = (*made)->batch_id;
