@@ -23,7 +23,7 @@
 #include "daemon/config/config_loader.hpp"
 #include "daemon/ledger/ledger_check.hpp"
 #include "daemon/ledger_node/ledger_node.hpp"
-#include "daemon/pipeline/pipeline.hpp"
+#include "daemon/spool_store/spool_store.hpp"
 #include "daemon/service/operator_log.hpp"
 #include "daemon/station/station.hpp"
 #include "daemon/service/signal_events.hpp"
@@ -65,7 +65,7 @@ int check_config(const std::string& file) {
   return 0;
 }
 
-void reload(const std::string& file, lastcut::daemon::JobFlow& pipeline, lastcut::daemon::SystemdNotifier& notifier,
+void reload(const std::string& file, lastcut::daemon::JobFlow& station, lastcut::daemon::SystemdNotifier& notifier,
             const lastcut::daemon::StatusConfig& running_status) {
   notifier.reloading();
   const auto result = lastcut::daemon::load_daemon_config(file);
@@ -73,7 +73,7 @@ void reload(const std::string& file, lastcut::daemon::JobFlow& pipeline, lastcut
     spdlog::error("reload refused, the running configuration stays: {}", result.error);
   } else {
     lastcut::daemon::set_operator_log_level(result.config->log.level);
-    const std::string kept = pipeline.reload(std::make_shared<lastcut::daemon::DaemonConfig>(*result.config));
+    const std::string kept = station.reload(std::make_shared<lastcut::daemon::DaemonConfig>(*result.config));
     spdlog::info("configuration reloaded from {}{}", file, kept.empty() ? "" : "; " + kept);
     const auto& next = result.config->status;
     if (std::tie(next.enabled, next.mqtt_url, next.station, next.topic_prefix, next.username, next.password,
@@ -87,13 +87,13 @@ void reload(const std::string& file, lastcut::daemon::JobFlow& pipeline, lastcut
   notifier.ready();
 }
 
-// The flow is one Station (daemon/station/station.hpp), on its own file spool (Pipeline) or as a node
+// The flow is one Station (daemon/station/station.hpp), on its own file spool (SpoolStore) or as a node
 // of a shop on a shared PostgreSQL ledger (LedgerNode): the loop drives either the same way.
-int serve(const std::string& file, lastcut::daemon::JobFlow& pipeline, lastcut::daemon::SignalEvents& signals,
+int serve(const std::string& file, lastcut::daemon::JobFlow& station, lastcut::daemon::SignalEvents& signals,
           lastcut::daemon::SystemdNotifier& notifier, const lastcut::daemon::StatusConfig& running_status,
           lastcut::daemon::StatusObserver* observer) {
-  pipeline.set_observer(observer);
-  if (lastcut::Status started = pipeline.start(); !started) {
+  station.set_observer(observer);
+  if (lastcut::Status started = station.start(); !started) {
     spdlog::critical("lastcutd cannot start: {}", started.error());
     return 1;
   }
@@ -103,33 +103,33 @@ int serve(const std::string& file, lastcut::daemon::JobFlow& pipeline, lastcut::
   std::string reported_stuck;
   auto next_status = std::chrono::steady_clock::now();
   for (;;) {
-    pollfd fds[2] = {{signals.fd(), POLLIN, 0}, {pipeline.event_fd(), POLLIN, 0}};
-    ::poll(fds, pipeline.event_fd() >= 0 ? 2 : 1, 100);
+    pollfd fds[2] = {{signals.fd(), POLLIN, 0}, {station.event_fd(), POLLIN, 0}};
+    ::poll(fds, station.event_fd() >= 0 ? 2 : 1, 100);
     bool stop = false;
     for (auto event = signals.read(); event != lastcut::daemon::SignalEvent::None; event = signals.read()) {
       if (event == lastcut::daemon::SignalEvent::Stop) stop = true;
-      else reload(file, pipeline, notifier, running_status);
+      else reload(file, station, notifier, running_status);
     }
     if (stop) break;
-    pipeline.read_events();
+    station.read_events();
     const auto now = std::chrono::steady_clock::now();
-    pipeline.tick(now);
-    const std::string stuck = pipeline.stuck(now);
+    station.tick(now);
+    const std::string stuck = station.stuck(now);
     if (stuck.empty()) {
       notifier.feed_watchdog(now);
-      if (!reported_stuck.empty()) spdlog::info("pipeline moving again");
+      if (!reported_stuck.empty()) spdlog::info("station moving again");
     } else if (stuck != reported_stuck) {
       spdlog::critical("{}: no longer feeding the systemd watchdog, lastcutd will be restarted", stuck);
     }
     reported_stuck = stuck;
     if (now >= next_status) {
-      notifier.status(pipeline.status_line());
+      notifier.status(station.status_line());
       next_status = now + std::chrono::seconds(2);
     }
   }
   notifier.stopping();
   spdlog::info("lastcutd stopping: finishing or holding the jobs in hand");
-  pipeline.stop();
+  station.stop();
   return 0;
 }
 
@@ -165,7 +165,7 @@ int run(const std::string& file) {
   flow = std::make_unique<lastcut::daemon::Station>(
       config, [on_ledger](const lastcut::daemon::RunningConfig& running) -> std::unique_ptr<lastcut::daemon::StationStore> {
         if (on_ledger) return std::make_unique<lastcut::daemon::LedgerNode>(running);
-        return std::make_unique<lastcut::daemon::Pipeline>(running);
+        return std::make_unique<lastcut::daemon::SpoolStore>(running);
       });
   int code = 0;
   try {

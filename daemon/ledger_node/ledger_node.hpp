@@ -1,7 +1,7 @@
 #pragma once
 // LedgerNode: the store of one node of a shop sharing a PostgreSQL job ledger (docs/multi-station.md,
 // station/station_store.hpp), what the Station (station/station.hpp) runs when the configuration
-// has [ledger], in place of the single station's Pipeline.
+// has [ledger], in place of the single station's SpoolStore.
 //
 //   watch folder --take_scan (main thread)--> shared/scans/<sha> + ledger job `ready`
 //   hides folder --take_hide (main thread)--> shared/hides/<sha> + ledger hide `loaded` on its cutter

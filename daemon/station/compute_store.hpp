@@ -1,6 +1,6 @@
 #pragma once
 // ComputeStore: what the compute pool (compute_pool.hpp) needs from the store that keeps the jobs:
-// the spool of one station (daemon/pipeline/spool_compute_store.hpp) or the shop's PostgreSQL ledger
+// the spool of one station (daemon/spool_store/spool_compute_store.hpp) or the shop's PostgreSQL ledger
 // (daemon/ledger_node/ledger_compute_store.hpp). The pool owns the order of things and the engine
 // steps (the molds, a strip batch, a hide, each inside the progress monitor's bracket); the store
 // owns claiming, where the files go and what each outcome does to the job's state. A fake store

@@ -1,6 +1,6 @@
 #pragma once
 // CutStore: what a cutter worker (cutter_worker.hpp) needs from the store that keeps the batches:
-// the spool of one station (daemon/pipeline/spool_cut_store.hpp) or the shop's PostgreSQL ledger
+// the spool of one station (daemon/spool_store/spool_cut_store.hpp) or the shop's PostgreSQL ledger
 // (daemon/ledger_node/ledger_cut_store.hpp). The worker owns the order of things and the policy
 // (probe, claim, the point of no return, how a send outcome becomes a batch state); the store owns
 // persistence and claiming. A fake store stands in for both in tests/station/cutter_worker_test.cpp.

@@ -1,7 +1,7 @@
 #pragma once
 // JobFlow: what lastcutd's main loop drives (daemon/lastcutd/main.cpp), in this order: set_observer,
 // start, then per turn read_events / tick / stuck / status_line, reload on SIGHUP, stop on SIGTERM.
-// One flow exists: Station (station.hpp), on one of two stores: Pipeline (one station on its own
+// One flow exists: Station (station.hpp), on one of two stores: SpoolStore (one station on its own
 // file spool) or LedgerNode (one node of a shop sharing a PostgreSQL job ledger, chosen by [ledger]).
 #include <chrono>
 #include <memory>

@@ -1,6 +1,6 @@
 #pragma once
 // StationStore: what a Station (station.hpp) needs from the store that keeps its jobs: the spool of
-// one station (daemon/pipeline/spool_store.hpp) or a node of a shop on the PostgreSQL ledger
+// one station (daemon/spool_store/spool_store.hpp) or a node of a shop on the PostgreSQL ledger
 // (daemon/ledger_node/ledger_store.hpp). The station owns the order of things: the watch folders,
 // the compute pool, the cutter workers, start and stop. The store owns persistence, claiming and
 // leases, and what is store-shaped by nature: taking a file in (a spool claims it into work/, a

@@ -1,5 +1,5 @@
 #pragma once
-// Pipeline: the store of one station on its spool folder (station/station_store.hpp), what the
+// SpoolStore: the store of one station on its spool folder (station/station_store.hpp), what the
 // Station (station/station.hpp) runs when the configuration has no [ledger].
 //
 //   watch folder --take_scan: claim--> work/ID --compute pool (SpoolComputeStore)--> molds (computed)
@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "daemon/config/daemon_config.hpp"
-#include "daemon/pipeline/spool_compute_store.hpp"
-#include "daemon/pipeline/spool_cut_store.hpp"
+#include "daemon/spool_store/spool_compute_store.hpp"
+#include "daemon/spool_store/spool_cut_store.hpp"
 #include "daemon/spool/spool.hpp"
 #include "daemon/station/batching_policy.hpp"
 #include "daemon/station/config_reload.hpp"
@@ -28,12 +28,12 @@
 
 namespace lastcut::daemon {
 
-class Pipeline : public StationStore {
+class SpoolStore : public StationStore {
  public:
-  explicit Pipeline(const RunningConfig& config) : config_(config) {}
-  ~Pipeline() override { close(); }
-  Pipeline(const Pipeline&) = delete;
-  Pipeline& operator=(const Pipeline&) = delete;
+  explicit SpoolStore(const RunningConfig& config) : config_(config) {}
+  ~SpoolStore() override { close(); }
+  SpoolStore(const SpoolStore&) = delete;
+  SpoolStore& operator=(const SpoolStore&) = delete;
 
   // Prepares the spool and recovers it (recovery.cpp).
   Status open(const StationLinks& links) override;

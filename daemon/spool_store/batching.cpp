@@ -5,12 +5,12 @@
 
 #include <spdlog/spdlog.h>
 
-#include "daemon/pipeline/job_outcomes.hpp"
-#include "daemon/pipeline/pipeline.hpp"
+#include "daemon/spool_store/job_outcomes.hpp"
+#include "daemon/spool_store/spool_store.hpp"
 
 namespace lastcut::daemon {
 
-void Pipeline::add_to_batcher(const JobState& state) {
+void SpoolStore::add_to_batcher(const JobState& state) {
   if (is_hide_material(state.ticket.material)) {
     add_to_hide_pool(state);  // nested when a hide of this material arrives (hide_intake.cpp)
     return;
@@ -21,7 +21,7 @@ void Pipeline::add_to_batcher(const JobState& state) {
   close_due_batches(Clock::now(), false);
 }
 
-void Pipeline::close_due_batches(Clock::time_point now, bool force) {
+void SpoolStore::close_due_batches(Clock::time_point now, bool force) {
   std::vector<WaitingJob> waiting;
   for (const StripWaiting& job : strip_waiting_)
     waiting.push_back({job.id, job.material, job.cutter, job.pieces,
@@ -34,7 +34,7 @@ void Pipeline::close_due_batches(Clock::time_point now, bool force) {
   }
 }
 
-void Pipeline::close_batch(const DueBatch& due) {
+void SpoolStore::close_batch(const DueBatch& due) {
   BatchState batch;
   batch.id = spool_->new_batch_id();
   batch.material = due.material;
@@ -68,7 +68,7 @@ void Pipeline::close_batch(const DueBatch& due) {
   to_nest(batch.id);
 }
 
-void Pipeline::enqueue_batch(const BatchState& batch) {
+void SpoolStore::enqueue_batch(const BatchState& batch) {
   const auto it = cutters_.find(batch.cutter);
   if (it == cutters_.end()) {
     spdlog::error("batch {}: cutter {} is not configured; the batch stays queued in the spool", batch.id,

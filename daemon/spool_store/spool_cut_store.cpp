@@ -1,8 +1,8 @@
-#include "daemon/pipeline/spool_cut_store.hpp"
+#include "daemon/spool_store/spool_cut_store.hpp"
 
 #include <spdlog/spdlog.h>
 
-#include "daemon/pipeline/job_outcomes.hpp"
+#include "daemon/spool_store/job_outcomes.hpp"
 
 namespace lastcut::daemon {
 namespace {

@@ -3,8 +3,8 @@
 // cut-off file is claimed and then failed, so the operator finds it in failed/ with the reason.
 #include <spdlog/spdlog.h>
 
-#include "daemon/pipeline/job_outcomes.hpp"
-#include "daemon/pipeline/pipeline.hpp"
+#include "daemon/spool_store/job_outcomes.hpp"
+#include "daemon/spool_store/spool_store.hpp"
 #include "daemon/station/ticket_targets.hpp"
 #include "daemon/job/sha256.hpp"
 #include "engine/core/durable_file.hpp"
@@ -29,7 +29,7 @@ std::string copy_reference_patterns(const std::filesystem::path& sidecar_dir, co
 
 }  // namespace
 
-void Pipeline::index_hashes() {
+void SpoolStore::index_hashes() {
   for (JobFolder folder : {JobFolder::Done, JobFolder::Failed, JobFolder::Held, JobFolder::Work}) {
     for (const std::string& id : spool_->list(folder)) {
       auto state = spool_->read_state(folder, id);
@@ -39,7 +39,7 @@ void Pipeline::index_hashes() {
   }
 }
 
-StationStore::Intake Pipeline::take_scan(const ReadyScan& ready) {
+StationStore::Intake SpoolStore::take_scan(const ReadyScan& ready) {
   const auto settings = config();
   const std::string name = ready.scan.filename().string();
   const auto hash = sha256_file_hex(ready.scan);

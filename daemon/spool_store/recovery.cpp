@@ -14,8 +14,8 @@
 #include <spdlog/spdlog.h>
 
 #include "daemon/station/engine_steps.hpp"
-#include "daemon/pipeline/job_outcomes.hpp"
-#include "daemon/pipeline/pipeline.hpp"
+#include "daemon/spool_store/job_outcomes.hpp"
+#include "daemon/spool_store/spool_store.hpp"
 #include "engine/core/durable_file.hpp"
 
 namespace lastcut::daemon {
@@ -47,7 +47,7 @@ void remove_unfinished_writes(const std::filesystem::path& folder, bool recursiv
 
 }  // namespace
 
-void Pipeline::recover() {
+void SpoolStore::recover() {
   remove_unfinished_writes(spool_->root(), false);  // status.json
   for (JobFolder folder : {JobFolder::Work, JobFolder::Held}) {
     remove_unfinished_writes(spool_->root() / folder_name(folder), true);
@@ -59,7 +59,7 @@ void Pipeline::recover() {
   if (!ids.empty()) spdlog::info("recovery: {} job(s) found in work/, resumed", ids.size());
 }
 
-void Pipeline::hold_recovered_batch(BatchState& batch, const std::string& reason) {
+void SpoolStore::hold_recovered_batch(BatchState& batch, const std::string& reason) {
   batch.stage = BatchStage::Held;
   batch.reason = reason;
   batch.updated_at = utc_now_iso();
@@ -70,7 +70,7 @@ void Pipeline::hold_recovered_batch(BatchState& batch, const std::string& reason
   hold_batch_jobs(*spool_, batch, reason);
 }
 
-void Pipeline::recover_batch(const std::string& batch_id) {
+void SpoolStore::recover_batch(const std::string& batch_id) {
   auto batch = spool_->read_batch(batch_id);
   if (!batch) {
     // Killed between making the folder and its first batch.json (the temporaries are gone by now):
@@ -116,7 +116,7 @@ void Pipeline::recover_batch(const std::string& batch_id) {
   }
 }
 
-void Pipeline::undo_unfinished_claim(const std::string& job_id) {
+void SpoolStore::undo_unfinished_claim(const std::string& job_id) {
   const auto dir = spool_->job_dir(JobFolder::Work, job_id);
   const auto watch_dir = config()->paths.watch_dir;
   std::error_code error;
@@ -140,7 +140,7 @@ void Pipeline::undo_unfinished_claim(const std::string& job_id) {
   spdlog::info("recovery: claim {} was unfinished; its files are back in the watch folder", job_id);
 }
 
-void Pipeline::route(const std::string& job_id) {
+void SpoolStore::route(const std::string& job_id) {
   auto state = spool_->read_state(JobFolder::Work, job_id);
   std::error_code error;
   if (!state || !std::filesystem::exists(spool_->job_dir(JobFolder::Work, job_id) / state->scan_name, error)) {
@@ -185,7 +185,7 @@ void Pipeline::route(const std::string& job_id) {
   }
 }
 
-void Pipeline::scan_work_folder() {
+void SpoolStore::scan_work_folder() {
   {
     std::lock_guard lock(ended_mutex_);
     ended_.merge(ended_incoming_);

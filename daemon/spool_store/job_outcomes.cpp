@@ -1,4 +1,4 @@
-#include "daemon/pipeline/job_outcomes.hpp"
+#include "daemon/spool_store/job_outcomes.hpp"
 
 #include <fstream>
 

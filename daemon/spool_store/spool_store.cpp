@@ -1,4 +1,4 @@
-#include "daemon/pipeline/pipeline.hpp"
+#include "daemon/spool_store/spool_store.hpp"
 
 #include <unistd.h>
 
@@ -8,9 +8,9 @@
 
 namespace lastcut::daemon {
 
-std::shared_ptr<const DaemonConfig> Pipeline::config() const { return config_.get(); }
+std::shared_ptr<const DaemonConfig> SpoolStore::config() const { return config_.get(); }
 
-Status Pipeline::open(const StationLinks& links) {
+Status SpoolStore::open(const StationLinks& links) {
   links_ = links;
   const auto settings = config();
   spool_ = std::make_unique<Spool>(settings->paths.spool_dir);
@@ -35,13 +35,13 @@ Status Pipeline::open(const StationLinks& links) {
   return Status::success();
 }
 
-std::vector<StationCutter> Pipeline::cutters() {
+std::vector<StationCutter> SpoolStore::cutters() {
   std::vector<StationCutter> places;
   for (const auto& [name, store] : cutters_) places.push_back({name, store.get(), {name, "idle", "", "", 0, 0, 0, 0}});
   return places;
 }
 
-void Pipeline::tick(Clock::time_point now) {
+void SpoolStore::tick(Clock::time_point now) {
   std::vector<std::string> computed;
   {
     std::lock_guard lock(computed_mutex_);
@@ -63,17 +63,17 @@ void Pipeline::tick(Clock::time_point now) {
   }
 }
 
-void Pipeline::to_compute(const std::string& job_id) {
+void SpoolStore::to_compute(const std::string& job_id) {
   compute_store_->add_job(job_id);
   links_.wake_compute();
 }
 
-void Pipeline::to_nest(const std::string& batch_id) {
+void SpoolStore::to_nest(const std::string& batch_id) {
   compute_store_->add_batch(batch_id);
   links_.wake_compute();
 }
 
-void Pipeline::write_status_file() {
+void SpoolStore::write_status_file() {
   nlohmann::json cutters = nlohmann::json::object();
   for (const auto& [name, store] : cutters_) {
     cutters[name] = {{"condition", links_.cutter_condition(name)}, {"queued_batches", store->queued()}};
@@ -101,9 +101,9 @@ void Pipeline::write_status_file() {
   }
 }
 
-std::string Pipeline::where() const { return "spool " + config()->paths.spool_dir.string(); }
+std::string SpoolStore::where() const { return "spool " + config()->paths.spool_dir.string(); }
 
-std::string Pipeline::status_line() const {
+std::string SpoolStore::status_line() const {
   std::size_t queued = 0;
   for (const auto& [name, store] : cutters_) queued += store->queued();
   return std::to_string(known_jobs_.size()) + " job(s) in work, " + std::to_string(compute_store_->waiting()) +
@@ -111,7 +111,7 @@ std::string Pipeline::status_line() const {
          " batch(es) queued";
 }
 
-void Pipeline::close() {
+void SpoolStore::close() {
   if (!spool_) return;
   compute_store_->clear();
   {

@@ -11,8 +11,8 @@
 
 #include "daemon/station/hide_policy.hpp"
 #include "daemon/station/hide_step.hpp"
-#include "daemon/pipeline/job_outcomes.hpp"
-#include "daemon/pipeline/pipeline.hpp"
+#include "daemon/spool_store/job_outcomes.hpp"
+#include "daemon/spool_store/spool_store.hpp"
 #include "daemon/station/ticket_targets.hpp"
 #include "engine/core/durable_file.hpp"
 #include "engine/core/engine_error.hpp"
@@ -20,19 +20,19 @@
 
 namespace lastcut::daemon {
 
-bool Pipeline::is_hide_material(const std::string& material) const {
+bool SpoolStore::is_hide_material(const std::string& material) const {
   const auto settings = config();
   const auto it = settings->materials.find(material);
   return it != settings->materials.end() && it->second.kind == MaterialKind::Hide;
 }
 
-void Pipeline::add_to_hide_pool(const JobState& state) {
+void SpoolStore::add_to_hide_pool(const JobState& state) {
   auto& pool = hide_waiting_[state.ticket.material];
   if (std::find(pool.begin(), pool.end(), state.id) == pool.end()) pool.push_back(state.id);
   std::sort(pool.begin(), pool.end());  // ids sort by claim time: oldest first
 }
 
-void Pipeline::fail_hide(BatchState& batch, const std::string& reason) {
+void SpoolStore::fail_hide(BatchState& batch, const std::string& reason) {
   batch.stage = BatchStage::Empty;
   batch.reason = reason;
   batch.updated_at = utc_now_iso();
@@ -47,7 +47,7 @@ void Pipeline::fail_hide(BatchState& batch, const std::string& reason) {
   spdlog::error("hide file {}: {}; moved to failed/{}", batch.hide_file, reason, batch.id);
 }
 
-StationStore::Intake Pipeline::take_hide(const ReadyScan& ready) {
+StationStore::Intake SpoolStore::take_hide(const ReadyScan& ready) {
   const auto settings = config();
   const std::string name = ready.scan.filename().string();
   BatchState batch;
@@ -99,7 +99,7 @@ StationStore::Intake Pipeline::take_hide(const ReadyScan& ready) {
   return Intake::Taken;
 }
 
-bool Pipeline::computing_material(const std::string& material) const {
+bool SpoolStore::computing_material(const std::string& material) const {
   for (const std::string& id : known_jobs_) {
     const auto state = spool_->read_state(JobFolder::Work, id);
     if (state && state->stage == JobStage::Claimed && state->ticket.material == material) return true;
@@ -107,7 +107,7 @@ bool Pipeline::computing_material(const std::string& material) const {
   return false;
 }
 
-void Pipeline::nest_due_hides(Clock::time_point now) {
+void SpoolStore::nest_due_hides(Clock::time_point now) {
   const double window_s = config()->batch.window_s;
   for (auto loaded = loaded_hides_.begin(); loaded != loaded_hides_.end();) {
     auto batch = spool_->read_batch(loaded->batch_id);

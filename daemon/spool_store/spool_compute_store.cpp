@@ -1,10 +1,10 @@
-#include "daemon/pipeline/spool_compute_store.hpp"
+#include "daemon/spool_store/spool_compute_store.hpp"
 
 #include <algorithm>
 
 #include <spdlog/spdlog.h>
 
-#include "daemon/pipeline/job_outcomes.hpp"
+#include "daemon/spool_store/job_outcomes.hpp"
 
 namespace lastcut::daemon {
 namespace {
