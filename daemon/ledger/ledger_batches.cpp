@@ -94,7 +94,8 @@ Status LedgerClient::mark_nested(const Lease& lease, const NestedBatch& nested) 
                         [&](pqxx::work& tx) -> Result<bool> {
                           if (Status held = check_lease(tx, node_, lease); !held) return held;
                           if (Status nesting = batch_in(tx, lease.object_id, "nesting"); !nesting) return nesting;
-                          // Jobs leaving the batch: rejected ones fail, the ones a hide had no room for wait again.
+                          // Jobs leaving the batch: rejected ones fail, the ones a hide had no room for wait again,
+                          // those of a batch that could not be made at all are held for an operator.
                           const auto leave = [&](const auto& jobs, const char* state, const char* event) {
                             for (const auto& [job_id, reason] : jobs) {
                               tx.exec_params(
@@ -106,6 +107,7 @@ Status LedgerClient::mark_nested(const Lease& lease, const NestedBatch& nested) 
                           };
                           leave(nested.rejected, "failed", "failed");
                           leave(nested.waiting, "computed", "waiting");
+                          leave(nested.held, "held", "held");
                           const bool any_left = !jobs_of(tx, lease.object_id).empty() && !nested.cut_file.empty();
                           const std::string reason =
                               any_left ? "" : nested.reason.empty() ? "nothing was placed" : nested.reason;

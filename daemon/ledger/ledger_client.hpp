@@ -115,6 +115,8 @@ struct NestedBatch {
   int pieces = 0;                              // pieces placed
   std::vector<std::pair<long long, std::string>> rejected;  // job id -> why its molds could not be placed
   std::vector<std::pair<long long, std::string>> waiting;   // hides: job id -> why it waits for the next hide
+  std::vector<std::pair<long long, std::string>> held;      // not the jobs' fault (the batch could not be made):
+                                                            // job id -> why; an operator requeues them
   double utilisation = 0;  // placed piece area / the material's area (a hide: its usable area), 0..1
   std::string reason;  // when nothing is to be cut: why (kept with the dissolved batch and its hide)
 };

@@ -115,15 +115,16 @@ class LedgerNestClaim : public ComputeClaim {
       }
     }
     if (!made) {
-      // Not the jobs' fault (no machine profile, the share full). A strip batch fails its jobs with
-      // the reason, so that it is seen (`lastcut requeue` hands them back once the cause is mended);
-      // the jobs of a hide wait for the next hide.
+      // Not the jobs' fault (no machine profile, the share full). As on a spool, a strip batch holds
+      // its jobs with the reason (`lastcut requeue` hands them back once the cause is mended); the
+      // jobs of a hide wait for the next hide.
       nested = {};
-      nested.reason = (on_hide ? "hide " + claim_.hide_name + " could not be nested: " : "batch could not be made: ") +
+      nested.reason = (on_hide ? "hide " + claim_.hide_name + " could not be nested: "
+                               : "batch " + std::to_string(claim_.batch_id) + " could not be made: ") +
                       made.error();
       for (long long id : claim_.job_ids) {
         if (on_hide) nested.waiting.emplace_back(id, "waiting for a hide of " + claim_.material + ": " + nested.reason);
-        else nested.rejected.emplace_back(id, nested.reason);
+        else nested.held.emplace_back(id, nested.reason);
       }
     }
     const Status marked = context_.client.mark_nested(claim_.lease, nested);
@@ -155,6 +156,7 @@ class LedgerNestClaim : public ComputeClaim {
     std::unordered_map<long long, Outcome> outcome_of;
     for (const auto& [job_id, reason] : nested.rejected) outcome_of.try_emplace(job_id, Outcome{JobStage::Failed, &reason});
     for (const auto& [job_id, reason] : nested.waiting) outcome_of.try_emplace(job_id, Outcome{JobStage::Computed, &reason});
+    for (const auto& [job_id, reason] : nested.held) outcome_of.try_emplace(job_id, Outcome{JobStage::Held, &reason});
     std::size_t kept = 0;
     for (std::size_t i = 0; i < claim_.job_ids.size(); ++i) {
       const long long job_id = claim_.job_ids[i];
@@ -167,7 +169,7 @@ class LedgerNestClaim : public ComputeClaim {
         continue;
       }
       const auto& [stage, reason] = found->second;
-      // A waiting job is back among the computed ones: no batch.
+      // A waiting or held job has left the batch; a failed one names it.
       context_.job_changed(job_id, claim_.job_names[i], claim_.job_tickets[i],
                            stage == JobStage::Failed ? claim_.batch_id : 0, stage, *reason, "");
     }

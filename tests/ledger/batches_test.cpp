@@ -157,6 +157,23 @@ TEST_F(BatchesTest, NestedRejectsFailAloneAndAnEmptyBatchIsDissolved) {
   EXPECT_FALSE(nothing->has_value());
 }
 
+TEST_F(BatchesTest, ABatchThatCouldNotBeMadeHoldsItsJobsForTheOperator) {
+  auto made = compute_->make_batch(group_now(10), 30);
+  ASSERT_TRUE(made.ok() && made->has_value());
+  const auto& ids = (*made)->job_ids;
+  ASSERT_EQ(ids.size(), 2u);
+  ledger::NestedBatch nested;
+  nested.reason = "batch could not be made: no machine profile";
+  for (long long id : ids) nested.held.emplace_back(id, nested.reason);
+  ASSERT_TRUE(compute_->mark_nested((*made)->lease, nested).ok());
+  EXPECT_EQ(query("SELECT string_agg(state || ':' || coalesce(batch_id::text, '-') || ':' || reason, ',' ORDER BY id)"
+                  " FROM jobs WHERE id IN (" + std::to_string(ids[0]) + ", " + std::to_string(ids[1]) + ")"),
+            "held:-:batch could not be made: no machine profile,held:-:batch could not be made: no machine profile");
+  EXPECT_EQ(query("SELECT state FROM batches WHERE id = " + std::to_string((*made)->batch_id)), "dissolved");
+  ASSERT_TRUE(compute_->requeue_held(ids[0]).ok());
+  EXPECT_EQ(query("SELECT state FROM jobs WHERE id = " + std::to_string(ids[0])), "ready");
+}
+
 TEST_F(BatchesTest, ANestingNodeThatVanishesLeavesItsJobsToBeRegrouped) {
   auto made = compute_->make_batch(group_now(10), 0.3);
   ASSERT_TRUE(made.ok() && made->has_value());

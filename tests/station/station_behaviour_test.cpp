@@ -164,6 +164,27 @@ TEST_P(StationBehaviour, AReloadedWindowAppliesToJobsAlreadyWaiting) {
   EXPECT_EQ(station->stop(), 0);
 }
 
+TEST_P(StationBehaviour, AJobWhoseBatchCannotBeMadeIsHeldUntilRequeued) {
+  auto station = start("behaviour-unmade", StationSettings{});
+  // A machine profile that does not exist: no cut file can be made, which is not the job's fault.
+  station->edit_config("machine = \"hpgl-pen-plotter\"", "machine = \"no-such-machine\"");
+  station->signal(SIGHUP);
+  ASSERT_TRUE(wait_until([&] { return station->log().find("configuration reloaded") != std::string::npos; }, 10))
+      << station->log();
+  station->drop_scan("unmade.stl", "unmade");
+  ASSERT_TRUE(wait_until([&] { return reached(*station, "unmade.stl", "held"); }, 90)) << station->log();
+  const SeenJob held = station->job("unmade.stl");
+  EXPECT_NE(held.reason.find("could not be made"), std::string::npos) << held.reason;
+  EXPECT_NE(held.reason.find("no-such-machine"), std::string::npos) << held.reason;
+  // Mended: the job is handed back and cut.
+  station->edit_config("machine = \"no-such-machine\"", "machine = \"hpgl-pen-plotter\"");
+  station->signal(SIGHUP);
+  std::this_thread::sleep_for(std::chrono::seconds(1));
+  EXPECT_EQ(station->requeue(held.id), 0);
+  ASSERT_TRUE(wait_until([&] { return reached(*station, "unmade.stl", "done"); }, 90)) << station->log();
+  EXPECT_EQ(station->stop(), 0);
+}
+
 TEST_P(StationBehaviour, AHideLoadedWhileNothingWaitsStaysOnItsTable) {
   StationSettings settings;
   settings.hides = true;
