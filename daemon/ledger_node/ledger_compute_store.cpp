@@ -37,9 +37,23 @@ struct ClaimContext {
   ledger::LeaseKeeper& keeper;
   const SharedStore& shared;
   const LedgerConfig& ledger;
-  LedgerComputeStore::JobChanged job_changed;
+  const LedgerJournal& journal;
   ScratchFolder scratch;
 };
+
+// The one way a job claim of this node ends: the ledger's fenced change through the journal (it
+// logs and tells the change once taken); the lease is no longer renewed either way; a change the
+// ledger refused drops the work (whoever holds the job now redoes it).
+void end_job_claim(const LedgerJournal& journal, ledger::LeaseKeeper& keeper, const ledger::JobClaim& claim,
+                   const std::string& label, const std::function<Status()>& save, JobStage stage,
+                   const std::string& reason, const std::string& note = "") {
+  const Status changed = journal.change([&]() -> Result<LedgerJobChanges> {
+    if (Status saved = save(); !saved) return saved;
+    return LedgerJobChanges{{claim.job_id, claim.scan.scan_name, claim.scan.ticket, 0, stage, reason, note}};
+  });
+  keeper.drop(claim.lease);
+  if (!changed) spdlog::warn("{}: {}; the work is dropped", label, changed.error());
+}
 
 class LedgerMoldsClaim : public ComputeClaim {
  public:
@@ -52,35 +66,36 @@ class LedgerMoldsClaim : public ComputeClaim {
 
   void finish_molds(const JobMolds& molds) override {
     ledger::LedgerClient& client = context_.client;
+    const ledger::Lease& lease = claim_.lease;
     if (molds.verdict == JobMolds::Verdict::Failed) {
-      return finish(client.mark_failed(claim_.lease, molds.reason), JobStage::Failed, molds.reason);
+      return finish([&] { return client.mark_failed(lease, molds.reason); }, JobStage::Failed, molds.reason);
     }
     nlohmann::json report = molds.report;
     report.update({{"job", claim_.job_id}, {"scan", claim_.scan.scan_name}, {"sha256", claim_.scan.scan_sha256},
                    {"ticket", nlohmann::json::parse(claim_.scan.ticket)}, {"node", context_.ledger.node}});
     if (Status written = write_file_durably(work_.job_dir / kReportFile, report.dump(1)); !written) {
-      return finish(Status::failure("molds made, report not written: " + written.error()), JobStage::Failed, "");
+      return drop("molds made, report not written: " + written.error());
     }
-    if (context_.keeper.lost(claim_.lease)) {
-      return finish(Status::failure("lease lost while computing: another node has the job now"), JobStage::Claimed, "");
-    }
+    if (context_.keeper.lost(lease)) return drop("lease lost while computing: another node has the job now");
     if (Status published = context_.shared.publish(work_.job_dir, context_.shared.job_dir(claim_.job_folder));
         !published) {
-      return finish(Status::failure("molds made but not published: " + published.error()), JobStage::Claimed, "");
+      return drop("molds made but not published: " + published.error());
     }
     if (molds.verdict == JobMolds::Verdict::HeldForReview) {
-      return finish(client.mark_held(claim_.lease, molds.reason), JobStage::Held, molds.reason);
+      return finish([&] { return client.mark_held(lease, molds.reason); }, JobStage::Held, molds.reason);
     }
-    finish(client.mark_computed(claim_.lease, molds.pieces), JobStage::Computed, "",
+    finish([&] { return client.mark_computed(lease, molds.pieces); }, JobStage::Computed, "",
            fmt::format("{} molds ready in {:.1f} s", molds.molds, molds.took_s));
   }
 
  private:
-  // The one way out: the ledger's fenced change, then what it says (job_changed).
-  void finish(const Status& marked, JobStage stage, const std::string& reason, const std::string& note = "") {
-    context_.keeper.drop(claim_.lease);
-    if (!marked) spdlog::warn("{}: {}; the work is dropped", work_.label, marked.error());
-    else context_.job_changed(claim_.job_id, claim_.scan.scan_name, claim_.scan.ticket, 0, stage, reason, note);
+  void finish(const std::function<Status()>& save, JobStage stage, const std::string& reason,
+              const std::string& note = "") {
+    end_job_claim(context_.journal, context_.keeper, claim_, work_.label, save, stage, reason, note);
+  }
+  // Nothing to tell the ledger: its lease runs out and the job is computed again.
+  void drop(const std::string& why) {
+    end_job_claim(context_.journal, context_.keeper, claim_, work_.label, [&] { return Status::failure(why); }, JobStage::Claimed, "");
   }
 
   ClaimContext context_;
@@ -127,13 +142,16 @@ class LedgerNestClaim : public ComputeClaim {
         else nested.held.emplace_back(id, nested.reason);
       }
     }
-    const Status marked = context_.client.mark_nested(claim_.lease, nested);
+    std::size_t kept = 0;
+    const Status marked = context_.journal.change([&]() -> Result<LedgerJobChanges> {
+      if (Status saved = context_.client.mark_nested(claim_.lease, nested); !saved) return saved;
+      return job_outcome_changes(nested, kept);
+    });
     context_.keeper.drop(claim_.lease);
     if (!marked) {
       spdlog::warn("{}: {}; the nesting is dropped", work_.label, marked.error());
       return;
     }
-    const std::size_t kept = tell_job_outcomes(nested);
     if (nested.cut_file.empty()) {
       spdlog::warn("{}: {}; nothing is cut", work_.label, nested.reason.empty() ? "no job could be placed" : nested.reason);
     } else if (on_hide) {
@@ -147,8 +165,8 @@ class LedgerNestClaim : public ComputeClaim {
   }
 
  private:
-  // Logs and tells (MQTT) each claimed job how the nesting ended, in claim order; returns the jobs batched.
-  std::size_t tell_job_outcomes(const ledger::NestedBatch& nested) {
+  // How the nesting ended for each claimed job, in claim order; `kept`: the jobs batched.
+  LedgerJobChanges job_outcome_changes(const ledger::NestedBatch& nested, std::size_t& kept) const {
     struct Outcome {
       JobStage stage;
       const std::string* reason;
@@ -157,23 +175,22 @@ class LedgerNestClaim : public ComputeClaim {
     for (const auto& [job_id, reason] : nested.rejected) outcome_of.try_emplace(job_id, Outcome{JobStage::Failed, &reason});
     for (const auto& [job_id, reason] : nested.waiting) outcome_of.try_emplace(job_id, Outcome{JobStage::Computed, &reason});
     for (const auto& [job_id, reason] : nested.held) outcome_of.try_emplace(job_id, Outcome{JobStage::Held, &reason});
-    std::size_t kept = 0;
+    LedgerJobChanges changes;
     for (std::size_t i = 0; i < claim_.job_ids.size(); ++i) {
       const long long job_id = claim_.job_ids[i];
       const auto found = outcome_of.find(job_id);
       if (found == outcome_of.end()) {
         if (nested.cut_file.empty()) continue;  // nothing is cut: the reason is logged for the batch
         ++kept;
-        context_.job_changed(job_id, claim_.job_names[i], claim_.job_tickets[i], claim_.batch_id, JobStage::Batched, "",
-                             "");
+        changes.push_back({job_id, claim_.job_names[i], claim_.job_tickets[i], claim_.batch_id, JobStage::Batched, "", ""});
         continue;
       }
       const auto& [stage, reason] = found->second;
       // A waiting or held job has left the batch; a failed one names it.
-      context_.job_changed(job_id, claim_.job_names[i], claim_.job_tickets[i],
-                           stage == JobStage::Failed ? claim_.batch_id : 0, stage, *reason, "");
+      changes.push_back({job_id, claim_.job_names[i], claim_.job_tickets[i],
+                         stage == JobStage::Failed ? claim_.batch_id : 0, stage, *reason, ""});
     }
-    return kept;
+    return changes;
   }
 
   ClaimContext context_;
@@ -202,9 +219,8 @@ void copy_references(const std::filesystem::path& from, const std::filesystem::p
 LedgerComputeStore::LedgerComputeStore(const LedgerConfig& ledger, const SharedStore& shared,
                                        ledger::LeaseKeeper& keeper,
                                        std::function<std::shared_ptr<const DaemonConfig>()> settings,
-                                       JobChanged job_changed)
-    : ledger_(ledger), shared_(shared), keeper_(keeper), settings_(std::move(settings)),
-      job_changed_(std::move(job_changed)) {}
+                                       const LedgerJournal& journal)
+    : ledger_(ledger), shared_(shared), keeper_(keeper), settings_(std::move(settings)), journal_(journal) {}
 
 Result<std::unique_ptr<ComputeClaim>> LedgerComputeStore::claim(const std::string& worker) {
   ledger::LedgerClient* client = nullptr;
@@ -221,10 +237,18 @@ Result<std::unique_ptr<ComputeClaim>> LedgerComputeStore::claim(const std::strin
   }
   while (true) {
     const auto settings = settings_();
-    auto job = client->claim_job(ledger_.lease_s);
-    if (!job) return job.status();
-    if (job->has_value()) {
-      if (auto opened = open_job(*client, std::move(**job))) return opened;
+    std::optional<ledger::JobClaim> job;
+    const Status asked = journal_.change([&]() -> Result<LedgerJobChanges> {
+      auto claimed = client->claim_job(ledger_.lease_s);
+      if (!claimed) return claimed.status();
+      job = std::move(*claimed);
+      if (!job) return LedgerJobChanges{};
+      return LedgerJobChanges{{job->job_id, job->scan.scan_name, job->scan.ticket, 0, JobStage::Claimed, "",
+                               "computing molds on " + ledger_.node + " (attempt " + std::to_string(job->attempts) + ")"}};
+    });
+    if (!asked) return asked;
+    if (job) {
+      if (auto opened = open_job(*client, std::move(*job))) return opened;
       continue;  // ended at once (an unreadable ticket, no scratch folder): the next one
     }
     // A hide on a cutter's table comes before strip batches: the cutter and its operator wait for it.
@@ -240,25 +264,20 @@ Result<std::unique_ptr<ComputeClaim>> LedgerComputeStore::claim(const std::strin
 std::unique_ptr<ComputeClaim> LedgerComputeStore::open_job(ledger::LedgerClient& client, ledger::JobClaim claim) {
   const std::string label = "job " + std::to_string(claim.job_id) + " (" + claim.scan.scan_name + ")";
   keeper_.keep(claim.lease);
-  job_changed_(claim.job_id, claim.scan.scan_name, claim.scan.ticket, 0, JobStage::Claimed, "",
-               "computing molds on " + ledger_.node + " (attempt " + std::to_string(claim.attempts) + ")");
   const Result<JobTicket> ticket = ticket_from_ledger(claim.scan.ticket);
   if (!ticket) {
-    keeper_.drop(claim.lease);
-    if (Status marked = client.mark_failed(claim.lease, ticket.error()); !marked)
-      spdlog::warn("{}: {}; the work is dropped", label, marked.error());
-    else job_changed_(claim.job_id, claim.scan.scan_name, claim.scan.ticket, 0, JobStage::Failed, ticket.error(), "");
+    end_job_claim(journal_, keeper_, claim, label, [&] { return client.mark_failed(claim.lease, ticket.error()); },
+                  JobStage::Failed, ticket.error());
     return nullptr;
   }
   auto scratch = shared_.scratch_for(shared_.job_dir(claim.job_folder), ledger_.node);
   if (!scratch) {
-    keeper_.drop(claim.lease);
-    spdlog::warn("{}: {}; the work is dropped", label, scratch.error());
+    end_job_claim(journal_, keeper_, claim, label, [&] { return scratch.status(); }, JobStage::Claimed, "");
     return nullptr;
   }
   copy_references(shared_.references(claim.scan.scan_sha256), *scratch);
   MoldsWork work{shared_.scan(claim.scan.scan_sha256, claim.scan.scan_name), *scratch, *ticket, label};
-  return std::make_unique<LedgerMoldsClaim>(ClaimContext{client, keeper_, shared_, ledger_, job_changed_, ScratchFolder(*scratch)},
+  return std::make_unique<LedgerMoldsClaim>(ClaimContext{client, keeper_, shared_, ledger_, journal_, ScratchFolder(*scratch)},
                                             std::move(claim), std::move(work));
 }
 
@@ -292,7 +311,7 @@ std::unique_ptr<ComputeClaim> LedgerComputeStore::open_batch(ledger::LedgerClien
   }
   if (scratch) work.batch_dir = *scratch;
   auto nest = std::make_unique<LedgerNestClaim>(
-      ClaimContext{client, keeper_, shared_, ledger_, job_changed_,
+      ClaimContext{client, keeper_, shared_, ledger_, journal_,
                    ScratchFolder(scratch ? *scratch : std::filesystem::path())},
       std::move(claim), std::move(work));
   if (opened) return nest;

@@ -8,7 +8,7 @@
 // Every claim holds a lease the LeaseKeeper renews. The work is written into a scratch folder of
 // the shared folder and published (renamed into place) before the ledger hears of it, and the
 // ledger only takes the outcome from the node that still holds the lease (fencing): a lost claim
-// costs work, never a wrong state.
+// costs work, never a wrong state. Every change goes through the node's LedgerJournal.
 #include <functional>
 #include <map>
 #include <memory>
@@ -20,6 +20,7 @@
 #include "daemon/job/job_state.hpp"
 #include "daemon/ledger/lease_keeper.hpp"
 #include "daemon/ledger/ledger_client.hpp"
+#include "daemon/ledger_node/ledger_journal.hpp"
 #include "daemon/ledger_node/shared_store.hpp"
 #include "daemon/station/compute_store.hpp"
 
@@ -27,14 +28,8 @@ namespace lastcut::daemon {
 
 class LedgerComputeStore : public ComputeStore {
  public:
-  // What a job's change says once the ledger took it (LedgerNode::job_changed): the job, its scan's
-  // name, its ticket (JSON text), its batch (0: none), the stage, the reason and a log-only note.
-  using JobChanged = std::function<void(long long job_id, const std::string& scan_name, const std::string& ticket,
-                                        long long batch_id, JobStage stage, const std::string& reason,
-                                        const std::string& note)>;
-
   LedgerComputeStore(const LedgerConfig& ledger, const SharedStore& shared, ledger::LeaseKeeper& keeper,
-                     std::function<std::shared_ptr<const DaemonConfig>()> settings, JobChanged job_changed);
+                     std::function<std::shared_ptr<const DaemonConfig>()> settings, const LedgerJournal& journal);
 
   Result<std::unique_ptr<ComputeClaim>> claim(const std::string& worker) override;
 
@@ -46,7 +41,7 @@ class LedgerComputeStore : public ComputeStore {
   const SharedStore& shared_;
   ledger::LeaseKeeper& keeper_;
   std::function<std::shared_ptr<const DaemonConfig>()> settings_;
-  JobChanged job_changed_;
+  const LedgerJournal& journal_;
   std::mutex clients_mutex_;
   // Each worker's own connection, used by that worker's thread only.
   std::map<std::string, std::unique_ptr<ledger::LedgerClient>> clients_;

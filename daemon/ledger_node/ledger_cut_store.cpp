@@ -9,13 +9,13 @@
 namespace lastcut::daemon {
 
 LedgerCutStore::LedgerCutStore(std::string cutter, const LedgerConfig& ledger, const SharedStore& shared,
-                               ledger::LeaseKeeper& keeper, Pause pause, BatchEvent batch_event)
+                               ledger::LeaseKeeper& keeper, Pause pause, const LedgerJournal& journal)
     : cutter_(std::move(cutter)),
       ledger_(ledger),
       shared_(shared),
       keeper_(keeper),
       pause_(std::move(pause)),
-      batch_event_(std::move(batch_event)) {}
+      journal_(journal) {}
 
 Result<std::optional<CutOrder>> LedgerCutStore::claim() {
   if (!client_) {
@@ -33,10 +33,13 @@ Result<std::optional<CutOrder>> LedgerCutStore::claim() {
                                           ("L" + id).substr(0, 16), claimed_->job_ids.size(), 0}};
 }
 
-bool LedgerCutStore::record(const std::function<Status()>& change) {
+bool LedgerCutStore::record(const std::function<Status()>& save, const LedgerJobChanges& changes) {
   const std::string label = "cutter " + cutter_ + ": batch " + std::to_string(claimed_->batch_id);
   for (double wait_s = ledger_.heartbeat_s;; wait_s = std::min(2 * wait_s, ledger_.lease_s)) {
-    const Status written = change();
+    const Status written = journal_.change([&]() -> Result<LedgerJobChanges> {
+      if (Status saved = save(); !saved) return saved;
+      return changes;
+    });
     if (written) return true;
     if (!ledger::unreachable(written)) {
       spdlog::error("{}: {}", label, written.error());
@@ -56,11 +59,10 @@ Status LedgerCutStore::mark_sending(const CutOrder& order) {
   if (!claimed_ || std::to_string(claimed_->batch_id) != order.batch_id) {
     return Status::failure("batch " + order.batch_id + " is not claimed by this node");
   }
-  if (!record([&] { return client_->mark_sending(claimed_->lease); })) {
+  if (!record([&] { return client_->mark_sending(claimed_->lease); }, batch_job_changes(*claimed_, JobStage::Sending, ""))) {
     let_go();  // lost: whoever holds the batch now decides
     return Status::failure("the ledger did not take `sending` (the claim was lost or the node stops)");
   }
-  batch_event_(*claimed_, JobStage::Sending, "");
   return Status::success();
 }
 
@@ -73,15 +75,14 @@ CutEnd LedgerCutStore::record_end(const CutOrder& order, CutEnd end, const std::
   }
   switch (end) {
     case CutEnd::Cut:
-      record([&] { return client_->mark_cut(claimed_->lease); });
-      batch_event_(*claimed_, JobStage::Cut, "");
+      record([&] { return client_->mark_cut(claimed_->lease); }, batch_job_changes(*claimed_, JobStage::Cut, ""));
       break;
     case CutEnd::NotSent:
-      record([&] { return client_->mark_not_sent(claimed_->lease, reason); });
+      record([&] { return client_->mark_not_sent(claimed_->lease, reason); }, {});
       break;
     case CutEnd::Held:
-      record([&] { return client_->hold_batch(claimed_->lease, reason); });
-      batch_event_(*claimed_, JobStage::Held, reason);
+      record([&] { return client_->hold_batch(claimed_->lease, reason); },
+             batch_job_changes(*claimed_, JobStage::Held, reason));
       break;
   }
   let_go();

@@ -14,6 +14,7 @@
 #include "daemon/job/job_state.hpp"
 #include "daemon/ledger/lease_keeper.hpp"
 #include "daemon/ledger/ledger_client.hpp"
+#include "daemon/ledger_node/ledger_journal.hpp"
 #include "daemon/ledger_node/shared_store.hpp"
 #include "daemon/station/cut_store.hpp"
 
@@ -23,11 +24,9 @@ class LedgerCutStore : public CutStore {
  public:
   // Waits up to the given seconds (or until the node stops: then false).
   using Pause = std::function<bool(double seconds)>;
-  // Tells the status observer the jobs of a batch changed stage.
-  using BatchEvent = std::function<void(const ledger::BatchClaim& claim, JobStage stage, const std::string& reason)>;
 
   LedgerCutStore(std::string cutter, const LedgerConfig& ledger, const SharedStore& shared, ledger::LeaseKeeper& keeper,
-                 Pause pause, BatchEvent batch_event);
+                 Pause pause, const LedgerJournal& journal);
 
   // Other nodes nest this cutter's batches: one may always wait, unnamed until claimed.
   std::optional<std::string> next_batch() override { return std::string(); }
@@ -37,9 +36,9 @@ class LedgerCutStore : public CutStore {
                     const std::vector<std::string>& cutter_answer) override;
 
  private:
-  // Writes a change of the claimed batch, again while the ledger is away; false when it cannot
-  // land (the lease was lost, or the node stops).
-  bool record(const std::function<Status()>& change);
+  // Writes a change of the claimed batch through the journal (which then tells `changes`), again
+  // while the ledger is away; false when it cannot land (the lease was lost, or the node stops).
+  bool record(const std::function<Status()>& save, const LedgerJobChanges& changes);
   // The claim ends: its lease is no longer renewed.
   void let_go();
 
@@ -48,7 +47,7 @@ class LedgerCutStore : public CutStore {
   const SharedStore& shared_;
   ledger::LeaseKeeper& keeper_;
   Pause pause_;
-  BatchEvent batch_event_;
+  const LedgerJournal& journal_;
   std::unique_ptr<ledger::LedgerClient> client_;  // this cutter's own connection (worker thread only)
   std::optional<ledger::BatchClaim> claimed_;
 };

@@ -31,27 +31,28 @@ Status LedgerNode::open(const StationLinks& links) {
   std::vector<std::string> cutters;
   for (const auto& [name, section] : settings->cutters)
     if (ledger().owns_cutter(name)) cutters.push_back(name);
-  const auto registered = client_->register_node(ledger().roles, cutters, settings->jobs.max_attempts);
-  if (!registered) return registered.status();
-  for (long long id : registered->batches_held)
+  journal_ = std::make_unique<LedgerJournal>(links_.observer);
+  ledger::SweepOutcome registered;
+  const Status opened = journal_->change([&]() -> Result<LedgerJobChanges> {
+    auto outcome = client_->register_node(ledger().roles, cutters, settings->jobs.max_attempts);
+    if (!outcome) return outcome.status();
+    registered = std::move(*outcome);
+    return held_job_changes(registered.jobs_held);
+  });
+  if (!opened) return opened;
+  for (long long id : registered.batches_held)
     spdlog::error("batch {}: this node stopped while sending it: held for an operator, never re-sent", id);
-  for (const ledger::HeldJob& job : registered->jobs_held) {
-    job_changed(job.job_id, job.scan_name, job.ticket, job.batch_id, JobStage::Held, job.reason);
+  for (const ledger::HeldJob& job : registered.jobs_held)
     held_at_start_[job.cutter] = {job.cutter, "held", std::to_string(job.batch_id), job.reason, 0, 0, 0, 0};
-  }
-  const std::size_t handed_back = registered->jobs_requeued.size() + registered->batches_requeued.size() +
-                                  registered->batches_dissolved.size();
+  const std::size_t handed_back = registered.jobs_requeued.size() + registered.batches_requeued.size() +
+                                  registered.batches_dissolved.size();
   if (handed_back) spdlog::warn("{} claim(s) of this node's previous run handed back to the queue", handed_back);
 
   keeper_ = std::make_unique<ledger::LeaseKeeper>(ledger().url, ledger().node, ledger().lease_s, ledger().heartbeat_s,
                                                   [](const std::string& line) { spdlog::warn("{}", line); });
   if (ledger().has_role("compute")) {
-    compute_store_ = std::make_unique<LedgerComputeStore>(
-        ledger(), store_, *keeper_, [this] { return config(); },
-        [this](long long job_id, const std::string& scan_name, const std::string& ticket, long long batch_id,
-               JobStage stage, const std::string& reason, const std::string& note) {
-          job_changed(job_id, scan_name, ticket, batch_id, stage, reason, note);
-        });
+    compute_store_ = std::make_unique<LedgerComputeStore>(ledger(), store_, *keeper_, [this] { return config(); },
+                                                          *journal_);
   }
   open_cutters(cutters);
   return Status::success();
@@ -110,47 +111,6 @@ void LedgerNode::note_trouble(std::string& last, const std::string& now, const s
     spdlog::warn("{}: {} (retrying; logged again when this changes)", what, now);
   }
   last = now;
-}
-
-Result<JobTicket> ticket_from_ledger(const std::string& text) {
-  try {
-    return ticket_from_json(nlohmann::json::parse(text));
-  } catch (const std::exception& error) {
-    return Status::failure("the job's ticket in the ledger is unreadable: " + std::string(error.what()));
-  }
-}
-
-void LedgerNode::job_changed(long long job_id, const std::string& scan_name, const std::string& ticket_json,
-                             long long batch_id, JobStage stage, const std::string& reason, const std::string& note) {
-  const std::string label = "job " + std::to_string(job_id) + " (" + scan_name + ")";
-  const std::string& text = reason.empty() ? note : reason;
-  if (stage == JobStage::Failed) {
-    spdlog::error("{}: failed: {}", label, text);
-  } else if (stage == JobStage::Held) {
-    spdlog::warn("{}: held: {} (after checking, `lastcut requeue {}`)", label, text, job_id);
-  } else if (!text.empty()) {
-    spdlog::info("{}: {}", label, text);
-  }
-  if (!links_.observer) return;
-  JobEvent event;
-  event.job_id = std::to_string(job_id);
-  event.scan_name = scan_name;
-  if (Result<JobTicket> ticket = ticket_from_ledger(ticket_json)) {
-    event.order = ticket->order;
-    event.material = ticket->material;
-    event.cutter = ticket->cutter;
-  }
-  event.batch_id = batch_id ? std::to_string(batch_id) : "";
-  event.stage = stage;
-  event.reason = reason;
-  event.at = utc_now_iso();
-  links_.observer->job_changed(event);
-}
-
-void LedgerNode::batch_event(const ledger::BatchClaim& claim, JobStage stage, const std::string& reason) {
-  for (std::size_t i = 0; i < claim.job_ids.size(); ++i) {
-    job_changed(claim.job_ids[i], claim.job_names[i], claim.job_tickets[i], claim.batch_id, stage, reason);
-  }
 }
 
 }  // namespace lastcut::daemon

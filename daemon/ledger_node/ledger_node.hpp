@@ -33,6 +33,7 @@
 #include "daemon/ledger/ledger_client.hpp"
 #include "daemon/ledger_node/ledger_compute_store.hpp"
 #include "daemon/ledger_node/ledger_cut_store.hpp"
+#include "daemon/ledger_node/ledger_journal.hpp"
 #include "daemon/ledger_node/shared_store.hpp"
 #include "daemon/station/config_reload.hpp"
 #include "daemon/station/station_store.hpp"
@@ -40,9 +41,6 @@
 #include "daemon/job/job_ticket.hpp"
 
 namespace lastcut::daemon {
-
-// A ticket as the intake stored it in the ledger (ticket_to_json); a row no lastcutd wrote is refused.
-Result<JobTicket> ticket_from_ledger(const std::string& text);
 
 class LedgerNode : public StationStore {
  public:
@@ -91,15 +89,6 @@ class LedgerNode : public StationStore {
   void pause(double seconds);
   // One log line per change of a thread's trouble (the ledger away, a cutter not ready), not per try.
   void note_trouble(std::string& last, const std::string& now, const std::string& what);
-  // What a job's change says once the ledger took it (the change itself is the fenced LedgerClient
-  // call before it), the counterpart of a spool's set_job_stage: one log line "job N (scan): ..."
-  // (an error when failed, a warning when held; none when neither `reason` nor `note` says
-  // anything) and the job event for the status observer (MQTT) with its order, cutter, material
-  // and batch. `reason`: why failed, held or waiting, also in the event; `note`: a log line only.
-  void job_changed(long long job_id, const std::string& scan_name, const std::string& ticket_json, long long batch_id,
-                   JobStage stage, const std::string& reason, const std::string& note = "");
-  void batch_event(const ledger::BatchClaim& claim, JobStage stage, const std::string& reason);
-
   const RunningConfig& config_;
   const LedgerConfig ledger_;
   SharedStore store_;
@@ -107,6 +96,7 @@ class LedgerNode : public StationStore {
   DropFolder scans_{"watch folder", &LedgerNode::enter, ""};
   DropFolder hides_{"hides folder", &LedgerNode::enter_hide, ""};
   std::unique_ptr<ledger::LedgerClient> client_;  // main thread only
+  std::unique_ptr<LedgerJournal> journal_;  // every job change of this node (made by open())
   std::unique_ptr<ledger::LeaseKeeper> keeper_;
   std::unique_ptr<LedgerComputeStore> compute_store_;  // null without the compute role
   std::atomic<bool> stopping_{false};

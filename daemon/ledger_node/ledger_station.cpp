@@ -15,9 +15,7 @@ void LedgerNode::open_cutters(const std::vector<std::string>& names) {
           pause(seconds);
           return !stopping_.load();
         },
-        [this](const ledger::BatchClaim& claim, JobStage stage, const std::string& reason) {
-          batch_event(claim, stage, reason);
-        });
+        *journal_);
   }
 }
 

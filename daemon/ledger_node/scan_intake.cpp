@@ -99,33 +99,35 @@ Status LedgerNode::enter(const ReadyScan& ready) {
     if (Status copied = copy_file_durably(from, to); !copied)
       return Status::failure("shared folder unusable: reference pattern " + file + " not copied: " + copied.error());
   }
-  const Result<ledger::Enqueued> job = client_->enqueue(
-      {*hash, name, ticket_to_json(ticket).dump(), ticket.material, ticket.cutter}, on_duplicate(*settings));
-  if (!job) return job.status();
+  const std::string ticket_json = ticket_to_json(ticket).dump();
+  ledger::Enqueued job;
+  const Status entered = journal_->change([&]() -> Result<LedgerJobChanges> {
+    auto enqueued = client_->enqueue({*hash, name, ticket_json, ticket.material, ticket.cutter}, on_duplicate(*settings));
+    if (!enqueued) return enqueued.status();
+    job = *enqueued;
+    if (!job.duplicate) {
+      ++entered_;
+      return LedgerJobChanges{{job.job_id, name, ticket_json, 0, JobStage::Claimed, "",
+                               "entered in the ledger (material " + ticket.material + ", cutter " + ticket.cutter + ")"}};
+    }
+    ++duplicates_;
+    const std::string same = "same scan bytes as job " + std::to_string(job.duplicate_of);
+    switch (settings->jobs.duplicate_policy) {
+      case DuplicatePolicy::Skip:
+        spdlog::info("{}: {} (entered by {}, now {}) - not entered again (duplicate, skipped)", name, same, job.origin,
+                     job.state);
+        return LedgerJobChanges{};
+      case DuplicatePolicy::Hold:
+        return LedgerJobChanges{{job.job_id, name, ticket_json, 0, JobStage::Held, job.reason, ""}};
+      case DuplicatePolicy::Process:
+        return LedgerJobChanges{{job.job_id, name, ticket_json, 0, JobStage::Claimed, "", same + " - processed again (policy)"}};
+    }
+    return LedgerJobChanges{};
+  });
+  if (!entered) return entered;
   if (!move_into(settings->paths.spool_dir / "entered", ready)) {
     // Entered: offering it again would only find the duplicate, so nothing is lost either way.
-    spdlog::warn("watch folder: {} is in the ledger as job {} but stays in the watch folder", name, job->job_id);
-  }
-  if (!job->duplicate) {
-    ++entered_;
-    job_changed(job->job_id, name, ticket_to_json(ticket).dump(), 0, JobStage::Claimed, "",
-                "entered in the ledger (material " + ticket.material + ", cutter " + ticket.cutter + ")");
-    return Status::success();
-  }
-  ++duplicates_;
-  const std::string same = "same scan bytes as job " + std::to_string(job->duplicate_of);
-  switch (settings->jobs.duplicate_policy) {
-    case DuplicatePolicy::Skip:
-      spdlog::info("{}: {} (entered by {}, now {}) - not entered again (duplicate, skipped)", name, same, job->origin,
-                   job->state);
-      break;
-    case DuplicatePolicy::Hold:
-      job_changed(job->job_id, name, ticket_to_json(ticket).dump(), 0, JobStage::Held, job->reason);
-      break;
-    case DuplicatePolicy::Process:
-      job_changed(job->job_id, name, ticket_to_json(ticket).dump(), 0, JobStage::Claimed, "",
-                  same + " - processed again (policy)");
-      break;
+    spdlog::warn("watch folder: {} is in the ledger as job {} but stays in the watch folder", name, job.job_id);
   }
   return Status::success();
 }
@@ -197,9 +199,15 @@ void LedgerNode::refuse(const ReadyScan& ready, const std::string& reason) {
 }
 
 void LedgerNode::sweep() {
-  const Result<ledger::SweepOutcome> swept = client_->sweep_expired(config()->jobs.max_attempts);
-  if (!swept) {
-    note_trouble(sweep_trouble_, swept.error(), "leases of vanished nodes");
+  ledger::SweepOutcome swept;
+  const Status done = journal_->change([&]() -> Result<LedgerJobChanges> {
+    auto outcome = client_->sweep_expired(config()->jobs.max_attempts);
+    if (!outcome) return outcome.status();
+    swept = std::move(*outcome);
+    return held_job_changes(swept.jobs_held);
+  });
+  if (!done) {
+    note_trouble(sweep_trouble_, done.error(), "leases of vanished nodes");
     return;
   }
   note_trouble(sweep_trouble_, "", "leases of vanished nodes");
@@ -208,18 +216,16 @@ void LedgerNode::sweep() {
     for (long long id : ids) out += (out.empty() ? "" : ", ") + std::to_string(id);
     return out;
   };
-  if (!swept->jobs_requeued.empty()) spdlog::warn("jobs {}: their node's lease ran out, computed again", list(swept->jobs_requeued));
-  if (!swept->jobs_failed.empty()) spdlog::error("jobs {}: interrupted too often, failed", list(swept->jobs_failed));
-  if (!swept->batches_dissolved.empty())
-    spdlog::warn("batches {}: their node's lease ran out while nesting, jobs regrouped", list(swept->batches_dissolved));
-  if (!swept->batches_requeued.empty())
+  if (!swept.jobs_requeued.empty()) spdlog::warn("jobs {}: their node's lease ran out, computed again", list(swept.jobs_requeued));
+  if (!swept.jobs_failed.empty()) spdlog::error("jobs {}: interrupted too often, failed", list(swept.jobs_failed));
+  if (!swept.batches_dissolved.empty())
+    spdlog::warn("batches {}: their node's lease ran out while nesting, jobs regrouped", list(swept.batches_dissolved));
+  if (!swept.batches_requeued.empty())
     spdlog::warn("batches {}: claimed by a station that vanished before sending, queued again",
-                 list(swept->batches_requeued));
-  for (const ledger::HeldJob& job : swept->jobs_held)
-    job_changed(job.job_id, job.scan_name, job.ticket, job.batch_id, JobStage::Held, job.reason);
-  if (!swept->batches_held.empty())
+                 list(swept.batches_requeued));
+  if (!swept.batches_held.empty())
     spdlog::error("batches {}: their station vanished while sending: held for an operator, never re-sent",
-                  list(swept->batches_held));
+                  list(swept.batches_held));
 }
 
 }  // namespace lastcut::daemon
