@@ -11,13 +11,14 @@
 
 namespace lastcut::daemon {
 
-inline ledger::BatchChooser ledger_batch_rule(const BatchConfig& rule) {
-  return [rule](const std::vector<ledger::ComputedJob>& computed) {
+// `force`: every group is due now (tests that group at once).
+inline ledger::BatchChooser ledger_batch_rule(const BatchConfig& rule, bool force = false) {
+  return [rule, force](const std::vector<ledger::ComputedJob>& computed) {
     std::vector<WaitingJob> waiting;
     for (const ledger::ComputedJob& job : computed)
       waiting.push_back({std::to_string(job.job_id), job.material, job.cutter, job.pieces, job.waited_s});
     std::vector<long long> ids;
-    const std::vector<DueBatch> due = due_batches(waiting, rule);
+    const std::vector<DueBatch> due = due_batches(waiting, rule, force);
     if (!due.empty())
       for (const std::string& id : due.front().job_ids) ids.push_back(std::stoll(id));
     return ids;

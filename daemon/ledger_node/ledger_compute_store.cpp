@@ -55,16 +55,14 @@ void end_job_claim(const LedgerJournal& journal, ledger::LeaseKeeper& keeper, co
   if (!changed) spdlog::warn("{}: {}; the work is dropped", label, changed.error());
 }
 
-class LedgerMoldsClaim : public ComputeClaim {
+class LedgerMoldsClaim : public MoldsClaim {
  public:
   LedgerMoldsClaim(ClaimContext context, ledger::JobClaim claim, MoldsWork work)
       : context_(std::move(context)), claim_(std::move(claim)), work_(std::move(work)) {}
 
-  const MoldsWork* molds() const override { return &work_; }
-  const NestWork* nest() const override { return nullptr; }
-  void finish_nest(const NestResult&) override {}
+  const MoldsWork& work() const override { return work_; }
 
-  void finish_molds(const JobMolds& molds) override {
+  void finish(const JobMolds& molds) override {
     ledger::LedgerClient& client = context_.client;
     const ledger::Lease& lease = claim_.lease;
     if (molds.verdict == JobMolds::Verdict::Failed) {
@@ -103,16 +101,14 @@ class LedgerMoldsClaim : public ComputeClaim {
   MoldsWork work_;
 };
 
-class LedgerNestClaim : public ComputeClaim {
+class LedgerNestClaim : public NestClaim {
  public:
   LedgerNestClaim(ClaimContext context, ledger::BatchClaim claim, NestWork work)
       : context_(std::move(context)), claim_(std::move(claim)), work_(std::move(work)) {}
 
-  const MoldsWork* molds() const override { return nullptr; }
-  const NestWork* nest() const override { return &work_; }
-  void finish_molds(const JobMolds&) override {}
+  const NestWork& work() const override { return work_; }
 
-  void finish_nest(const NestResult& result) override {
+  void finish(const NestResult& result) override {
     const bool on_hide = claim_.hide_id != 0;
     ledger::NestedBatch nested;
     Status made = result.made;
@@ -222,7 +218,7 @@ LedgerComputeStore::LedgerComputeStore(const LedgerConfig& ledger, const SharedS
                                        const LedgerJournal& journal)
     : ledger_(ledger), shared_(shared), keeper_(keeper), settings_(std::move(settings)), journal_(journal) {}
 
-Result<std::unique_ptr<ComputeClaim>> LedgerComputeStore::claim(const std::string& worker) {
+Result<std::optional<ComputeClaim>> LedgerComputeStore::claim(const std::string& worker) {
   ledger::LedgerClient* client = nullptr;
   {
     std::lock_guard lock(clients_mutex_);
@@ -248,7 +244,7 @@ Result<std::unique_ptr<ComputeClaim>> LedgerComputeStore::claim(const std::strin
     });
     if (!asked) return asked;
     if (job) {
-      if (auto opened = open_job(*client, std::move(*job))) return opened;
+      if (auto opened = open_job(*client, std::move(*job))) return std::optional<ComputeClaim>(std::move(opened));
       continue;  // ended at once (an unreadable ticket, no scratch folder): the next one
     }
     // A hide on a cutter's table comes before strip batches: the cutter and its operator wait for it.
@@ -256,12 +252,12 @@ Result<std::unique_ptr<ComputeClaim>> LedgerComputeStore::claim(const std::strin
     if (batch && !batch->has_value())
       batch = client->make_batch(ledger_batch_rule(settings->batch), ledger_.lease_s, hide_materials(*settings));
     if (!batch) return batch.status();
-    if (!batch->has_value()) return std::unique_ptr<ComputeClaim>();
-    if (auto opened = open_batch(*client, std::move(**batch))) return opened;
+    if (!batch->has_value()) return std::optional<ComputeClaim>();
+    if (auto opened = open_batch(*client, std::move(**batch))) return std::optional<ComputeClaim>(std::move(opened));
   }
 }
 
-std::unique_ptr<ComputeClaim> LedgerComputeStore::open_job(ledger::LedgerClient& client, ledger::JobClaim claim) {
+std::unique_ptr<MoldsClaim> LedgerComputeStore::open_job(ledger::LedgerClient& client, ledger::JobClaim claim) {
   const std::string label = "job " + std::to_string(claim.job_id) + " (" + claim.scan.scan_name + ")";
   keeper_.keep(claim.lease);
   const Result<JobTicket> ticket = ticket_from_ledger(claim.scan.ticket);
@@ -281,7 +277,7 @@ std::unique_ptr<ComputeClaim> LedgerComputeStore::open_job(ledger::LedgerClient&
                                             std::move(claim), std::move(work));
 }
 
-std::unique_ptr<ComputeClaim> LedgerComputeStore::open_batch(ledger::LedgerClient& client, ledger::BatchClaim claim) {
+std::unique_ptr<NestClaim> LedgerComputeStore::open_batch(ledger::LedgerClient& client, ledger::BatchClaim claim) {
   const bool on_hide = claim.hide_id != 0;
   keeper_.keep(claim.lease);
   NestWork work;
@@ -317,7 +313,7 @@ std::unique_ptr<ComputeClaim> LedgerComputeStore::open_batch(ledger::LedgerClien
   if (opened) return nest;
   NestResult failed;
   failed.made = opened;
-  nest->finish_nest(failed);  // its jobs fail (strip) or wait (hide) with the reason
+  nest->finish(failed);  // its jobs fail (strip) or wait (hide) with the reason
   return nullptr;
 }
 

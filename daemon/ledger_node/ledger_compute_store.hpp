@@ -31,11 +31,11 @@ class LedgerComputeStore : public ComputeStore {
   LedgerComputeStore(const LedgerConfig& ledger, const SharedStore& shared, ledger::LeaseKeeper& keeper,
                      std::function<std::shared_ptr<const DaemonConfig>()> settings, const LedgerJournal& journal);
 
-  Result<std::unique_ptr<ComputeClaim>> claim(const std::string& worker) override;
+  Result<std::optional<ComputeClaim>> claim(const std::string& worker) override;
 
  private:
-  std::unique_ptr<ComputeClaim> open_job(ledger::LedgerClient& client, ledger::JobClaim claim);
-  std::unique_ptr<ComputeClaim> open_batch(ledger::LedgerClient& client, ledger::BatchClaim claim);
+  std::unique_ptr<MoldsClaim> open_job(ledger::LedgerClient& client, ledger::JobClaim claim);
+  std::unique_ptr<NestClaim> open_batch(ledger::LedgerClient& client, ledger::BatchClaim claim);
 
   const LedgerConfig& ledger_;
   const SharedStore& shared_;

@@ -33,11 +33,7 @@ void SpoolStore::add_to_hide_pool(const JobState& state) {
 }
 
 void SpoolStore::fail_hide(BatchState& batch, const std::string& reason) {
-  batch.stage = BatchStage::Empty;
-  batch.reason = reason;
-  batch.updated_at = utc_now_iso();
-  if (Status written = spool_->write_batch(batch); !written)
-    spdlog::error("hide batch {}: batch.json not written: {}", batch.id, written.error());
+  set_batch_stage(*spool_, batch, BatchStage::Empty, reason, BatchLine::ByCaller);
   const auto to = spool_->root() / folder_name(JobFolder::Failed) / batch.id;
   if (Status moved = move_durably(spool_->batch_dir(batch.id), to); !moved) {
     spdlog::error("hide file {}: {}; it stays in {} (not moved to failed/: {})", batch.hide_file, reason,
@@ -52,8 +48,7 @@ StationStore::Intake SpoolStore::take_hide(const ReadyScan& ready) {
   const std::string name = ready.scan.filename().string();
   BatchState batch;
   batch.id = spool_->new_batch_id();
-  batch.stage = BatchStage::Nesting;
-  batch.created_at = batch.updated_at = utc_now_iso();
+  batch.created_at = utc_now_iso();
   batch.hide_file = name;
   batch.hide_sidecar = ready.sidecar.empty() ? "" : ready.sidecar.filename().string();
   const auto dir = spool_->batch_dir(batch.id);
@@ -62,7 +57,10 @@ StationStore::Intake SpoolStore::take_hide(const ReadyScan& ready) {
   // batch.json before the files: a crash in between leaves a batch that recovery abandons, and the
   // hide file still in the hides folder, taken again.
   Status claimed = error ? Status::failure("cannot create " + dir.string() + ": " + error.message())
-                         : spool_->write_batch(batch);
+                  : set_batch_stage(*spool_, batch, BatchStage::Nesting, "taking " + name + " into the spool",
+                                    BatchLine::ByCaller)
+                      ? Status::success()
+                      : Status::failure("batch.json not written");
   if (claimed && !batch.hide_sidecar.empty()) claimed = move_durably(ready.sidecar, dir / batch.hide_sidecar);
   if (claimed) claimed = move_durably(ready.scan, dir / name);
   if (!claimed) {
@@ -89,12 +87,12 @@ StationStore::Intake SpoolStore::take_hide(const ReadyScan& ready) {
     fail_hide(batch, unknown);
     return Intake::Taken;
   }
-  if (Status written = spool_->write_batch(batch); !written) {
-    fail_hide(batch, "hide " + hide.hide_id + ": batch.json not written: " + written.error());
+  if (!set_batch_stage(*spool_, batch, BatchStage::Nesting,
+                       fmt::format("{}, {:.2f} m^2, lies on cutter {}; the computed jobs of {} are nested on it", name,
+                                   hide.area_m2, batch.cutter, batch.material))) {
+    fail_hide(batch, "hide " + hide.hide_id + ": batch.json not written");
     return Intake::Taken;
   }
-  spdlog::info("hide {} ({}, {:.2f} m^2) lies on cutter {}: batch {} for the computed jobs of {}", hide.hide_id, name,
-               hide.area_m2, batch.cutter, batch.id, batch.material);
   loaded_hides_.push_back({batch.id, Clock::now()});
   return Intake::Taken;
 }
@@ -128,25 +126,15 @@ void SpoolStore::nest_due_hides(Clock::time_point now) {
     const std::size_t offered = std::min<std::size_t>(pool.size(), kHideMaxJobs);
     batch->job_ids.assign(pool.begin(), pool.begin() + static_cast<std::ptrdiff_t>(offered));
     pool.erase(pool.begin(), pool.begin() + static_cast<std::ptrdiff_t>(offered));
-    batch->updated_at = utc_now_iso();
-    if (Status written = spool_->write_batch(*batch); !written) {
+    const std::string note = fmt::format("nesting {} waiting job(s) of {} on cutter {}{}", batch->job_ids.size(),
+                                         batch->material, batch->cutter,
+                                         pool.empty() ? "" : " (" + std::to_string(pool.size()) + " wait for the next hide)");
+    if (!set_batch_stage(*spool_, *batch, BatchStage::Nesting, note)) {
       // The jobs stay in the pool; the hide is offered again next turn.
       pool.insert(pool.begin(), batch->job_ids.begin(), batch->job_ids.end());
-      spdlog::error("hide {} (batch {}): batch.json not written: {}", batch->hide_id, batch->id, written.error());
       ++loaded;
       continue;
     }
-    for (const std::string& id : batch->job_ids) {
-      auto state = spool_->read_state(JobFolder::Work, id);
-      if (!state) continue;
-      state->batch_id = batch->id;
-      state->reason.clear();
-      set_job_stage(*spool_, *state, JobStage::Batched, "nested on hide " + batch->hide_id + " (batch " + batch->id + ")",
-                    "not part of hide batch " + batch->id + ": state not written");
-    }
-    spdlog::info("hide {} on cutter {}: nesting {} waiting job(s) of {} in batch {}{}", batch->hide_id, batch->cutter,
-                 batch->job_ids.size(), batch->material, batch->id,
-                 pool.empty() ? "" : " (" + std::to_string(pool.size()) + " wait for the next hide)");
     to_nest(batch->id);
     loaded = loaded_hides_.erase(loaded);
   }

@@ -98,8 +98,52 @@ void report_job_problem(const Spool& spool, JobFolder folder, const JobState& st
   }
 }
 
+std::string batch_label(const BatchState& batch) {
+  if (!batch.hide_id.empty()) return "hide " + batch.hide_id + " (batch " + batch.id + ")";
+  if (!batch.hide_file.empty()) return "hide file " + batch.hide_file + " (batch " + batch.id + ")";
+  return "batch " + batch.id;
+}
+
+bool set_batch_stage(const Spool& spool, BatchState& batch, BatchStage stage, const std::string& note, BatchLine line,
+                     const std::string& if_not_written) {
+  const bool end = stage == BatchStage::Held || stage == BatchStage::Abandoned || stage == BatchStage::Empty;
+  batch.stage = stage;
+  if (end) batch.reason = note;
+  batch.updated_at = utc_now_iso();
+  if (Status written = spool.write_batch(batch); !written) {
+    report_batch_problem(spool, batch,
+                         (if_not_written.empty() ? std::string(to_string(stage)) + " (" + note +
+                                                       "), but batch.json not written"
+                                                 : if_not_written) +
+                             ": " + written.error());
+    return false;
+  }
+  const bool on_hide = !batch.hide_file.empty();
+  for (const std::string& id : batch.job_ids) {
+    auto state = spool.read_state(JobFolder::Work, id);
+    if (!state) continue;
+    if (stage == BatchStage::Nesting) {
+      state->batch_id = batch.id;
+      state->reason.clear();  // no longer waiting for a hide
+      set_job_stage(spool, *state, JobStage::Batched, std::string(on_hide ? "nested on " : "nested in ") + batch_label(batch),
+                    "not part of " + batch_label(batch) + ": state not written");
+      continue;
+    }
+    const JobStage follows = stage == BatchStage::Queued ? JobStage::Batched : JobStage::Sending;
+    if ((stage != BatchStage::Queued && stage != BatchStage::Sending) || state->batch_id != batch.id ||
+        state->stage == follows)
+      continue;
+    set_job_stage(spool, *state, follows, note);
+  }
+  if (line == BatchLine::Logged) {
+    if (end) spdlog::warn("{}: {}{}", batch_label(batch), note, stage == BatchStage::Empty ? "; nothing is cut" : "");
+    else spdlog::info("{}: {}", batch_label(batch), note);
+  }
+  return true;
+}
+
 void report_batch_problem(const Spool& spool, const BatchState& batch, const std::string& problem) {
-  spdlog::error("batch {}: {}", batch.id, problem);
+  spdlog::error("{}: {}", batch_label(batch), problem);
   for (const std::string& id : batch.job_ids) {
     if (!spool.read_state(JobFolder::Work, id)) continue;  // no longer in work/: not this batch's any more
     if (Status noted = append_problem(spool, JobFolder::Work, id, "batch " + batch.id + ": " + problem); !noted) {

@@ -1,6 +1,7 @@
 #pragma once
-// A spool job's changes of stage, all through set_job_stage(), and the ends of its road: failed/
-// (bad input), held/ (an operator must decide), done/ (cut or skipped).
+// A spool job's changes of stage, all through set_job_stage(), a batch's through set_batch_stage(),
+// and the ends of a job's road: failed/ (bad input), held/ (an operator must decide), done/ (cut
+// or skipped).
 // report.json in the job folder collects the measures, timings, batch and cutter answer, and
 // every failure met on the way ("problems"), so no error is only in the log.
 #include <string>
@@ -20,6 +21,24 @@ namespace lastcut::daemon {
 // and noted in its report as "<if_not_written>: <error>".
 bool set_job_stage(const Spool& spool, JobState& state, JobStage stage, const std::string& note,
                    const std::string& if_not_written = "state not written");
+// Who says a batch's change in the log.
+enum class BatchLine {
+  Logged,    // set_batch_stage: "<batch>: <note>"
+  ByCaller,  // the caller, in its own words: the station's cutter worker (the same line on both
+             // stores), or a refused hide file with the folder it went to
+};
+// "batch BID", or for a hide batch "hide ID (batch BID)" (the hide file's name before it was read).
+std::string batch_label(const BatchState& batch);
+// The one place a spool batch's stage changes: `stage` goes into batch.json durably (for an end -
+// held, abandoned, empty - with `note` as its reason). Its jobs still in work/ follow for the steps
+// that keep them there, each through set_job_stage: nesting makes them part of the batch (batched),
+// queued and sending set that stage on jobs not in it yet, with `note`; the ends of the jobs (cut,
+// held) are written by complete_batch_jobs / hold_batch_jobs with their move out of work/. Then the
+// one log line (BatchLine): info, a warning for held, abandoned and empty. False when batch.json
+// could not be written: logged and noted in its jobs' reports as "<if_not_written>: <error>" (by
+// default "<stage> (<note>), but batch.json not written").
+bool set_batch_stage(const Spool& spool, BatchState& batch, BatchStage stage, const std::string& note,
+                     BatchLine line = BatchLine::Logged, const std::string& if_not_written = "");
 // work/ID -> failed/ID; the original scan stays there with the reason.
 void fail_job(const Spool& spool, JobState state, const std::string& reason);
 // work/ID -> held/ID with the reason and what the operator can do.

@@ -60,13 +60,7 @@ void SpoolStore::recover() {
 }
 
 void SpoolStore::hold_recovered_batch(BatchState& batch, const std::string& reason) {
-  batch.stage = BatchStage::Held;
-  batch.reason = reason;
-  batch.updated_at = utc_now_iso();
-  if (Status written = spool_->write_batch(batch); !written) {
-    report_batch_problem(*spool_, batch, "held, but batch.json not written: " + written.error());
-  }
-  spdlog::warn("recovery: {}; its jobs are held", reason);
+  set_batch_stage(*spool_, batch, BatchStage::Held, reason);  // its jobs' lines follow, each held
   hold_batch_jobs(*spool_, batch, reason);
 }
 
@@ -98,11 +92,7 @@ void SpoolStore::recover_batch(const std::string& batch_id) {
         else to_nest(batch_id);
         return;
       }
-      batch->stage = BatchStage::Abandoned;
-      batch->reason = "lastcutd stopped while nesting; the jobs are nested again";
-      if (Status written = spool_->write_batch(*batch); !written) {
-        report_batch_problem(*spool_, *batch, "abandoned, but batch.json not written: " + written.error());
-      }
+      set_batch_stage(*spool_, *batch, BatchStage::Abandoned, "lastcutd stopped while nesting; the jobs are nested again");
       return;
     case BatchStage::Queued: enqueue_batch(*batch); return;
     case BatchStage::Sending:

@@ -9,16 +9,14 @@
 namespace lastcut::daemon {
 namespace {
 
-class SpoolMoldsClaim : public ComputeClaim {
+class SpoolMoldsClaim : public MoldsClaim {
  public:
   SpoolMoldsClaim(const Spool& spool, JobState state, MoldsWork work, std::function<void(const std::string&)> computed)
       : spool_(spool), state_(std::move(state)), work_(std::move(work)), computed_(std::move(computed)) {}
 
-  const MoldsWork* molds() const override { return &work_; }
-  const NestWork* nest() const override { return nullptr; }
-  void finish_nest(const NestResult&) override {}
+  const MoldsWork& work() const override { return work_; }
 
-  void finish_molds(const JobMolds& molds) override {
+  void finish(const JobMolds& molds) override {
     if (molds.verdict == JobMolds::Verdict::Failed) {
       fail_job(spool_, state_, molds.reason);
       return;
@@ -51,18 +49,16 @@ class SpoolMoldsClaim : public ComputeClaim {
   std::function<void(const std::string&)> computed_;
 };
 
-class SpoolNestClaim : public ComputeClaim {
+class SpoolNestClaim : public NestClaim {
  public:
   SpoolNestClaim(const Spool& spool, BatchState batch, std::map<std::string, JobState> states, NestWork work,
                  const SpoolComputeStore::Listeners& listeners)
       : spool_(spool), batch_(std::move(batch)), states_(std::move(states)), work_(std::move(work)),
         listeners_(listeners) {}
 
-  const MoldsWork* molds() const override { return nullptr; }
-  const NestWork* nest() const override { return &work_; }
-  void finish_molds(const JobMolds&) override {}
+  const NestWork& work() const override { return work_; }
 
-  void finish_nest(const NestResult& result) override {
+  void finish(const NestResult& result) override {
     const bool on_hide = !batch_.hide_file.empty();
     std::size_t back_to_wait = 0;
     for (auto& [id, state] : states_) {
@@ -93,38 +89,27 @@ class SpoolNestClaim : public ComputeClaim {
       }
     }
     batch_.job_ids = result.placed;
-    batch_.updated_at = utc_now_iso();
     if (result.placed.empty()) {
-      batch_.stage = BatchStage::Empty;
-      batch_.reason = !result.made       ? result.made.error()
+      // Its jobs have left the batch already; if batch.json is not written, recovery abandons it.
+      set_batch_stage(spool_, batch_, BatchStage::Empty,
+                      !result.made       ? result.made.error()
                       : !on_hide         ? "no job left in the batch"
                       : states_.empty() ? "no piece of " + batch_.material + " was waiting for hide " + batch_.hide_id
-                                         : "no waiting job fitted on hide " + batch_.hide_id;
-      if (Status written = spool_.write_batch(batch_); !written) {
-        // Its jobs have left the batch already; recovery abandons it at the next start.
-        spdlog::error("{}: {}, but batch.json not written: {}", work_.label, batch_.reason, written.error());
-      }
-      if (on_hide) spdlog::warn("{}: {}; nothing is cut", work_.label, batch_.reason);
+                                         : "no waiting job fitted on hide " + batch_.hide_id);
       return;
     }
-    batch_.stage = BatchStage::Queued;
     batch_.cut_file = result.cut_file;
     batch_.utilisation = result.utilisation;
     batch_.piece_count = result.pieces;
-    if (Status written = spool_.write_batch(batch_); !written) {
-      // Still "nesting" on disk: the next start abandons it and nests its jobs again.
-      report_batch_problem(spool_, batch_, "nested, but not queued: batch.json not written: " + written.error());
-      return;
-    }
-    if (on_hide) {
-      spdlog::info("{}: {} job(s), {} pieces, utilisation of its usable area {:.1f} %, {} job(s) wait; queued for {}",
-                   work_.label, result.placed.size(), batch_.piece_count, 100.0 * batch_.utilisation, back_to_wait,
-                   batch_.cutter);
-    } else {
-      spdlog::info("{}: {} job(s), {} pieces nested on {} (utilisation {:.1f} %) in {:.1f} s; queued for {}",
-                   work_.label, result.placed.size(), batch_.piece_count, batch_.material, 100.0 * batch_.utilisation,
-                   result.took_s, batch_.cutter);
-    }
+    const std::string note =
+        on_hide ? fmt::format("{} job(s), {} pieces, utilisation of its usable area {:.1f} %, {} job(s) wait; queued for {}",
+                              result.placed.size(), batch_.piece_count, 100.0 * batch_.utilisation, back_to_wait,
+                              batch_.cutter)
+                : fmt::format("{} job(s), {} pieces nested on {} (utilisation {:.1f} %) in {:.1f} s; queued for {}",
+                              result.placed.size(), batch_.piece_count, batch_.material, 100.0 * batch_.utilisation,
+                              result.took_s, batch_.cutter);
+    // Not written: still "nesting" on disk, the next start abandons it and nests its jobs again.
+    if (!set_batch_stage(spool_, batch_, BatchStage::Queued, note, BatchLine::Logged, "nested, but not queued")) return;
     listeners_.queued(batch_);
   }
 
@@ -162,21 +147,24 @@ void SpoolComputeStore::clear() {
   entries_.clear();
 }
 
-Result<std::unique_ptr<ComputeClaim>> SpoolComputeStore::claim(const std::string&) {
+Result<std::optional<ComputeClaim>> SpoolComputeStore::claim(const std::string&) {
   while (true) {
     Entry entry;
     {
       std::lock_guard lock(mutex_);
-      if (entries_.empty()) return std::unique_ptr<ComputeClaim>();
+      if (entries_.empty()) return std::optional<ComputeClaim>();
       entry = std::move(entries_.front());
       entries_.pop_front();
     }
-    std::unique_ptr<ComputeClaim> claimed = entry.is_batch ? claim_batch(entry.id) : claim_job(entry.id);
-    if (claimed) return claimed;
+    if (entry.is_batch) {
+      if (auto nest = claim_batch(entry.id)) return std::optional<ComputeClaim>(std::move(nest));
+    } else if (auto molds = claim_job(entry.id)) {
+      return std::optional<ComputeClaim>(std::move(molds));
+    }
   }
 }
 
-std::unique_ptr<ComputeClaim> SpoolComputeStore::claim_job(const std::string& job_id) {
+std::unique_ptr<MoldsClaim> SpoolComputeStore::claim_job(const std::string& job_id) {
   auto state = spool_.read_state(JobFolder::Work, job_id);
   if (!state || state->stage != JobStage::Claimed || !state->stage_problem.empty()) return nullptr;
   if (state->attempts >= settings_()->jobs.max_attempts) {
@@ -197,7 +185,7 @@ std::unique_ptr<ComputeClaim> SpoolComputeStore::claim_job(const std::string& jo
   return std::make_unique<SpoolMoldsClaim>(spool_, std::move(*state), std::move(work), listeners_.computed);
 }
 
-std::unique_ptr<ComputeClaim> SpoolComputeStore::claim_batch(const std::string& batch_id) {
+std::unique_ptr<NestClaim> SpoolComputeStore::claim_batch(const std::string& batch_id) {
   auto batch = spool_.read_batch(batch_id);
   if (!batch || batch->stage != BatchStage::Nesting || !batch->stage_problem.empty()) return nullptr;
   const bool on_hide = !batch->hide_file.empty();

@@ -38,15 +38,15 @@ class SpoolComputeStore : public ComputeStore {
   // Forgets what is not claimed yet (it stays in the spool; recovery finds it at the next start).
   void clear();
 
-  Result<std::unique_ptr<ComputeClaim>> claim(const std::string& worker) override;
+  Result<std::optional<ComputeClaim>> claim(const std::string& worker) override;
 
  private:
   struct Entry {
     bool is_batch = false;
     std::string id;
   };
-  std::unique_ptr<ComputeClaim> claim_job(const std::string& job_id);
-  std::unique_ptr<ComputeClaim> claim_batch(const std::string& batch_id);
+  std::unique_ptr<MoldsClaim> claim_job(const std::string& job_id);
+  std::unique_ptr<NestClaim> claim_batch(const std::string& batch_id);
 
   const Spool& spool_;
   std::function<std::shared_ptr<const DaemonConfig>()> settings_;

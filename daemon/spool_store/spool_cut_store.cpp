@@ -5,40 +5,6 @@
 #include "daemon/spool_store/job_outcomes.hpp"
 
 namespace lastcut::daemon {
-namespace {
-
-// The one place a spool batch changes stage at the cutter: batch.json, then the state.json of
-// each of its jobs still in work/ for the steps that keep them there (sending, queued again).
-// The ends (cut, held) of the jobs are written by complete_batch_jobs / hold_batch_jobs together
-// with their move out of work/. A failure is logged and noted in the jobs' reports; false when
-// batch.json could not be written.
-bool set_batch_stage(const Spool& spool, BatchState& batch, BatchStage stage, const std::string& note) {
-  batch.stage = stage;
-  batch.updated_at = utc_now_iso();
-  if (Status written = spool.write_batch(batch); !written) {
-    report_batch_problem(spool, batch, std::string(to_string(stage)) + " (" + note + "), but batch.json not written: " +
-                                           written.error());
-    return false;
-  }
-  JobStage job_stage = JobStage::Batched;
-  switch (stage) {
-    case BatchStage::Queued: job_stage = JobStage::Batched; break;
-    case BatchStage::Sending: job_stage = JobStage::Sending; break;
-    case BatchStage::Nesting:
-    case BatchStage::Cut:
-    case BatchStage::Held:
-    case BatchStage::Abandoned:
-    case BatchStage::Empty: return true;
-  }
-  for (const std::string& id : batch.job_ids) {
-    auto state = spool.read_state(JobFolder::Work, id);
-    if (!state || state->batch_id != batch.id) continue;
-    set_job_stage(spool, *state, job_stage, note);
-  }
-  return true;
-}
-
-}  // namespace
 
 void SpoolCutStore::enqueue(const std::string& batch_id) {
   std::lock_guard lock(mutex_);
@@ -79,7 +45,7 @@ Status SpoolCutStore::mark_sending(const CutOrder& order) {
     give_back(order);
     return Status::failure("batch.json of " + order.batch_id + " unreadable");
   }
-  if (!set_batch_stage(spool_, *batch, BatchStage::Sending, "sending to cutter " + cutter_)) {
+  if (!set_batch_stage(spool_, *batch, BatchStage::Sending, "sending to cutter " + cutter_, BatchLine::ByCaller)) {
     give_back(order);
     return Status::failure("batch.json of " + order.batch_id + " not written (see the jobs' reports)");
   }
@@ -103,11 +69,12 @@ CutEnd SpoolCutStore::record_end(const CutOrder& order, CutEnd end, const std::s
   switch (end) {
     case CutEnd::Cut:
       // Cut, even if batch.json cannot say so: the jobs must reach done/, never be cut again.
-      set_batch_stage(spool_, *batch, BatchStage::Cut, "the cutter reported the job finished");
+      set_batch_stage(spool_, *batch, BatchStage::Cut, "the cutter reported the job finished", BatchLine::ByCaller);
       complete_batch_jobs(spool_, *batch);
       return CutEnd::Cut;
     case CutEnd::NotSent:
-      if (set_batch_stage(spool_, *batch, BatchStage::Queued, "cutter refused before cutting: " + reason)) {
+      if (set_batch_stage(spool_, *batch, BatchStage::Queued, "cutter refused before cutting: " + reason,
+                          BatchLine::ByCaller)) {
         give_back(order);
         return CutEnd::NotSent;
       }
@@ -117,7 +84,7 @@ CutEnd SpoolCutStore::record_end(const CutOrder& order, CutEnd end, const std::s
       break;
     case CutEnd::Held: break;
   }
-  set_batch_stage(spool_, *batch, BatchStage::Held, batch->reason);
+  set_batch_stage(spool_, *batch, BatchStage::Held, batch->reason, BatchLine::ByCaller);
   hold_batch_jobs(spool_, *batch, batch->reason);
   return CutEnd::Held;
 }

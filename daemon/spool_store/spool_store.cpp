@@ -51,7 +51,7 @@ void SpoolStore::tick(Clock::time_point now) {
     auto state = spool_->read_state(JobFolder::Work, id);
     if (state && state->stage == JobStage::Computed && state->stage_problem.empty()) add_to_batcher(*state);
   }
-  close_due_batches(now, false);
+  close_due_batches(now);
   nest_due_hides(now);
   if (now >= next_work_scan_) {
     scan_work_folder();
@@ -78,7 +78,7 @@ void SpoolStore::write_status_file() {
   for (const auto& [name, store] : cutters_) {
     cutters[name] = {{"condition", links_.cutter_condition(name)}, {"queued_batches", store->queued()}};
   }
-  const std::size_t waiting = strip_waiting_.size();
+  const std::size_t waiting = strip_batcher_.waiting();
   nlohmann::json waiting_for_hide = nlohmann::json::object();
   for (const auto& [material, ids] : hide_waiting_)
     if (!ids.empty()) waiting_for_hide[material] = ids.size();
@@ -107,7 +107,7 @@ std::string SpoolStore::status_line() const {
   std::size_t queued = 0;
   for (const auto& [name, store] : cutters_) queued += store->queued();
   return std::to_string(known_jobs_.size()) + " job(s) in work, " + std::to_string(compute_store_->waiting()) +
-         " to compute, " + std::to_string(strip_waiting_.size()) + " waiting for a batch, " + std::to_string(queued) +
+         " to compute, " + std::to_string(strip_batcher_.waiting()) + " waiting for a batch, " + std::to_string(queued) +
          " batch(es) queued";
 }
 

@@ -22,9 +22,9 @@
 #include "daemon/spool_store/spool_compute_store.hpp"
 #include "daemon/spool_store/spool_cut_store.hpp"
 #include "daemon/spool/spool.hpp"
-#include "daemon/station/batching_policy.hpp"
 #include "daemon/station/config_reload.hpp"
 #include "daemon/station/station_store.hpp"
+#include "daemon/station/strip_batcher.hpp"
 
 namespace lastcut::daemon {
 
@@ -51,13 +51,6 @@ class SpoolStore : public StationStore {
   void close() override;
 
  private:
-  // A computed job waiting for a strip batch (batching_policy.hpp decides when).
-  struct StripWaiting {
-    std::string id, material, cutter;
-    int pieces = 1;
-    Clock::time_point since;
-  };
-
   std::shared_ptr<const DaemonConfig> config() const;
   // recovery.cpp
   void recover();
@@ -72,7 +65,7 @@ class SpoolStore : public StationStore {
   void to_nest(const std::string& batch_id);
   // batching.cpp
   void add_to_batcher(const JobState& state);
-  void close_due_batches(Clock::time_point now, bool force);
+  void close_due_batches(Clock::time_point now);
   void close_batch(const DueBatch& due);
   void enqueue_batch(const BatchState& batch);
   // hide_intake.cpp
@@ -95,7 +88,7 @@ class SpoolStore : public StationStore {
   // Main thread only.
   std::set<std::string> known_jobs_;                  // ids in work/ that have been routed
   std::map<std::string, std::string> hash_to_job_;    // sha256 -> first job id with those bytes
-  std::vector<StripWaiting> strip_waiting_;           // computed, waiting for a strip batch, oldest first
+  StripBatcher strip_batcher_;                        // computed jobs waiting for a strip batch
   std::map<std::string, std::vector<std::string>> hide_waiting_;  // hide material -> jobs waiting, oldest first
   struct LoadedHide {
     std::string batch_id;

@@ -81,16 +81,19 @@ void ComputePool::run(const std::string& worker) {
 }
 
 bool ComputePool::turn(const std::string& worker) {
-  Result<std::unique_ptr<ComputeClaim>> claimed = store_.claim(worker);
+  Result<std::optional<ComputeClaim>> claimed = store_.claim(worker);
   if (!claimed) {
     note_trouble(claimed.error());
     return false;
   }
   note_trouble("");
   if (!*claimed) return false;
-  ComputeClaim& claim = **claimed;
-  if (const MoldsWork* molds = claim.molds()) claim.finish_molds(compute_molds(*molds, worker));
-  else if (const NestWork* nest = claim.nest()) claim.finish_nest(compute_nest(*nest, worker));
+  if (auto* molds = std::get_if<std::unique_ptr<MoldsClaim>>(&**claimed)) {
+    (*molds)->finish(compute_molds((*molds)->work(), worker));
+  } else {
+    NestClaim& nest = *std::get<std::unique_ptr<NestClaim>>(**claimed);
+    nest.finish(compute_nest(nest.work(), worker));
+  }
   return true;
 }
 

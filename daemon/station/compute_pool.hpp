@@ -51,11 +51,10 @@ class ComputePool {
   // The store's trouble as last logged ("" when it answered).
   std::string trouble() const;
 
-  // The engine steps of one claim, as a turn runs them (public for tests and the command line).
+ private:
+  // The engine steps of one claim, inside the watchdog bracket of the progress monitor.
   JobMolds compute_molds(const MoldsWork& work, const std::string& worker);
   NestResult compute_nest(const NestWork& work, const std::string& worker);
-
- private:
   void run(const std::string& worker);
   void note_trouble(const std::string& trouble);
   void wait(double seconds);

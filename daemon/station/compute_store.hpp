@@ -7,11 +7,13 @@
 // stands in for both in tests/station/compute_pool_test.cpp.
 //
 // Computing is AT LEAST ONCE: a claim the store loses (a crash, a lease that ran out) is computed
-// again; each finish_* writes the outcome only when the claim is still the store's.
+// again; each finish writes the outcome only when the claim is still the store's.
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "daemon/job/job_ticket.hpp"
@@ -57,28 +59,37 @@ struct NestResult {
   double took_s = 0;                             // nesting and cut file
 };
 
-// One claimed job or batch; the worker holds it while it computes.
-class ComputeClaim {
+// A claimed job whose molds are to be made; the worker holds it while it computes.
+class MoldsClaim {
  public:
-  virtual ~ComputeClaim() = default;
-  // The work: exactly one of the two is set.
-  virtual const MoldsWork* molds() const = 0;
-  virtual const NestWork* nest() const = 0;
-  // Writes the outcome: the job computed, held for review or failed with the reason (molds), or the
-  // batch queued for its cutter with its jobs batched, failed, waiting (nest). Failures to write
-  // are logged; the claim then goes back as a lost claim would.
-  virtual void finish_molds(const JobMolds& molds) = 0;
-  virtual void finish_nest(const NestResult& result) = 0;
+  virtual ~MoldsClaim() = default;
+  virtual const MoldsWork& work() const = 0;
+  // Writes the outcome: the job computed, held for review or failed with the reason. Failures to
+  // write are logged; the claim then goes back as a lost claim would.
+  virtual void finish(const JobMolds& molds) = 0;
 };
+
+// A claimed strip batch or hide to nest; the worker holds it while it computes.
+class NestClaim {
+ public:
+  virtual ~NestClaim() = default;
+  virtual const NestWork& work() const = 0;
+  // Writes the outcome: the batch queued for its cutter with its jobs batched, failed or waiting.
+  // Failures to write are logged; the claim then goes back as a lost claim would.
+  virtual void finish(const NestResult& result) = 0;
+};
+
+// One claim of either kind (never null).
+using ComputeClaim = std::variant<std::unique_ptr<MoldsClaim>, std::unique_ptr<NestClaim>>;
 
 class ComputeStore {
  public:
   virtual ~ComputeStore() = default;
-  // The next job or batch to compute, claimed for `worker`: null when none waits now, an error line
+  // The next job or batch to compute, claimed for `worker`: nullopt when none waits now, an error line
   // when the store cannot be asked (the pool logs it once per change and asks again later). A job
   // the store itself must end first (attempts used up, an unreadable ticket) is ended here and
   // never handed out.
-  virtual Result<std::unique_ptr<ComputeClaim>> claim(const std::string& worker) = 0;
+  virtual Result<std::optional<ComputeClaim>> claim(const std::string& worker) = 0;
 };
 
 }  // namespace lastcut::daemon

@@ -123,15 +123,15 @@ TEST(DaemonHides, BadHideFilesGoToFailedWithTheReasonAndTheDaemonKeepsRunning) {
   EXPECT_EQ(loaded.first, 0) << loaded.second;
   EXPECT_NE(loaded.second.find("hide good (good.dxf, 0.60 m^2) now lies on cutter cutter-1"), std::string::npos) << loaded.second;
   const auto status_log = rig.root() / "status.txt";
-  ASSERT_TRUE(wait_until([&] { return read_text(rig.daemon_log()).find("hide good (good.dxf, 0.60 m^2) lies on cutter "
-                                                                        "cutter-1: batch") != std::string::npos; }, 30))
+  ASSERT_TRUE(wait_until([&] { return read_text(rig.daemon_log()).find("good.dxf, 0.60 m^2, lies on cutter "
+                                                                        "cutter-1; the computed") != std::string::npos; }, 30))
       << read_text(rig.daemon_log());
   EXPECT_EQ(run_command({binary("lastcut").string(), "status", "--config", rig.config_file().string()}, status_log), 0);
   EXPECT_NE(read_text(status_log).find("lastcutd: running"), std::string::npos);
   const std::string log = read_text(rig.daemon_log());
   EXPECT_NE(log.find("hide file open.dxf: "), std::string::npos);
   EXPECT_NE(log.find("; moved to failed/"), std::string::npos);
-  EXPECT_NE(log.find("hide good (good.dxf, 0.60 m^2) lies on cutter cutter-1"), std::string::npos) << log;
+  EXPECT_NE(log.find(": good.dxf, 0.60 m^2, lies on cutter cutter-1"), std::string::npos) << log;
   EXPECT_TRUE(std::filesystem::exists(stock / "good.dxf")) << "the stock copy stays";
   EXPECT_EQ(rig.stop_daemon(), 0);
 }

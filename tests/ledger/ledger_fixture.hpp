@@ -72,31 +72,17 @@ inline ledger::ScanEntry scan(int n, const std::string& cutter = "cutter-1", con
 }
 
 // The station's batching rule with a window and a piece limit (every test job has 1 piece).
-inline ledger::BatchChooser batch_rule(double window_s, int max_pieces) {
+inline ledger::BatchChooser batch_rule(double window_s, int max_pieces, bool force = false) {
   daemon::BatchConfig rule;
   rule.window_s = window_s;
   rule.max_pieces = max_pieces;
-  return daemon::ledger_batch_rule(rule);
+  return daemon::ledger_batch_rule(rule, force);
 }
 
 // Groups the oldest computed jobs of one material and cutter at once, whatever they waited (the
 // station's rule forced, as for a stopping station), up to max_pieces: for tests of the ledger's
 // grouping itself. (A window of 0 would nest each job alone.)
-inline ledger::BatchChooser group_now(int max_pieces) {
-  return [max_pieces](const std::vector<ledger::ComputedJob>& computed) {
-    std::vector<daemon::WaitingJob> waiting;
-    for (const ledger::ComputedJob& job : computed)
-      waiting.push_back({std::to_string(job.job_id), job.material, job.cutter, job.pieces, job.waited_s});
-    daemon::BatchConfig rule;
-    rule.window_s = 3600;
-    rule.max_pieces = max_pieces;
-    std::vector<long long> ids;
-    const std::vector<daemon::DueBatch> due = daemon::due_batches(waiting, rule, true);
-    if (!due.empty())
-      for (const std::string& id : due.front().job_ids) ids.push_back(std::stoll(id));
-    return ids;
-  };
-}
+inline ledger::BatchChooser group_now(int max_pieces) { return batch_rule(3600, max_pieces, true); }
 
 // What a compute node does to a batch (nothing is really nested here): groups the oldest computed
 // jobs (group_now) and hands the batch to its station with a cut file named after it. nullopt when

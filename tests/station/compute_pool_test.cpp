@@ -63,45 +63,55 @@ class FakeComputeStore : public ComputeStore {
   JobMolds last_molds;
   NestResult last_nest;
 
-  Result<std::unique_ptr<ComputeClaim>> claim(const std::string& worker) override {
+  Result<std::optional<ComputeClaim>> claim(const std::string& worker) override {
     std::optional<Work> work;
     {
       std::lock_guard lock(mutex_);
       record("claim " + worker);
       if (!claim_error_.empty()) return Status::failure(claim_error_);
-      if (queue_.empty()) return std::unique_ptr<ComputeClaim>();
+      if (queue_.empty()) return std::optional<ComputeClaim>();
       work = std::move(queue_.front());
       queue_.pop_front();
     }
     if (while_computing) while_computing();
-    return std::unique_ptr<ComputeClaim>(std::make_unique<Claim>(*this, std::move(*work)));
+    if (work->molds) return std::optional<ComputeClaim>(std::make_unique<FakeMoldsClaim>(*this, std::move(*work->molds)));
+    return std::optional<ComputeClaim>(std::make_unique<FakeNestClaim>(*this, std::move(*work->nest)));
   }
 
  private:
-  class Claim : public ComputeClaim {
+  class FakeMoldsClaim : public MoldsClaim {
    public:
-    Claim(FakeComputeStore& store, Work work) : store_(store), work_(std::move(work)) {}
-    const MoldsWork* molds() const override { return work_.molds ? &*work_.molds : nullptr; }
-    const NestWork* nest() const override { return work_.nest ? &*work_.nest : nullptr; }
-    void finish_molds(const JobMolds& molds) override {
+    FakeMoldsClaim(FakeComputeStore& store, MoldsWork work) : store_(store), work_(std::move(work)) {}
+    const MoldsWork& work() const override { return work_; }
+    void finish(const JobMolds& molds) override {
       const char* verdict = molds.verdict == JobMolds::Verdict::Computed        ? "computed"
                             : molds.verdict == JobMolds::Verdict::HeldForReview ? "held"
                                                                                 : "failed";
       std::lock_guard lock(store_.mutex_);
       store_.last_molds = molds;
-      store_.record("molds " + work_.molds->label + " " + verdict + (molds.reason.empty() ? "" : ": " + molds.reason));
-    }
-    void finish_nest(const NestResult& result) override {
-      std::string placed;
-      for (const std::string& id : result.placed) placed += " " + id;
-      std::lock_guard lock(store_.mutex_);
-      store_.last_nest = result;
-      store_.record("nest " + work_.nest->label + (result.made ? " made: placed" + placed : " failed: " + result.made.error()));
+      store_.record("molds " + work_.label + " " + verdict + (molds.reason.empty() ? "" : ": " + molds.reason));
     }
 
    private:
     FakeComputeStore& store_;
-    Work work_;
+    MoldsWork work_;
+  };
+
+  class FakeNestClaim : public NestClaim {
+   public:
+    FakeNestClaim(FakeComputeStore& store, NestWork work) : store_(store), work_(std::move(work)) {}
+    const NestWork& work() const override { return work_; }
+    void finish(const NestResult& result) override {
+      std::string placed;
+      for (const std::string& id : result.placed) placed += " " + id;
+      std::lock_guard lock(store_.mutex_);
+      store_.last_nest = result;
+      store_.record("nest " + work_.label + (result.made ? " made: placed" + placed : " failed: " + result.made.error()));
+    }
+
+   private:
+    FakeComputeStore& store_;
+    NestWork work_;
   };
 
   void record(std::string call) {

@@ -22,7 +22,7 @@ class FakeStationStore : public StationStore {
  public:
   class NoCompute : public ComputeStore {
    public:
-    Result<std::unique_ptr<ComputeClaim>> claim(const std::string&) override { return std::unique_ptr<ComputeClaim>(); }
+    Result<std::optional<ComputeClaim>> claim(const std::string&) override { return std::optional<ComputeClaim>(); }
   };
   class NoCuts : public CutStore {
    public:
