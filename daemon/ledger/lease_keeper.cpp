@@ -45,23 +45,23 @@ bool LeaseKeeper::lost(const Lease& lease) const {
   return lost_.count(key(lease)) > 0;
 }
 
+double LeaseKeeper::retry_s() const { return std::min(1.0, heartbeat_s_); }
+
 void LeaseKeeper::run() {
   std::unique_ptr<LedgerClient> client;
-  double backoff_s = heartbeat_s_;
   std::unique_lock lock(mutex_);
   while (!stopping_) {
     lock.unlock();
-    beat(client, backoff_s);
+    beat(client);
     lock.lock();
-    const double wait_s = reachable_ ? heartbeat_s_ : backoff_s;
+    const double wait_s = reachable_ ? heartbeat_s_ : retry_s();
     wake_.wait_for(lock, std::chrono::duration<double>(wait_s), [this] { return stopping_; });
   }
 }
 
-void LeaseKeeper::beat(std::unique_ptr<LedgerClient>& client, double& backoff_s) {
+void LeaseKeeper::beat(std::unique_ptr<LedgerClient>& client) {
   const auto went_unreachable = [&](const std::string& why) {
     if (reachable_.exchange(false)) log_("leases not renewed, retrying: " + why);
-    backoff_s = std::min(lease_s_, std::max(heartbeat_s_, backoff_s * 2));
   };
   if (!client) {
     auto connected = LedgerClient::connect(url_, node_);
@@ -86,7 +86,6 @@ void LeaseKeeper::beat(std::unique_ptr<LedgerClient>& client, double& backoff_s)
     }
   }
   if (!reachable_.exchange(true)) log_("ledger reachable again, leases renewed");
-  backoff_s = heartbeat_s_;
 }
 
 }  // namespace lastcut::ledger

@@ -229,7 +229,9 @@ class LedgerClient {
   Status mark_not_sent(const Lease& lease, const std::string& reason);
   Status hold_batch(const Lease& lease, const std::string& reason);
 
-  Result<SweepOutcome> sweep_expired(int max_attempts);
+  // `grace_s`: a lease is taken back only once it has been expired this long, so a live node that
+  // just regained the database renews it first (the nodes pass their heartbeat).
+  Result<SweepOutcome> sweep_expired(int max_attempts, double grace_s = 0);
 
   // A hide now lies on its cutter's table, `loaded`. Refused (one line) while a hide of that name is
   // loaded, being nested or used; a hide that was left `empty` may be loaded again.

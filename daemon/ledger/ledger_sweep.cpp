@@ -81,10 +81,10 @@ SweepOutcome release_matching(pqxx::work& tx, const std::string& node, const std
 
 }  // namespace
 
-Result<SweepOutcome> LedgerClient::sweep_expired(int max_attempts) {
+Result<SweepOutcome> LedgerClient::sweep_expired(int max_attempts, double grace_s) {
   return transact<SweepOutcome>("returning expired leases", [&](pqxx::work& tx) -> Result<SweepOutcome> {
-    // $1 is unused by this condition but keeps one query shape for both sweeps.
-    return release_matching(tx, node_, "expires_at < now() AND $1::text IS NOT NULL", "", max_attempts);
+    return release_matching(tx, node_, "expires_at < now() - make_interval(secs => $1::float8)",
+                            std::to_string(grace_s), max_attempts);
   });
 }
 

@@ -201,7 +201,7 @@ void LedgerNode::refuse(const ReadyScan& ready, const std::string& reason) {
 void LedgerNode::sweep() {
   ledger::SweepOutcome swept;
   const Status done = journal_->change([&]() -> Result<LedgerJobChanges> {
-    auto outcome = client_->sweep_expired(config()->jobs.max_attempts);
+    auto outcome = client_->sweep_expired(config()->jobs.max_attempts, ledger().heartbeat_s);
     if (!outcome) return outcome.status();
     swept = std::move(*outcome);
     return held_job_changes(swept.jobs_held);

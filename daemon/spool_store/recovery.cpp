@@ -143,6 +143,8 @@ void SpoolStore::route(const std::string& job_id) {
     hold_job(*spool_, *state, state->stage_problem + "; an operator must check the job");
     return;
   }
+  // An end already written whose move out of work/ a crash cut short: not a change of stage, only
+  // the move finished.
   const auto move_to = [&](JobFolder folder) {
     if (Status moved = spool_->move_job(JobFolder::Work, folder, *state); !moved) {
       report_job_problem(*spool_, JobFolder::Work, *state,

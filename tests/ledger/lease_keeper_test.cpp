@@ -1,5 +1,6 @@
 // The lease heartbeat: kept leases outlive lease_s, dropped ones run out, a lease taken over is
-// reported lost, and a database outage is logged once each way while renewals resume after it.
+// reported lost, a database outage is logged once each way while renewals resume after it, and an
+// outage shorter than the lease costs a live node nothing (no backoff, the sweep's grace).
 #include <chrono>
 #include <mutex>
 #include <thread>
@@ -97,6 +98,46 @@ TEST_F(LeaseKeeperTest, OutageIsLoggedOnceEachWayAndRenewalsResume) {
   // (node-a's own connection died with the server: the call connects again by itself.)
   const Status computed = a->mark_computed(claim.lease);
   EXPECT_TRUE(computed.ok()) << computed.error();
+}
+
+TEST_F(LeaseKeeperTest, ALeaseOutlivesAnOutageShorterThanItsLengthWhileAnotherNodeSweeps) {
+  // The defaults scaled down by ten, the outage longer: lease 6 s, heartbeat 0.5 s, the database
+  // away for 4 s plus its restart. A keeper that backed off (0.5, 1, 2, 4 s...) would try again
+  // only after the lease ran out, and node-b's sweep would take the job.
+  constexpr double kLease_s = 6, kHeartbeat_s = 0.5;
+  HeldJob held;
+  ASSERT_NO_FATAL_FAILURE(hold_one_job(kLease_s, held));
+  auto& [a, b, claim] = held;
+  Lines log;
+  ledger::LeaseKeeper keeper(url_, "node-a", kLease_s, kHeartbeat_s, log.sink());
+  keeper.keep(claim.lease);
+  sleep_s(0.6);
+  ASSERT_TRUE(server_.stop().empty());
+  sleep_s(4);
+  ASSERT_TRUE(server_.start().empty());
+  std::vector<long long> taken;
+  for (int i = 0; i < 25; ++i) {  // node-b sweeps as a node does, with the grace of one heartbeat
+    auto swept = b->sweep_expired(3, kHeartbeat_s);
+    if (swept) taken.insert(taken.end(), swept->jobs_requeued.begin(), swept->jobs_requeued.end());
+    sleep_s(0.1);
+  }
+  EXPECT_TRUE(taken.empty()) << "node-a was alive all along; its job was taken back";
+  EXPECT_FALSE(keeper.lost(claim.lease));
+  const Status computed = a->mark_computed(claim.lease);
+  EXPECT_TRUE(computed.ok()) << computed.error();
+}
+
+TEST_F(LeaseKeeperTest, TheSweepsGraceTakesBackOnlyLeasesExpiredLongerThanIt) {
+  HeldJob held;
+  ASSERT_NO_FATAL_FAILURE(hold_one_job(0.3, held));
+  auto& [a, b, claim] = held;
+  sleep_s(0.5);  // expired 0.2 s ago
+  auto swept = b->sweep_expired(3, 5);
+  ASSERT_TRUE(swept.ok()) << swept.error();
+  EXPECT_TRUE(swept->jobs_requeued.empty());
+  swept = b->sweep_expired(3, 0);
+  ASSERT_TRUE(swept.ok()) << swept.error();
+  EXPECT_EQ(swept->jobs_requeued, std::vector<long long>{claim.job_id});
 }
 
 }  // namespace
