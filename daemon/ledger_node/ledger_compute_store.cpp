@@ -38,19 +38,23 @@ struct ClaimContext {
   const SharedStore& shared;
   const LedgerConfig& ledger;
   const LedgerJournal& journal;
+  LedgerJournal::Pause pause;
   ScratchFolder scratch;
 };
 
 // The one way a job claim of this node ends: the ledger's fenced change through the journal (it
-// logs and tells the change once taken); the lease is no longer renewed either way; a change the
-// ledger refused drops the work (whoever holds the job now redoes it).
-void end_job_claim(const LedgerJournal& journal, ledger::LeaseKeeper& keeper, const ledger::JobClaim& claim,
-                   const std::string& label, const std::function<Status()>& save, JobStage stage,
-                   const std::string& reason, const std::string& note = "") {
-  const Status changed = journal.change([&]() -> Result<LedgerJobChanges> {
-    if (Status saved = save(); !saved) return saved;
-    return LedgerJobChanges{{claim.job_id, claim.scan.scan_name, claim.scan.ticket, 0, stage, reason, note}};
-  });
+// logs and tells the change once taken; finished work waits for a ledger that is away); the lease
+// is renewed until then and no longer afterwards; a change the ledger refused drops the work
+// (whoever holds the job now redoes it).
+void end_job_claim(const LedgerJournal& journal, const LedgerJournal::Pause& pause, ledger::LeaseKeeper& keeper,
+                   const ledger::JobClaim& claim, const std::string& label, const std::function<Status()>& save,
+                   JobStage stage, const std::string& reason, const std::string& note = "") {
+  const Status changed = journal.change_once_reachable(
+      [&]() -> Result<LedgerJobChanges> {
+        if (Status saved = save(); !saved) return saved;
+        return LedgerJobChanges{{claim.job_id, claim.scan.scan_name, claim.scan.ticket, 0, stage, reason, note}};
+      },
+      pause, keeper.retry_s(), label);
   keeper.drop(claim.lease);
   if (!changed) spdlog::warn("{}: {}; the work is dropped", label, changed.error());
 }
@@ -89,11 +93,11 @@ class LedgerMoldsClaim : public MoldsClaim {
  private:
   void finish(const std::function<Status()>& save, JobStage stage, const std::string& reason,
               const std::string& note = "") {
-    end_job_claim(context_.journal, context_.keeper, claim_, work_.label, save, stage, reason, note);
+    end_job_claim(context_.journal, context_.pause, context_.keeper, claim_, work_.label, save, stage, reason, note);
   }
   // Nothing to tell the ledger: its lease runs out and the job is computed again.
   void drop(const std::string& why) {
-    end_job_claim(context_.journal, context_.keeper, claim_, work_.label, [&] { return Status::failure(why); }, JobStage::Claimed, "");
+    end_job_claim(context_.journal, context_.pause, context_.keeper, claim_, work_.label, [&] { return Status::failure(why); }, JobStage::Claimed, "");
   }
 
   ClaimContext context_;
@@ -139,12 +143,16 @@ class LedgerNestClaim : public NestClaim {
       }
     }
     std::size_t kept = 0;
-    const Status marked = context_.journal.change([&]() -> Result<LedgerJobChanges> {
-      if (Status saved = context_.client.mark_nested(claim_.lease, nested); !saved) return saved;
-      return job_outcome_changes(nested, kept);
-    });
+    const Status marked = context_.journal.change_once_reachable(
+        [&]() -> Result<LedgerJobChanges> {
+          if (Status saved = context_.client.mark_nested(claim_.lease, nested); !saved) return saved;
+          kept = 0;
+          return job_outcome_changes(nested, kept);
+        },
+        context_.pause, context_.keeper.retry_s(), work_.label);
     context_.keeper.drop(claim_.lease);
     if (!marked) {
+      // Its published folder, if any, is pointed to by no row: the sweep removes it (shared_store.hpp).
       spdlog::warn("{}: {}; the nesting is dropped", work_.label, marked.error());
       return;
     }
@@ -215,8 +223,9 @@ void copy_references(const std::filesystem::path& from, const std::filesystem::p
 LedgerComputeStore::LedgerComputeStore(const LedgerConfig& ledger, const SharedStore& shared,
                                        ledger::LeaseKeeper& keeper,
                                        std::function<std::shared_ptr<const DaemonConfig>()> settings,
-                                       const LedgerJournal& journal)
-    : ledger_(ledger), shared_(shared), keeper_(keeper), settings_(std::move(settings)), journal_(journal) {}
+                                       const LedgerJournal& journal, LedgerJournal::Pause pause)
+    : ledger_(ledger), shared_(shared), keeper_(keeper), settings_(std::move(settings)), journal_(journal),
+      pause_(std::move(pause)) {}
 
 Result<std::optional<ComputeClaim>> LedgerComputeStore::claim(const std::string& worker) {
   ledger::LedgerClient* client = nullptr;
@@ -262,18 +271,18 @@ std::unique_ptr<MoldsClaim> LedgerComputeStore::open_job(ledger::LedgerClient& c
   keeper_.keep(claim.lease);
   const Result<JobTicket> ticket = ticket_from_ledger(claim.scan.ticket);
   if (!ticket) {
-    end_job_claim(journal_, keeper_, claim, label, [&] { return client.mark_failed(claim.lease, ticket.error()); },
+    end_job_claim(journal_, pause_, keeper_, claim, label, [&] { return client.mark_failed(claim.lease, ticket.error()); },
                   JobStage::Failed, ticket.error());
     return nullptr;
   }
   auto scratch = shared_.scratch_for(shared_.job_dir(claim.job_folder), ledger_.node);
   if (!scratch) {
-    end_job_claim(journal_, keeper_, claim, label, [&] { return scratch.status(); }, JobStage::Claimed, "");
+    end_job_claim(journal_, pause_, keeper_, claim, label, [&] { return scratch.status(); }, JobStage::Claimed, "");
     return nullptr;
   }
   copy_references(shared_.references(claim.scan.scan_sha256), *scratch);
   MoldsWork work{shared_.scan(claim.scan.scan_sha256, claim.scan.scan_name), *scratch, *ticket, label};
-  return std::make_unique<LedgerMoldsClaim>(ClaimContext{client, keeper_, shared_, ledger_, journal_, ScratchFolder(*scratch)},
+  return std::make_unique<LedgerMoldsClaim>(ClaimContext{client, keeper_, shared_, ledger_, journal_, pause_, ScratchFolder(*scratch)},
                                             std::move(claim), std::move(work));
 }
 
@@ -307,7 +316,7 @@ std::unique_ptr<NestClaim> LedgerComputeStore::open_batch(ledger::LedgerClient& 
   }
   if (scratch) work.batch_dir = *scratch;
   auto nest = std::make_unique<LedgerNestClaim>(
-      ClaimContext{client, keeper_, shared_, ledger_, journal_,
+      ClaimContext{client, keeper_, shared_, ledger_, journal_, pause_,
                    ScratchFolder(scratch ? *scratch : std::filesystem::path())},
       std::move(claim), std::move(work));
   if (opened) return nest;

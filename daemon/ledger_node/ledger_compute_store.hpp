@@ -29,7 +29,8 @@ namespace lastcut::daemon {
 class LedgerComputeStore : public ComputeStore {
  public:
   LedgerComputeStore(const LedgerConfig& ledger, const SharedStore& shared, ledger::LeaseKeeper& keeper,
-                     std::function<std::shared_ptr<const DaemonConfig>()> settings, const LedgerJournal& journal);
+                     std::function<std::shared_ptr<const DaemonConfig>()> settings, const LedgerJournal& journal,
+                     LedgerJournal::Pause pause);
 
   Result<std::optional<ComputeClaim>> claim(const std::string& worker) override;
 
@@ -42,6 +43,7 @@ class LedgerComputeStore : public ComputeStore {
   ledger::LeaseKeeper& keeper_;
   std::function<std::shared_ptr<const DaemonConfig>()> settings_;
   const LedgerJournal& journal_;
+  LedgerJournal::Pause pause_;  // waits while finished work waits for the ledger
   std::mutex clients_mutex_;
   // Each worker's own connection, used by that worker's thread only.
   std::map<std::string, std::unique_ptr<ledger::LedgerClient>> clients_;

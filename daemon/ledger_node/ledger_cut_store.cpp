@@ -1,7 +1,5 @@
 #include "daemon/ledger_node/ledger_cut_store.hpp"
 
-#include <algorithm>
-
 #include <spdlog/spdlog.h>
 
 #include "daemon/ledger/ledger_connection.hpp"
@@ -35,19 +33,14 @@ Result<std::optional<CutOrder>> LedgerCutStore::claim() {
 
 bool LedgerCutStore::record(const std::function<Status()>& save, const LedgerJobChanges& changes) {
   const std::string label = "cutter " + cutter_ + ": batch " + std::to_string(claimed_->batch_id);
-  for (double wait_s = ledger_.heartbeat_s;; wait_s = std::min(2 * wait_s, ledger_.lease_s)) {
-    const Status written = journal_.change([&]() -> Result<LedgerJobChanges> {
-      if (Status saved = save(); !saved) return saved;
-      return changes;
-    });
-    if (written) return true;
-    if (!ledger::unreachable(written)) {
-      spdlog::error("{}: {}", label, written.error());
-      return false;
-    }
-    spdlog::warn("{}: the ledger is away, its state is written when it is back: {}", label, written.error());
-    if (!pause_(wait_s)) return false;
-  }
+  const Status written = journal_.change_once_reachable(
+      [&]() -> Result<LedgerJobChanges> {
+        if (Status saved = save(); !saved) return saved;
+        return changes;
+      },
+      pause_, keeper_.retry_s(), label);
+  if (!written && !ledger::unreachable(written)) spdlog::error("{}: {}", label, written.error());
+  return written.ok();
 }
 
 void LedgerCutStore::let_go() {

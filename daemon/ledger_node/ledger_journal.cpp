@@ -3,6 +3,8 @@
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
+#include "daemon/ledger/ledger_connection.hpp"
+
 namespace lastcut::daemon {
 
 LedgerJobChanges batch_job_changes(const ledger::BatchClaim& claim, JobStage stage, const std::string& reason) {
@@ -32,6 +34,21 @@ Status LedgerJournal::change(const Save& save) const {
   if (!saved) return saved.status();
   for (const LedgerJobChange& change : *saved) tell(change);
   return Status::success();
+}
+
+Status LedgerJournal::change_once_reachable(const Save& save, const Pause& pause, double retry_s,
+                                            const std::string& label) const {
+  bool waited = false;
+  while (true) {
+    const Status changed = change(save);
+    if (!ledger::unreachable(changed)) {
+      if (waited && changed) spdlog::info("{}: written in the ledger, now that it answers again", label);
+      return changed;
+    }
+    if (!waited) spdlog::warn("{}: kept until the ledger answers again: {}", label, changed.error());
+    waited = true;
+    if (!pause(retry_s)) return changed;
+  }
 }
 
 void LedgerJournal::tell(const LedgerJobChange& change) const {

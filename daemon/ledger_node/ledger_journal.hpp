@@ -47,8 +47,18 @@ class LedgerJournal {
   // `observer` may be null (no [status] configured); it must outlive the journal.
   explicit LedgerJournal(StatusObserver* observer) : observer_(observer) {}
 
+  // Waits up to the given seconds; false when the node stops meanwhile.
+  using Pause = std::function<bool(double seconds)>;
+
   // Saves through `save`, then logs and tells each change it returns, in order. Any thread.
   Status change(const Save& save) const;
+  // change() for finished work (computed molds, a nested batch, the end of a cut): while the
+  // ledger is away it is tried again every `retry_s` (kept in memory meanwhile, its lease still
+  // renewed by the caller) until the ledger answers: it lands, or the ledger refuses it (the lease
+  // was lost meanwhile: fencing decides), or `pause` says the node stops (the work is then
+  // dropped and redone elsewhere). The outage is one warning "<label>: ...", and one line when it
+  // lands after it.
+  Status change_once_reachable(const Save& save, const Pause& pause, double retry_s, const std::string& label) const;
 
  private:
   void tell(const LedgerJobChange& change) const;

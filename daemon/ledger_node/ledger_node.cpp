@@ -51,8 +51,11 @@ Status LedgerNode::open(const StationLinks& links) {
   keeper_ = std::make_unique<ledger::LeaseKeeper>(ledger().url, ledger().node, ledger().lease_s, ledger().heartbeat_s,
                                                   [](const std::string& line) { spdlog::warn("{}", line); });
   if (ledger().has_role("compute")) {
-    compute_store_ = std::make_unique<LedgerComputeStore>(ledger(), store_, *keeper_, [this] { return config(); },
-                                                          *journal_);
+    compute_store_ = std::make_unique<LedgerComputeStore>(
+        ledger(), store_, *keeper_, [this] { return config(); }, *journal_, [this](double seconds) {
+          pause(seconds);
+          return !stopping_.load();
+        });
   }
   open_cutters(cutters);
   return Status::success();
