@@ -232,6 +232,9 @@ class LedgerClient {
   // `grace_s`: a lease is taken back only once it has been expired this long, so a live node that
   // just regained the database renews it first (the nodes pass their heartbeat).
   Result<SweepOutcome> sweep_expired(int max_attempts, double grace_s = 0);
+  // Of `batch_ids`, those no batch row needs a folder for: no row, or the row `dissolved` (its
+  // nesting was refused or came back empty). The sweep of orphaned batch folders asks this.
+  Result<std::vector<long long>> batches_without_use(const std::vector<long long>& batch_ids);
 
   // A hide now lies on its cutter's table, `loaded`. Refused (one line) while a hide of that name is
   // loaded, being nested or used; a hide that was left `empty` may be loaded again.

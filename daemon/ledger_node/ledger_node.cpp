@@ -5,6 +5,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "daemon/ledger_node/orphan_sweep.hpp"
+
 namespace lastcut::daemon {
 
 LedgerNode::LedgerNode(const RunningConfig& config)
@@ -66,6 +68,12 @@ void LedgerNode::tick(Clock::time_point now) {
   if (now >= next_sweep_) {
     sweep();
     next_sweep_ = now + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(ledger().heartbeat_s));
+  }
+  if (now >= next_orphan_sweep_) {
+    // Orphans are rare and the shared folder may be large: once a minute is enough.
+    const Result<std::vector<std::string>> removed = remove_orphan_batch_folders(*client_, store_, kOrphanGrace_s);
+    note_trouble(orphan_trouble_, removed ? "" : removed.error(), "orphaned batch folders");
+    next_orphan_sweep_ = now + std::chrono::minutes(1);
   }
 }
 

@@ -16,7 +16,8 @@
 // Every claim holds a lease the LeaseKeeper thread renews; a state change is fenced by the lease's
 // epoch, so a node that lost a claim (a long pause, a cut network) only drops its work. The main
 // thread sweeps expired leases of any node each heartbeat: what a vanished node computed is
-// redone elsewhere, what it was sending is held, never re-sent (at most once, as on one station).
+// redone elsewhere, what it was sending is held, never re-sent (at most once, as on one station);
+// and once a minute the batch folders no ledger row uses any more (orphan_sweep.hpp).
 // The database away: intake leaves scans in the watch folder, workers retry, a cut in progress
 // finishes and its end is written when the ledger is back; each change of condition is one log line.
 #include <atomic>
@@ -114,6 +115,8 @@ class LedgerNode : public StationStore {
   // Main thread only.
   Clock::time_point next_sweep_{};
   std::string sweep_trouble_;
+  Clock::time_point next_orphan_sweep_{};
+  std::string orphan_trouble_;
   long long entered_ = 0, duplicates_ = 0, refused_ = 0;
 };
 

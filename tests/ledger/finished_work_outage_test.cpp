@@ -2,7 +2,8 @@
 // change_once_reachable): computed molds and a nested batch finished while the real PostgreSQL
 // server is stopped are written as soon as it is back, by the node that made them, without
 // waiting for a lease to run out; nothing is computed or nested twice (the ledger's events).
-// Scaled down from the defaults: lease 6 s, heartbeat 0.5 s, the server away 3 s.
+// Scaled down from the defaults: lease 6 s, heartbeat 0.5 s, the server away 3 s. And the sweep of
+// batch folders no row uses any more (daemon/ledger_node/orphan_sweep.hpp).
 #include <atomic>
 #include <chrono>
 #include <thread>
@@ -11,6 +12,7 @@
 #include "daemon/ledger/lease_keeper.hpp"
 #include "daemon/ledger_node/ledger_compute_store.hpp"
 #include "daemon/ledger_node/ledger_journal.hpp"
+#include "daemon/ledger_node/orphan_sweep.hpp"
 #include "engine/core/durable_file.hpp"
 #include "tests/ledger/ledger_fixture.hpp"
 
@@ -119,6 +121,34 @@ TEST_F(FinishedWorkOutageTest, MoldsAndANestingFinishedWhileTheLedgerIsAwayAreWr
   EXPECT_EQ(events("batched"), 1);
   EXPECT_EQ(events("nested"), 1);
   EXPECT_EQ(events("regrouped") + events("requeued"), 0);
+}
+
+TEST_F(FinishedWorkOutageTest, TheSweepRemovesOldBatchFoldersNoRowUsesAndKeepsTheRest) {
+  {
+    pqxx::connection connection(url_);
+    pqxx::work tx(connection);
+    tx.exec("INSERT INTO batches (id, cutter, material, state, created_by) VALUES"
+            " (1, 'cutter-1', 'calf', 'queued', 'node-a'), (2, 'cutter-1', 'calf', 'dissolved', 'node-a'),"
+            " (3, 'cutter-1', 'calf', 'nesting', 'node-a')");
+    tx.commit();
+  }
+  // 1 queued, 2 dissolved (a refused late nesting), 3 still nesting, 4 no row at all, and a
+  // scratch folder of a nesting in progress.
+  for (const std::string name : {"1", "2", "3", "4", "5.part-node-b-77-1"}) {
+    std::filesystem::create_directories(shared_root_ / "batches" / name);
+    ASSERT_TRUE(write_file_durably(shared_root_ / "batches" / name / "cut.hpgl", "IN;\n").ok());
+  }
+  auto sweeper = client("node-b");
+  ASSERT_TRUE(sweeper);
+  auto removed = daemon::remove_orphan_batch_folders(*sweeper, *shared_, 60);
+  ASSERT_TRUE(removed.ok()) << removed.error();
+  EXPECT_TRUE(removed->empty()) << "younger than the grace period";
+  removed = daemon::remove_orphan_batch_folders(*sweeper, *shared_, 0);
+  ASSERT_TRUE(removed.ok()) << removed.error();
+  EXPECT_EQ(*removed, (std::vector<std::string>{"2", "4"}));
+  for (const std::string kept : {"1", "3", "5.part-node-b-77-1"})
+    EXPECT_TRUE(std::filesystem::exists(shared_root_ / "batches" / kept)) << kept;
+  for (const std::string gone : {"2", "4"}) EXPECT_FALSE(std::filesystem::exists(shared_root_ / "batches" / gone)) << gone;
 }
 
 }  // namespace
