@@ -11,6 +11,7 @@
 #include "daemon/job/job_ticket.hpp"
 #include "daemon/ledger/lease_keeper.hpp"
 #include "daemon/ledger_node/ledger_compute_store.hpp"
+#include "daemon/ledger_node/ledger_cut_store.hpp"
 #include "daemon/ledger_node/ledger_journal.hpp"
 #include "daemon/ledger_node/orphan_sweep.hpp"
 #include "engine/core/durable_file.hpp"
@@ -50,11 +51,46 @@ class FinishedWorkOutageTest : public LedgerTest {
     entry.ticket = daemon::ticket_to_json(ticket).dump();
     ASSERT_TRUE(entering_->enqueue(entry).ok());
     keeper_ = std::make_unique<ledger::LeaseKeeper>(url_, "node-a", kLease_s, kHeartbeat_s, [](const std::string&) {});
-    store_ = std::make_unique<daemon::LedgerComputeStore>(
-        ledger_, *shared_, *keeper_, [this] { return settings_; }, journal_, [](double seconds) {
-          std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
-          return true;
-        });
+    store_ = std::make_unique<daemon::LedgerComputeStore>(ledger_, *shared_, *keeper_, [this] { return settings_; },
+                                                          journal_, [this](double seconds) { return pause(seconds); });
+  }
+
+  // How the node waits while finished work waits for the ledger: a real wait, and while a test
+  // holds the gate, no further try at all (the node as if paused).
+  bool pause(double seconds) {
+    std::this_thread::sleep_for(std::chrono::duration<double>(seconds));
+    while (gate_closed_) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    return true;
+  }
+
+  // Job 1's molds computed by node-a, then its batch nested (no outage): batch 1, queued for cutter-1.
+  void compute_and_nest() {
+    auto claimed = store_->claim("compute-1");
+    ASSERT_TRUE(claimed.ok() && claimed->has_value()) << claimed.error();
+    std::get<std::unique_ptr<daemon::MoldsClaim>>(**claimed)->finish(computed_molds());
+    claimed = store_->claim("compute-1");
+    ASSERT_TRUE(claimed.ok() && claimed->has_value()) << claimed.error();
+    auto& nest = std::get<std::unique_ptr<daemon::NestClaim>>(**claimed);
+    ASSERT_TRUE(write_file_durably(nest->work().batch_dir / "cut.hpgl", "IN;\n").ok());
+    nest->finish(nested_job_1());
+    ASSERT_EQ(query("SELECT state FROM batches WHERE id = 1"), "queued");
+  }
+
+  static daemon::JobMolds computed_molds() {
+    daemon::JobMolds made;
+    made.verdict = daemon::JobMolds::Verdict::Computed;
+    made.molds = 2;
+    made.pieces = 2;
+    made.report = nlohmann::json::object();
+    return made;
+  }
+  static daemon::NestResult nested_job_1() {
+    daemon::NestResult nested;
+    nested.placed = {"1"};
+    nested.cut_file = "cut.hpgl";
+    nested.pieces = 2;
+    nested.utilisation = 0.5;
+    return nested;
   }
 
   // Runs `finish` while the server is stopped for kOutage_s; the seconds it took after the restart.
@@ -85,6 +121,7 @@ class FinishedWorkOutageTest : public LedgerTest {
   daemon::LedgerJournal journal_{nullptr};
   std::unique_ptr<ledger::LeaseKeeper> keeper_;
   std::unique_ptr<daemon::LedgerComputeStore> store_;
+  std::atomic<bool> gate_closed_{false};
 };
 
 TEST_F(FinishedWorkOutageTest, MoldsAndANestingFinishedWhileTheLedgerIsAwayAreWrittenWhenItIsBack) {
@@ -92,12 +129,7 @@ TEST_F(FinishedWorkOutageTest, MoldsAndANestingFinishedWhileTheLedgerIsAwayAreWr
   ASSERT_TRUE(claimed.ok()) << claimed.error();
   ASSERT_TRUE(claimed->has_value());
   auto& molds = std::get<std::unique_ptr<daemon::MoldsClaim>>(**claimed);
-  daemon::JobMolds made;
-  made.verdict = daemon::JobMolds::Verdict::Computed;
-  made.molds = 2;
-  made.pieces = 2;
-  made.report = nlohmann::json::object();
-  const double molds_after_s = finish_through_an_outage([&] { molds->finish(made); });
+  const double molds_after_s = finish_through_an_outage([&] { molds->finish(computed_molds()); });
   EXPECT_LT(molds_after_s, kLease_s / 2) << "written by its node, not after its lease ran out";
   EXPECT_EQ(query("SELECT state FROM jobs WHERE id = 1"), "computed");
   EXPECT_EQ(events("claimed"), 1);
@@ -108,12 +140,7 @@ TEST_F(FinishedWorkOutageTest, MoldsAndANestingFinishedWhileTheLedgerIsAwayAreWr
   ASSERT_TRUE(claimed->has_value());
   auto& nest = std::get<std::unique_ptr<daemon::NestClaim>>(**claimed);
   ASSERT_TRUE(write_file_durably(nest->work().batch_dir / "cut.hpgl", "IN;\n").ok());
-  daemon::NestResult nested;
-  nested.placed = {"1"};
-  nested.cut_file = "cut.hpgl";
-  nested.pieces = 2;
-  nested.utilisation = 0.5;
-  const double nest_after_s = finish_through_an_outage([&] { nest->finish(nested); });
+  const double nest_after_s = finish_through_an_outage([&] { nest->finish(nested_job_1()); });
   EXPECT_LT(nest_after_s, kLease_s / 2);
   EXPECT_EQ(query("SELECT state FROM batches"), "queued");
   EXPECT_EQ(query("SELECT cut_file FROM batches"), "batches/1/cut.hpgl");
@@ -121,6 +148,60 @@ TEST_F(FinishedWorkOutageTest, MoldsAndANestingFinishedWhileTheLedgerIsAwayAreWr
   EXPECT_EQ(events("batched"), 1);
   EXPECT_EQ(events("nested"), 1);
   EXPECT_EQ(events("regrouped") + events("requeued"), 0);
+}
+
+TEST_F(FinishedWorkOutageTest, ACutThroughAnOutageOfMostOfTheLeaseIsMarkedCutAndNothingIsHeld) {
+  // The 25 s of a 30 s lease, scaled: 4 s (and the restart) of 6 s, node-b sweeping as
+  // soon as the server is back.
+  ASSERT_TRUE(entering_->register_node({"compute", "station"}, {"cutter-1"}, 3).ok());
+  ASSERT_NO_FATAL_FAILURE(compute_and_nest());
+  daemon::LedgerCutStore cutter("cutter-1", ledger_, *shared_, *keeper_, [this](double s) { return pause(s); }, journal_);
+  auto order = cutter.claim();
+  ASSERT_TRUE(order.ok() && order->has_value()) << order.error();
+  ASSERT_TRUE(cutter.mark_sending(**order).ok());
+  ASSERT_TRUE(server_.stop().empty());
+  std::this_thread::sleep_for(std::chrono::seconds(4));  // the cutter cuts meanwhile
+  ASSERT_TRUE(server_.start().empty());
+  auto sweeper = client("node-b");
+  ASSERT_TRUE(sweeper);
+  std::vector<long long> held;
+  for (int i = 0; i < 20; ++i) {
+    auto swept = sweeper->sweep_expired(3, kHeartbeat_s);
+    if (swept) held.insert(held.end(), swept->batches_held.begin(), swept->batches_held.end());
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  EXPECT_TRUE(held.empty()) << "the station was alive all along";
+  EXPECT_EQ(cutter.record_end(**order, daemon::CutEnd::Cut, "", {}), daemon::CutEnd::Cut);
+  EXPECT_EQ(query("SELECT state FROM batches WHERE id = 1"), "cut");
+  EXPECT_EQ(query("SELECT state FROM jobs WHERE id = 1"), "done");
+  EXPECT_EQ(events("held"), 0);
+  EXPECT_EQ(events("cut"), 1);
+}
+
+TEST_F(FinishedWorkOutageTest, MoldsFinishedAfterTheirLeaseWasTakenOverAreRefusedAndComputedOnce) {
+  // The server away longer than the lease: node-b's sweep takes the job back and node-b claims it
+  // before node-a's late result reaches the ledger (the gate holds node-a's retries meanwhile).
+  auto claimed = store_->claim("compute-1");
+  ASSERT_TRUE(claimed.ok() && claimed->has_value()) << claimed.error();
+  auto& molds = std::get<std::unique_ptr<daemon::MoldsClaim>>(**claimed);
+  gate_closed_ = true;
+  ASSERT_TRUE(server_.stop().empty());
+  std::thread late([&] { molds->finish(computed_molds()); });
+  std::this_thread::sleep_for(std::chrono::duration<double>(kLease_s + 2 * kHeartbeat_s));
+  ASSERT_TRUE(server_.start().empty());
+  auto other = client("node-b");
+  ASSERT_TRUE(other);
+  auto swept = other->sweep_expired(3, kHeartbeat_s);
+  ASSERT_TRUE(swept.ok()) << swept.error();
+  EXPECT_EQ(swept->jobs_requeued, std::vector<long long>{1});
+  auto taken = other->claim_job(kLease_s);
+  ASSERT_TRUE(taken.ok() && taken->has_value()) << taken.error();
+  gate_closed_ = false;
+  late.join();
+  EXPECT_EQ(query("SELECT state FROM jobs WHERE id = 1"), "computing") << "node-a's late result was refused";
+  ASSERT_TRUE(other->mark_computed((*taken)->lease, 2).ok());
+  EXPECT_EQ(events("computed"), 1);
+  EXPECT_EQ(events("claimed"), 2);
 }
 
 TEST_F(FinishedWorkOutageTest, TheSweepRemovesOldBatchFoldersNoRowUsesAndKeepsTheRest) {
