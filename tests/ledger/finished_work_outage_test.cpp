@@ -16,6 +16,7 @@
 #include "daemon/ledger_node/orphan_sweep.hpp"
 #include "engine/core/durable_file.hpp"
 #include "tests/ledger/ledger_fixture.hpp"
+#include "tests/station/log_lines.hpp"
 
 namespace lastcut::test {
 namespace {
@@ -224,9 +225,11 @@ TEST_F(FinishedWorkOutageTest, TheSweepRemovesOldBatchFoldersNoRowUsesAndKeepsTh
   auto removed = daemon::remove_orphan_batch_folders(*sweeper, *shared_, 60);
   ASSERT_TRUE(removed.ok()) << removed.error();
   EXPECT_TRUE(removed->empty()) << "younger than the grace period";
+  daemon::testing::LogLines log;
   removed = daemon::remove_orphan_batch_folders(*sweeper, *shared_, 0);
   ASSERT_TRUE(removed.ok()) << removed.error();
   EXPECT_EQ(*removed, (std::vector<std::string>{"2", "4"}));
+  EXPECT_EQ(log.count("removed: no batch in the ledger uses it"), 2) << log.text();
   for (const std::string kept : {"1", "3", "5.part-node-b-77-1"})
     EXPECT_TRUE(std::filesystem::exists(shared_root_ / "batches" / kept)) << kept;
   for (const std::string gone : {"2", "4"}) EXPECT_FALSE(std::filesystem::exists(shared_root_ / "batches" / gone)) << gone;
