@@ -91,14 +91,11 @@ Result<SweepOutcome> LedgerClient::sweep_expired(int max_attempts, double grace_
 Result<std::vector<long long>> LedgerClient::batches_without_use(const std::vector<long long>& batch_ids) {
   using Ids = std::vector<long long>;
   return transact<Ids>("looking up batch folders", [&](pqxx::work& tx) -> Result<Ids> {
-    std::string array = "{";
-    for (std::size_t i = 0; i < batch_ids.size(); ++i) array += (i ? "," : "") + std::to_string(batch_ids[i]);
-    array += "}";
     Ids unused;
     for (const pqxx::row& r : tx.exec_params(
              "SELECT u.id FROM unnest($1::bigint[]) AS u(id)"
              " WHERE NOT EXISTS (SELECT 1 FROM batches b WHERE b.id = u.id AND b.state <> 'dissolved') ORDER BY u.id",
-             array))
+             id_array(batch_ids)))
       unused.push_back(r[0].as<long long>());
     return unused;
   });

@@ -50,13 +50,18 @@ void end_job_claim(const LedgerJournal& journal, const LedgerJournal::Pause& pau
                    const ledger::JobClaim& claim, const std::string& label, const std::function<Status()>& save,
                    JobStage stage, const std::string& reason, const std::string& note = "") {
   const Status changed = journal.change_once_reachable(
-      [&]() -> Result<LedgerJobChanges> {
-        if (Status saved = save(); !saved) return saved;
-        return LedgerJobChanges{{claim.job_id, claim.scan.scan_name, claim.scan.ticket, 0, stage, reason, note}};
-      },
-      pause, keeper.retry_s(), label);
+      save_then(save, {{claim.job_id, claim.scan.scan_name, claim.scan.ticket, 0, stage, reason, note}}), pause,
+      keeper.retry_s(), label);
   keeper.drop(claim.lease);
   if (!changed) spdlog::warn("{}: {}; the work is dropped", label, changed.error());
+}
+
+// A job claim given up before there is anything to tell the ledger: its lease runs out and the job
+// is computed again (by this node or another).
+void drop_job_claim(ledger::LeaseKeeper& keeper, const ledger::JobClaim& claim, const std::string& label,
+                    const std::string& why) {
+  keeper.drop(claim.lease);
+  spdlog::warn("{}: {}; the work is dropped", label, why);
 }
 
 class LedgerMoldsClaim : public MoldsClaim {
@@ -95,10 +100,7 @@ class LedgerMoldsClaim : public MoldsClaim {
               const std::string& note = "") {
     end_job_claim(context_.journal, context_.pause, context_.keeper, claim_, work_.label, save, stage, reason, note);
   }
-  // Nothing to tell the ledger: its lease runs out and the job is computed again.
-  void drop(const std::string& why) {
-    end_job_claim(context_.journal, context_.pause, context_.keeper, claim_, work_.label, [&] { return Status::failure(why); }, JobStage::Claimed, "");
-  }
+  void drop(const std::string& why) { drop_job_claim(context_.keeper, claim_, work_.label, why); }
 
   ClaimContext context_;
   ledger::JobClaim claim_;
@@ -143,16 +145,13 @@ class LedgerNestClaim : public NestClaim {
       }
     }
     std::size_t kept = 0;
+    LedgerJobChanges changes = job_outcome_changes(nested, kept);
     const Status marked = context_.journal.change_once_reachable(
-        [&]() -> Result<LedgerJobChanges> {
-          if (Status saved = context_.client.mark_nested(claim_.lease, nested); !saved) return saved;
-          kept = 0;
-          return job_outcome_changes(nested, kept);
-        },
+        save_then([&] { return context_.client.mark_nested(claim_.lease, nested); }, std::move(changes)),
         context_.pause, context_.keeper.retry_s(), work_.label);
     context_.keeper.drop(claim_.lease);
     if (!marked) {
-      // Its published folder, if any, is pointed to by no row: the sweep removes it (shared_store.hpp).
+      // Its published folder, if any, is pointed to by no row: the orphan sweep removes it (orphan_sweep.hpp).
       spdlog::warn("{}: {}; the nesting is dropped", work_.label, marked.error());
       return;
     }
@@ -277,7 +276,7 @@ std::unique_ptr<MoldsClaim> LedgerComputeStore::open_job(ledger::LedgerClient& c
   }
   auto scratch = shared_.scratch_for(shared_.job_dir(claim.job_folder), ledger_.node);
   if (!scratch) {
-    end_job_claim(journal_, pause_, keeper_, claim, label, [&] { return scratch.status(); }, JobStage::Claimed, "");
+    drop_job_claim(keeper_, claim, label, scratch.error());
     return nullptr;
   }
   copy_references(shared_.references(claim.scan.scan_sha256), *scratch);

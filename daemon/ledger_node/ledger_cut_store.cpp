@@ -33,12 +33,7 @@ Result<std::optional<CutOrder>> LedgerCutStore::claim() {
 
 bool LedgerCutStore::record(const std::function<Status()>& save, const LedgerJobChanges& changes) {
   const std::string label = "cutter " + cutter_ + ": batch " + std::to_string(claimed_->batch_id);
-  const Status written = journal_.change_once_reachable(
-      [&]() -> Result<LedgerJobChanges> {
-        if (Status saved = save(); !saved) return saved;
-        return changes;
-      },
-      pause_, keeper_.retry_s(), label);
+  const Status written = journal_.change_once_reachable(save_then(save, changes), pause_, keeper_.retry_s(), label);
   if (!written && !ledger::unreachable(written)) spdlog::error("{}: {}", label, written.error());
   return written.ok();
 }

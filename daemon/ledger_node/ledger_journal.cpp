@@ -29,6 +29,13 @@ Result<JobTicket> ticket_from_ledger(const std::string& text) {
   }
 }
 
+LedgerJournal::Save save_then(std::function<Status()> call, LedgerJobChanges changes) {
+  return [call = std::move(call), changes = std::move(changes)]() -> Result<LedgerJobChanges> {
+    if (Status saved = call(); !saved) return saved;
+    return changes;
+  };
+}
+
 Status LedgerJournal::change(const Save& save) const {
   Result<LedgerJobChanges> saved = save();
   if (!saved) return saved.status();

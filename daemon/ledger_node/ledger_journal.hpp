@@ -66,4 +66,7 @@ class LedgerJournal {
   StatusObserver* observer_;
 };
 
+// A Save of a ledger call that answers only yes or no: `changes` once it is taken.
+LedgerJournal::Save save_then(std::function<Status()> call, LedgerJobChanges changes);
+
 }  // namespace lastcut::daemon

@@ -118,22 +118,22 @@ bool set_batch_stage(const Spool& spool, BatchState& batch, BatchStage stage, co
                              ": " + written.error());
     return false;
   }
-  const bool on_hide = !batch.hide_file.empty();
-  for (const std::string& id : batch.job_ids) {
-    auto state = spool.read_state(JobFolder::Work, id);
-    if (!state) continue;
-    if (stage == BatchStage::Nesting) {
-      state->batch_id = batch.id;
-      state->reason.clear();  // no longer waiting for a hide
-      set_job_stage(spool, *state, JobStage::Batched, std::string(on_hide ? "nested on " : "nested in ") + batch_label(batch),
-                    "not part of " + batch_label(batch) + ": state not written");
-      continue;
+  // Only nesting, queued and sending change the stage of jobs that stay in work/.
+  const bool nesting = stage == BatchStage::Nesting;
+  if (nesting || stage == BatchStage::Queued || stage == BatchStage::Sending) {
+    const JobStage follows = stage == BatchStage::Sending ? JobStage::Sending : JobStage::Batched;
+    const std::string joined = (batch.hide_file.empty() ? "nested in " : "nested on ") + batch_label(batch);
+    for (const std::string& id : batch.job_ids) {
+      auto state = spool.read_state(JobFolder::Work, id);
+      if (!state) continue;
+      if (nesting) {
+        state->batch_id = batch.id;
+        state->reason.clear();  // no longer waiting for a hide
+        set_job_stage(spool, *state, follows, joined, "not part of " + batch_label(batch) + ": state not written");
+      } else if (state->batch_id == batch.id && state->stage != follows) {
+        set_job_stage(spool, *state, follows, note);
+      }
     }
-    const JobStage follows = stage == BatchStage::Queued ? JobStage::Batched : JobStage::Sending;
-    if ((stage != BatchStage::Queued && stage != BatchStage::Sending) || state->batch_id != batch.id ||
-        state->stage == follows)
-      continue;
-    set_job_stage(spool, *state, follows, note);
   }
   if (line == BatchLine::Logged) {
     if (end) spdlog::warn("{}: {}{}", batch_label(batch), note, stage == BatchStage::Empty ? "; nothing is cut" : "");

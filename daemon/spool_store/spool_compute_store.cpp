@@ -188,9 +188,8 @@ std::unique_ptr<MoldsClaim> SpoolComputeStore::claim_job(const std::string& job_
 std::unique_ptr<NestClaim> SpoolComputeStore::claim_batch(const std::string& batch_id) {
   auto batch = spool_.read_batch(batch_id);
   if (!batch || batch->stage != BatchStage::Nesting || !batch->stage_problem.empty()) return nullptr;
-  const bool on_hide = !batch->hide_file.empty();
   NestWork work;
-  work.label = on_hide ? "hide " + batch->hide_id + " (batch " + batch_id + ")" : "batch " + batch_id;
+  work.label = batch_label(*batch);
   work.material = batch->material;
   work.cutter = batch->cutter;
   work.batch_dir = spool_.batch_dir(batch_id);
