@@ -25,6 +25,7 @@ struct FlattenArguments {
   std::string unit = "auto";
   std::string split = "auto";  // which lengthwise plane: auto (thesis 3.1) or expert (thesis 2.1)
   bool no_segment = false;
+  bool keep_bad_molds = false;  // write molds that fail the quality gate (report.json marks them)
   double allowance_mm = 0.0;
   std::optional<double> lasting_mm, seam_mm, top_mm;  // per-edge allowances (docs/mold-allowances.md)
   std::string balance_notches = "off";                // off | SPACING | SEAM,FEATHER (mm)
@@ -104,6 +105,13 @@ int run_flatten(const FlattenArguments& arguments) {
   }
   try {
     const ScanResult result = scan_to_molds(arguments.scan, options_from(arguments));
+    // A mold beyond the gate is never a result by default: a script that only checks for files
+    // must not find any. The reason is the same line lastcutd holds such a job with.
+    const bool passed = result.quality.passed();
+    if (!passed && !arguments.keep_bad_molds) {
+      print_error(result.quality.reason() + " (no molds written; --keep-bad-molds writes them, marked in report.json)");
+      return 3;
+    }
     write_scan_outputs(result, arguments.out_dir);
     for (const HoleRepair& repair : result.repairs)
       std::printf("repaired: scan hole %.1f mm across closed (%s patch, %d vertices)\n", repair.across_mm,
@@ -116,7 +124,9 @@ int run_flatten(const FlattenArguments& arguments) {
                   m.boundary_error_pct, m.flipped_triangles, segment.flatten.seconds_total);
     }
     std::printf("molds, meshes and report.json in %s (%.2f s)\n", arguments.out_dir.c_str(), result.seconds_total);
-    return 0;
+    if (passed) return 0;
+    print_error(result.quality.reason() + " (molds written anyway: not for cutting; report.json quality.passed is false)");
+    return 3;
   } catch (const EngineError& error) {
     print_error(error.what());
   } catch (const std::bad_alloc&) {
@@ -142,6 +152,8 @@ void add_flatten_command(CLI::App& app, int& exit_code) {
                       "(through the heel middle, the second toe and the top centre)")
       ->capture_default_str();
   command->add_flag("--no-segment", arguments->no_segment, "the scan is one open patch: flatten it as it is");
+  command->add_flag("--keep-bad-molds", arguments->keep_bad_molds,
+                    "write the molds even when they fail the quality gate (exit status 3 all the same)");
   command->add_option("--allowance", arguments->allowance_mm, "outward margin added around each mold, mm")
       ->capture_default_str();
   command->add_option("--lasting", arguments->lasting_mm, "lasting margin along the feather line, mm (per-edge allowances)");

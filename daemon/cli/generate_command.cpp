@@ -27,6 +27,7 @@ struct GenerateOptions {
   bool random_pose = false;
   uint64_t seed = 1;
   std::string surface = "legacy";
+  std::string noise_kind = "normal";
 };
 
 bool has_mesh_extension(const std::string& path) {
@@ -62,7 +63,10 @@ int run_generate(const GenerateOptions& options) {
     params.holes = options.holes;
     params.random_pose = options.random_pose;
     params.seed = options.seed;
-    params.surface = options.surface == "bezier" ? LastSurface::Bezier : LastSurface::Remeshed;  // legacy, remeshed
+    params.noise_kind = options.noise_kind == "isotropic" ? ScanNoise::Isotropic : ScanNoise::AlongNormal;
+    params.surface = options.surface == "bezier"   ? LastSurface::Bezier
+                     : options.surface == "lofted" ? LastSurface::Lofted
+                                                   : LastSurface::Remeshed;  // legacy, remeshed
     const GeneratedLast last = generate_last(params);
     write_mesh(options.output, last.mesh);
     if (!options.pose_output.empty()) write_pose(options.pose_output, last, options);
@@ -89,7 +93,7 @@ void add_generate_command(CLI::App& app, int& exit_code) {
   command->add_option("--triangles", options->triangles, "Triangle count of the mesh")
       ->check(CLI::Range(2000, 2000000))
       ->capture_default_str();
-  command->add_option("--noise", options->noise_mm, "Scanner noise along the normals, Gaussian sigma in mm")
+  command->add_option("--noise", options->noise_mm, "Scanner noise, Gaussian sigma in mm (see --noise-kind)")
       ->check(CLI::Range(0.0, 2.0))
       ->capture_default_str();
   command->add_option("--holes", options->holes, "Small scan holes to punch (never on the top cut)")
@@ -97,8 +101,14 @@ void add_generate_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   command->add_flag("--random-pose", options->random_pose, "Rotate and move the scan arbitrarily");
   command->add_option("--seed", options->seed, "Random seed: the same seed gives the same file")->capture_default_str();
-  command->add_option("--surface", options->surface, "legacy (remeshed implicit solid; 'remeshed' is the same) or bezier (C2 Bezier surface, sharp flat top cut)")
-      ->check(CLI::IsMember({"bezier", "legacy", "remeshed"}))
+  command->add_option("--noise-kind", options->noise_kind,
+                      "normal (each vertex moved along its normal) or isotropic (in all three directions, as scanners err)")
+      ->check(CLI::IsMember({"normal", "isotropic"}))
+      ->capture_default_str();
+  command->add_option("--surface", options->surface,
+                      "legacy (remeshed implicit solid; 'remeshed' is the same), bezier (C2 Bezier surface, sharp flat top "
+                      "cut) or lofted (rings across the last, slivers at the heel and toe poles, as scanner exports mesh)")
+      ->check(CLI::IsMember({"bezier", "legacy", "remeshed", "lofted"}))
       ->capture_default_str();
   command->add_option("--pose-out", options->pose_output, "Also write the canonical-to-scan transform as JSON");
   command->callback([options, &exit_code] { exit_code = run_generate(*options); });

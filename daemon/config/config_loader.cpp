@@ -239,6 +239,22 @@ void read_review(TableReader& root, DaemonConfig& config, std::vector<std::strin
   review.reject_unknown();
 }
 
+// [quality]: the mold quality gate's limits (engine/scan/mold_quality_limits.hpp). The ranges keep
+// an operator from switching the gate off by a typo: a limit that lets everything through is refused.
+void read_quality(TableReader& root, DaemonConfig& config, std::vector<std::string>& errors) {
+  const toml::table* table = root.subtable("quality", false);
+  if (!table) return;
+  TableReader quality(*table, "quality", errors);
+  MoldQualityLimits& limits = config.quality;
+  quality.number("max_d_angle", limits.max_D_angle, 2.0, 10.0);
+  quality.number("max_d_area", limits.max_D_area, 2.0, 10.0);
+  quality.number("max_stretch", limits.max_stretch, 1.0, 100.0);
+  quality.number("max_p95_stretch", limits.max_p95_stretch, 1.0, 100.0);
+  quality.boolean("require_converged", limits.require_converged);
+  quality.number("max_length_excess_pct", limits.max_length_excess_pct, 0.0, 100.0);
+  quality.reject_unknown();
+}
+
 void read_log(TableReader& root, DaemonConfig& config, std::vector<std::string>& errors) {
   const toml::table* table = root.subtable("log", false);
   if (!table) return;
@@ -366,6 +382,7 @@ ConfigLoadResult load_daemon_config(const std::filesystem::path& file) {
     read_materials(reader, config, errors);
     read_cutters(reader, base, config, errors);
     read_review(reader, config, errors);
+    read_quality(reader, config, errors);
     read_log(reader, config, errors);
     read_status(reader, base, config, errors);
     if (const toml::table* ledger = reader.subtable("ledger", false)) read_ledger_table(*ledger, base, config.ledger, errors);

@@ -9,6 +9,7 @@
 
 #include "daemon/config/ledger_config.hpp"
 #include "drivers/cutter_settings.hpp"
+#include "engine/scan/mold_quality_limits.hpp"
 
 namespace lastcut::daemon {
 
@@ -116,6 +117,7 @@ struct DaemonConfig {
   std::map<std::string, MaterialConfig> materials;
   std::map<std::string, CutterSection> cutters;
   ReviewConfig review;
+  MoldQualityLimits quality;  // [quality]: the gate every half's mold passes before it may be nested (docs/quality-gate.md)
   LogConfig log;
   StatusConfig status;
   std::optional<LedgerConfig> ledger;  // [ledger]: several nodes share one PostgreSQL job ledger

@@ -54,6 +54,19 @@ void TableReader::number(const std::string& key, double& value, double min_value
   value = v;
 }
 
+void TableReader::boolean(const std::string& key, bool& value, bool required) {
+  const toml::node* found = node(key);
+  if (!found) {
+    if (required) errors_.push_back(key_path(key) + ": missing (required)");
+    return;
+  }
+  if (!found->is_boolean()) {
+    errors_.push_back(where(key_path(key), *found) + ": must be true or false");
+    return;
+  }
+  value = *found->value<bool>();
+}
+
 void TableReader::integer(const std::string& key, int& value, int min_value, int max_value, bool required) {
   const toml::node* found = node(key);
   if (!found) {

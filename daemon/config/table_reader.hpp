@@ -34,6 +34,7 @@ class TableReader {
   void text(const std::string& key, std::string& value, bool required = false);
   void number(const std::string& key, double& value, double min_value, double max_value, bool required = false);
   void integer(const std::string& key, int& value, int min_value, int max_value, bool required = false);
+  void boolean(const std::string& key, bool& value, bool required = false);
   const toml::table* subtable(const std::string& key, bool required);
 
   // Reports every key of the table that no read asked for.

@@ -88,7 +88,8 @@ class LedgerMoldsClaim : public MoldsClaim {
         !published) {
       return drop("molds made but not published: " + published.error());
     }
-    if (molds.verdict == JobMolds::Verdict::HeldForReview) {
+    // The ledger computes a requeued job again in either case (LedgerClient::requeue_held).
+    if (molds.verdict == JobMolds::Verdict::HeldForReview || molds.verdict == JobMolds::Verdict::HeldBadMolds) {
       return finish([&] { return client.mark_held(lease, molds.reason); }, JobStage::Held, molds.reason);
     }
     finish([&] { return client.mark_computed(lease, molds.pieces); }, JobStage::Computed, "",

@@ -40,14 +40,18 @@ inline std::string unexpected_failure_reason(const std::exception& error) {
 struct MoldsMade {
   int piece_count = 0;        // molds made (before quantity)
   nlohmann::json measures;    // the engine's scan report, as written to molds/report.json
+  std::string quality_hold;   // "" when every half passed the quality gate; else its one-line reason
 };
 
 // Computes the molds of the scan into job_dir/molds/ and its nest items into job_dir/items.json:
 // `quantity` copies of each half, labelled for the cutting room, with a mirrored twin per half
 // when the ticket asks for a pair. The ticket's side left|right names a symmetric last's halves.
 // Scan holes up to max_hole_across_mm are closed. A failure is one line in an operator's words.
+// Molds beyond the quality gate's limits are written to molds/ (report and stretch pictures) but
+// get no items.json, so they can never be nested; quality_hold says why.
 Result<MoldsMade> compute_molds(const std::filesystem::path& scan, const std::filesystem::path& job_dir,
-                                const JobTicket& ticket, const MoldOptions& mold_options, double max_hole_across_mm);
+                                const JobTicket& ticket, const MoldOptions& mold_options, double max_hole_across_mm,
+                                const MoldQualityLimits& quality);
 
 struct ReferenceCheck {
   nlohmann::json comparisons = nlohmann::json::object();  // mold name -> compare JSON (engine/compare/compare_report.hpp)

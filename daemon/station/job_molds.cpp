@@ -16,11 +16,21 @@ JobMolds make_job_molds(const std::filesystem::path& scan, const std::filesystem
   const auto start = std::chrono::steady_clock::now();
   monitor.begin(worker, task, settings.jobs.compute_timeout_s);
   const Result<MoldsMade> made = compute_molds(scan, job_dir, ticket, job_mold_options(ticket, settings.jobs),
-                                               settings.jobs.max_hole_across_mm);
+                                               settings.jobs.max_hole_across_mm, settings.quality);
   molds.took_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!made) {
     monitor.end(worker);
     molds.reason = made.error();
+    return molds;
+  }
+  if (!made->quality_hold.empty()) {
+    monitor.end(worker);
+    molds.verdict = JobMolds::Verdict::HeldBadMolds;
+    molds.reason = made->quality_hold + "; stretch pictures in molds/";
+    molds.report = {{"molds", made->piece_count},
+                    {"pieces", 0},
+                    {"measures", made->measures},
+                    {"timings_s", {{"molds", molds.took_s}}}};
     return molds;
   }
   const Result<ReferenceCheck> checked = check_against_references(job_dir, ticket, settings.review.corner_tolerance_mm);

@@ -19,11 +19,12 @@ namespace lastcut::daemon {
 struct JobMolds {
   enum class Verdict {
     Failed,         // bad input or a step that could not be done: `reason` says why
+    HeldBadMolds,   // molds made but beyond the quality gate: never nested; a requeue computes them again
     HeldForReview,  // molds made, but a corner lies beyond the tolerance from its reference pattern
     Computed,       // molds made and, where references were named, within tolerance
   };
   Verdict verdict = Verdict::Failed;
-  std::string reason;     // Failed: why; HeldForReview: the worst corner
+  std::string reason;     // Failed: why; HeldBadMolds: the limits crossed; HeldForReview: the worst corner
   int molds = 0;          // molds made
   int pieces = 0;         // molds x the ticket's quantity: what batching counts
   double took_s = 0;      // the engine's time for the molds

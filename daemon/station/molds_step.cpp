@@ -39,23 +39,33 @@ std::vector<NestItem> job_items(const ScanResult& result, const JobTicket& ticke
 }  // namespace
 
 Result<MoldsMade> compute_molds(const std::filesystem::path& scan, const std::filesystem::path& job_dir,
-                                const JobTicket& ticket, const MoldOptions& mold_options, double max_hole_across_mm) {
+                                const JobTicket& ticket, const MoldOptions& mold_options, double max_hole_across_mm,
+                                const MoldQualityLimits& quality) {
   try {
+    // A stale items.json (from a computation before a requeue) must not outlive molds that now
+    // fail the gate: only this computation's molds may be nested.
+    std::error_code ignored;  // absent is the usual case; a file that cannot go fails the write below
+    std::filesystem::remove(job_dir / kItemsFile, ignored);
     ScanOptions options;
     options.mold = mold_options;
     if (ticket.split == "expert") options.segment_options.split_rule = SplitRule::Expert;
     options.segment_options.max_hole_fill_diameter_mm = max_hole_across_mm;
     if (ticket.side == "left") options.side = FootSide::Left;
     if (ticket.side == "right") options.side = FootSide::Right;
+    options.quality = quality;
     const ScanResult result = scan_to_molds(scan, options);
     if (result.segments.empty()) return Status::failure("no mold could be made from the scan");
     MoldsMade made;
     made.measures = write_scan_outputs(result, job_dir / kMoldsFolder);
+    made.piece_count = static_cast<int>(result.segments.size());
+    if (!result.quality.passed()) {
+      made.quality_hold = result.quality.reason();
+      return made;
+    }
     // A sidecar side that contradicts the scan is among result.warnings (orient_last), in measures.
     const std::vector<NestItem> items = job_items(result, ticket, scan.filename().string());
     if (Status written = write_file_durably(job_dir / kItemsFile, items_to_json(items).dump() + "\n"); !written)
       return written.with_context("molds made but not saved: ");
-    made.piece_count = static_cast<int>(result.segments.size());
     return made;
   } catch (const EngineError& error) {
     return Status::failure(error.what());

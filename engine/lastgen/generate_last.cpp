@@ -6,6 +6,7 @@
 
 #include "engine/lastgen/bezier_last.hpp"
 #include "engine/lastgen/last_shape.hpp"
+#include "engine/lastgen/lofted_last.hpp"
 #include "engine/lastgen/scan_artifacts.hpp"
 #include "engine/mesh/isotropic_remesh.hpp"
 #include "engine/mesh/marching_tetrahedra.hpp"
@@ -69,8 +70,9 @@ GeneratedLast generate_last(const LastParams& params) {
   validate(params);
   const LastShape shape(params);  // medial side +Y
   GeneratedLast result;
-  result.mesh = params.surface == LastSurface::Bezier ? bezier_last_surface(shape, params)
-                                                      : remeshed_surface(shape, params.length_mm, params.target_triangles);
+  result.mesh = params.surface == LastSurface::Bezier   ? bezier_last_surface(shape, params)
+                : params.surface == LastSurface::Lofted ? lofted_last_surface(shape, params.target_triangles)
+                                                        : remeshed_surface(shape, params.length_mm, params.target_triangles);
   result.canonical_to_scan = Eigen::Affine3d::Identity();
 
   // Separate streams, so that asking for holes does not move the noise and vice versa.
@@ -84,7 +86,8 @@ GeneratedLast generate_last(const LastParams& params) {
   };
   punch_holes(result.mesh, params.holes, hole_allowed, hole_random);
   if (params.side == FootSide::Left) mirror_y(result.mesh);
-  add_normal_noise(result.mesh, params.noise_mm, noise_random);
+  if (params.noise_kind == ScanNoise::Isotropic) add_isotropic_noise(result.mesh, params.noise_mm, noise_random);
+  else add_normal_noise(result.mesh, params.noise_mm, noise_random);
   if (params.random_pose) {
     result.canonical_to_scan = random_pose(pose_random);
     transform_vertices(result.mesh, result.canonical_to_scan);

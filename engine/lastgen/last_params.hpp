@@ -16,7 +16,14 @@ namespace lastcut {
 // control mesh with a sharp, flat top cut (engine/lastgen/bezier_last.hpp; `--surface bezier`). Bezier is
 // not yet the default: with it flipped, one lastgen test (triangle areas 16.7 : 1 at 5000 triangles, asked
 // < 8) and four scan and command-line tests still fail (docs/subdivision.md, "The sample last").
-enum class LastSurface { Remeshed, Bezier };
+// LastSurface::Lofted is a scanner export's or CAD mesher's triangulation rather than a good one:
+// rings of vertices across the last, joined by long thin triangles, and a fan of slivers at the
+// heel and toe poles (engine/lastgen/lofted_last.hpp).
+enum class LastSurface { Remeshed, Bezier, Lofted };
+
+// How scanner noise moves a vertex: along its normal (an even error in depth), or in all three
+// directions (a point error, as structured-light and laser scanners make it).
+enum class ScanNoise { AlongNormal, Isotropic };
 
 struct LastParams {
   double length_mm = 270;       // heel back to toe tip
@@ -29,7 +36,8 @@ struct LastParams {
   bool symmetric = false;       // a straight last for either foot: the plan outline's medial side mirrored
                                 // onto the lateral one, toe and heel centred on the long axis
   int target_triangles = 50000; // the result has this many (Bezier: rounded down to even; legacy: to within 2)
-  double noise_mm = 0.0;        // scanner noise, Gaussian sigma along the vertex normal
+  double noise_mm = 0.0;        // scanner noise, Gaussian sigma (along the normal, or per axis)
+  ScanNoise noise_kind = ScanNoise::AlongNormal;
   int holes = 0;                // small scan holes (a few mm across), never on the top cut
   bool random_pose = false;     // arbitrary rotation + translation of the whole scan
   uint64_t seed = 1;

@@ -44,6 +44,12 @@ void add_normal_noise(TriMesh& mesh, double sigma_mm, std::mt19937_64& random) {
   for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) mesh.V.row(v) += sigma_mm * standard_normal(random) * normals.row(v);
 }
 
+void add_isotropic_noise(TriMesh& mesh, double sigma_mm, std::mt19937_64& random) {
+  if (sigma_mm <= 0.0) return;
+  for (Eigen::Index v = 0; v < mesh.V.rows(); ++v)
+    for (int axis = 0; axis < 3; ++axis) mesh.V(v, axis) += sigma_mm * standard_normal(random);
+}
+
 void punch_holes(TriMesh& mesh, int count, const std::function<bool(const Eigen::Vector3d&)>& allowed,
                  std::mt19937_64& random) {
   if (count <= 0) return;

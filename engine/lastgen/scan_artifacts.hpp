@@ -1,5 +1,6 @@
 #pragma once
-// What a 3D scanner adds to a perfect last: Gaussian noise along the surface normal, small holes
+// What a 3D scanner adds to a perfect last: Gaussian noise (along the surface normal or in all
+// three directions), small holes
 // where the scanner saw nothing, and an arbitrary pose (the last lies anywhere on the scanner's
 // turntable). All draws come from the caller's generator, so a seed reproduces the scan.
 #include <Eigen/Geometry>
@@ -12,6 +13,9 @@ namespace lastcut {
 
 // Moves every vertex along its area-weighted normal by N(0, sigma_mm^2).
 void add_normal_noise(TriMesh& mesh, double sigma_mm, std::mt19937_64& random);
+// Moves every vertex by N(0, sigma_mm^2) in each of x, y and z, as a scanner's point error is:
+// the tangential part does not change the surface but tilts and squeezes thin triangles.
+void add_isotropic_noise(TriMesh& mesh, double sigma_mm, std::mt19937_64& random);
 
 // Removes `count` small disks of triangles (the k-ring around a random vertex, k chosen so that
 // the hole is 2..8 mm across), at least 25 mm apart, only around vertices `allowed` accepts.

@@ -93,6 +93,7 @@ nlohmann::json scan_report_json(const ScanResult& result) {
                                  {"patch", repair.fan ? "fan" : "faired rings"}});
   report["side"] = result.side ? nlohmann::json(std::string(to_string(*result.side))) : nlohmann::json();
   for (const auto& segment : result.segments) report["segments"].push_back(segment_json(segment));
+  report["quality"] = result.quality.to_json();
   report["profile"] = profile_json(result.profile);
   return report;
 }

@@ -25,6 +25,7 @@ nlohmann::json write_scan_outputs(const ScanResult& result, const std::filesyste
 //  "area_2d_mm2", "area_error_pct", "boundary_3d_mm", "boundary_2d_mm", "boundary_error_pct",
 //  "max_stretch", "p95_stretch", "seconds_flatten", "iterations", "converged", "outline_points",
 //  "mold_width_mm", "mold_height_mm", "files": {...}}],
+//  "quality": the gate's verdict (MoldQuality::to_json, engine/scan/mold_quality_gate.hpp),
 //  "profile": [{"stage", "seconds"}, ...]}: wall seconds per stage in the order they ran, from reading
 //  the scan to writing the pictures (write_scan_outputs adds the writing stages)
 nlohmann::json scan_report_json(const ScanResult& result);

@@ -109,6 +109,9 @@ SegmentResult flatten_segment(std::string name, TriMesh mesh3d, const MeshTopolo
                     " triangles are flipped in the flattening");
   result.mold = make_mold(result.name, result.UV, result.mesh3d.F, landmarks, options.mold, topology);
   clock.lap(result.name + ": mold outline");
+  result.quality = judge_half(result.name, result.mesh3d, result.UV, result.measures, result.flatten.converged,
+                              options.quality);
+  clock.lap(result.name + ": quality gate");
   return result;
 }
 
@@ -176,6 +179,8 @@ ScanResult scan_to_molds(const std::filesystem::path& scan, const ScanOptions& o
       result.notes.push_back(text);
     }
   }
+  result.quality.limits = options.quality;
+  for (const SegmentResult& segment : result.segments) result.quality.halves.push_back(segment.quality);
   result.profile = clock.stages();
   result.seconds_total = seconds_since(start);
   return result;

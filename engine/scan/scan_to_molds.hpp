@@ -25,6 +25,7 @@
 #include "engine/flatten/flatten.hpp"
 #include "engine/mesh/read_mesh.hpp"
 #include "engine/mold/mold.hpp"
+#include "engine/scan/mold_quality_gate.hpp"
 #include "engine/segment/segment_last.hpp"
 
 namespace lastcut {
@@ -35,6 +36,7 @@ struct ScanOptions {
   FlattenOptions flatten;
   MoldOptions mold;
   SegmentOptions segment_options;
+  MoldQualityLimits quality;      // the gate each half is judged by (mold_quality_gate.hpp)
   std::optional<FootSide> side;  // the foot as the operator names it (--side, the sidecar): settles a
                                  // symmetric last; a clearly other-footed scan keeps its own side and warns
 };
@@ -46,6 +48,7 @@ struct SegmentResult {
   FlattenResult flatten;        // iterations, timings, notes (its UV is the unplaced one)
   DistortionMeasures measures;  // of UV against mesh3d
   Mold mold;                    // outline and notches in the UV coordinates
+  HalfVerdict quality;          // the gate's judgement of UV (mold_quality_gate.hpp)
 };
 
 struct ScanResult {
@@ -56,6 +59,7 @@ struct ScanResult {
   std::vector<std::string> notes;    // from orientation, segmentation and flattening, one line each
   std::vector<std::string> warnings; // what the operator should look at (also among the notes)
   std::vector<HoleRepair> repairs;   // scan holes closed before segmentation
+  MoldQuality quality;               // every segment's gate verdict, in segment order
   double seconds_total = 0;
   std::vector<StageTime> profile;    // wall seconds per stage ("read", "medial: flatten", ...), in order
 };

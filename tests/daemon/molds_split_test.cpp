@@ -19,7 +19,7 @@ TEST(MoldsStep, SidecarSplitRuleReachesTheSegmentation) {
   for (const std::string split : {"", "auto", "expert"}) {
     JobTicket ticket;
     ticket.split = split;
-    const auto made = compute_molds(scan, folder / ("job-" + split), ticket, MoldOptions{}, 30.0);
+    const auto made = compute_molds(scan, folder / ("job-" + split), ticket, MoldOptions{}, 30.0, MoldQualityLimits{});
     ASSERT_TRUE(made) << made.error();
     EXPECT_EQ(made->piece_count, 2);
     bool expert_noted = false;

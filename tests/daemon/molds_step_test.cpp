@@ -42,13 +42,13 @@ TEST(MoldsStep, TheSidecarsSideNamesASymmetricLastsHalves) {
   JobTicket ticket;
   ticket.order = "77";
   ticket.side = "right";
-  const Result<MoldsMade> named = compute_molds(scan, folder / "named", ticket, MoldOptions{}, 30.0);
+  const Result<MoldsMade> named = compute_molds(scan, folder / "named", ticket, MoldOptions{}, 30.0, MoldQualityLimits{});
   ASSERT_TRUE(named) << named.error();
   EXPECT_EQ(named->measures["side"], "right");
   EXPECT_EQ(labels_of(folder / "named"), (std::vector<std::string>{"#77 R lat", "#77 R med"}));
 
   ticket.side = "";
-  const Result<MoldsMade> unnamed = compute_molds(scan, folder / "unnamed", ticket, MoldOptions{}, 30.0);
+  const Result<MoldsMade> unnamed = compute_molds(scan, folder / "unnamed", ticket, MoldOptions{}, 30.0, MoldQualityLimits{});
   ASSERT_TRUE(unnamed) << unnamed.error();
   EXPECT_TRUE(unnamed->measures["side"].is_null());
   ASSERT_EQ(unnamed->measures["warnings"].size(), 1u);
@@ -63,7 +63,7 @@ TEST(MoldsStep, ASidecarSideThatContradictsTheScanIsWarnedOnce) {
   JobTicket ticket;
   ticket.order = "78";
   ticket.side = "right";
-  const Result<MoldsMade> made = compute_molds(scan, folder / "job", ticket, MoldOptions{}, 30.0);
+  const Result<MoldsMade> made = compute_molds(scan, folder / "job", ticket, MoldOptions{}, 30.0, MoldQualityLimits{});
   ASSERT_TRUE(made) << made.error();
   ASSERT_EQ(made->measures["warnings"].size(), 1u) << made->measures["warnings"].dump();
   EXPECT_TRUE(made->measures["warnings"][0].get<std::string>().starts_with("the side named is right but the scan is a left last"));
