@@ -13,10 +13,9 @@
 namespace lastcut {
 namespace {
 
-std::vector<int> boundary_vertices(const TriMesh& mesh, const MeshTopology& topology) {
+std::vector<int> boundary_vertices(const MeshTopology& topology) {
   std::vector<int> vertices;
-  for (const auto& loop : topology.boundary_loops)
-    for (const int h : loop) vertices.push_back(mesh.F(h / 3, h % 3));
+  for (const auto& loop : topology.boundary_loops) vertices.insert(vertices.end(), loop.begin(), loop.end());
   return vertices;
 }
 
@@ -58,7 +57,7 @@ std::string number(double value) {
 
 MoldSpan measure_mold_span(const TriMesh& mesh3d, const Eigen::MatrixXd& UV) {
   const MeshTopology topology = build_mesh_topology(mesh3d.F, mesh3d.V.rows());
-  const std::vector<int> outline = boundary_vertices(mesh3d, topology);
+  const std::vector<int> outline = boundary_vertices(topology);
   if (outline.size() < 2) throw EngineError("the flattened half has no outline to measure");
   MoldSpan span;
   int a = outline[0], b = outline[1];

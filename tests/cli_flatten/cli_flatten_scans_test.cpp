@@ -144,3 +144,40 @@ TEST_F(CliFlattenScans, NamesASymmetricLastBySideOrNeutrally) {
 
 }  // namespace
 }  // namespace lastcut
+
+namespace lastcut {
+namespace {
+
+// The quality gate on the command line: a lofted scan with 0.2 mm of isotropic noise (rings of
+// slivers, the case) gives a medial mold beyond the gate: exit 3, the reason in one line,
+// no files; --keep-bad-molds writes them with report.json quality.passed false, still exit 3.
+TEST_F(CliFlattenScans, MoldsBeyondTheQualityGateExitThreeInOneLineAndAreWrittenOnlyOnRequest) {
+  LastParams params = LastParams::for_eu_size(41, FootSide::Right);
+  params.surface = LastSurface::Lofted;
+  params.target_triangles = 90000;
+  params.noise_mm = 0.2;
+  params.noise_kind = ScanNoise::Isotropic;
+  params.random_pose = true;
+  params.seed = 5;
+  const fs::path scan = dir_ / "lofted-noisy.stl";
+  write_stl_binary(scan, generate_last(params).mesh);
+
+  const CommandRun held = flatten(scan, "gate-held", "--side right");
+  EXPECT_EQ(held.exit_code, 3);
+  EXPECT_TRUE(held.err.starts_with("lastcut: error: mold quality: medial D_angle ")) << held.err;
+  EXPECT_TRUE(held.err.ends_with(" (no molds written; --keep-bad-molds writes them, marked in report.json)\n")) << held.err;
+  EXPECT_EQ(count_lines_starting(held.err, ""), 1) << held.err;
+  EXPECT_FALSE(fs::exists(dir_ / "gate-held"));
+
+  const CommandRun kept = flatten(scan, "gate-kept", "--side right --keep-bad-molds");
+  EXPECT_EQ(kept.exit_code, 3);
+  const auto report = nlohmann::json::parse(read_text(dir_ / "gate-kept" / "report.json"));
+  EXPECT_FALSE(report["quality"]["passed"].get<bool>());
+  EXPECT_EQ("lastcut: error: " + report["quality"]["reason"].get<std::string>() +
+                " (molds written anyway: not for cutting; report.json quality.passed is false)\n",
+            kept.err);
+  EXPECT_TRUE(fs::exists(dir_ / "gate-kept" / "medial.svg"));
+}
+
+}  // namespace
+}  // namespace lastcut

@@ -256,7 +256,8 @@ TEST_F(CliFlatten, FlattensALastIntoTheContractFiles) {
   }
   const std::vector<std::string> expected = {
       "read and repair", "last check", "orient", "segment", "medial: flatten", "medial: distortion",
-      "medial: mold outline", "lateral: flatten", "lateral: distortion", "lateral: mold outline",
+      "medial: mold outline", "medial: quality gate", "lateral: flatten", "lateral: distortion",
+      "lateral: mold outline", "lateral: quality gate",
       "medial: write 3d obj", "medial: write flat obj", "medial: write dxf", "medial: write svg",
       "lateral: write 3d obj", "lateral: write flat obj", "lateral: write dxf", "lateral: write svg"};
   EXPECT_EQ(stages, expected);

@@ -170,6 +170,31 @@ TEST(DaemonConfig, ReviewToleranceIsReadCheckedAndDefaultsToTwoMillimetres) {
   EXPECT_NE(result.error.find("review.corner_tolerance_mm"), std::string::npos) << result.error;
 }
 
+TEST(DaemonConfig, QualityLimitsAreReadCheckedAndTheShippedOnesAreTheDefaults) {
+  const MoldQualityLimits defaults;
+  const MoldQualityLimits shipped = load_daemon_config(kSource / "config/lastcut.toml").config->quality;
+  EXPECT_EQ(shipped.max_D_angle, defaults.max_D_angle);
+  EXPECT_EQ(shipped.max_D_area, defaults.max_D_area);
+  EXPECT_EQ(shipped.max_stretch, defaults.max_stretch);
+  EXPECT_EQ(shipped.max_p95_stretch, defaults.max_p95_stretch);
+  EXPECT_EQ(shipped.require_converged, defaults.require_converged);
+  EXPECT_EQ(shipped.max_length_excess_pct, defaults.max_length_excess_pct);
+  auto result = load_text(minimal("", "[quality]\nmax_d_angle = 3\nrequire_converged = false\n"));
+  ASSERT_TRUE(result.config) << result.error;
+  EXPECT_EQ(result.config->quality.max_D_angle, 3.0);
+  EXPECT_FALSE(result.config->quality.require_converged);
+  result = load_text(minimal("", "[quality]\nmax_dangle = 3\n"));
+  ASSERT_FALSE(result.config);
+  EXPECT_NE(result.error.find("quality.max_dangle (line 2): unknown key"), std::string::npos) << result.error;
+  result = load_text(minimal("", "[quality]\nmax_d_area = 1.5\n"));
+  ASSERT_FALSE(result.config);
+  EXPECT_NE(result.error.find("quality.max_d_area (line 2): 1.5 is outside 2 .. 10"), std::string::npos) << result.error;
+  result = load_text(minimal("", "[quality]\nrequire_converged = \"yes\"\n"));
+  ASSERT_FALSE(result.config);
+  EXPECT_NE(result.error.find("quality.require_converged (line 2): must be true or false"), std::string::npos)
+      << result.error;
+}
+
 TEST(DaemonConfig, ShippedExampleListsEveryCutterKey) {
   // config/lastcut.toml documents every key; the option table is what the reader accepts.
   const std::string text = testing::read_text(kSource / "config/lastcut.toml");
