@@ -8,9 +8,12 @@
 #include <limits>
 #include <numbers>
 
+#include "engine/core/decimal_text.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/core/mesh_topology.hpp"
 #include "engine/mesh/fill_holes.hpp"
+#include "engine/mesh/scan_denoise.hpp"
+#include "engine/mesh/sliver_collapse.hpp"
 #include "engine/mold/boundary_loops.hpp"
 #include "engine/orient/orient_last.hpp"
 
@@ -134,6 +137,22 @@ ScanResult scan_to_molds(const std::filesystem::path& scan, const ScanOptions& o
   MeshIntake intake = read_mesh(scan, options.read);
   result.intake = intake.report;
   clock.lap("read and repair");
+  if (options.denoise) {
+    if (const SliverReport slivers = collapse_slivers(intake.mesh); slivers.collapsed > 0) {
+      intake.topology = build_mesh_topology(intake.mesh.F, intake.mesh.V.rows());
+      result.notes.push_back("scan slivers: " + std::to_string(slivers.collapsed) + " edges shorter than " +
+                             fixed_text(slivers.limit_mm, 2) + " mm collapsed");
+      clock.lap("slivers");
+    }
+    const DenoiseReport denoised = denoise_scan(intake.mesh, intake.topology);
+    if (denoised.passes > 0) {
+      char note[200];
+      std::snprintf(note, sizeof note, "scan noise about %.2f mm taken off (bilateral denoising, %d passes; %.2f mm left)",
+                    denoised.noise_before_mm, denoised.passes, denoised.noise_after_mm);
+      result.notes.push_back(note);
+    }
+    clock.lap("denoise");
+  }
 
   if (!options.segment) {
     const MeshTopology& topology = intake.topology;

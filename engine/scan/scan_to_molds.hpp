@@ -37,6 +37,7 @@ struct ScanOptions {
   MoldOptions mold;
   SegmentOptions segment_options;
   MoldQualityLimits quality;      // the gate each half is judged by (mold_quality_gate.hpp)
+  bool denoise = true;            // take scanner noise off first, where the scan has it (engine/mesh/scan_denoise.hpp)
   std::optional<FootSide> side;  // the foot as the operator names it (--side, the sidecar): settles a
                                  // symmetric last; a clearly other-footed scan keeps its own side and warns
 };
