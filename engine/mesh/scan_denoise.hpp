@@ -3,20 +3,20 @@
 // it. Noise makes a surface longer than the last it was scanned from (every bump adds area), so
 // molds of a noisy scan come out a few millimetres too large, and on thin triangles it folds them.
 //
-// Method: bilateral mesh denoising, S. Fleishman, I. Drori, D. Cohen-Or, "Bilateral mesh
-// denoising", ACM Transactions on Graphics 22(3) (SIGGRAPH 2003) 950-953. Each vertex moves along
-// its (mollified) normal by the weighted mean height of its neighbours over its tangent plane; the
-// weights fall with distance (closeness, sigma_c) and with the height itself (similarity,
-// sigma_s), so noise is averaged away while a real edge (the top cut's rim, the feather line) is
-// kept: points across an edge are far above the plane and weigh nothing. Adaptations:
-//   - neighbours are the 2-ring (the paper's radius 2 sigma_c with sigma_c = the mean edge);
-//   - the normal is the area-weighted mean of the face normals over the 2-ring (the paper's
-//     mollification), since a noisy vertex normal would steer the step sideways;
-//   - sigma_s is the standard deviation of the heights in the neighbourhood, as in the paper, but
-//     at least a tenth of the mean edge so a clean patch is not divided by zero;
+// Method: Taubin's lambda|mu smoothing, G. Taubin, "A signal processing approach to fair surface
+// design", SIGGRAPH 1995: pairs of umbrella steps, one smoothing (lambda = 0.5) and one inflating
+// (mu = -0.53), a low-pass filter over the mesh that removes vertex-scale noise without shrinking
+// the last (plain Laplacian smoothing, and the bilateral filter of Fleishman et al. 2003 tried
+// first, pull a curved surface inwards: on a 16k-triangle scan the molds came out 1-2 mm short).
+// Adaptations:
+//   - the umbrella step moves a vertex along its normal only, so the filter changes the shape and
+//     nothing else; with the smoothing step the vertex also moves half way to its 1-ring's centroid
+//     in the tangent plane (at most a quarter of the mean edge), which unfolds the triangles a
+//     scanner's point error folded without moving the surface;
 //   - a vertex on the scan's boundary (an open hole) does not move: the hole filler needs its rim.
 // Need: estimated_noise_mm is the median over vertices of the jump of the umbrella height between
-// a vertex and its neighbours (a second difference: smooth curvature cancels, noise does not);
+// a vertex and its neighbours (a second difference: smooth curvature cancels, noise does not),
+// away from the scan's boundary (a rim vertex's umbrella is one-sided);
 // denoise_scan does nothing below DenoiseOptions::min_noise_mm.
 #include "engine/core/mesh_topology.hpp"
 #include "engine/core/tri_mesh.hpp"
@@ -25,7 +25,7 @@ namespace lastcut {
 
 struct DenoiseOptions {
   double min_noise_mm = 0.03;  // estimated noise below this: the scan is left as it is
-  int passes = 3;
+  int passes = 8;  // lambda|mu pairs
 };
 
 struct DenoiseReport {

@@ -149,7 +149,8 @@ namespace lastcut {
 namespace {
 
 // The quality gate on the command line: a lofted scan with 0.2 mm of isotropic noise (rings of
-// slivers, the case) gives a medial mold beyond the gate: exit 3, the reason in one line,
+// slivers, the case) gives a medial mold beyond the gate even after the scan cleaning (a
+// few triangles at the toe pole stay stretched): exit 3, the reason in one line,
 // no files; --keep-bad-molds writes them with report.json quality.passed false, still exit 3.
 TEST_F(CliFlattenScans, MoldsBeyondTheQualityGateExitThreeInOneLineAndAreWrittenOnlyOnRequest) {
   LastParams params = LastParams::for_eu_size(41, FootSide::Right);
@@ -164,7 +165,7 @@ TEST_F(CliFlattenScans, MoldsBeyondTheQualityGateExitThreeInOneLineAndAreWritten
 
   const CommandRun held = flatten(scan, "gate-held", "--side right");
   EXPECT_EQ(held.exit_code, 3);
-  EXPECT_TRUE(held.err.starts_with("lastcut: error: mold quality: medial D_angle ")) << held.err;
+  EXPECT_TRUE(held.err.starts_with("lastcut: error: mold quality: medial ")) << held.err;
   EXPECT_TRUE(held.err.ends_with(" (no molds written; --keep-bad-molds writes them, marked in report.json)\n")) << held.err;
   EXPECT_EQ(count_lines_starting(held.err, ""), 1) << held.err;
   EXPECT_FALSE(fs::exists(dir_ / "gate-held"));

@@ -255,7 +255,7 @@ TEST_F(CliFlatten, FlattensALastIntoTheContractFiles) {
     if (stages.back().find("write") == std::string::npos) before_writing_s += stage["seconds"].get<double>();
   }
   const std::vector<std::string> expected = {
-      "read and repair", "last check", "orient", "segment", "medial: flatten", "medial: distortion",
+      "read and repair", "last check", "denoise", "orient", "segment", "medial: flatten", "medial: distortion",
       "medial: mold outline", "medial: quality gate", "lateral: flatten", "lateral: distortion",
       "lateral: mold outline", "lateral: quality gate",
       "medial: write 3d obj", "medial: write flat obj", "medial: write dxf", "medial: write svg",
