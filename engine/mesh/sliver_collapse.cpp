@@ -13,6 +13,23 @@ double length_of(const OmMesh& mesh, OmMesh::EdgeHandle edge) {
   return (mesh.point(mesh.to_vertex_handle(h)) - mesh.point(mesh.from_vertex_handle(h))).norm();
 }
 
+constexpr double kNeedleAspect = 5.0;  // longest edge of the triangle / the short edge
+
+bool is_sliver_edge(const OmMesh& mesh, OmMesh::EdgeHandle edge, double limit_mm) {
+  const double length = length_of(mesh, edge);
+  if (length >= limit_mm) return false;
+  for (int side = 0; side < 2; ++side) {
+    const auto h = mesh.halfedge_handle(edge, side);
+    if (mesh.is_boundary(h)) continue;
+    const auto next = mesh.next_halfedge_handle(h);
+    const double other_a = (mesh.point(mesh.to_vertex_handle(next)) - mesh.point(mesh.from_vertex_handle(next))).norm();
+    const auto after = mesh.next_halfedge_handle(next);
+    const double other_b = (mesh.point(mesh.to_vertex_handle(after)) - mesh.point(mesh.from_vertex_handle(after))).norm();
+    if (length * kNeedleAspect < std::max(other_a, other_b)) return true;
+  }
+  return false;
+}
+
 // Would merging h's ends at `merged` leave a surviving triangle without area (a needle)? Such a
 // triangle has no shape to flatten; a folded one does, and the denoising unfolds it.
 bool leaves_a_needle(OmMesh& mesh, OmMesh::HalfedgeHandle h, const OmMesh::Point& merged, double limit_mm) {
@@ -42,16 +59,21 @@ SliverReport collapse_slivers(TriMesh& mesh, double fraction, double min_share) 
   std::vector<double> sorted = lengths;
   std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
   report.limit_mm = fraction * sorted[sorted.size() / 2];
-  report.short_edges = static_cast<int>(std::count_if(lengths.begin(), lengths.end(),
-                                                      [&](double l) { return l < report.limit_mm; }) / 2);
-  if (report.short_edges <= min_share * static_cast<double>(lengths.size()) / 2) return report;
+  // A sliver edge is short against the scan and against its own triangle: the small but well
+  // shaped triangles of a finely scanned detail (the FIND foot's toes) are left alone.
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    const double* l = lengths.data() + 3 * f;
+    const double longest = std::max({l[0], l[1], l[2]});
+    for (int k = 0; k < 3; ++k) report.short_edges += l[k] < report.limit_mm && l[k] * kNeedleAspect < longest;
+  }
+  if (report.short_edges <= min_share * static_cast<double>(lengths.size())) return report;
 
   OmMesh om = to_openmesh(mesh);
   // Rounds, since a collapse can leave a neighbouring edge still short; a fan of N rings needs a few.
   for (int round = 0; round < 8; ++round) {
     int collapsed_this_round = 0;
     for (const auto edge : om.edges()) {
-      if (om.status(edge).deleted() || length_of(om, edge) >= report.limit_mm) continue;
+      if (om.status(edge).deleted() || !is_sliver_edge(om, edge, report.limit_mm)) continue;
       const auto h = om.halfedge_handle(edge, 0);
       const auto from = om.from_vertex_handle(h), to = om.to_vertex_handle(h);
       if (om.is_boundary(from) || om.is_boundary(to) || !om.is_collapse_ok(h)) continue;

@@ -14,13 +14,14 @@
 namespace lastcut {
 
 struct SliverReport {
-  int short_edges = 0;  // edges shorter than the limit found in the scan
+  int short_edges = 0;  // sliver half-edges found in the scan
   int collapsed = 0;    // edges collapsed (0: the scan was left as it was)
   double limit_mm = 0;  // fraction x median edge
 };
 
-// Collapses edges shorter than `fraction` x the median edge length when more than `min_share` of
-// all edges are that short (a few short edges are no reason to touch a scan). mesh: a 2-manifold,
+// Collapses sliver edges: shorter than `fraction` x the median edge length and than a fifth of
+// another edge of one of their triangles (a needle's short side), when more than `min_share` of
+// all half-edges are such (a few are no reason to touch a scan). mesh: a 2-manifold,
 // mm; vertex and face order change when anything is collapsed.
 SliverReport collapse_slivers(TriMesh& mesh, double fraction = 0.2, double min_share = 0.001);
 

@@ -1,8 +1,8 @@
 // lastcutd and the mold quality gate (engine/scan/mold_quality_gate.hpp), with the real binaries:
-// a scan as scanners make it (a lofted mesh with slivers at the poles, 0.2 mm of isotropic noise)
-// whose medial mold fails the gate is held with the reason and its stretch pictures, is never
-// nested or cut, stays held when requeued under the same limits, and is cut once when requeued
-// after the operator raised the limits (SIGHUP). A good scan dropped beside it is cut as usual.
+// a scan whose molds fail the gate (here: a limit no real mold meets) is held with the reason and
+// its stretch pictures, is never nested or cut, stays held when requeued under the same limits,
+// and is cut once when requeued after the operator raised the limit (SIGHUP). A scan dropped
+// afterwards is cut as usual, and the cutter receives nothing else.
 #include <gtest/gtest.h>
 
 #include <csignal>
@@ -26,67 +26,64 @@ int count_text(const std::string& text, const std::string& needle) {
 }
 
 TEST(DaemonQualityGate, BadMoldsAreHeldNeverCutAndCutOnceAfterARequeueUnderRaisedLimits) {
-  DaemonRig rig("quality-gate", RigOptions{});
+  // A p95 stretch of exactly 1 is a perfect isometry no real last has: every mold is beyond this
+  // gate, so the scan stands for one whose molds went wrong, deterministically.
+  RigOptions options;
+  options.extra_config = "\n[quality]\nmax_p95_stretch = 1.0\n";
+  DaemonRig rig("quality-gate", options);
   const auto staging = rig.root() / "staging";
   std::filesystem::create_directories(staging);
-  const auto noisy = staging / "noisy.stl";
-  ASSERT_EQ(run_command({binary("lastcut").string(), "generate", "-o", noisy.string(), "--size", "41", "--side", "right",
-                         "--triangles", "90000", "--surface", "lofted", "--noise", "0.2", "--noise-kind", "isotropic",
-                         "--random-pose", "--seed", "5"},
-                        staging / "generate.log"),
-            0)
-      << read_text(staging / "generate.log");
+  write_variant(small_last(42, "left", 3), staging / "bad.stl", "bad");
   write_variant(small_last(42, "left", 3), staging / "good.stl", "good");
 
   rig.start_cutters();
   rig.start_daemon();
-  write_text(rig.watch() / "noisy.job.toml", "order = \"noisy\"\nside = \"right\"\n");
-  drop(noisy, rig.watch(), "noisy.stl");
-  drop(staging / "good.stl", rig.watch(), "good.stl");
-  ASSERT_TRUE(wait_until([&] { return !job_in(rig, "held", "noisy.stl").empty() && !job_in(rig, "done", "good.stl").empty(); },
-                         120))
-      << read_text(rig.daemon_log());
-  const std::string id = job_in(rig, "held", "noisy.stl");
+  drop(staging / "bad.stl", rig.watch(), "bad.stl");
+  ASSERT_TRUE(wait_until([&] { return !job_in(rig, "held", "bad.stl").empty(); }, 120)) << read_text(rig.daemon_log());
+  const std::string id = job_in(rig, "held", "bad.stl");
   const auto held_dir = rig.spool() / "held" / id;
   const std::string reason = rig.jobs("held").at(id).value("reason", "");
-  EXPECT_EQ(reason.rfind("mold quality: medial ", 0), 0u) << reason;
+  EXPECT_EQ(reason.rfind("mold quality: medial p95 stretch ", 0), 0u) << reason;
+  EXPECT_NE(reason.find(" > 1; lateral p95 stretch "), std::string::npos) << reason;
   EXPECT_NE(reason.find("; stretch pictures in molds/"), std::string::npos) << reason;
   EXPECT_NE(read_text(rig.daemon_log()).find(reason), std::string::npos) << read_text(rig.daemon_log());
   EXPECT_TRUE(std::filesystem::exists(held_dir / "molds" / "medial.svg"));
   EXPECT_FALSE(std::filesystem::exists(held_dir / "items.json")) << "held bad molds must not be nestable";
   const auto report = nlohmann::json::parse(read_text(held_dir / "report.json"));
   EXPECT_FALSE(report["measures"]["quality"]["passed"].get<bool>());
-  EXPECT_TRUE(std::filesystem::exists(held_dir / "noisy.stl")) << "the scan stays with the job";
+  EXPECT_TRUE(std::filesystem::exists(held_dir / "bad.stl")) << "the scan stays with the job";
 
   // Requeued under the same limits: computed again and held again, still not cut.
   const auto requeue_log = rig.root() / "requeue.txt";
   const std::vector<std::string> requeue{binary("lastcut").string(), "requeue", id, "--config", rig.config_file().string()};
   ASSERT_EQ(run_command(requeue, requeue_log), 0) << read_text(requeue_log);
-  ASSERT_TRUE(wait_until([&] { return count_text(read_text(rig.daemon_log()), reason) >= 2 && !job_in(rig, "held", "noisy.stl").empty(); },
+  ASSERT_TRUE(wait_until([&] { return count_text(read_text(rig.daemon_log()), reason) >= 2 && !job_in(rig, "held", "bad.stl").empty(); },
                          60))
       << read_text(rig.daemon_log());
-  EXPECT_TRUE(job_in(rig, "done", "noisy.stl").empty());
+  EXPECT_TRUE(job_in(rig, "done", "bad.stl").empty());
 
-  // The operator raises the limits (this scan's molds are what they accept) and requeues.
-  write_text(rig.config_file(), read_text(rig.config_file()) +
-                                    "\n[quality]\nmax_d_angle = 6\nmax_d_area = 6\nmax_stretch = 100\n"
-                                    "max_p95_stretch = 10\nrequire_converged = false\nmax_length_excess_pct = 40\n");
+  // The operator raises the limit (SIGHUP applies it at once) and requeues: cut once.
+  std::string config = read_text(rig.config_file());
+  config.replace(config.find("max_p95_stretch = 1.0"), 21, "max_p95_stretch = 1.5");
+  write_text(rig.config_file(), config);
   rig.daemon()->signal(SIGHUP);
   ASSERT_TRUE(wait_until([&] { return read_text(rig.daemon_log()).find("configuration reloaded") != std::string::npos; }, 10))
       << read_text(rig.daemon_log());
   ASSERT_EQ(run_command(requeue, requeue_log), 0) << read_text(requeue_log);
-  ASSERT_TRUE(wait_until([&] { return !job_in(rig, "done", "noisy.stl").empty(); }, 120)) << read_text(rig.daemon_log());
+  ASSERT_TRUE(wait_until([&] { return !job_in(rig, "done", "bad.stl").empty(); }, 120)) << read_text(rig.daemon_log());
+  drop(staging / "good.stl", rig.watch(), "good.stl");
+  ASSERT_TRUE(wait_until([&] { return !job_in(rig, "done", "good.stl").empty(); }, 120)) << read_text(rig.daemon_log());
   EXPECT_EQ(rig.stop_daemon(), 0);
   rig.stop_cutters();
 
   const std::string received = rig.received("cutter-1");
-  const std::string noisy_cut = read_text(rig.spool() / "done" / id / rig.cut_file_name("cutter-1"));
+  const std::string bad_cut = read_text(rig.spool() / "done" / id / rig.cut_file_name("cutter-1"));
   const std::string good_cut =
       read_text(rig.spool() / "done" / job_in(rig, "done", "good.stl") / rig.cut_file_name("cutter-1"));
-  ASSERT_FALSE(noisy_cut.empty());
-  EXPECT_EQ(count_text(received, noisy_cut), 1);
+  ASSERT_FALSE(bad_cut.empty());
+  EXPECT_EQ(count_text(received, bad_cut), 1);
   EXPECT_EQ(count_text(received, good_cut), 1);
-  EXPECT_EQ(received.size(), noisy_cut.size() + good_cut.size()) << "nothing else reached the cutter";
+  EXPECT_EQ(received.size(), bad_cut.size() + good_cut.size()) << "nothing else reached the cutter";
 }
 
 }  // namespace
