@@ -8,7 +8,9 @@
 // Cases: EU sizes x surfaces (remeshed: even triangles; lofted: rings and pole slivers, as scanner
 // exports mesh) x triangle counts x noise 0..0.3 mm (along normals / isotropic) x holes, random
 // poses. Prints one row per case and the totals; figures and the command: docs/benchmarks-noise.md.
-//   bench_noise_sweep [--quick] [--strict]     (--strict: exit 1 when any case is WRONG)
+//   bench_noise_sweep [--quick] [--strict] [--surface lofted] [--triangles N] [--size EU] [--smooth-all]
+//   --strict: exit 1 when any case is WRONG; --surface/--triangles/--size: only those cases;
+//   --smooth-all: smooth every scan, the noise-free reference too (tells smoothing's own effect apart)
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
@@ -50,7 +52,14 @@ struct Outcome {
 
 const char* surface_name(LastSurface surface) { return surface == LastSurface::Lofted ? "lofted" : "remeshed"; }
 
-ScanResult run_case(const Case& c, bool pose, const fs::path& scratch) {
+struct Sweep {
+  bool quick = false, strict = false, smooth_all = false;
+  std::string surface;  // empty: both
+  int triangles = 0;    // 0: both counts
+  int eu_size = 0;      // 0: three sizes
+};
+
+ScanResult run_case(const Case& c, bool pose, bool smooth_all, const fs::path& scratch) {
   LastParams params = LastParams::for_eu_size(c.eu_size, FootSide::Right);
   params.surface = c.surface;
   params.target_triangles = c.triangles;
@@ -63,14 +72,15 @@ ScanResult run_case(const Case& c, bool pose, const fs::path& scratch) {
   write_stl_binary(scan, generate_last(params).mesh);
   ScanOptions options;
   options.side = FootSide::Right;
+  if (smooth_all) options.denoise_options.min_noise_mm = -1.0;
   return scan_to_molds(scan, options);
 }
 
-Outcome judge(const Case& c, const ScanResult* reference, const fs::path& scratch) {
+Outcome judge(const Case& c, const ScanResult* reference, bool smooth_all, const fs::path& scratch) {
   Outcome outcome;
   const auto start = std::chrono::steady_clock::now();
   try {
-    const ScanResult result = run_case(c, true, scratch);
+    const ScanResult result = run_case(c, true, smooth_all, scratch);
     outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!result.quality.passed()) {
       outcome.verdict = "held";
@@ -101,12 +111,16 @@ Outcome judge(const Case& c, const ScanResult* reference, const fs::path& scratc
   return outcome;
 }
 
-int run(bool quick, bool strict) {
+int run(const Sweep& sweep) {
+  const bool quick = sweep.quick;
   const fs::path scratch = fs::temp_directory_path() / ("lastcut-noise-sweep-" + std::to_string(::getpid()));
   fs::create_directories(scratch);
-  const std::vector<int> sizes = quick ? std::vector<int>{41} : std::vector<int>{36, 41, 47};
-  const std::vector<LastSurface> surfaces = {LastSurface::Remeshed, LastSurface::Lofted};
-  const std::vector<int> counts = quick ? std::vector<int>{20000} : std::vector<int>{20000, 150000};
+  std::vector<int> sizes = quick ? std::vector<int>{41} : std::vector<int>{36, 41, 47};
+  if (sweep.eu_size) sizes = {sweep.eu_size};
+  std::vector<LastSurface> surfaces = {LastSurface::Remeshed, LastSurface::Lofted};
+  if (!sweep.surface.empty()) surfaces = {sweep.surface == "lofted" ? LastSurface::Lofted : LastSurface::Remeshed};
+  std::vector<int> counts = quick ? std::vector<int>{20000} : std::vector<int>{20000, 150000};
+  if (sweep.triangles) counts = {sweep.triangles};
   const std::vector<double> noises = quick ? std::vector<double>{0.2} : std::vector<double>{0.0, 0.1, 0.2, 0.3};
   const std::vector<int> hole_counts = quick ? std::vector<int>{0} : std::vector<int>{0, 3};
   int cases = 0, held = 0, good = 0, wrong = 0, low_noise = 0, low_noise_molds = 0;
@@ -118,7 +132,7 @@ int run(bool quick, bool strict) {
         Case base{size, surface, triangles, 0.0, ScanNoise::AlongNormal, 0, static_cast<uint64_t>(size)};
         std::optional<ScanResult> reference;
         try {
-          reference = run_case(base, false, scratch);
+          reference = run_case(base, false, sweep.smooth_all, scratch);
         } catch (const EngineError&) {
           reference.reset();  // no noise-free mold: the outline test is skipped, the rest still applies
         }
@@ -131,7 +145,7 @@ int run(bool quick, bool strict) {
               c.kind = kind;
               c.holes = holes;
               c.seed = base.seed * 131 + static_cast<uint64_t>(noise * 100) + static_cast<uint64_t>(holes) * 7;
-              const Outcome outcome = judge(c, reference ? &*reference : nullptr, scratch);
+              const Outcome outcome = judge(c, reference ? &*reference : nullptr, sweep.smooth_all, scratch);
               ++cases;
               held += outcome.verdict == "held";
               good += outcome.verdict == "good";
@@ -152,7 +166,7 @@ int run(bool quick, bool strict) {
   std::printf("\ncases %d: good %d, held %d, WRONG %d (done with a wrong mold)\n", cases, good, held, wrong);
   std::printf("noise <= 0.2 mm: %d of %d cases give molds (%.0f %%)\n", low_noise_molds, low_noise,
               low_noise ? 100.0 * low_noise_molds / low_noise : 0.0);
-  return strict && wrong > 0 ? 1 : 0;
+  return sweep.strict && wrong > 0 ? 1 : 0;
 }
 
 }  // namespace
@@ -160,10 +174,13 @@ int run(bool quick, bool strict) {
 
 int main(int argc, char** argv) {
   CLI::App app{"noise sweep: the scan pipeline and its quality gate on generated scans (docs/benchmarks-noise.md)"};
-  bool quick = false;
-  app.add_flag("--quick", quick, "one last, one noise level (the smoke test)");
-  bool strict = false;
-  app.add_flag("--strict", strict, "exit 1 when any case is done with a wrong mold");
+  lastcut::Sweep sweep;
+  app.add_flag("--quick", sweep.quick, "one last, one noise level (the smoke test)");
+  app.add_flag("--strict", sweep.strict, "exit 1 when any case is done with a wrong mold");
+  app.add_option("--surface", sweep.surface, "only this triangulation")->check(CLI::IsMember({"remeshed", "lofted"}));
+  app.add_option("--triangles", sweep.triangles, "only this triangle count");
+  app.add_option("--size", sweep.eu_size, "only this EU size");
+  app.add_flag("--smooth-all", sweep.smooth_all, "smooth every scan, the noise-free reference too");
   CLI11_PARSE(app, argc, argv);
-  return lastcut::run(quick, strict);
+  return lastcut::run(sweep);
 }

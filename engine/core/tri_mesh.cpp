@@ -33,6 +33,20 @@ Eigen::MatrixXd triangle_normals(const TriMesh& mesh) {
   return normals;
 }
 
+Eigen::MatrixXd vertex_normals(const TriMesh& mesh) {
+  Eigen::MatrixXd normals = Eigen::MatrixXd::Zero(mesh.V.rows(), 3);
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
+    const Eigen::RowVector3d area_normal = (b - a).cross(c - a).transpose();  // its length: twice the area
+    for (int corner = 0; corner < 3; ++corner) normals.row(mesh.F(f, corner)) += area_normal;
+  }
+  for (Eigen::Index v = 0; v < normals.rows(); ++v) {
+    const double length = normals.row(v).norm();
+    if (length > 0.0) normals.row(v) /= length;
+  }
+  return normals;
+}
+
 double surface_area(const TriMesh& mesh) { return triangle_areas(mesh).sum(); }
 
 Eigen::Vector3d bounding_box_size(const TriMesh& mesh) {

@@ -20,6 +20,9 @@ struct TriMesh {
 Eigen::VectorXd triangle_areas(const TriMesh& mesh);
 // Unit normal of each triangle (#F x 3); zero rows for degenerate triangles.
 Eigen::MatrixXd triangle_normals(const TriMesh& mesh);
+// Unit normal of each vertex (#V x 3): the area-weighted mean of its triangles' normals; zero rows
+// for vertices on no triangle or where the normals cancel.
+Eigen::MatrixXd vertex_normals(const TriMesh& mesh);
 // Total surface area (mm^2).
 double surface_area(const TriMesh& mesh);
 // Axis-aligned bounding box extent (max - min) per axis (mm).

@@ -22,20 +22,6 @@ double standard_normal(std::mt19937_64& random) {
   return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
 }
 
-Eigen::MatrixXd vertex_normals(const TriMesh& mesh) {
-  Eigen::MatrixXd normals = Eigen::MatrixXd::Zero(mesh.V.rows(), 3);
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-    const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
-    const Eigen::RowVector3d area_normal = (b - a).cross(c - a).transpose();
-    for (int corner = 0; corner < 3; ++corner) normals.row(mesh.F(f, corner)) += area_normal;
-  }
-  for (Eigen::Index v = 0; v < normals.rows(); ++v) {
-    const double length = normals.row(v).norm();
-    if (length > 0.0) normals.row(v) /= length;
-  }
-  return normals;
-}
-
 }  // namespace
 
 void add_normal_noise(TriMesh& mesh, double sigma_mm, std::mt19937_64& random) {

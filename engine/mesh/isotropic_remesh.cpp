@@ -14,11 +14,6 @@ using Vec = OmMesh::Point;
 Eigen::Vector3d to_eigen(const Vec& p) { return {p[0], p[1], p[2]}; }
 Vec to_point(const Eigen::Vector3d& p) { return Vec(p.x(), p.y(), p.z()); }
 
-double edge_length(const OmMesh& mesh, OmMesh::EdgeHandle edge) {
-  const auto h = mesh.halfedge_handle(edge, 0);
-  return (mesh.point(mesh.to_vertex_handle(h)) - mesh.point(mesh.from_vertex_handle(h))).norm();
-}
-
 Vec face_normal_with(const OmMesh& mesh, OmMesh::FaceHandle face, OmMesh::VertexHandle moved, const Vec& moved_to) {
   std::array<Vec, 3> p;
   int c = 0;
@@ -67,7 +62,7 @@ bool try_collapse(OmMesh& mesh, OmMesh::EdgeHandle edge, double high_mm, bool to
 void split_long_edges(OmMesh& mesh, double high_mm) {
   for (size_t e = 0; e < mesh.n_edges(); ++e) {
     const OmMesh::EdgeHandle edge(static_cast<int>(e));
-    if (mesh.status(edge).deleted() || mesh.is_boundary(edge) || edge_length(mesh, edge) <= high_mm) continue;
+    if (mesh.status(edge).deleted() || mesh.is_boundary(edge) || mesh.calc_edge_length(edge) <= high_mm) continue;
     const auto h = mesh.halfedge_handle(edge, 0);
     const Vec midpoint = 0.5 * (mesh.point(mesh.to_vertex_handle(h)) + mesh.point(mesh.from_vertex_handle(h)));
     mesh.split(edge, mesh.add_vertex(midpoint));
@@ -77,7 +72,7 @@ void split_long_edges(OmMesh& mesh, double high_mm) {
 void collapse_short_edges(OmMesh& mesh, double low_mm, double high_mm) {
   for (size_t e = 0; e < mesh.n_edges(); ++e) {
     const OmMesh::EdgeHandle edge(static_cast<int>(e));
-    if (mesh.status(edge).deleted() || edge_length(mesh, edge) >= low_mm) continue;
+    if (mesh.status(edge).deleted() || mesh.calc_edge_length(edge) >= low_mm) continue;
     try_collapse(mesh, edge, high_mm, false);
   }
 }
@@ -162,7 +157,7 @@ void isotropic_remesh(OmMesh& mesh, double target_edge_mm, int iterations, const
 
 void adjust_triangle_count(OmMesh& mesh, int target_triangles, int smoothing_rounds, const SurfaceProjection& project) {
   std::vector<std::pair<double, int>> edges_by_length;
-  for (const auto edge : mesh.edges()) edges_by_length.emplace_back(edge_length(mesh, edge), edge.idx());
+  for (const auto edge : mesh.edges()) edges_by_length.emplace_back(mesh.calc_edge_length(edge), edge.idx());
   int faces = static_cast<int>(mesh.n_faces());
   double mean_length_mm = 0.0;
   for (const auto& entry : edges_by_length) mean_length_mm += entry.first;

@@ -11,23 +11,6 @@ namespace {
 
 using Index = std::size_t;
 
-Eigen::MatrixXd face_area_normals(const TriMesh& mesh) {
-  Eigen::MatrixXd normals(mesh.F.rows(), 3);
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-    const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
-    normals.row(f) = 0.5 * (b - a).cross(c - a).transpose();  // length = area
-  }
-  return normals;
-}
-
-// Per vertex: the sum of the area normals of its faces (an unnormalised vertex normal).
-Eigen::MatrixXd vertex_area_normals(const TriMesh& mesh, const Eigen::MatrixXd& face_normals) {
-  Eigen::MatrixXd normals = Eigen::MatrixXd::Zero(mesh.V.rows(), 3);
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) normals.row(mesh.F(f, k)) += face_normals.row(f);
-  return normals;
-}
-
 std::vector<char> boundary_flags(const MeshTopology& topology) {
   std::vector<char> on_boundary(static_cast<Index>(topology.vertex_count()), 0);
   for (const auto& loop : topology.boundary_loops)
@@ -45,7 +28,7 @@ double mean_edge_mm(const TriMesh& mesh) {
 }  // namespace
 
 double estimated_noise_mm(const TriMesh& mesh, const MeshTopology& topology) {
-  const Eigen::MatrixXd normals = vertex_area_normals(mesh, face_area_normals(mesh));
+  const Eigen::MatrixXd normals = vertex_normals(mesh);
   const Index count = static_cast<Index>(mesh.V.rows());
   // A boundary vertex's umbrella is one-sided: its height measures the rim's curve, not noise.
   const std::vector<char> on_boundary = boundary_flags(topology);
@@ -57,7 +40,7 @@ double estimated_noise_mm(const TriMesh& mesh, const MeshTopology& topology) {
     Eigen::RowVector3d centroid = Eigen::RowVector3d::Zero();
     for (int i = begin; i < end; ++i) centroid += mesh.V.row(topology.neighbors[static_cast<Index>(i)]);
     centroid /= end - begin;
-    height[v] = (mesh.V.row(static_cast<Eigen::Index>(v)) - centroid).dot(normals.row(static_cast<Eigen::Index>(v)).normalized());
+    height[v] = (mesh.V.row(static_cast<Eigen::Index>(v)) - centroid).dot(normals.row(static_cast<Eigen::Index>(v)));
   }
   std::vector<double> jumps;
   jumps.reserve(count);
@@ -90,13 +73,13 @@ DenoiseReport denoise_scan(TriMesh& mesh, const MeshTopology& topology, const De
   constexpr double kLambda = 0.5, kMu = -0.53;
   for (int pass = 0; pass < options.passes; ++pass) {
     for (const double factor : {kLambda, kMu}) {
-      const Eigen::MatrixXd normals = vertex_area_normals(mesh, face_area_normals(mesh));
+      const Eigen::MatrixXd normals = vertex_normals(mesh);
       Eigen::MatrixXd moved = mesh.V;
       for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) {
         const int begin = topology.neighbor_offsets[static_cast<Index>(v)];
         const int end = topology.neighbor_offsets[static_cast<Index>(v) + 1];
         if (fixed[static_cast<Index>(v)] || end == begin || normals.row(v).norm() == 0.0) continue;
-        const Eigen::RowVector3d normal = normals.row(v).normalized();
+        const Eigen::RowVector3d normal = normals.row(v);  // unit
         Eigen::RowVector3d centroid = Eigen::RowVector3d::Zero();
         for (int i = begin; i < end; ++i) centroid += mesh.V.row(topology.neighbors[static_cast<Index>(i)]);
         const Eigen::RowVector3d towards = centroid / (end - begin) - mesh.V.row(v);

@@ -8,23 +8,17 @@
 namespace lastcut {
 namespace {
 
-double length_of(const OmMesh& mesh, OmMesh::EdgeHandle edge) {
-  const auto h = mesh.halfedge_handle(edge, 0);
-  return (mesh.point(mesh.to_vertex_handle(h)) - mesh.point(mesh.from_vertex_handle(h))).norm();
-}
-
 constexpr double kNeedleAspect = 5.0;  // longest edge of the triangle / the short edge
 
 bool is_sliver_edge(const OmMesh& mesh, OmMesh::EdgeHandle edge, double limit_mm) {
-  const double length = length_of(mesh, edge);
+  const double length = mesh.calc_edge_length(edge);
   if (length >= limit_mm) return false;
   for (int side = 0; side < 2; ++side) {
     const auto h = mesh.halfedge_handle(edge, side);
     if (mesh.is_boundary(h)) continue;
     const auto next = mesh.next_halfedge_handle(h);
-    const double other_a = (mesh.point(mesh.to_vertex_handle(next)) - mesh.point(mesh.from_vertex_handle(next))).norm();
-    const auto after = mesh.next_halfedge_handle(next);
-    const double other_b = (mesh.point(mesh.to_vertex_handle(after)) - mesh.point(mesh.from_vertex_handle(after))).norm();
+    const double other_a = mesh.calc_edge_length(next);
+    const double other_b = mesh.calc_edge_length(mesh.next_halfedge_handle(next));
     if (length * kNeedleAspect < std::max(other_a, other_b)) return true;
   }
   return false;

@@ -1,12 +1,11 @@
 #include "engine/scan/mold_quality_gate.hpp"
 
 #include <cmath>
-#include <functional>
 #include <limits>
-#include <queue>
 #include <utility>
 
 #include "engine/core/decimal_text.hpp"
+#include "engine/core/edge_path.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/core/mesh_topology.hpp"
 
@@ -17,31 +16,6 @@ std::vector<int> boundary_vertices(const MeshTopology& topology) {
   std::vector<int> vertices;
   for (const auto& loop : topology.boundary_loops) vertices.insert(vertices.end(), loop.begin(), loop.end());
   return vertices;
-}
-
-// Shortest path length along edges from `from` to `to` (mm), infinity when not connected.
-double edge_path_mm(const TriMesh& mesh, const MeshTopology& topology, int from, int to) {
-  std::vector<double> distance(static_cast<std::size_t>(topology.vertex_count()), std::numeric_limits<double>::infinity());
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
-  distance[static_cast<std::size_t>(from)] = 0;
-  open.emplace(0.0, from);
-  while (!open.empty()) {
-    const auto [d, v] = open.top();
-    open.pop();
-    if (v == to) return d;
-    if (d > distance[static_cast<std::size_t>(v)]) continue;
-    for (int i = topology.neighbor_offsets[static_cast<std::size_t>(v)];
-         i < topology.neighbor_offsets[static_cast<std::size_t>(v) + 1]; ++i) {
-      const int w = topology.neighbors[static_cast<std::size_t>(i)];
-      const double through = d + (mesh.V.row(v) - mesh.V.row(w)).norm();
-      if (through < distance[static_cast<std::size_t>(w)]) {
-        distance[static_cast<std::size_t>(w)] = through;
-        open.emplace(through, w);
-      }
-    }
-  }
-  return std::numeric_limits<double>::infinity();
 }
 
 // Enough digits to tell a measure from its limit: "2.0182 > 2.02" would be needless, "3.31 > 2.02" is not.
@@ -71,7 +45,7 @@ MoldSpan measure_mold_span(const TriMesh& mesh3d, const Eigen::MatrixXd& UV) {
       }
     }
   span.span_2d_mm = std::sqrt(span.span_2d_mm);
-  span.along_surface_mm = edge_path_mm(mesh3d, topology, a, b);
+  span.along_surface_mm = shortest_edge_path(mesh3d, topology, a, b).length_mm;
   if (!std::isfinite(span.along_surface_mm))
     throw EngineError("the flattened half falls apart: its farthest outline points are not connected");
   return span;

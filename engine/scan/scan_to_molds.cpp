@@ -96,14 +96,14 @@ Eigen::MatrixXd place_flattening(const Eigen::MatrixXd& UV, const std::map<std::
 
 // Slivers and scanner noise off the scan (engine/mesh/sliver_collapse.hpp, scan_denoise.hpp), after
 // the checks that refuse absurd input (a stray point 161 m off must be refused, not smoothed).
-void clean_scan(MeshIntake& intake, ScanResult& result, StageClock& clock) {
+void clean_scan(MeshIntake& intake, const DenoiseOptions& options, ScanResult& result, StageClock& clock) {
   if (const SliverReport slivers = collapse_slivers(intake.mesh); slivers.collapsed > 0) {
     intake.topology = build_mesh_topology(intake.mesh.F, intake.mesh.V.rows());
     result.notes.push_back("scan slivers: " + std::to_string(slivers.collapsed) + " edges shorter than " +
                            fixed_text(slivers.limit_mm, 2) + " mm collapsed");
     clock.lap("slivers");
   }
-  const DenoiseReport denoised = denoise_scan(intake.mesh, intake.topology);
+  const DenoiseReport denoised = denoise_scan(intake.mesh, intake.topology, options);
   if (denoised.passes > 0) {
     char note[200];
     std::snprintf(note, sizeof note, "scan noise about %.2f mm taken off (Taubin smoothing, %d passes; %.2f mm left)",
@@ -162,14 +162,14 @@ ScanResult scan_to_molds(const std::filesystem::path& scan, const ScanOptions& o
     refuse_closed_patch(topology);
     refuse_absurd_patch(intake.mesh);
     clock.lap("patch check");
-    if (options.denoise) clean_scan(intake, result, clock);
+    if (options.denoise) clean_scan(intake, options.denoise_options, result, clock);
     result.segments.push_back(
         flatten_segment("patch", std::move(intake.mesh), topology, {}, options, result.notes, clock));
   } else {
     refuse_open_patch(intake.mesh, intake.topology, options.segment_options);
     check_is_last(intake.mesh);
     clock.lap("last check");
-    if (options.denoise) clean_scan(intake, result, clock);
+    if (options.denoise) clean_scan(intake, options.denoise_options, result, clock);
     const OrientedLast oriented = orient_last(intake.mesh, options.side);
     if (!oriented.side_unnamed) result.side = oriented.side;
     result.notes.insert(result.notes.end(), oriented.notes.begin(), oriented.notes.end());

@@ -24,6 +24,7 @@
 #include "engine/core/tri_mesh.hpp"
 #include "engine/flatten/flatten.hpp"
 #include "engine/mesh/read_mesh.hpp"
+#include "engine/mesh/scan_denoise.hpp"
 #include "engine/mold/mold.hpp"
 #include "engine/scan/mold_quality_gate.hpp"
 #include "engine/segment/segment_last.hpp"
@@ -38,6 +39,7 @@ struct ScanOptions {
   SegmentOptions segment_options;
   MoldQualityLimits quality;      // the gate each half is judged by (mold_quality_gate.hpp)
   bool denoise = true;            // take scanner noise off first, where the scan has it (engine/mesh/scan_denoise.hpp)
+  DenoiseOptions denoise_options; // when the scan has noise, and how much smoothing
   std::optional<FootSide> side;  // the foot as the operator names it (--side, the sidecar): settles a
                                  // symmetric last; a clearly other-footed scan keeps its own side and warns
 };

@@ -3,9 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
-#include <queue>
 
+#include "engine/core/edge_path.hpp"
 #include "engine/core/engine_error.hpp"
 
 namespace lastcut {
@@ -31,36 +30,12 @@ std::vector<int> region_boundary_loop(const TriMesh& mesh, const MeshTopology& t
   }
   if (cut_from < 0) throw EngineError("a surface region has no boundary: the mesh is not a closed last");
 
-  // Dijkstra from cut_from to cut_to without the edge between them.
-  std::map<int, double> distance;
-  std::map<int, int> previous;
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
-  distance[cut_from] = 0.0;
-  queue.emplace(0.0, cut_from);
-  while (!queue.empty()) {
-    const auto [d, u] = queue.top();
-    queue.pop();
-    if (d > distance[u]) continue;
-    if (u == cut_to) break;
-    for (int i = topology.neighbor_offsets[static_cast<std::size_t>(u)]; i < topology.neighbor_offsets[static_cast<std::size_t>(u) + 1]; ++i) {
-      const int w = topology.neighbors[static_cast<std::size_t>(i)];
-      if ((u == cut_from && w == cut_to) || (u == cut_to && w == cut_from) || !on_contour(u, w)) continue;
-      const double candidate = d + (mesh.V.row(u) - mesh.V.row(w)).norm();
-      auto it = distance.find(w);
-      if (it == distance.end() || candidate < it->second) {
-        distance[w] = candidate;
-        previous[w] = u;
-        queue.emplace(candidate, w);
-      }
-    }
-  }
-  if (!previous.contains(cut_to)) throw EngineError("the contour around a surface region is not closed");
-  std::vector<int> loop;
-  for (int v = cut_to; v != cut_from; v = previous[v]) loop.push_back(v);
-  loop.push_back(cut_from);
-  std::reverse(loop.begin(), loop.end());
-  return loop;
+  // The shortest way round along the contour, without the edge between cut_from and cut_to.
+  const EdgePath path = shortest_edge_path(mesh, topology, cut_from, cut_to, [&](int u, int w) {
+    return !((u == cut_from && w == cut_to) || (u == cut_to && w == cut_from)) && on_contour(u, w);
+  });
+  if (path.vertices.empty()) throw EngineError("the contour around a surface region is not closed");
+  return path.vertices;
 }
 
 namespace {

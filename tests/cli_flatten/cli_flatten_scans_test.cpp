@@ -16,6 +16,7 @@
 #include "engine/mesh/fill_holes.hpp"
 #include "engine/mesh/write_mesh.hpp"
 #include "tests/scan/ragged_holes.hpp"
+#include "tests/support/issue_scans.hpp"
 #include "tests/support/lastcut_cli.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -153,15 +154,8 @@ namespace {
 // gate held it (exit 3); now the slivers are collapsed and the noise taken off, both said in
 // report.json, and the molds pass. (Exit 3 and --keep-bad-molds: cli_flatten_injective_test.cpp.)
 TEST_F(CliFlattenScans, ALoftedNoisyScanIsCleanedAndGivesMoldsThatPassTheGate) {
-  LastParams params = LastParams::for_eu_size(41, FootSide::Right);
-  params.surface = LastSurface::Lofted;
-  params.target_triangles = 90000;
-  params.noise_mm = 0.2;
-  params.noise_kind = ScanNoise::Isotropic;
-  params.random_pose = true;
-  params.seed = 5;
   const fs::path scan = dir_ / "lofted-noisy.stl";
-  write_stl_binary(scan, generate_last(params).mesh);
+  write_stl_binary(scan, generate_last(test::lofted_noisy_scan_of_issue_36()).mesh);
   const CommandRun run = flatten(scan, "lofted-noisy", "--side right");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto report = nlohmann::json::parse(read_text(dir_ / "lofted-noisy" / "report.json"));

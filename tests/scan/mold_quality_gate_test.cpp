@@ -12,6 +12,7 @@
 #include "engine/mesh/write_mesh.hpp"
 #include "engine/scan/mold_quality_gate.hpp"
 #include "engine/scan/scan_to_molds.hpp"
+#include "tests/support/issue_scans.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
@@ -99,14 +100,7 @@ TEST(MoldQualityGate, ThePipelineJudgesEveryHalfAndACleanedLoftedNoisyScanPasses
 
   // The issue's case: lofted, 90k triangles, 0.2 mm in every direction. Before the scan cleaning
   // the medial mold came out about 400 mm long with D_angle 4 (held by the gate); now it passes.
-  LastParams noisy = good;
-  noisy.surface = LastSurface::Lofted;
-  noisy.target_triangles = 90000;
-  noisy.noise_mm = 0.2;
-  noisy.noise_kind = ScanNoise::Isotropic;
-  noisy.random_pose = true;
-  noisy.seed = 5;
-  write_mesh((dir / "noisy.stl").string(), generate_last(noisy).mesh);
+  write_mesh((dir / "noisy.stl").string(), generate_last(test::lofted_noisy_scan_of_issue_36()).mesh);
   const ScanResult cleaned = scan_to_molds(dir / "noisy.stl", options);
   EXPECT_TRUE(cleaned.quality.passed()) << cleaned.quality.reason();
   for (const HalfVerdict& half : cleaned.quality.halves) EXPECT_LT(half.span.span_2d_mm, 330.0) << half.name;
