@@ -8,8 +8,9 @@
 // Cases: EU sizes x surfaces (remeshed: even triangles; lofted: rings and pole slivers, as scanner
 // exports mesh) x triangle counts x noise 0..0.3 mm (along normals / isotropic) x holes, random
 // poses. Prints one row per case and the totals; figures and the command: docs/benchmarks-noise.md.
-//   bench_noise_sweep [--quick] [--strict] [--surface lofted] [--triangles N] [--size EU] [--smooth-all]
+//   bench_noise_sweep [--quick] [--strict] [--surface lofted] [--triangles N] [--size EU] [--seams N] [--smooth-all]
 //   --strict: exit 1 when any case is WRONG; --surface/--triangles/--size: only those cases;
+//   --seams N: N stitching seams in every scan, judged against the seamless noise-free mold;
 //   --smooth-all: smooth every scan, the noise-free reference too (tells smoothing's own effect apart)
 #include <CLI/CLI.hpp>
 
@@ -41,6 +42,7 @@ struct Case {
   ScanNoise kind = ScanNoise::AlongNormal;
   int holes = 0;
   uint64_t seed = 1;
+  int seams = 0;
 };
 
 struct Outcome {
@@ -57,6 +59,7 @@ struct Sweep {
   std::string surface;  // empty: both
   int triangles = 0;    // 0: both counts
   int eu_size = 0;      // 0: three sizes
+  int seams = 0;        // stitching seams in every scan but the noise-free reference
 };
 
 ScanResult run_case(const Case& c, bool pose, bool smooth_all, const fs::path& scratch) {
@@ -66,6 +69,7 @@ ScanResult run_case(const Case& c, bool pose, bool smooth_all, const fs::path& s
   params.noise_mm = c.noise_mm;
   params.noise_kind = c.kind;
   params.holes = c.holes;
+  params.seams = c.seams;
   params.random_pose = pose;
   params.seed = c.seed;
   const fs::path scan = scratch / "scan.stl";
@@ -144,6 +148,7 @@ int run(const Sweep& sweep) {
               c.noise_mm = noise;
               c.kind = kind;
               c.holes = holes;
+              c.seams = sweep.seams;
               c.seed = base.seed * 131 + static_cast<uint64_t>(noise * 100) + static_cast<uint64_t>(holes) * 7;
               const Outcome outcome = judge(c, reference ? &*reference : nullptr, sweep.smooth_all, scratch);
               ++cases;
@@ -180,6 +185,7 @@ int main(int argc, char** argv) {
   app.add_option("--surface", sweep.surface, "only this triangulation")->check(CLI::IsMember({"remeshed", "lofted"}));
   app.add_option("--triangles", sweep.triangles, "only this triangle count");
   app.add_option("--size", sweep.eu_size, "only this EU size");
+  app.add_option("--seams", sweep.seams, "stitching seams (0.2 mm step) in every scan but the seamless, noise-free reference");
   app.add_flag("--smooth-all", sweep.smooth_all, "smooth every scan, the noise-free reference too");
   CLI11_PARSE(app, argc, argv);
   return lastcut::run(sweep);

@@ -24,6 +24,8 @@ struct GenerateOptions {
   int triangles = 50000;
   double noise_mm = 0.0;
   int holes = 0;
+  int seams = 0;
+  double seam_step_mm = 0.2;
   bool random_pose = false;
   uint64_t seed = 1;
   std::string surface = "legacy";
@@ -61,6 +63,8 @@ int run_generate(const GenerateOptions& options) {
     params.target_triangles = options.triangles;
     params.noise_mm = options.noise_mm;
     params.holes = options.holes;
+    params.seams = options.seams;
+    params.seam_step_mm = options.seam_step_mm;
     params.random_pose = options.random_pose;
     params.seed = options.seed;
     params.noise_kind = options.noise_kind == "isotropic" ? ScanNoise::Isotropic : ScanNoise::AlongNormal;
@@ -71,10 +75,10 @@ int run_generate(const GenerateOptions& options) {
     write_mesh(options.output, last.mesh);
     if (!options.pose_output.empty()) write_pose(options.pose_output, last, options);
     const Eigen::Vector3d size = bounding_box_size(last.mesh);
-    std::printf("wrote %s: EU %d %s last, %.1f mm long, %d triangles%s%s%s (bounding box %.1f x %.1f x %.1f mm)\n",
+    std::printf("wrote %s: EU %d %s last, %.1f mm long, %d triangles%s%s%s%s (bounding box %.1f x %.1f x %.1f mm)\n",
                 options.output.c_str(), options.eu_size, options.side.c_str(), params.length_mm,
                 last.mesh.triangle_count(), options.noise_mm > 0 ? ", noise" : "", options.holes > 0 ? ", holes" : "",
-                options.random_pose ? ", random pose" : "", size.x(), size.y(), size.z());
+                options.seams > 0 ? ", stitching seams" : "", options.random_pose ? ", random pose" : "", size.x(), size.y(), size.z());
     return 0;
   } catch (const EngineError& error) {
     std::fprintf(stderr, "lastcut: error: %s\n", error.what());
@@ -86,7 +90,7 @@ int run_generate(const GenerateOptions& options) {
 
 void add_generate_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<GenerateOptions>();
-  auto* command = app.add_subcommand("generate", "Write a synthetic shoe-last scan (parametric last, optional scanner noise, holes, pose)");
+  auto* command = app.add_subcommand("generate", "Write a synthetic shoe-last scan (parametric last, optional scanner noise, holes, seams, pose)");
   command->add_option("-o,--output", options->output, "Mesh file to write: .stl (binary), .obj, .ply or .off")->required();
   command->add_option("--size", options->eu_size, "EU (Paris point) size")->check(CLI::Range(35, 47))->capture_default_str();
   command->add_option("--side", options->side, "Which foot")->check(CLI::IsMember({"left", "right"}))->capture_default_str();
@@ -98,6 +102,13 @@ void add_generate_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   command->add_option("--holes", options->holes, "Small scan holes to punch (never on the top cut)")
       ->check(CLI::Range(0, 50))
+      ->capture_default_str();
+  command->add_option("--seams", options->seams,
+                      "Stitching seams: planes where two scan passes were merged (edges split there, one pass misregistered)")
+      ->check(CLI::Range(0, 8))
+      ->capture_default_str();
+  command->add_option("--seam-step", options->seam_step_mm, "Misregistration of the passes at a seam, mm")
+      ->check(CLI::Range(0.0, 2.0))
       ->capture_default_str();
   command->add_flag("--random-pose", options->random_pose, "Rotate and move the scan arbitrarily");
   command->add_option("--seed", options->seed, "Random seed: the same seed gives the same file")->capture_default_str();

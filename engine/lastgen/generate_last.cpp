@@ -8,6 +8,7 @@
 #include "engine/lastgen/last_shape.hpp"
 #include "engine/lastgen/lofted_last.hpp"
 #include "engine/lastgen/scan_artifacts.hpp"
+#include "engine/lastgen/stitching_seam.hpp"
 #include "engine/mesh/isotropic_remesh.hpp"
 #include "engine/mesh/marching_tetrahedra.hpp"
 #include "engine/mesh/midpoint_subdivision.hpp"
@@ -79,6 +80,9 @@ GeneratedLast generate_last(const LastParams& params) {
   std::mt19937_64 hole_random(params.seed * 0x9E3779B97F4A7C15ull + 1);
   std::mt19937_64 noise_random(params.seed * 0x9E3779B97F4A7C15ull + 2);
   std::mt19937_64 pose_random(params.seed * 0x9E3779B97F4A7C15ull + 3);
+  std::mt19937_64 seam_random(params.seed * 0x9E3779B97F4A7C15ull + 4);
+
+  add_stitching_seams(result.mesh, params.seams, params.seam_step_mm, seam_random);
 
   // Holes stay off the top cut (its edge fillet included) and off the very ends.
   const auto hole_allowed = [&shape, &params](const Eigen::Vector3d& p) {

@@ -37,6 +37,8 @@ void validate(const LastParams& p) {
   if (p.target_triangles < 2000 || p.target_triangles > 2'000'000) fail("triangle count must be 2000..2000000");
   if (!(p.noise_mm >= 0.0 && p.noise_mm <= 2.0)) fail("noise must be 0..2 mm");
   if (p.holes < 0 || p.holes > 50) fail("holes must be 0..50");
+  if (p.seams < 0 || p.seams > 8) fail("seams must be 0..8");
+  if (!(p.seam_step_mm >= 0 && p.seam_step_mm <= 2)) fail("seam step must be 0..2 mm");
 }
 
 }  // namespace lastcut

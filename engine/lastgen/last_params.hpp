@@ -39,6 +39,8 @@ struct LastParams {
   double noise_mm = 0.0;        // scanner noise, Gaussian sigma (along the normal, or per axis)
   ScanNoise noise_kind = ScanNoise::AlongNormal;
   int holes = 0;                // small scan holes (a few mm across), never on the top cut
+  int seams = 0;                // stitching seams where two scan passes were merged (stitching_seam.hpp)
+  double seam_step_mm = 0.2;    // the passes' misregistration: the step at a seam
   bool random_pose = false;     // arbitrary rotation + translation of the whole scan
   uint64_t seed = 1;
   LastSurface surface = LastSurface::Remeshed;

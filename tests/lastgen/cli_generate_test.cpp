@@ -63,6 +63,18 @@ TEST_F(CliGenerate, RandomPoseIsWrittenAndUndoesToTheCanonicalFrame) {
   EXPECT_NEAR(bounding_box_size(mesh).x(), 280.0, 3.0);
 }
 
+TEST_F(CliGenerate, StitchingSeamsAddTheirZipperTrianglesAndSayItsASeamedScan) {
+  const std::string plain = (dir_ / "plain.stl").string(), seamed = (dir_ / "seamed.stl").string();
+  ASSERT_EQ(run("-o '" + plain + "' --size 41 --side right --triangles 3000 --seed 4").exit_code, 0);
+  const CommandResult result = run("-o '" + seamed + "' --size 41 --side right --triangles 3000 --seed 4 --seams 2 --seam-step 0.2");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find(", stitching seams"), std::string::npos) << result.out;
+  const MeshIntake seamed_intake = read_mesh(seamed);
+  EXPECT_GT(seamed_intake.mesh.triangle_count(), read_mesh(plain).mesh.triangle_count() + 50);
+  EXPECT_EQ(seamed_intake.report.boundary_loops, 0) << "one closed sheet";
+  EXPECT_NE(run("-o '" + seamed + "' --seams 9").exit_code, 0);
+}
+
 TEST_F(CliGenerate, BadArgumentsFailWithOneLine) {
   CommandResult result = run("-o '" + (dir_ / "x.stl").string() + "' --size 30");
   EXPECT_NE(result.exit_code, 0);
