@@ -10,10 +10,6 @@
 #include "engine/mesh/mesh_face_edits.hpp"
 
 namespace lastcut {
-namespace {
-
-// Our own uniform and Gaussian draws: std:: distributions differ between standard libraries,
-// the raw mt19937_64 stream does not, so a seed gives the same scan everywhere.
 double uniform01(std::mt19937_64& random) { return static_cast<double>(random() >> 11) * 0x1.0p-53; }
 
 double standard_normal(std::mt19937_64& random) {
@@ -21,8 +17,6 @@ double standard_normal(std::mt19937_64& random) {
   const double u2 = uniform01(random);
   return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
 }
-
-}  // namespace
 
 void add_normal_noise(TriMesh& mesh, double sigma_mm, std::mt19937_64& random) {
   if (sigma_mm <= 0.0) return;

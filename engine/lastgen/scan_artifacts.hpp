@@ -11,6 +11,11 @@
 
 namespace lastcut {
 
+// Our own uniform and Gaussian draws: std:: distributions differ between standard libraries,
+// the raw mt19937_64 stream does not, so a seed gives the same scan everywhere.
+double uniform01(std::mt19937_64& random);        // [0, 1)
+double standard_normal(std::mt19937_64& random);  // N(0, 1), Box-Muller
+
 // Moves every vertex along its area-weighted normal by N(0, sigma_mm^2).
 void add_normal_noise(TriMesh& mesh, double sigma_mm, std::mt19937_64& random);
 // Moves every vertex by N(0, sigma_mm^2) in each of x, y and z, as a scanner's point error is:

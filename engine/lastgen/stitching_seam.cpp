@@ -5,21 +5,19 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numbers>
 #include <utility>
 #include <vector>
+
+#include "engine/lastgen/scan_artifacts.hpp"
 
 namespace lastcut {
 namespace {
 
-// A unit vector in a uniformly random direction (from three normal draws, our own Box-Muller so
-// that a seed gives the same scan with every standard library).
+// A unit vector in a uniformly random direction.
 Eigen::Vector3d random_direction(std::mt19937_64& random) {
-  const auto uniform = [&random] { return (static_cast<double>(random() >> 11) + 0.5) * 0x1.0p-53; };
   Eigen::Vector3d direction;
   do {
-    for (int axis = 0; axis < 3; ++axis)
-      direction(axis) = std::sqrt(-2.0 * std::log(uniform())) * std::cos(2.0 * std::numbers::pi * uniform());
+    for (int axis = 0; axis < 3; ++axis) direction(axis) = standard_normal(random);
   } while (direction.norm() < 1e-6);
   return direction.normalized();
 }
@@ -85,7 +83,7 @@ void add_stitching_seams(TriMesh& mesh, int count, double misregistration_mm, st
     // Through the middle half of the last, so the seam crosses it rather than grazing an end.
     Eigen::Vector3d point = centroid;
     for (int axis = 0; axis < 3; ++axis)
-      point(axis) += 0.25 * extent(axis) * (2.0 * (static_cast<double>(random() >> 11) * 0x1.0p-53) - 1.0);
+      point(axis) += 0.25 * extent(axis) * (2.0 * uniform01(random) - 1.0);
     const Eigen::Vector3d normal = random_direction(random);
     const std::vector<int> side = cut_along_plane(mesh, point, normal);
     // Half the error as a turn (its lever: 100 mm, about half a last), half as a shift.
