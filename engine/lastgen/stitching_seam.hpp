@@ -5,7 +5,8 @@
 // along the seam, and zippering cuts the triangles there into thin ones (G. Turk and M. Levoy,
 // "Zippered polygon meshes from range images", SIGGRAPH 1994, describe the merge).
 // This models both: a plane through the last is the seam; every edge crossing it is split at the
-// crossing, so the triangles it cuts become thin ones wherever it passes near a vertex; and the
+// crossing (engine/segment/level_set_cut.hpp, without snapping), so the triangles it cuts become
+// thin ones wherever it passes near a vertex; and the
 // second pass (the plane's positive side) is misregistered by a small rigid motion, the seam's own
 // vertices by half of it, so the surface stays one closed sheet with a step at the seam.
 #include <random>
