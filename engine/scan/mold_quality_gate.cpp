@@ -29,8 +29,7 @@ std::string number(double value) {
 
 }  // namespace
 
-MoldSpan measure_mold_span(const TriMesh& mesh3d, const Eigen::MatrixXd& UV) {
-  const MeshTopology topology = build_mesh_topology(mesh3d.F, mesh3d.V.rows());
+MoldSpan measure_mold_span(const TriMesh& mesh3d, const MeshTopology& topology, const Eigen::MatrixXd& UV) {
   const std::vector<int> outline = boundary_vertices(topology);
   if (outline.size() < 2) throw EngineError("the flattened half has no outline to measure");
   MoldSpan span;
@@ -88,7 +87,7 @@ nlohmann::json MoldQuality::to_json() const {
   return document;
 }
 
-HalfVerdict judge_half(const std::string& name, const TriMesh& mesh3d, const Eigen::MatrixXd& UV,
+HalfVerdict judge_half(const std::string& name, const TriMesh& mesh3d, const MeshTopology& topology, const Eigen::MatrixXd& UV,
                        const DistortionMeasures& m, bool converged, const MoldQualityLimits& limits) {
   HalfVerdict half;
   half.name = name;
@@ -102,7 +101,7 @@ HalfVerdict judge_half(const std::string& name, const TriMesh& mesh3d, const Eig
   above("p95 stretch", m.p95_stretch, limits.max_p95_stretch);
   if (m.flipped_triangles > 0) half.breaches.push_back(std::to_string(m.flipped_triangles) + " flipped triangles");
   if (limits.require_converged && !converged) half.breaches.push_back("ARAP not converged");
-  half.span = measure_mold_span(mesh3d, UV);
+  half.span = measure_mold_span(mesh3d, topology, UV);
   if (!(half.span.excess_pct() <= limits.max_length_excess_pct))
     half.breaches.push_back("mold " + fixed_text(half.span.span_2d_mm, 0) + " mm long where the surface is " +
                             fixed_text(half.span.along_surface_mm, 0) + " mm (+" + fixed_text(half.span.excess_pct(), 1) +

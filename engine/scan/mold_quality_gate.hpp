@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/core/mesh_topology.hpp"
 #include "engine/core/tri_mesh.hpp"
 #include "engine/flatten/distortion.hpp"
 #include "engine/scan/mold_quality_limits.hpp"
@@ -29,9 +30,9 @@ struct MoldSpan {
   double excess_pct() const { return along_surface_mm > 0 ? 100.0 * (span_2d_mm / along_surface_mm - 1.0) : 0.0; }
 };
 
-// mesh3d: #V x 3 mm, a disk; UV: #V x 2 mm, same vertex order. Throws EngineError when the mesh
-// has no boundary or the two span points are not connected.
-MoldSpan measure_mold_span(const TriMesh& mesh3d, const Eigen::MatrixXd& UV);
+// mesh3d: #V x 3 mm, a disk; topology: of mesh3d; UV: #V x 2 mm, same vertex order. Throws
+// EngineError when the mesh has no boundary or the two span points are not connected.
+MoldSpan measure_mold_span(const TriMesh& mesh3d, const MeshTopology& topology, const Eigen::MatrixXd& UV);
 
 struct HalfVerdict {
   std::string name;                    // "medial", "lateral", "patch"
@@ -51,9 +52,9 @@ struct MoldQuality {
   nlohmann::json to_json() const;
 };
 
-// Judges one flattened half: mesh3d #V x 3 mm (a disk), UV #V x 2 mm in the same vertex order,
-// measures of UV against mesh3d, converged as the flattening reported it.
-HalfVerdict judge_half(const std::string& name, const TriMesh& mesh3d, const Eigen::MatrixXd& UV,
+// Judges one flattened half: mesh3d #V x 3 mm (a disk) and its topology, UV #V x 2 mm in the same
+// vertex order, measures of UV against mesh3d, converged as the flattening reported it.
+HalfVerdict judge_half(const std::string& name, const TriMesh& mesh3d, const MeshTopology& topology, const Eigen::MatrixXd& UV,
                        const DistortionMeasures& measures, bool converged, const MoldQualityLimits& limits);
 
 }  // namespace lastcut

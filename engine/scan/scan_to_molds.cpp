@@ -131,7 +131,7 @@ SegmentResult flatten_segment(std::string name, TriMesh mesh3d, const MeshTopolo
                     " triangles are flipped in the flattening");
   result.mold = make_mold(result.name, result.UV, result.mesh3d.F, landmarks, options.mold, topology);
   clock.lap(result.name + ": mold outline");
-  result.quality = judge_half(result.name, result.mesh3d, result.UV, result.measures, result.flatten.converged,
+  result.quality = judge_half(result.name, result.mesh3d, topology, result.UV, result.measures, result.flatten.converged,
                               options.quality);
   clock.lap(result.name + ": quality gate");
   return result;

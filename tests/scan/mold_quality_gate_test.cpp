@@ -21,6 +21,7 @@ namespace {
 // A 120 x 60 mm sheet bent around a cylinder of radius 40 mm, and its exact unrolling (mm).
 struct BentSheet {
   TriMesh mesh;
+  MeshTopology topology;  // of mesh
   Eigen::MatrixXd UV;
 };
 
@@ -43,12 +44,13 @@ BentSheet bent_sheet() {
       sheet.mesh.F.row(f++) << a, b, b + 1;
       sheet.mesh.F.row(f++) << a, b + 1, a + 1;
     }
+  sheet.topology = build_mesh_topology(sheet.mesh.F, sheet.mesh.V.rows());
   return sheet;
 }
 
 TEST(MoldQualityGate, AnExactUnrollingPassesWithItsSpanOnTheSurface) {
   const BentSheet sheet = bent_sheet();
-  const HalfVerdict verdict = judge_half("patch", sheet.mesh, sheet.UV, measure_distortion(sheet.mesh, sheet.UV), true, {});
+  const HalfVerdict verdict = judge_half("patch", sheet.mesh, sheet.topology, sheet.UV, measure_distortion(sheet.mesh, sheet.UV), true, {});
   EXPECT_TRUE(verdict.breaches.empty()) << verdict.breaches.front();
   // The diagonal of the 120 x 60 sheet; on the surface the edge path is a little longer (zigzag).
   EXPECT_NEAR(verdict.span.span_2d_mm, std::hypot(120.0, 60.0), 1e-9);
@@ -60,7 +62,7 @@ TEST(MoldQualityGate, AStretchedUnrollingIsRefusedOnStretchAndLength) {
   const BentSheet sheet = bent_sheet();
   const Eigen::MatrixXd stretched = sheet.UV * 1.3;
   MoldQuality quality;
-  quality.halves.push_back(judge_half("medial", sheet.mesh, stretched, measure_distortion(sheet.mesh, stretched), true, {}));
+  quality.halves.push_back(judge_half("medial", sheet.mesh, sheet.topology, stretched, measure_distortion(sheet.mesh, stretched), true, {}));
   ASSERT_FALSE(quality.passed());
   const std::string reason = quality.reason();
   EXPECT_EQ(reason.find("D_angle"), std::string::npos) << "a scaling keeps the angles: " << reason;
@@ -74,12 +76,12 @@ TEST(MoldQualityGate, NotANumberAndNoConvergenceAreBreaches) {
   DistortionMeasures measures = measure_distortion(sheet.mesh, sheet.UV);
   measures.D_angle = std::numeric_limits<double>::quiet_NaN();
   MoldQuality quality;
-  quality.halves.push_back(judge_half("lateral", sheet.mesh, sheet.UV, measures, false, {}));
+  quality.halves.push_back(judge_half("lateral", sheet.mesh, sheet.topology, sheet.UV, measures, false, {}));
   EXPECT_EQ(quality.reason(), "mold quality: lateral D_angle not a number > 2.2, ARAP not converged");
   MoldQualityLimits lenient;
   lenient.require_converged = false;
   lenient.max_D_angle = std::numeric_limits<double>::infinity();
-  EXPECT_EQ(judge_half("lateral", sheet.mesh, sheet.UV, measures, false, lenient).breaches.size(), 1u)
+  EXPECT_EQ(judge_half("lateral", sheet.mesh, sheet.topology, sheet.UV, measures, false, lenient).breaches.size(), 1u)
       << "a NaN is never within a limit, not even an infinite one";
 }
 
