@@ -4,16 +4,11 @@
 // the cutter (written first, so lastcutd never sees the hide without it). The stock copy stays.
 #include <cstdio>
 #include <memory>
-#include <sstream>
 #include <string>
-
-#include <toml++/toml.h>
 
 #include "daemon/cli/commands.hpp"
 #include "daemon/config/config_loader.hpp"
-#include "engine/core/durable_file.hpp"
-#include "engine/core/engine_error.hpp"
-#include "engine/nest/hide_file.hpp"
+#include "daemon/hides/hide_placement.hpp"
 
 namespace lastcut::cli {
 namespace {
@@ -42,28 +37,10 @@ Status load_hide(const HideLoadArguments& a) {
   if (stock.empty())
     return Status::failure("no hide " + a.hide_id + " (.dxf or .json) in the stock folder " +
                            config.paths.hide_stock_dir.string());
-  HideFile hide;
-  try {
-    hide = read_hide_file(stock);
-  } catch (const EngineError& failure) {
-    return Status::failure(failure.what());
-  }
-  const auto target = config.paths.hides_dir / stock.filename();
-  const auto sidecar = hide_sidecar_path(target);
-  if (std::filesystem::exists(target, error) || std::filesystem::exists(sidecar, error))
-    return Status::failure("hide " + a.hide_id + " is already waiting in " + config.paths.hides_dir.string());
-  toml::table table;
-  table.insert("id", hide.hide_id);
-  if (!hide.material.empty()) table.insert("material", hide.material);
-  if (hide.thickness_mm) table.insert("thickness_mm", *hide.thickness_mm);
-  table.insert("cutter", a.cutter);
-  std::ostringstream text;
-  text << "# written by `lastcut hide load " << a.hide_id << " --cutter " << a.cutter << "`\n" << table << "\n";
-  std::filesystem::create_directories(config.paths.hides_dir, error);
-  if (Status written = write_file_durably(sidecar, text.str()); !written) return written;
-  if (Status copied = copy_file_durably(stock, target); !copied) return copied;
-  std::printf("hide %s (%s, %.2f m^2) now lies on cutter %s: %s\n", hide.hide_id.c_str(), stock.filename().c_str(),
-              hide.area_m2, a.cutter.c_str(), target.c_str());
+  const auto placed = daemon::place_hide(config, stock, stock.filename().string(), a.cutter,
+                                         "`lastcut hide load " + a.hide_id + " --cutter " + a.cutter + "`");
+  if (!placed) return placed.status();
+  std::printf("%s\n", placed->c_str());
   return Status::success();
 }
 

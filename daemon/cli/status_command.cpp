@@ -5,23 +5,13 @@
 #include <string>
 
 #include "daemon/cli/commands.hpp"
-#include "daemon/cli/store_view.hpp"
-#include "daemon/config/config_loader.hpp"
+#include "daemon/store_view/store_view.hpp"
 
 namespace lastcut::cli {
 
-Result<std::unique_ptr<StoreView>> open_store_view(const std::string& config_file, const std::string& spool_dir) {
-  if (!spool_dir.empty()) return make_spool_view(spool_dir);
-  const auto loaded = daemon::load_daemon_config(config_file);
-  if (!loaded.config) return Status::failure(loaded.error);
-  if (loaded.config->ledger) {
-    std::vector<std::string> hide_materials;
-    for (const auto& [name, material] : loaded.config->materials)
-      if (material.kind == daemon::MaterialKind::Hide) hide_materials.push_back(name);
-    return make_ledger_view(*loaded.config->ledger, std::move(hide_materials));
-  }
-  return make_spool_view(loaded.config->paths.spool_dir.string());
-}
+using daemon::JobLine;
+using daemon::StoreOverview;
+using daemon::open_store_view;
 
 namespace {
 

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "daemon/cli/store_view.hpp"
+#include "daemon/store_view/store_view.hpp"
 #include "daemon/ledger/ledger_client.hpp"
 #include "daemon/ledger/ledger_connection.hpp"
 
-namespace lastcut::cli {
+namespace lastcut::daemon {
 namespace {
 
 nlohmann::json hide_json(const ledger::HideRow& hide) {
@@ -39,7 +39,7 @@ JobLine job_line(const ledger::JobRow& job) {
 
 class LedgerView : public StoreView {
  public:
-  LedgerView(daemon::LedgerConfig ledger, std::vector<std::string> hide_materials)
+  LedgerView(LedgerConfig ledger, std::vector<std::string> hide_materials)
       : ledger_(std::move(ledger)), hide_materials_(std::move(hide_materials)) {}
 
   Result<StoreOverview> overview(std::size_t recent_count) override {
@@ -127,15 +127,15 @@ class LedgerView : public StoreView {
     return Status::success();
   }
 
-  daemon::LedgerConfig ledger_;
+  LedgerConfig ledger_;
   std::vector<std::string> hide_materials_;
   std::unique_ptr<ledger::LedgerClient> client_;
 };
 
 }  // namespace
 
-std::unique_ptr<StoreView> make_ledger_view(const daemon::LedgerConfig& ledger, std::vector<std::string> hide_materials) {
+std::unique_ptr<StoreView> make_ledger_view(const LedgerConfig& ledger, std::vector<std::string> hide_materials) {
   return std::make_unique<LedgerView>(ledger, std::move(hide_materials));
 }
 
-}  // namespace lastcut::cli
+}  // namespace lastcut::daemon

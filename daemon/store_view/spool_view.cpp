@@ -6,14 +6,12 @@
 #include <string>
 #include <vector>
 
-#include "daemon/cli/store_view.hpp"
+#include "daemon/store_view/store_view.hpp"
 #include "daemon/spool/spool.hpp"
 #include "daemon/station/engine_steps.hpp"
 
-namespace lastcut::cli {
+namespace lastcut::daemon {
 namespace {
-
-using daemon::JobFolder;
 
 nlohmann::json read_json(const std::filesystem::path& file) {
   std::ifstream in(file);
@@ -22,8 +20,8 @@ nlohmann::json read_json(const std::filesystem::path& file) {
   return json.is_discarded() ? nlohmann::json(nullptr) : json;
 }
 
-nlohmann::json job_summary(const daemon::JobState& state, JobFolder folder) {
-  return {{"id", state.id},         {"folder", daemon::folder_name(folder)}, {"stage", daemon::to_string(state.stage)},
+nlohmann::json job_summary(const JobState& state, JobFolder folder) {
+  return {{"id", state.id},         {"folder", folder_name(folder)}, {"stage", to_string(state.stage)},
           {"order", state.ticket.order}, {"scan", state.scan_name},         {"cutter", state.ticket.cutter},
           {"material", state.ticket.material}, {"reason", state.reason},  {"updated_at", state.updated_at}};
 }
@@ -34,7 +32,7 @@ JobLine job_line(const nlohmann::json& job) {
 }
 
 // The document `lastcut status --json` prints for a spool (docs/daemon.md).
-nlohmann::json collect_status(const daemon::Spool& spool, std::size_t recent_count) {
+nlohmann::json collect_status(const Spool& spool, std::size_t recent_count) {
   nlohmann::json status;
   const nlohmann::json daemon_status = read_json(spool.root() / "status.json");
   status["daemon"] = daemon_status.is_null() ? nlohmann::json{{"running", false}} : daemon_status;
@@ -43,7 +41,7 @@ nlohmann::json collect_status(const daemon::Spool& spool, std::size_t recent_cou
   std::vector<std::pair<std::string, nlohmann::json>> finished;
   for (JobFolder folder : {JobFolder::Work, JobFolder::Done, JobFolder::Failed, JobFolder::Held}) {
     const auto ids = spool.list(folder);
-    counts[daemon::folder_name(folder)] = ids.size();
+    counts[folder_name(folder)] = ids.size();
     // Only the newest finished jobs are read: status stays fast with months of history.
     const std::size_t first = folder == JobFolder::Work || folder == JobFolder::Held || ids.size() <= recent_count
                                   ? 0 : ids.size() - recent_count;
@@ -63,8 +61,8 @@ nlohmann::json collect_status(const daemon::Spool& spool, std::size_t recent_cou
   for (const std::string& id : spool.list_batches()) {
     auto batch = spool.read_batch(id);
     // A batch.json without a known stage is shown too: it is held until an operator looks.
-    if (batch && (daemon::in_progress(batch->stage) || !batch->stage_problem.empty())) {
-      batches.push_back({{"id", batch->id}, {"cutter", batch->cutter}, {"stage", daemon::to_string(batch->stage)},
+    if (batch && (in_progress(batch->stage) || !batch->stage_problem.empty())) {
+      batches.push_back({{"id", batch->id}, {"cutter", batch->cutter}, {"stage", to_string(batch->stage)},
                          {"jobs", batch->job_ids}, {"pieces", batch->piece_count}, {"reason", batch->reason}});
     }
   }
@@ -127,23 +125,23 @@ class SpoolView : public StoreView {
     if (*folder == JobFolder::Work) return Status::failure("job " + id + " is already in work");
     auto state = spool_.read_state(*folder, id);
     if (!state) return Status::failure("job " + id + ": state.json is unreadable");
-    if (*folder == JobFolder::Done && state->stage != daemon::JobStage::Skipped && !again) {
+    if (*folder == JobFolder::Done && state->stage != JobStage::Skipped && !again) {
       return Status::failure("job " + id + " was already cut; add --again to cut it once more");
     }
     std::error_code error;
-    const bool has_molds = std::filesystem::exists(spool_.job_dir(*folder, id) / daemon::kItemsFile, error);
+    const bool has_molds = std::filesystem::exists(spool_.job_dir(*folder, id) / kItemsFile, error);
     const bool recompute = *folder == JobFolder::Failed || !has_molds;
     state->batch_id.clear();
     state->reason.clear();
     state->attempts = 0;
-    state->advance(recompute ? daemon::JobStage::Claimed : daemon::JobStage::Computed,
-                   "requeued by an operator from " + daemon::folder_name(*folder) + "/");
+    state->advance(recompute ? JobStage::Claimed : JobStage::Computed,
+                   "requeued by an operator from " + folder_name(*folder) + "/");
     if (Status moved = spool_.move_job(*folder, JobFolder::Work, *state); !moved) return moved;
     return "job " + id + " is back in work/; lastcutd takes it up within a second";
   }
 
  private:
-  daemon::Spool spool_;
+  Spool spool_;
 };
 
 }  // namespace
@@ -152,4 +150,4 @@ std::unique_ptr<StoreView> make_spool_view(const std::string& spool_dir) {
   return std::make_unique<SpoolView>(spool_dir);
 }
 
-}  // namespace lastcut::cli
+}  // namespace lastcut::daemon

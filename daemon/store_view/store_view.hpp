@@ -1,5 +1,5 @@
 #pragma once
-// StoreView: what `lastcut status` and `lastcut requeue` need from the store that keeps the jobs,
+// StoreView: what `lastcut status`, `lastcut requeue` and lastcutd's operator page (daemon/web) need from the store that keeps the jobs,
 // the spool folder of one station (spool_view.cpp) or the shop's PostgreSQL ledger
 // (ledger_view.cpp). The two commands (status_command.cpp) are written once against it: one
 // overview printed one way, one requeue. Both read the store directly, so they work whether
@@ -13,10 +13,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "daemon/config/ledger_config.hpp"
+#include "daemon/config/daemon_config.hpp"
 #include "engine/core/status.hpp"
 
-namespace lastcut::cli {
+namespace lastcut::daemon {
 
 // One line of a table, printf-style (both views print fixed-width columns).
 inline std::string format_line(const char* pattern, auto... values) {
@@ -62,10 +62,11 @@ class StoreView {
 // folder; `spool_dir` (--spool) names a spool folder directly. An error line when the
 // configuration cannot be read.
 Result<std::unique_ptr<StoreView>> open_store_view(const std::string& config_file, const std::string& spool_dir);
+std::unique_ptr<StoreView> open_store_view(const DaemonConfig& config);
 
 // The two views (spool_view.cpp, ledger_view.cpp). `hide_materials`: the configuration's materials
 // of kind hide, whose computed jobs wait for a hide.
 std::unique_ptr<StoreView> make_spool_view(const std::string& spool_dir);
-std::unique_ptr<StoreView> make_ledger_view(const daemon::LedgerConfig& ledger, std::vector<std::string> hide_materials);
+std::unique_ptr<StoreView> make_ledger_view(const LedgerConfig& ledger, std::vector<std::string> hide_materials);
 
-}  // namespace lastcut::cli
+}  // namespace lastcut::daemon
