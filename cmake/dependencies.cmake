@@ -19,6 +19,8 @@ pkg_check_modules(SYSTEMD REQUIRED IMPORTED_TARGET libsystemd)
 pkg_check_modules(MOSQUITTO REQUIRED IMPORTED_TARGET libmosquitto)
 # The multi-station job ledger (daemon/ledger) talks to PostgreSQL through libpqxx.
 pkg_check_modules(PQXX REQUIRED IMPORTED_TARGET libpqxx)
+# The operator page lastcutd serves (daemon/web): Debian's cpp-httplib, a compiled library there.
+pkg_check_modules(HTTPLIB REQUIRED IMPORTED_TARGET cpp-httplib)
 
 # CHOLMOD (SuiteSparse) ships no CMake config in bookworm: find it by hand.
 find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)

@@ -16,6 +16,8 @@ DEBIAN_PACKAGES=(
   libmosquitto-dev mosquitto
   # the multi-station job ledger (daemon/ledger) and the PostgreSQL server its tests start themselves
   libpqxx-dev postgresql
+  # the operator page lastcutd serves, and the real browser its tests drive
+  libcpp-httplib-dev chromium
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # independent interpreters and tools the tests run against our output

@@ -5,6 +5,7 @@
 
 #include "daemon/config/ledger_config_reader.hpp"
 #include "daemon/config/table_reader.hpp"
+#include "daemon/config/web_config_reader.hpp"
 
 #include <optional>
 #include <set>
@@ -386,6 +387,7 @@ ConfigLoadResult load_daemon_config(const std::filesystem::path& file) {
     read_log(reader, config, errors);
     read_status(reader, base, config, errors);
     if (const toml::table* ledger = reader.subtable("ledger", false)) read_ledger_table(*ledger, base, config.ledger, errors);
+    if (const toml::table* web = reader.subtable("web", false)) read_web_table(*web, base, config.web, errors);
     reader.reject_unknown();
   }
   cross_check(config, errors);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "daemon/config/ledger_config.hpp"
+#include "daemon/config/web_config.hpp"
 #include "drivers/cutter_settings.hpp"
 #include "engine/scan/mold_quality_limits.hpp"
 
@@ -121,6 +122,7 @@ struct DaemonConfig {
   LogConfig log;
   StatusConfig status;
   std::optional<LedgerConfig> ledger;  // [ledger]: several nodes share one PostgreSQL job ledger
+  std::optional<WebConfig> web;        // [web]: the operator's page (docs/operator-page.md)
 };
 
 std::string to_string(DuplicatePolicy policy);

@@ -21,6 +21,7 @@
 #include <spdlog/spdlog.h>
 
 #include "daemon/config/config_loader.hpp"
+#include "daemon/job/observer_list.hpp"
 #include "daemon/ledger/ledger_check.hpp"
 #include "daemon/ledger_node/ledger_node.hpp"
 #include "daemon/spool_store/spool_store.hpp"
@@ -30,6 +31,8 @@
 #include "daemon/service/systemd_notify.hpp"
 #include "daemon/status/mqtt_client.hpp"
 #include "daemon/status/mqtt_status.hpp"
+#include "daemon/web/live_events.hpp"
+#include "daemon/web/web_server.hpp"
 
 namespace {
 
@@ -159,6 +162,20 @@ int run(const std::string& file) {
     }
   }
   const auto config = std::make_shared<lastcut::daemon::DaemonConfig>(*loaded.config);
+  // The operator's page next, so that it too sees recovery; stopped after the station.
+  lastcut::daemon::LiveEvents live_events;
+  std::unique_ptr<lastcut::daemon::WebServer> web;
+  if (config->web) {
+    web = std::make_unique<lastcut::daemon::WebServer>(config, live_events);
+    if (lastcut::Status started = web->start(); !started) {
+      spdlog::critical("lastcutd cannot start: {}", started.error());
+      if (live_status) live_status->stop();
+      return 1;
+    }
+  }
+  lastcut::daemon::ObserverList observers;
+  observers.add(live_status.get());
+  if (web) observers.add(&live_events);
   std::unique_ptr<lastcut::daemon::JobFlow> flow;
   // One station; its store is the shop's ledger with [ledger], else this station's own spool.
   const bool on_ledger = config->ledger.has_value();
@@ -169,7 +186,7 @@ int run(const std::string& file) {
       });
   int code = 0;
   try {
-    code = serve(file, *flow, signals, notifier, loaded.config->status, live_status.get());
+    code = serve(file, *flow, signals, notifier, loaded.config->status, observers.empty() ? nullptr : &observers);
   } catch (const std::exception& error) {
     // A bug in the loop's own steps (the engine's are caught per job). Stop in order, holding the jobs
     // in hand, rather than abort; systemd starts lastcutd again (Restart=on-failure).
@@ -178,6 +195,7 @@ int run(const std::string& file) {
     code = kExitInternal;
   }
   flow.reset();
+  if (web) web->stop();
   if (live_status) live_status->stop();
   spdlog::info("lastcutd stopped");
   return code;

@@ -1,0 +1,227 @@
+// The operator page: reads /api/overview once, then follows /api/events (Server-Sent Events) and
+// redraws from what they say; the overview is read again only when the stream says it missed
+// something (resync), every 15 s for the counts, or after an action. All text is set with
+// textContent: nothing from a scan name or a reason can become markup.
+'use strict';
+
+const COLUMNS = [
+  ['incoming', 'Incoming'], ['computing', 'Computing'], ['waiting', 'Waiting for batch or hide'],
+  ['nested', 'Nested'], ['sending', 'Sending'], ['done', 'Done'], ['failed', 'Failed'], ['held', 'Held'],
+];
+// The store's word for a job's state -> the column it is shown in (spool and ledger words).
+const COLUMN_OF = {
+  claimed: 'computing', ready: 'computing', computing: 'computing', computed: 'waiting', batched: 'nested',
+  sending: 'sending', cut: 'done', done: 'done', skipped: 'done', failed: 'failed', held: 'held',
+};
+
+const state = { overview: null, jobs: new Map(), cutters: {}, incoming: [], source: null, shownJob: null };
+
+const $ = (id) => document.getElementById(id);
+function el(tag, text, className) {
+  const node = document.createElement(tag);
+  if (text !== undefined) node.textContent = text;
+  if (className) node.className = className;
+  return node;
+}
+function token() { return $('token').value.trim(); }
+function say(text, ok) {
+  const message = $('message');
+  message.textContent = text;
+  message.className = ok ? 'ok' : 'error';
+}
+
+async function act(method, url, body) {
+  const headers = {};
+  if (token()) headers.Authorization = 'Bearer ' + token();
+  const answer = await fetch(url, { method, headers, body });
+  const text = (await answer.text()).trim();
+  say(text, answer.ok);
+  await loadOverview();
+  return answer.ok;
+}
+
+async function loadOverview() {
+  const answer = await fetch('/api/overview', { cache: 'no-store' });
+  if (!answer.ok) { say(await answer.text(), false); return; }
+  const overview = await answer.json();
+  state.overview = overview;
+  state.jobs = new Map(overview.jobs.map((job) => [job.id, job]));
+  state.incoming = overview.incoming;
+  Object.assign(state.cutters, overview.live_cutters);
+  draw();
+}
+
+function jobEvent(event) {
+  const known = state.jobs.get(event.id) || {};
+  state.jobs.set(event.id, {
+    ...known, id: event.id, state: event.stage, scan: event.scan || known.scan, order: event.order || known.order,
+    reason: event.reason, note: event.note, cutter: event.cutter, batch: event.batch,
+  });
+  state.incoming = state.incoming.filter((name) => name !== event.scan);
+  draw();
+  if (state.shownJob === event.id) showJob(event.id);
+}
+
+function drawCutters() {
+  const box = $('cutters');
+  box.replaceChildren();
+  const names = Object.keys(state.cutters).sort();
+  if (names.length === 0) box.append(el('p', 'no cutter has reported yet'));
+  for (const name of names) {
+    const cutter = state.cutters[name];
+    const card = el('div', undefined, 'card cutter');
+    card.dataset.cutter = name;
+    card.append(el('h3', name), el('div', cutter.state, 'state state-' + cutter.state));
+    if (cutter.batch) card.append(el('div', 'batch ' + cutter.batch));
+    if (cutter.lines_total) {
+      const bar = el('progress');
+      bar.max = cutter.lines_total;
+      bar.value = cutter.lines_sent;
+      card.append(bar, el('div', `${cutter.lines_sent} of ${cutter.lines_total} lines`, 'progress-text'));
+    }
+    if (cutter.reason) card.append(el('div', cutter.reason, 'reason'));
+    box.append(card);
+  }
+  const select = $('hide-cutter');
+  const chosen = select.value;
+  select.replaceChildren(...names.map((name) => el('option', name)));
+  if (names.includes(chosen)) select.value = chosen;
+}
+
+function drawQueue() {
+  const lists = Object.fromEntries(COLUMNS.map(([key]) => [key, []]));
+  for (const name of state.incoming) lists.incoming.push({ label: name });
+  for (const job of state.jobs.values()) {
+    const column = COLUMN_OF[job.state] || 'computing';
+    lists[column].push({ job, label: `${job.id} ${job.order ? '[' + job.order + '] ' : ''}${job.scan || ''}` });
+  }
+  const box = $('queue');
+  box.replaceChildren();
+  for (const [key, title] of COLUMNS) {
+    const column = el('div', undefined, 'column ' + key);
+    column.id = 'column-' + key;
+    const heading = el('h3', title);
+    heading.append(el('span', String(lists[key].length), 'count'));
+    const list = el('ul');
+    for (const item of lists[key].slice(-40)) {
+      const line = el('li');
+      if (item.job) {
+        line.dataset.job = item.job.id;
+        const link = el('a', item.label);
+        link.href = '#job/' + encodeURIComponent(item.job.id);
+        line.append(link);
+        if (item.job.reason && (key === 'held' || key === 'failed')) line.append(el('div', item.job.reason, 'reason'));
+        if (key === 'held' || key === 'failed') {
+          const again = el('button', 'Requeue', 'requeue');
+          again.addEventListener('click', () => act('POST', `/api/jobs/${encodeURIComponent(item.job.id)}/requeue`));
+          line.append(again);
+        }
+      } else {
+        line.textContent = item.label;
+      }
+      list.append(line);
+    }
+    column.append(heading, list);
+    box.append(column);
+  }
+}
+
+function draw() {
+  const overview = state.overview;
+  if (!overview) return;
+  $('headline').textContent = overview.headline;
+  $('stations').replaceChildren(...overview.stations.concat(overview.cutters).map((line) => el('li', line)));
+  const hideLines = overview.batches.slice();
+  for (const [material, count] of Object.entries(overview.waiting_for_hide))
+    hideLines.push(`${count} job(s) of ${material} wait for a hide`);
+  $('hide-lines').replaceChildren(...hideLines.map((line) => el('li', line)));
+  drawCutters();
+  drawQueue();
+}
+
+async function showJob(id) {
+  state.shownJob = id;
+  $('overview-view').hidden = true;
+  $('job-view').hidden = false;
+  $('job-title').textContent = 'Job ' + id;
+  const answer = await fetch('/api/jobs/' + encodeURIComponent(id), { cache: 'no-store' });
+  if (!answer.ok) { $('job-line').textContent = (await answer.text()).trim(); return; }
+  const job = await answer.json();
+  const line = job.line || {};
+  const stage = (job.state && job.state.stage) || line.state || '';
+  $('job-line').textContent = `${stage} ${line.order ? 'order ' + line.order : ''} ${line.scan || ''}`;
+  const reason = (job.state && job.state.reason) || line.reason || '';
+  // A done job's "reason" is its last note (where it was cut); only a held or failed one is a problem.
+  $('job-reason').textContent = stage === 'held' || stage === 'failed' ? reason : '';
+  $('job-line').textContent += stage === 'held' || stage === 'failed' ? '' : ` - ${reason}`;
+  const requeue = $('job-requeue');
+  requeue.hidden = !(stage === 'held' || stage === 'failed');
+  requeue.onclick = () => act('POST', `/api/jobs/${encodeURIComponent(id)}/requeue`).then(() => showJob(id));
+  const files = job.files || [];
+  const base = `/api/jobs/${encodeURIComponent(id)}/files/`;
+  $('job-pictures').replaceChildren(...files.filter((name) => name.endsWith('.svg')).map((name) => {
+    const figure = el('figure');
+    const picture = el('img');
+    picture.src = base + name;
+    picture.alt = name;
+    figure.append(picture, el('figcaption', name));
+    return figure;
+  }));
+  $('job-files').replaceChildren(...files.map((name) => {
+    const item = el('li');
+    const link = el('a', name);
+    link.href = base + name;
+    item.append(link);
+    return item;
+  }));
+  const rows = [];
+  const report = job.report || {};
+  for (const [key, value] of Object.entries(report)) {
+    if (typeof value !== 'object') rows.push([key, String(value)]);
+  }
+  $('job-report').replaceChildren(...rows.map(([key, value]) => {
+    const row = el('tr');
+    row.append(el('td', key), el('td', value));
+    return row;
+  }));
+  const history = (job.state && job.state.history) || [];
+  $('job-history').replaceChildren(...history.map((step) => el('li', `${step.at || ''} ${step.stage || ''} ${step.note || ''}`)));
+}
+
+function route() {
+  const match = location.hash.match(/^#job\/(.+)$/);
+  if (match) return showJob(decodeURIComponent(match[1]));
+  state.shownJob = null;
+  $('job-view').hidden = true;
+  $('overview-view').hidden = false;
+  return loadOverview();
+}
+
+function follow() {
+  const source = new EventSource('/api/events');
+  state.source = source;
+  source.onopen = () => { $('live').textContent = 'live'; $('live').className = 'badge on'; loadOverview(); };
+  source.onerror = () => { $('live').textContent = 'reconnecting'; $('live').className = 'badge off'; };
+  source.addEventListener('job', (message) => jobEvent(JSON.parse(message.data)));
+  source.addEventListener('cutter', (message) => {
+    const cutter = JSON.parse(message.data);
+    state.cutters[cutter.cutter] = cutter;
+    drawCutters();
+  });
+  source.addEventListener('resync', () => loadOverview());
+}
+
+$('token').value = sessionStorage.getItem('lastcut-token') || '';
+$('token').addEventListener('change', () => sessionStorage.setItem('lastcut-token', token()));
+$('token-form').addEventListener('submit', (event) => event.preventDefault());
+$('hide-form').addEventListener('submit', async (event) => {
+  event.preventDefault();
+  const file = $('hide-file').files[0];
+  if (!file) { say('choose a hide file first', false); return; }
+  const cutter = $('hide-cutter').value;
+  await act('POST', `/api/cutters/${encodeURIComponent(cutter)}/hides/${encodeURIComponent(file.name)}`, file);
+});
+window.addEventListener('hashchange', route);
+route();
+follow();
+setInterval(() => { if (!state.shownJob) loadOverview(); }, 15000);

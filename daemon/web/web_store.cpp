@@ -1,0 +1,135 @@
+// WebStore (web_store.hpp).
+#include "daemon/web/web_store.hpp"
+
+#include <algorithm>
+#include <fstream>
+
+#include "daemon/spool/spool.hpp"
+#include "daemon/web/web_route.hpp"
+
+namespace lastcut::daemon {
+namespace {
+
+constexpr std::size_t kRecentJobs = 50;
+constexpr std::size_t kIncomingShown = 200;
+constexpr auto kOverviewMaxAge = std::chrono::milliseconds(500);
+
+nlohmann::json read_json_file(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) return nullptr;
+  auto json = nlohmann::json::parse(in, nullptr, false);
+  return json.is_discarded() ? nlohmann::json(nullptr) : json;
+}
+
+nlohmann::json job_json(const JobLine& job, const char* list) {
+  return {{"id", job.id},       {"state", job.state}, {"where", job.where}, {"order", job.order},
+          {"scan", job.scan},   {"reason", job.reason}, {"list", list}};
+}
+
+// Scans waiting in the watch folder, not yet taken by the station (names only).
+nlohmann::json incoming_files(const std::filesystem::path& watch_dir) {
+  std::vector<std::string> names;
+  std::error_code error;
+  for (std::filesystem::directory_iterator it(watch_dir, error), end; !error && it != end; it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (name.empty() || name[0] == '.' || !it->is_regular_file(error)) continue;
+    names.push_back(name);
+    if (names.size() >= kIncomingShown) break;
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// The files of a job folder the page may show: its own top-level files and its molds/.
+nlohmann::json job_files(const std::filesystem::path& dir) {
+  nlohmann::json files = nlohmann::json::array();
+  std::error_code error;
+  for (const char* sub : {"", "molds"}) {
+    std::vector<std::string> names;
+    for (std::filesystem::directory_iterator it(dir / sub, error), end; !error && it != end; it.increment(error)) {
+      const std::string name = it->path().filename().string();
+      if (safe_name(name) && it->is_regular_file(error)) names.push_back(*sub ? std::string(sub) + "/" + name : name);
+    }
+    error.clear();
+    std::sort(names.begin(), names.end());
+    for (auto& name : names) files.push_back(name);
+  }
+  return files;
+}
+
+}  // namespace
+
+WebStore::WebStore(std::shared_ptr<const DaemonConfig> config)
+    : config_(std::move(config)), view_(open_store_view(*config_)) {}
+
+Result<nlohmann::json> WebStore::overview() {
+  std::lock_guard lock(mutex_);
+  const auto now = std::chrono::steady_clock::now();
+  if (cached_ && now - cached_at_ < kOverviewMaxAge) return *cached_;
+  auto read = view_->overview(kRecentJobs);
+  if (!read) return read.status();
+  nlohmann::json jobs = nlohmann::json::array();
+  for (const JobLine& job : read->in_work) jobs.push_back(job_json(job, "work"));
+  for (const JobLine& job : read->held) jobs.push_back(job_json(job, "held"));
+  for (const JobLine& job : read->recent) jobs.push_back(job_json(job, "recent"));
+  nlohmann::json out = {{"mode", config_->ledger ? "ledger" : "spool"},
+                        {"headline", read->headline},
+                        {"stations", read->station_lines},
+                        {"cutters", read->cutter_lines},
+                        {"batches", read->batch_lines},
+                        {"waiting_for_hide", read->waiting_for_hide},
+                        {"incoming", incoming_files(config_->paths.watch_dir)},
+                        {"jobs", jobs},
+                        {"can_act", !config_->web || !config_->web->tokens.empty()}};
+  cached_ = out;
+  cached_at_ = now;
+  return out;
+}
+
+std::optional<std::filesystem::path> WebStore::spool_job_dir(const std::string& id) const {
+  if (config_->ledger) return std::nullopt;
+  const Spool spool(config_->paths.spool_dir);
+  const auto folder = spool.locate(id);
+  if (!folder) return std::nullopt;
+  return spool.job_dir(*folder, id);
+}
+
+Result<nlohmann::json> WebStore::job(const std::string& id) {
+  {
+    std::lock_guard lock(mutex_);
+    if (std::string problem = view_->id_problem(id); !problem.empty()) return Status::failure(problem);
+  }
+  auto all = overview();
+  if (!all) return all.status();
+  nlohmann::json out = {{"id", id}};
+  for (const auto& line : (*all)["jobs"])
+    if (line["id"] == id) out["line"] = line;
+  if (const auto dir = spool_job_dir(id)) {
+    out["state"] = read_json_file(*dir / "state.json");
+    out["report"] = read_json_file(*dir / "report.json");
+    out["files"] = job_files(*dir);
+  } else if (!out.contains("line")) {
+    return Status::failure("no job " + id);
+  }
+  return out;
+}
+
+Result<std::filesystem::path> WebStore::job_file(const std::string& id, const std::string& name) {
+  const auto dir = spool_job_dir(id);
+  if (!dir) return Status::failure("no job " + id + " on this station's spool");
+  const std::filesystem::path file = *dir / name;
+  std::error_code error;
+  // A symbolic link could lead anywhere; only the job's own regular files are served.
+  if (!std::filesystem::is_regular_file(std::filesystem::symlink_status(file, error)))
+    return Status::failure("job " + id + " has no file " + name);
+  return file;
+}
+
+Result<std::string> WebStore::requeue(const std::string& id) {
+  std::lock_guard lock(mutex_);
+  if (std::string problem = view_->id_problem(id); !problem.empty()) return Status::failure(problem);
+  cached_.reset();
+  return view_->requeue(id, false);
+}
+
+}  // namespace lastcut::daemon

@@ -1,0 +1,118 @@
+// The operator page in a real browser: Debian's chromium, driven by puppeteer-core (tests/node).
+// Run by web_browser_test.cpp against a running lastcutd whose one job is held (its cutter
+// dropped the line); the test drops a second scan, and this script checks, without ever
+// reloading the page: the new scan moves through the queue's columns to Done, the held job
+// shows its reason and is refused without a token and requeued with it, and a hide file
+// uploaded from the page is accepted. Screenshots go to SHOTS_DIR.
+// Usage: node operator_page_browser.js URL TOKEN WATCH_DIR SCAN_FILE HIDE_FILE SHOTS_DIR NODE_MODULES
+'use strict';
+const fs = require('fs');
+const path = require('path');
+
+const [url, token, watchDir, scanFile, hideFile, shotsDir, modulesDir] = process.argv.slice(2);
+if (!modulesDir) {
+  console.error('usage: node operator_page_browser.js URL TOKEN WATCH_DIR SCAN_FILE HIDE_FILE SHOTS_DIR NODE_MODULES');
+  process.exit(2);
+}
+const puppeteer = require(path.join(modulesDir, 'puppeteer-core'));
+
+function check(condition, what) {
+  if (!condition) throw new Error('FAILED: ' + what);
+  console.log('ok: ' + what);
+}
+
+// The queue column a job (by scan name or id) is listed in now, or null.
+function columnOf(page, text) {
+  return page.evaluate((wanted) => {
+    for (const item of document.querySelectorAll('.column li')) {
+      if (item.textContent.includes(wanted)) return item.closest('.column').id.replace('column-', '');
+    }
+    return null;
+  }, text);
+}
+
+async function main() {
+  const browser = await puppeteer.launch({
+    executablePath: '/usr/bin/chromium', headless: true,
+    args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
+           '--disable-component-update', '--disable-sync', '--window-size=1400,1000'],
+  });
+  try {
+    const page = await browser.newPage();
+    await page.setViewport({ width: 1400, height: 1000 });
+    const consoleErrors = [];
+    page.on('pageerror', (error) => consoleErrors.push(String(error)));
+    await page.goto(url, { waitUntil: 'load' });
+    await page.waitForFunction(() => document.getElementById('live').textContent === 'live', { timeout: 10000 });
+    check(true, 'the page opened and follows the live events');
+    await page.evaluate(() => { window.__noReload = 'still the first page'; });
+
+    // The held job, with its reason, in the Held column.
+    await page.waitForSelector('#column-held li[data-job]', { timeout: 10000 });
+    const heldId = await page.$eval('#column-held li[data-job]', (item) => item.dataset.job);
+    const heldReason = await page.$eval('#column-held li[data-job] .reason', (item) => item.textContent);
+    check(heldReason.includes('stopped while cutting'), `the held job ${heldId} shows its reason: ${heldReason}`);
+
+    // A scan dropped now goes through the columns without a reload.
+    const seen = [];
+    const name = path.basename(scanFile);
+    const watcher = setInterval(async () => {
+      const column = await columnOf(page, name).catch(() => null);
+      if (column && seen[seen.length - 1] !== column) seen.push(column);
+    }, 50);
+    fs.copyFileSync(scanFile, path.join(watchDir, '.' + name + '.part'));
+    fs.renameSync(path.join(watchDir, '.' + name + '.part'), path.join(watchDir, name));
+    await page.waitForFunction((wanted) => {
+      const done = document.querySelector('#column-done');
+      return done && done.textContent.includes(wanted);
+    }, { timeout: 120000 }, name);
+    clearInterval(watcher);
+    if (seen[seen.length - 1] !== 'done') seen.push('done');  // the wait above saw it there
+    check(seen.length >= 3, `the new scan moved through ${seen.join(' -> ')} without a reload`);
+    await page.screenshot({ path: path.join(shotsDir, 'operator-page-overview.png'), fullPage: true });
+
+    // Requeue without the token: refused with one clear line; the job stays held.
+    await page.click(`#column-held li[data-job="${heldId}"] button.requeue`);
+    await page.waitForFunction(() => document.getElementById('message').textContent.includes('token'), { timeout: 10000 });
+    const refusal = await page.$eval('#message', (node) => node.textContent);
+    check(refusal.startsWith('this action needs a token'), `requeue without a token refused: ${refusal}`);
+    check(await columnOf(page, heldId) === 'held', 'the job is still held');
+
+    // With the token: requeued, then cut.
+    await page.type('#token', token);
+    await page.click(`#column-held li[data-job="${heldId}"] button.requeue`);
+    await page.waitForFunction(() => document.getElementById('message').className === 'ok', { timeout: 10000 });
+    check(true, 'requeued with the token: ' + await page.$eval('#message', (node) => node.textContent));
+    await page.waitForFunction((id) => {
+      const done = document.querySelector('#column-done');
+      return done && done.querySelector(`li[data-job="${id}"]`);
+    }, { timeout: 120000 }, heldId);
+    check(true, `the requeued job ${heldId} was cut`);
+
+    // A hide uploaded from the page is placed on the cutter's table.
+    const input = await page.$('#hide-file');
+    await input.uploadFile(hideFile);
+    await page.click('#hide-load');
+    await page.waitForFunction(() => document.getElementById('message').textContent.includes('now lies on cutter'),
+                               { timeout: 10000 });
+    check(true, 'hide upload: ' + await page.$eval('#message', (node) => node.textContent));
+
+    // The job page: its pictures and report, by the link in the queue.
+    await page.click(`#column-done li[data-job="${heldId}"] a`);
+    await page.waitForFunction(() => document.querySelectorAll('#job-pictures img').length > 0 &&
+                                   [...document.querySelectorAll('#job-pictures img')].every((img) => img.complete && img.naturalWidth > 0),
+                               { timeout: 10000 });
+    check(true, 'the job page shows its pictures');
+    await page.screenshot({ path: path.join(shotsDir, 'operator-page-job.png'), fullPage: true });
+
+    check(await page.evaluate(() => window.__noReload) === 'still the first page', 'the page was never reloaded');
+    check(consoleErrors.length === 0, 'no script error on the page ' + consoleErrors.join('; '));
+  } finally {
+    await browser.close();
+  }
+}
+
+main().catch((error) => {
+  console.error(error.stack || String(error));
+  process.exit(1);
+});
