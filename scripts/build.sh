@@ -12,5 +12,6 @@ shift || true
 data_option=()
 if [ -n "${LASTCUT_SHARED_DATA_DIR:-}" ]; then data_option=(-DLASTCUT_SHARED_DATA_DIR="$LASTCUT_SHARED_DATA_DIR"); fi
 cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo "${data_option[@]}" "$@" >/dev/null
-# LASTCUT_BUILD_TARGET=name builds one target (and what it needs) instead of everything.
-cmake --build "$build_dir" -j "$(nproc)" ${LASTCUT_BUILD_TARGET:+--target "$LASTCUT_BUILD_TARGET"}
+# LASTCUT_BUILD_TARGET="name ..." builds these targets (and what they need) instead of everything.
+# shellcheck disable=SC2086 # the list is split into its names on purpose
+cmake --build "$build_dir" -j "$(nproc)" ${LASTCUT_BUILD_TARGET:+--target $LASTCUT_BUILD_TARGET}

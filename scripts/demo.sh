@@ -2,8 +2,10 @@
 # The main job, end to end, on this machine: installs and builds lastcut, starts two simulated
 # cutters (a grbl drag-knife table and an HPGL plotter on pseudo-terminals), runs the daemon
 # lastcutd with config/demo/lastcut.toml (watch folder and spool under ./demo/), drops the sample
-# lasts into the watch folder, waits until every job is cut, stops the daemon cleanly and shows
-# where the molds, layouts, cut files and reports are.
+# lasts into the watch folder, waits until every job is cut and shows where the molds, layouts, cut
+# files and reports are. lastcutd serves the operator's page (http://127.0.0.1:8631/): run in a
+# terminal, the daemon and the page stay up until Ctrl-C; run without one (tests, CI, scripts),
+# the daemon is stopped cleanly once the jobs are done.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root="$(pwd)"
@@ -13,7 +15,8 @@ if [ -n "${LASTCUT_DEMO_BUILD:-}" ]; then
   bin="$(cd "$LASTCUT_DEMO_BUILD" && pwd)/bin"
 else
   bash scripts/setup.sh
-  bash scripts/build.sh build
+  # Only the three programs the demo runs, not the tests and benchmarks.
+  LASTCUT_BUILD_TARGET="lastcutd lastcut lastcut-sim" bash scripts/build.sh build
   bin="$root/build/bin"
 fi
 
@@ -25,7 +28,10 @@ rm -rf "$demo/incoming" "$demo/spool" "$demo/staging" "$demo/cutter-records"
 mkdir -p "$demo/incoming" "$demo/staging" "$demo/cutter-records"
 if [ -n "${LASTCUT_DEMO_DIR:-}" ]; then
   demo="$(cd "$demo" && pwd)"
-  sed -e "s|\"../../demo/|\"$demo/|" -e "s|\"../machines\"|\"$root/config/machines\"|" "$config" > "$demo/lastcut.toml"
+  # ... and the page on a port of the system's choice, so that a test run never meets a demo running.
+  sed -e "s|\"../../demo/|\"$demo/|" -e "s|\"../machines\"|\"$root/config/machines\"|" \
+      -e "s|\"../../daemon/web/assets\"|\"$root/daemon/web/assets\"|" -e "s|^listen = .*|listen = \"127.0.0.1:0\"|" \
+      "$config" > "$demo/lastcut.toml"
   config="$demo/lastcut.toml"
 fi
 
@@ -52,6 +58,8 @@ echo "== lastcutd"
 daemon=$!
 pids+=($daemon)
 for _ in $(seq 100); do grep -q "lastcutd ready" "$demo/lastcutd.log" && break; sleep 0.1; done
+page="$(grep -o 'operator page on http://[^ ]*' "$demo/lastcutd.log" | head -1 | sed 's/operator page on //')"
+[ -n "$page" ] && echo "the operator's page: $page"
 
 echo "== dropping the sample lasts into $demo/incoming"
 # The bundled sample lasts: the first goes to the default cutter (the grbl table) with a sidecar
@@ -80,6 +88,13 @@ for _ in $(seq 360); do
 done
 "$bin/lastcut" status --config "$config" || true
 
+if [ -t 1 ] && [ -z "${LASTCUT_DEMO_DIR:-}" ]; then
+  echo "== the jobs are cut; lastcutd and the page stay up: $page"
+  echo "   drop more scans into $demo/incoming; Ctrl-C stops the daemon and shows the results"
+  trap 'echo' INT
+  wait "$daemon" || true
+  trap - INT
+fi
 echo "== stopping lastcutd (SIGTERM)"
 kill -TERM "$daemon"
 wait "$daemon" || true
