@@ -3,12 +3,16 @@
 # bytes) dropped into the watch folder at once while the daemon runs with one simulated HPGL
 # cutter. Prints: time until every job is done, jobs per minute, inotify overflows seen, files
 # lost (must be 0), and lastcutd's peak resident memory (VmHWM) next to its memory after start,
-# to show the memory stays bounded (the queues hold ids, not geometry).
-# Usage: load_bench.sh BUILD_DIR [SCANS] [TRIANGLES]
+# to show the memory stays bounded (the queues hold ids, not geometry). With WATCHERS > 0 the
+# daemon serves its operator page and that many pages of it watch in one headless chromium
+# (page_watchers.js): the table gains the watchers, the events they saw and how late (median,
+# p99, max, and how many over 1 s); compare with a run of 0 watchers (page_load_bench.sh does both).
+# Usage: load_bench.sh BUILD_DIR [SCANS] [TRIANGLES] [WATCHERS]
 set -euo pipefail
 build="$(cd "${1:-build}" && pwd)"
 scans="${2:-200}"
 triangles="${3:-2000}"
+watchers="${4:-0}"
 source_dir="$(cd "$(dirname "$0")/../.." && pwd)"
 bin="$build/bin"
 root="$build/bench-scratch/daemon-load"
@@ -21,6 +25,11 @@ write_daemon_config "$root/lastcut.toml" "$source_dir" \
   "compute_workers = $(nproc)" \
   $'window_s = 5\nmax_pieces = 16\nnest_time_s = 1' \
   'retry_interval_s = 0.5'
+if [ "$watchers" -gt 0 ]; then
+  web_port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
+  printf '[web]\nlisten = "127.0.0.1:%s"\nassets = "%s/daemon/web/assets"\nmax_watchers = 48\nrequests_per_s = 1000\n' \
+    "$web_port" "$source_dir" >> "$root/lastcut.toml"
+fi
 
 generate_left_lasts "$bin" "$root/lasts" "$triangles" 38 40 42 44
 python3 - "$root" "$scans" <<'PY'
@@ -40,6 +49,13 @@ wait_for_line "$root/sim.log" "ready:" || true
 "$bin/lastcutd" --config "$root/lastcut.toml" > "$root/lastcutd.log" 2>&1 &
 daemon=$!
 wait_for_line "$root/lastcutd.log" "lastcutd ready" || true
+if [ "$watchers" -gt 0 ]; then
+  node "$source_dir/bench/daemon/page_watchers.js" "http://127.0.0.1:$web_port/" "$watchers" \
+    "$source_dir/tests/node/node_modules" > "$root/watchers.json" 2> "$root/watchers.log" &
+  watcher_pid=$!
+  for _ in $(seq 600); do grep -q "pages live" "$root/watchers.log" && break; sleep 0.1; done
+  grep -q "pages live" "$root/watchers.log" || { echo "the watching pages did not start:"; cat "$root/watchers.log"; exit 1; }
+fi
 rss_start_kb=$(awk '/VmRSS/ {print $2}' /proc/$daemon/status)
 
 start=$(date +%s.%N)
@@ -52,6 +68,7 @@ while :; do
 done
 end=$(date +%s.%N)
 peak_kb=$(awk '/VmHWM/ {print $2}' /proc/$daemon/status)
+if [ "$watchers" -gt 0 ]; then kill -TERM "$watcher_pid"; wait "$watcher_pid" || true; fi
 kill -TERM $daemon; wait $daemon || true; daemon=""
 kill -TERM $sim; wait $sim || true
 
@@ -80,4 +97,8 @@ echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 awk -v n="$scans" -v t="$triangles" -v w="$(nproc)" -v e="$elapsed" -v d="$done_count" -v f="$failed_count" -v h="$held_count" \
     -v l="$left" -v c="$cut_jobs" -v o="$overflows" -v r0="$rss_start_kb" -v r="$peak_kb" \
   'BEGIN { printf "| %d | %d | %d | %.1f | %.1f | %d | %d | %d | %d | %d | %d | %.1f | %.1f |\n", n, t, w, e, 60 * n / e, d, f, h, l, c, o, r0 / 1024, r / 1024 }'
+if [ "$watchers" -gt 0 ]; then
+  echo "watching pages: $(cat "$root/watchers.json")"
+  grep -q '"over_1s":0' "$root/watchers.json" || echo "SOME EVENTS ARRIVED LATER THAN 1 s"
+fi
 [ "$done_count" -eq "$scans" ] && [ "$left" -eq 0 ] && [ "$cut_jobs" -eq "$scans" ]

@@ -9,9 +9,9 @@
 #include "engine/core/engine_error.hpp"
 #include "engine/nest/nest_json.hpp"
 #include "engine/nest/hide_batch.hpp"
+#include "daemon/station/cut_outputs.hpp"
 #include "engine/toolpath/cut_file.hpp"
 #include "engine/toolpath/cut_job.hpp"
-#include "engine/toolpath/svg_writer.hpp"
 
 namespace lastcut::daemon {
 namespace {
@@ -84,13 +84,9 @@ Result<BatchMade> build_batch(const std::vector<BatchJobInput>& jobs, const Mate
       CutFileRequest request;
       request.notes = program_notes(batch_dir.filename().string(), active);
       const CutFile cut = make_cut_file(layout, instance, profile, request);
-      outcome.cut_file = "cut" + cut_file_extension(cut.format);
-      if (Status written = write_file_durably(batch_dir / outcome.cut_file, cut.text); !written) {
-        return written;
-      }
-      if (Status written = write_file_durably(batch_dir / kPreviewFile, write_svg(cut.program)); !written) {
-        return written;
-      }
+      const auto cut_file = write_cut_outputs(batch_dir, cut);
+      if (!cut_file) return cut_file.status();
+      outcome.cut_file = *cut_file;
       outcome.utilisation = layout.utilisation;
       outcome.piece_count = static_cast<int>(layout.placements.size());
       outcome.measures["strip_length_mm"] = layout.strip_length.value_or(0.0);

@@ -12,9 +12,9 @@
 #include "engine/nest/hide_file.hpp"
 #include "engine/nest/hide_offcut.hpp"
 #include "engine/nest/nest_json.hpp"
+#include "daemon/station/cut_outputs.hpp"
 #include "engine/toolpath/cut_file.hpp"
 #include "engine/toolpath/cut_job.hpp"
-#include "engine/toolpath/svg_writer.hpp"
 
 namespace lastcut::daemon {
 
@@ -101,9 +101,9 @@ Result<HideMade> build_hide(const std::vector<HideJobInput>& jobs, const std::fi
     request.notes = {"lastcut hide " + hide.hide_id + " batch " + hide_dir.filename().string()};
     for (const std::string& id : made.placed) request.notes.push_back("lastcut job " + id);
     const CutFile cut = make_cut_file(layout, batch.instance, profile, request);
-    made.cut_file = "cut" + cut_file_extension(cut.format);
-    if (Status written = write_file_durably(hide_dir / made.cut_file, cut.text); !written) return written;
-    if (Status written = write_file_durably(hide_dir / kPreviewFile, write_svg(cut.program)); !written) return written;
+    const auto cut_file = write_cut_outputs(hide_dir, cut);
+    if (!cut_file) return cut_file.status();
+    made.cut_file = *cut_file;
     const Offcut offcut = hide_offcut(layout, batch.instance, 0);
     if (Status written = write_file_durably(hide_dir / kOffcutFile, offcut_dxf(offcut)); !written) return written;
     report["offcut_file"] = kOffcutFile;

@@ -77,6 +77,8 @@ WebRoute parse_web_route(std::string_view method, std::string_view path) {
     if (parts.size() == 6 && is(3, "files") && is(4, "molds"))
       return with_method({WebRouteKind::JobFile, id, "molds/" + std::string(parts[5])}, method, "GET");
   }
+  if (is(1, "batches") && parts.size() == 5 && is(3, "files"))
+    return with_method({WebRouteKind::BatchFile, std::string(parts[2]), std::string(parts[4])}, method, "GET");
   if (is(1, "cutters") && parts.size() == 5 && is(3, "hides"))
     return with_method({WebRouteKind::LoadHide, "", std::string(parts[4]), std::string(parts[2])}, method, "POST");
   return not_found(path);

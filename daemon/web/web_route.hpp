@@ -17,6 +17,7 @@ enum class WebRouteKind {
   Events,      // GET /api/events             Server-Sent Events: job and cutter changes
   Job,         // GET /api/jobs/ID            one job: state, report, files
   JobFile,     // GET /api/jobs/ID/files/F    one file of a job: F is NAME or molds/NAME
+  BatchFile,   // GET /api/batches/B/files/F  one file of a batch or hide (cut-map.json, preview.svg, layout.json)
   Requeue,     // POST /api/jobs/ID/requeue   hand a held or failed job back (token)
   LoadHide,    // POST /api/cutters/C/hides/NAME   the body is a hide file for cutter C's table (token)
   NotFound,    // a well-formed path the page does not have (404)
@@ -26,7 +27,7 @@ enum class WebRouteKind {
 
 struct WebRoute {
   WebRouteKind kind = WebRouteKind::NotFound;
-  std::string job_id;   // Job, JobFile, Requeue
+  std::string job_id;   // Job, JobFile, Requeue; BatchFile: the batch's id
   std::string name;     // Asset: file name; JobFile: "NAME" or "molds/NAME"; LoadHide: hide file name
   std::string cutter;   // LoadHide
   std::string problem;  // Refused, NotFound, WrongMethod: one line for the answer and the log

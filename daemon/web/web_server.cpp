@@ -176,6 +176,12 @@ void WebServer::Impl::get(const WebRoute& route, const httplib::Request& req, ht
         answer(res, 404, file ? "job " + route.job_id + ": " + route.name + " unreadable" : file.error());
       return;
     }
+    case WebRouteKind::BatchFile: {
+      auto file = store.batch_file(route.job_id, route.name);
+      if (!file || !send_file(res, *file, kFilePolicy))
+        answer(res, 404, file ? "batch " + route.job_id + ": " + route.name + " unreadable" : file.error());
+      return;
+    }
     case WebRouteKind::Requeue:
     case WebRouteKind::LoadHide:
     case WebRouteKind::NotFound:

@@ -114,15 +114,30 @@ Result<nlohmann::json> WebStore::job(const std::string& id) {
   return out;
 }
 
+namespace {
+
+// A symbolic link could lead anywhere; only a folder's own regular files are served.
+Result<std::filesystem::path> regular_file_in(const std::filesystem::path& dir, const std::string& name,
+                                              const std::string& owner) {
+  std::error_code error;
+  const std::filesystem::path file = dir / name;
+  if (!std::filesystem::is_regular_file(std::filesystem::symlink_status(file, error)))
+    return Status::failure(owner + " has no file " + name);
+  return file;
+}
+
+}  // namespace
+
 Result<std::filesystem::path> WebStore::job_file(const std::string& id, const std::string& name) {
   const auto dir = spool_job_dir(id);
   if (!dir) return Status::failure("no job " + id + " on this station's spool");
-  const std::filesystem::path file = *dir / name;
-  std::error_code error;
-  // A symbolic link could lead anywhere; only the job's own regular files are served.
-  if (!std::filesystem::is_regular_file(std::filesystem::symlink_status(file, error)))
-    return Status::failure("job " + id + " has no file " + name);
-  return file;
+  return regular_file_in(*dir, name, "job " + id);
+}
+
+Result<std::filesystem::path> WebStore::batch_file(const std::string& batch_id, const std::string& name) {
+  const std::filesystem::path dir = config_->ledger ? config_->ledger->shared_dir / "batches" / batch_id
+                                                    : Spool(config_->paths.spool_dir).batch_dir(batch_id);
+  return regular_file_in(dir, name, "batch " + batch_id);
 }
 
 Result<std::string> WebStore::requeue(const std::string& id) {

@@ -29,6 +29,8 @@ class WebStore {
   Result<nlohmann::json> job(const std::string& id);
   // A file of a job on the spool: "NAME" or "molds/NAME", already checked by safe_name().
   Result<std::filesystem::path> job_file(const std::string& id, const std::string& name);
+  // A file of a batch (or a hide cut as one): on a spool in batches/, on a ledger in its shared folder.
+  Result<std::filesystem::path> batch_file(const std::string& batch_id, const std::string& name);
   Result<std::string> requeue(const std::string& id);
 
  private:

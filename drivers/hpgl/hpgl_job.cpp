@@ -205,6 +205,16 @@ SendResult HpglJob::run(const std::string& program) {
     if (IoStatus d = link_.drain(config_.timeout_s); !d.ok) return stop(d.error);
     return finish(SendOutcome::Done, "all " + std::to_string(total_) + " bytes sent; this cutter profile cannot confirm completion");
   }
+  // OA; goes into the cutter's buffer like any instruction: after the last chunk the buffer may be
+  // full, so it waits for XON too (found by the operator page's test at real cutting speed: the
+  // cutter reported error 16, its buffer overflowed, when OA; was written during XOFF).
+  while (xonxoff && reader_.paused()) {
+    if (cancel_.load()) return stop("cancelled by the operator");
+    if (reader_.paused_for_s() > kNoProgressFactor * config_.timeout_s) {
+      return stop("cutter held XOFF for more than " + seconds_text(kNoProgressFactor * config_.timeout_s));
+    }
+    if (IoStatus r = reader_.pump(0.01); !r.ok) return stop("link lost: " + r.error);
+  }
   // Completion: OA is answered only after every instruction before it was executed. Meanwhile
   // ESC.E every second proves the cutter is alive and catches a device error (answers without commas).
   if (IoStatus w = link_.write("OA;", config_.timeout_s); !w.ok) return stop(w.error);

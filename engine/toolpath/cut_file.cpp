@@ -9,10 +9,11 @@
 
 namespace lastcut {
 
-std::string write_cut_file(const CutProgram& program, const MachineProfile& profile, CutFileFormat format) {
+std::string write_cut_file(const CutProgram& program, const MachineProfile& profile, CutFileFormat format,
+                           std::vector<std::size_t>* stroke_offsets) {
   switch (format) {
-    case CutFileFormat::Hpgl: return write_hpgl(program, profile);
-    case CutFileFormat::Gcode: return write_gcode(program, profile);
+    case CutFileFormat::Hpgl: return write_hpgl(program, profile, stroke_offsets);
+    case CutFileFormat::Gcode: return write_gcode(program, profile, stroke_offsets);
     case CutFileFormat::Dxf: return write_dxf(program);
     case CutFileFormat::Svg: return write_svg(program);
   }

@@ -2,6 +2,7 @@
 // One entry point for every cut-file format, and writing the file.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "engine/toolpath/cut_program.hpp"
 #include "engine/toolpath/machine_profile.hpp"
@@ -9,7 +10,9 @@
 namespace lastcut {
 
 // The text of the cut file in `format` (HPGL, G-code, DXF or SVG).
-std::string write_cut_file(const CutProgram& program, const MachineProfile& profile, CutFileFormat format);
+// `stroke_offsets` (HPGL and G-code only; left empty for DXF and SVG): see write_hpgl.
+std::string write_cut_file(const CutProgram& program, const MachineProfile& profile, CutFileFormat format,
+                           std::vector<std::size_t>* stroke_offsets = nullptr);
 
 // ".plt", ".nc", ".dxf" or ".svg".
 std::string cut_file_extension(CutFileFormat format);

@@ -13,7 +13,7 @@ CutFile make_cut_file(const Layout& layout, const NestInstance& instance, const 
   file.format = request.format.value_or(profile.native_format);
   file.program = plan_cut_program(pieces, profile, request.order);
   file.program.notes = request.notes;
-  file.text = write_cut_file(file.program, profile, file.format);
+  file.text = write_cut_file(file.program, profile, file.format, &file.stroke_offsets);
   file.stats = measure_program(file.program);
   return file;
 }

@@ -27,6 +27,9 @@ struct CutFile {
   CutProgram program;
   std::string text;  // the file's bytes
   CutStats stats;
+  // Per stroke of program.strokes, the byte of `text` where it begins, and where the last one ends
+  // (HPGL and G-code: strokes + 1 entries; else empty).
+  std::vector<std::size_t> stroke_offsets;
 };
 
 // Throws EngineError when the layout places nothing on the sheet or a piece cannot be planned

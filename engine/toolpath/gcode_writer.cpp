@@ -28,6 +28,7 @@ class GcodeOut {
   std::string xy(const Point2& point_mm) const { return "X" + number(point_mm.x()) + " Y" + number(point_mm.y()); }
   void line(const std::string& text) { out_ << text << "\n"; }
   std::string text() const { return out_.str(); }
+  std::size_t size() { return static_cast<std::size_t>(out_.tellp()); }
 
  private:
   int decimals_;
@@ -58,7 +59,7 @@ std::string piece_comment(const CutProgram& program, int piece) {
 
 }  // namespace
 
-std::string write_gcode(const CutProgram& program, const MachineProfile& profile) {
+std::string write_gcode(const CutProgram& program, const MachineProfile& profile, std::vector<std::size_t>* stroke_offsets) {
   const GcodeOptions& options = profile.gcode;
   GcodeOut out(options.decimals);
   const std::string& axis = options.rotary_axis;
@@ -72,6 +73,7 @@ std::string write_gcode(const CutProgram& program, const MachineProfile& profile
 
   int piece = -1;  // whose moves follow
   for (const Stroke& stroke : program.strokes) {
+    if (stroke_offsets) stroke_offsets->push_back(out.size());
     if (stroke.points_mm.size() < 2) continue;
     if (stroke.piece >= 0 && stroke.piece != piece && static_cast<size_t>(stroke.piece) < program.pieces.size()) {
       piece = stroke.piece;
@@ -123,6 +125,7 @@ std::string write_gcode(const CutProgram& program, const MachineProfile& profile
       out.line(tool.gcode_up);
     }
   }
+  if (stroke_offsets) stroke_offsets->push_back(out.size());
   out.line("G0 X0 Y0");
   if (!options.program_end.empty()) out.line(options.program_end);
   out.line("M2");

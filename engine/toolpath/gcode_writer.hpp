@@ -7,12 +7,20 @@
 //   (I, J relative to the arc start) fitted within profile.gcode.arc_tolerance_mm.
 // The program ends at the origin with every tool up, and M2.
 #include <string>
+#include <vector>
 
 #include "engine/toolpath/cut_program.hpp"
 #include "engine/toolpath/machine_profile.hpp"
 
 namespace lastcut {
 
-std::string write_gcode(const CutProgram& program, const MachineProfile& profile);
+// `stroke_offsets`, when given, gets one entry per stroke of program.strokes, the byte of the text
+// where that stroke's commands begin (a skipped stroke: where the next one would), and one more:
+// where the last stroke's commands end (the program's closing commands follow).
+std::string write_gcode(const CutProgram& program, const MachineProfile& profile,
+                        std::vector<std::size_t>* stroke_offsets);
+inline std::string write_gcode(const CutProgram& program, const MachineProfile& profile) {
+  return write_gcode(program, profile, nullptr);
+}
 
 }  // namespace lastcut

@@ -40,6 +40,7 @@ class HpglOut {
     if (count > 0) command(mnemonic + current);
   }
   std::string text() const { return out_.str(); }
+  std::size_t size() { return static_cast<std::size_t>(out_.tellp()); }
 
  private:
   const HpglOptions& options_;
@@ -48,12 +49,13 @@ class HpglOut {
 
 }  // namespace
 
-std::string write_hpgl(const CutProgram& program, const MachineProfile& profile) {
+std::string write_hpgl(const CutProgram& program, const MachineProfile& profile, std::vector<std::size_t>* stroke_offsets) {
   HpglOut out(profile.hpgl);
   out.command("IN");
   out.command("PA");
   int current_pen = -1;
   for (const Stroke& stroke : program.strokes) {
+    if (stroke_offsets) stroke_offsets->push_back(out.size());
     if (stroke.points_mm.size() < 2) continue;
     const ToolSettings& tool = profile.tool(stroke.tool);
     if (tool.hpgl_pen != current_pen) {
@@ -69,6 +71,7 @@ std::string write_hpgl(const CutProgram& program, const MachineProfile& profile)
     out.pairs("PD", std::vector<Point2>(stroke.points_mm.begin() + 1, stroke.points_mm.end()));
     out.command("PU");
   }
+  if (stroke_offsets) stroke_offsets->push_back(out.size());
   out.command("PU0,0");
   out.command("SP0");
   return out.text();

@@ -6,12 +6,20 @@
 // and max_line_length characters so cutters with small input buffers never overflow.
 // Knife angles are not written: HPGL cutters with tangential heads turn the knife themselves.
 #include <string>
+#include <vector>
 
 #include "engine/toolpath/cut_program.hpp"
 #include "engine/toolpath/machine_profile.hpp"
 
 namespace lastcut {
 
-std::string write_hpgl(const CutProgram& program, const MachineProfile& profile);
+// `stroke_offsets`, when given, gets one entry per stroke of program.strokes, the byte of the text
+// where that stroke's commands begin (a skipped stroke: where the next one would), and one more:
+// where the last stroke's commands end (the program's closing commands follow).
+std::string write_hpgl(const CutProgram& program, const MachineProfile& profile,
+                        std::vector<std::size_t>* stroke_offsets);
+inline std::string write_hpgl(const CutProgram& program, const MachineProfile& profile) {
+  return write_hpgl(program, profile, nullptr);
+}
 
 }  // namespace lastcut

@@ -24,6 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const WebRoute route = parse_web_route(method, path);
   switch (route.kind) {
     case WebRouteKind::Asset:
+    case WebRouteKind::BatchFile:
     case WebRouteKind::LoadHide:
       if (!safe_name(route.name)) std::abort();
       break;

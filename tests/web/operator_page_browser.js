@@ -3,7 +3,8 @@
 // dropped the line); the test drops a second scan, and this script checks, without ever
 // reloading the page: the new scan moves through the queue's columns to Done, the held job
 // shows its reason and is refused without a token and requeued with it, and a hide file
-// uploaded from the page is accepted. Screenshots go to SHOTS_DIR.
+// uploaded from the page is accepted; while the requeued job is cut, the cutter's card shows the
+// layout with the piece being cut highlighted. Screenshots go to SHOTS_DIR.
 // Usage: node operator_page_browser.js URL TOKEN WATCH_DIR SCAN_FILE HIDE_FILE SHOTS_DIR NODE_MODULES
 'use strict';
 const fs = require('fs');
@@ -83,6 +84,11 @@ async function main() {
     await page.click(`#column-held li[data-job="${heldId}"] button.requeue`);
     await page.waitForFunction(() => document.getElementById('message').className === 'ok', { timeout: 10000 });
     check(true, 'requeued with the token: ' + await page.$eval('#message', (node) => node.textContent));
+    // While it is cut: the cutter's card draws the layout on the table, the piece being cut highlighted.
+    await page.waitForSelector('.card.cutter svg.table .piece.cutting', { timeout: 60000 });
+    const cutting = await page.$eval('.card.cutter .pieces-text', (node) => node.textContent);
+    check(/cutting \S/.test(cutting), `the cutter's table shows the piece being cut: ${cutting}`);
+    await page.screenshot({ path: path.join(shotsDir, 'operator-page-cutter.png') });
     await page.waitForFunction((id) => {
       const done = document.querySelector('#column-done');
       return done && done.querySelector(`li[data-job="${id}"]`);

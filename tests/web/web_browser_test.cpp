@@ -2,7 +2,8 @@
 // lastcutd on a scratch spool whose first job is held by a cutter that dropped the line, then
 // operator_page_browser.js drives the page. It fails unless, without a reload, a dropped scan moves
 // through the queue to Done, the held job shows its reason, its requeue is refused without the
-// token and done with it, and a hide uploaded from the page is placed on the cutter's table.
+// token and done with it (the layout on the cutter's card marking the piece being cut), and a hide
+// uploaded from the page is placed on the cutter's table.
 #include <gtest/gtest.h>
 
 #include "tests/daemon/daemon_rig.hpp"
@@ -29,10 +30,13 @@ TEST(OperatorPageInABrowser, FollowsAScanRequeuesAHeldJobAndLoadsAHide) {
   write_variant(small_last(41, "right", 7), staging / "held.stl", "held");
   drop(staging / "held.stl", rig.watch(), "held.stl");
   ASSERT_TRUE(wait_until([&] { return rig.jobs("held").size() == 1; }, 120)) << read_text(rig.daemon_log());
-  // The alarm cleared: a cutter that works, under the same link. The held job stays held until requeued.
+  // The alarm cleared: a cutter that works, under the same link, moving at its real speed (so that
+  // the page can be seen during a cut), with an 8 KiB buffer (the simulator's 1 KiB one overflows
+  // at real speed on a PD longer than its free space: it does not run a PD's pairs as they come).
+  // The held job stays held until requeued.
   rig.stop_cutters();
   Process cutter({binary("lastcut-sim").string(), "hpgl", "--link", (rig.root() / "cutter-1.tty").string(),
-                  "--record", (rig.root() / "record2").string(), "--time-scale", "0"},
+                  "--record", (rig.root() / "record2").string(), "--time-scale", "1", "--buffer", "8192"},
                  rig.root() / "sim2.log");
   write_variant(small_last(42, "left", 7), staging / "browser-scan.stl", "browser");
   write_hide_dxf(staging / "hide-7.dxf", 1200, 900, false);

@@ -23,6 +23,10 @@ TEST(WebRoute, KnownPagesAndTheirParts) {
   EXPECT_EQ(mold.name, "molds/medial.svg");
   EXPECT_EQ(parse_web_route("GET", "/api/jobs/42/files/report.json").name, "report.json");
   EXPECT_EQ(parse_web_route("POST", "/api/jobs/42/requeue").kind, WebRouteKind::Requeue);
+  const WebRoute map = parse_web_route("GET", "/api/batches/B20261128-091500-001/files/cut-map.json");
+  EXPECT_EQ(map.kind, WebRouteKind::BatchFile);
+  EXPECT_EQ(map.job_id, "B20261128-091500-001");
+  EXPECT_EQ(map.name, "cut-map.json");
   const WebRoute hide = parse_web_route("POST", "/api/cutters/cutter-1/hides/hide-7.dxf");
   EXPECT_EQ(hide.kind, WebRouteKind::LoadHide);
   EXPECT_EQ(hide.cutter, "cutter-1");

@@ -14,7 +14,8 @@ const COLUMN_OF = {
   sending: 'sending', cut: 'done', done: 'done', skipped: 'done', failed: 'failed', held: 'held',
 };
 
-const state = { overview: null, jobs: new Map(), cutters: {}, incoming: [], source: null, shownJob: null };
+const state = { overview: null, jobs: new Map(), cutters: {}, incoming: [], source: null, shownJob: null, cutMaps: {} };
+const SVG = 'http://www.w3.org/2000/svg';
 
 const $ = (id) => document.getElementById(id);
 function el(tag, text, className) {
@@ -62,6 +63,50 @@ function jobEvent(event) {
   if (state.shownJob === event.id) showJob(event.id);
 }
 
+// The cut map of a batch (its pieces on the table and their bytes in the cut file), read once.
+function cutMap(batch) {
+  if (!(batch in state.cutMaps)) {
+    state.cutMaps[batch] = null;
+    fetch(`/api/batches/${encodeURIComponent(batch)}/files/cut-map.json`, { cache: 'no-store' })
+      .then((answer) => (answer.ok ? answer.json() : null))
+      .then((map) => { state.cutMaps[batch] = map; if (map) drawCutters(); })
+      .catch(() => {});
+  }
+  return state.cutMaps[batch];
+}
+
+// The layout on the cutter's table: each piece cut, being cut or waiting, by the bytes sent.
+function tablePicture(map, bytesSent) {
+  const svg = document.createElementNS(SVG, 'svg');
+  svg.setAttribute('class', 'table');
+  const points = map.pieces.flatMap((piece) => piece.outline_mm);
+  if (points.length === 0) return svg;
+  const xs = points.map((p) => p[0]);
+  const ys = points.map((p) => p[1]);
+  const [x0, x1, y0, y1] = [Math.min(...xs) - 10, Math.max(...xs) + 10, Math.min(...ys) - 10, Math.max(...ys) + 10];
+  svg.setAttribute('viewBox', `${x0} ${-y1} ${x1 - x0} ${y1 - y0}`);  // y up, as on the table
+  for (const piece of map.pieces) {
+    const status = bytesSent >= piece.end_byte ? 'cut' : bytesSent >= piece.first_byte ? 'cutting' : 'waiting';
+    const outline = document.createElementNS(SVG, 'polygon');
+    outline.setAttribute('points', piece.outline_mm.map((p) => `${p[0]},${-p[1]}`).join(' '));
+    outline.setAttribute('class', 'piece ' + status);
+    outline.dataset.label = piece.label;
+    const title = document.createElementNS(SVG, 'title');
+    title.textContent = `${piece.label} (${status})`;
+    outline.append(title);
+    const px = piece.outline_mm.map((p) => p[0]);
+    const py = piece.outline_mm.map((p) => p[1]);
+    const label = document.createElementNS(SVG, 'text');
+    label.setAttribute('x', (Math.min(...px) + Math.max(...px)) / 2);
+    label.setAttribute('y', -(Math.min(...py) + Math.max(...py)) / 2);
+    label.setAttribute('font-size', Math.max(8, (y1 - y0) / 30));
+    label.setAttribute('text-anchor', 'middle');
+    label.textContent = piece.label;
+    svg.append(outline, label);
+  }
+  return svg;
+}
+
 function drawCutters() {
   const box = $('cutters');
   box.replaceChildren();
@@ -73,13 +118,21 @@ function drawCutters() {
     card.dataset.cutter = name;
     card.append(el('h3', name), el('div', cutter.state, 'state state-' + cutter.state));
     if (cutter.batch) card.append(el('div', 'batch ' + cutter.batch));
-    if (cutter.lines_total) {
+    if (cutter.bytes_total) {
       const bar = el('progress');
-      bar.max = cutter.lines_total;
-      bar.value = cutter.lines_sent;
-      card.append(bar, el('div', `${cutter.lines_sent} of ${cutter.lines_total} lines`, 'progress-text'));
+      bar.max = cutter.bytes_total;
+      bar.value = cutter.bytes_sent;
+      const lines = cutter.lines_total ? `, ${cutter.lines_sent} of ${cutter.lines_total} lines acknowledged` : '';
+      card.append(bar, el('div', `${Math.round(100 * cutter.bytes_sent / cutter.bytes_total)} % sent${lines}`, 'progress-text'));
     }
     if (cutter.reason) card.append(el('div', cutter.reason, 'reason'));
+    const map = cutter.batch ? cutMap(cutter.batch) : null;
+    if (map) {
+      card.append(tablePicture(map, cutter.bytes_sent));
+      const current = map.pieces.find((piece) => cutter.bytes_sent >= piece.first_byte && cutter.bytes_sent < piece.end_byte);
+      const cut = map.pieces.filter((piece) => cutter.bytes_sent >= piece.end_byte).length;
+      card.append(el('div', `${cut} of ${map.pieces.length} pieces cut` + (current ? `; cutting ${current.label}` : ''), 'pieces-text'));
+    }
     box.append(card);
   }
   const select = $('hide-cutter');

@@ -1,0 +1,55 @@
+// N operator pages watching lastcutd at once: one headless chromium (Debian's), N tabs of the
+// real page, each recording how late every live event arrived (the browser's clock at arrival
+// minus the event's published_ms, one machine so one clock). On SIGTERM (or after LIMIT_S) prints
+// one JSON line: pages, events seen, the latency's median, p99 and max in ms, and the events later
+// than 1 s. Used by load_bench.sh WATCHERS.
+// Usage: node page_watchers.js URL PAGES NODE_MODULES [LIMIT_S]
+'use strict';
+const path = require('path');
+
+const [url, pagesArgument, modulesDir, limitArgument] = process.argv.slice(2);
+const puppeteer = require(path.join(modulesDir, 'puppeteer-core'));
+const pageCount = Number(pagesArgument);
+
+async function main() {
+  const browser = await puppeteer.launch({
+    executablePath: '/usr/bin/chromium', headless: true,
+    args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
+           '--disable-component-update', '--disable-sync', '--disable-background-timer-throttling',
+           '--disable-renderer-backgrounding', '--disable-backgrounding-occluded-windows'],
+  });
+  const pages = [];
+  for (let i = 0; i < pageCount; ++i) {
+    const page = await browser.newPage();
+    // Next to the page's own EventSource, one more that only measures: the page's script keeps its own.
+    await page.evaluateOnNewDocument(() => {
+      window.__late = [];
+      const measure = new EventSource('/api/events');
+      for (const kind of ['job', 'cutter']) {
+        measure.addEventListener(kind, (message) => {
+          const data = JSON.parse(message.data);
+          if (data.published_ms) window.__late.push(Date.now() - data.published_ms);
+        });
+      }
+    });
+    await page.goto(url, { waitUntil: 'load' });
+    pages.push(page);
+  }
+  await Promise.all(pages.map((page) => page.waitForFunction(
+    () => document.getElementById('live').textContent === 'live', { timeout: 30000 })));
+  console.error(`page_watchers: ${pageCount} pages live`);
+  const finish = async () => {
+    const late = [];
+    for (const page of pages) late.push(...await page.evaluate(() => window.__late));
+    late.sort((a, b) => a - b);
+    const at = (q) => (late.length ? late[Math.min(late.length - 1, Math.floor(q * late.length))] : 0);
+    console.log(JSON.stringify({ pages: pageCount, events: late.length, median_ms: at(0.5), p99_ms: at(0.99),
+                                 max_ms: late.length ? late[late.length - 1] : 0, over_1s: late.filter((ms) => ms > 1000).length }));
+    await browser.close();
+    process.exit(0);
+  };
+  process.on('SIGTERM', finish);
+  if (limitArgument) setTimeout(finish, Number(limitArgument) * 1000);
+}
+
+main().catch((error) => { console.error(error.stack || String(error)); process.exit(1); });
