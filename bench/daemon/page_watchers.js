@@ -5,19 +5,14 @@
 // than 1 s. Used by load_bench.sh WATCHERS.
 // Usage: node page_watchers.js URL PAGES NODE_MODULES [LIMIT_S]
 'use strict';
-const path = require('path');
 
 const [url, pagesArgument, modulesDir, limitArgument] = process.argv.slice(2);
-const puppeteer = require(path.join(modulesDir, 'puppeteer-core'));
+const { launchChromium } = require('../../tests/web/browser_kit');
 const pageCount = Number(pagesArgument);
 
 async function main() {
-  const browser = await puppeteer.launch({
-    executablePath: '/usr/bin/chromium', headless: true,
-    args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
-           '--disable-component-update', '--disable-sync', '--disable-background-timer-throttling',
-           '--disable-renderer-backgrounding', '--disable-backgrounding-occluded-windows'],
-  });
+  const browser = await launchChromium(modulesDir, ['--disable-background-timer-throttling', '--disable-renderer-backgrounding',
+                                                    '--disable-backgrounding-occluded-windows']);
   const pages = [];
   for (let i = 0; i < pageCount; ++i) {
     const page = await browser.newPage();

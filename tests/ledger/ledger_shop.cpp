@@ -1,5 +1,6 @@
 // A multi-station shop of real lastcutd nodes for tests (see ledger_shop.hpp).
 #include "tests/ledger/ledger_shop.hpp"
+#include "tests/support/loopback_port.hpp"
 
 #include <csignal>
 #include <stdexcept>
@@ -47,7 +48,10 @@ std::string LedgerShop::start_services() {
   url_ = postgres_.create_database("lastcut", error);
   if (url_.empty()) return error;
   if (std::string failed = broker_->start(); !failed.empty()) return "mosquitto: " + failed;
-  for (const ShopNode& node : options_.nodes) write_text(config_file(node.name), node_config(node));
+  for (const ShopNode& node : options_.nodes) {
+    if (!options_.web_token.empty()) web_ports_[node.name] = lastcut::test::free_loopback_port();
+    write_text(config_file(node.name), node_config(node));
+  }
   return "";
 }
 
@@ -83,6 +87,11 @@ std::string LedgerShop::node_config(const ShopNode& node) const {
           "\nheartbeat_s = " + std::to_string(options_.heartbeat_s) + "\n";
   if (!cabled.empty()) toml += "cutters = " + toml_list(cabled) + "\n";
   toml += "[status]\nmqtt_url = \"" + broker_->url() + "\"\nstation = \"" + node.name + "\"\nkeepalive_s = 5\n";
+  if (!options_.web_token.empty()) {
+    toml += "[web]\nlisten = \"127.0.0.1:" + std::to_string(web_ports_.at(node.name)) + "\"\nassets = \"" +
+            (std::filesystem::path(LASTCUT_SOURCE_DIR) / "daemon/web/assets").string() + "\"\n[web.tokens]\nshop = \"" +
+            options_.web_token + "\"\n";
+  }
   return toml;
 }
 

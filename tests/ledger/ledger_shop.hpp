@@ -41,6 +41,7 @@ struct ShopOptions {
   std::string duplicate_policy = "skip";  // [jobs] duplicate_policy
   std::string extra_paths;   // more [paths] keys for every node (e.g. hides = "hides")
   std::string extra_config;  // more tables for every node (e.g. a [materials.leather] of kind "hide")
+  std::string web_token;     // not "": every node serves its operator page, this token may act
 };
 
 class LedgerShop {
@@ -66,6 +67,8 @@ class LedgerShop {
   std::filesystem::path log_file(const std::string& node) const { return node_dir(node) / "lastcutd.log"; }
   // The last `chars` characters of every node's log, for failure messages.
   std::string log_tails(std::size_t chars = 3000) const;
+  // The port of `node`'s operator page (ShopOptions::web_token), chosen when the services start.
+  int web_port(const std::string& node) const { return web_ports_.at(node); }
 
   // Starts the simulator of `cutter` (again), recording into a folder of its own per run;
   // `fault` is lastcut-sim's --fault (e.g. "stall-at-line=20"). "" on success, else why not.
@@ -103,6 +106,7 @@ class LedgerShop {
   std::map<std::string, std::unique_ptr<Process>> nodes_;
   std::map<std::string, std::unique_ptr<Process>> simulators_;
   std::map<std::string, int> runs_;  // simulator runs per cutter
+  std::map<std::string, int> web_ports_;
 };
 
 }  // namespace lastcut::daemon::testing

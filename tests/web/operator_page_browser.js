@@ -15,12 +15,7 @@ if (!modulesDir) {
   console.error('usage: node operator_page_browser.js URL TOKEN WATCH_DIR SCAN_FILE HIDE_FILE SHOTS_DIR NODE_MODULES');
   process.exit(2);
 }
-const puppeteer = require(path.join(modulesDir, 'puppeteer-core'));
-
-function check(condition, what) {
-  if (!condition) throw new Error('FAILED: ' + what);
-  console.log('ok: ' + what);
-}
+const { launchChromium, check, clickLive, run } = require('./browser_kit');
 
 // The queue column a job (by scan name or id) is listed in now, or null.
 function columnOf(page, text) {
@@ -33,11 +28,7 @@ function columnOf(page, text) {
 }
 
 async function main() {
-  const browser = await puppeteer.launch({
-    executablePath: '/usr/bin/chromium', headless: true,
-    args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
-           '--disable-component-update', '--disable-sync', '--window-size=1400,1000'],
-  });
+  const browser = await launchChromium(modulesDir);
   try {
     const page = await browser.newPage();
     await page.setViewport({ width: 1400, height: 1000 });
@@ -73,7 +64,7 @@ async function main() {
     await page.screenshot({ path: path.join(shotsDir, 'operator-page-overview.png'), fullPage: true });
 
     // Requeue without the token: refused with one clear line; the job stays held.
-    await page.click(`#column-held li[data-job="${heldId}"] button.requeue`);
+    await clickLive(page, `#column-held li[data-job="${heldId}"] button.requeue`);
     await page.waitForFunction(() => document.getElementById('message').textContent.includes('token'), { timeout: 10000 });
     const refusal = await page.$eval('#message', (node) => node.textContent);
     check(refusal.startsWith('this action needs a token'), `requeue without a token refused: ${refusal}`);
@@ -81,7 +72,7 @@ async function main() {
 
     // With the token: requeued, then cut.
     await page.type('#token', token);
-    await page.click(`#column-held li[data-job="${heldId}"] button.requeue`);
+    await clickLive(page, `#column-held li[data-job="${heldId}"] button.requeue`);
     await page.waitForFunction(() => document.getElementById('message').className === 'ok', { timeout: 10000 });
     check(true, 'requeued with the token: ' + await page.$eval('#message', (node) => node.textContent));
     // While it is cut: the cutter's card draws the layout on the table, the piece being cut highlighted.
@@ -104,7 +95,7 @@ async function main() {
     check(true, 'hide upload: ' + await page.$eval('#message', (node) => node.textContent));
 
     // The job page: its pictures and report, by the link in the queue.
-    await page.click(`#column-done li[data-job="${heldId}"] a`);
+    await clickLive(page, `#column-done li[data-job="${heldId}"] a`);
     await page.waitForFunction(() => document.querySelectorAll('#job-pictures img').length > 0 &&
                                    [...document.querySelectorAll('#job-pictures img')].every((img) => img.complete && img.naturalWidth > 0),
                                { timeout: 10000 });
@@ -118,7 +109,4 @@ async function main() {
   }
 }
 
-main().catch((error) => {
-  console.error(error.stack || String(error));
-  process.exit(1);
-});
+run(main);

@@ -277,4 +277,10 @@ $('hide-form').addEventListener('submit', async (event) => {
 window.addEventListener('hashchange', route);
 route();
 follow();
-setInterval(() => { if (!state.shownJob) loadOverview(); }, 15000);
+// A station's own events come live; on a ledger shop the other stations' jobs come through the
+// overview, so it is read more often there.
+let lastRead = 0;
+setInterval(() => {
+  const every = state.overview && state.overview.mode === 'ledger' ? 2000 : 15000;
+  if (!state.shownJob && Date.now() - lastRead >= every) { lastRead = Date.now(); loadOverview(); }
+}, 1000);
