@@ -1,5 +1,5 @@
-// N operator pages watching lastcutd at once: one headless chromium (Debian's), N tabs of the
-// real page, each recording how late every live event arrived (the browser's clock at arrival
+// N operator pages watching lastcutd at once: one headless chromium (Debian's), the real page in
+// N browser contexts (as N browsers), each recording how late every live event arrived (the browser's clock at arrival
 // minus the event's published_ms, one machine so one clock). On SIGTERM (or after LIMIT_S) prints
 // one JSON line: pages, events seen, the latency's median, p99 and max in ms, and the events later
 // than 1 s. Used by load_bench.sh WATCHERS.
@@ -15,17 +15,24 @@ async function main() {
                                                     '--disable-backgrounding-occluded-windows']);
   const pages = [];
   for (let i = 0; i < pageCount; ++i) {
-    const page = await browser.newPage();
-    // Next to the page's own EventSource, one more that only measures: the page's script keeps its own.
+    // Each page in a browser context of its own, as N browsers: a context has its own connections
+    // (one profile allows 6 per host, which 6 pages' live streams would fill).
+    const context = await browser.createBrowserContext();
+    const page = await context.newPage();
+    // The page's own live stream measures: every EventSource it opens notes each event's delay.
     await page.evaluateOnNewDocument(() => {
       window.__late = [];
-      const measure = new EventSource('/api/events');
-      for (const kind of ['job', 'cutter']) {
-        measure.addEventListener(kind, (message) => {
-          const data = JSON.parse(message.data);
-          if (data.published_ms) window.__late.push(Date.now() - data.published_ms);
-        });
-      }
+      const Original = window.EventSource;
+      window.EventSource = function measured(url, options) {
+        const source = new Original(url, options);
+        for (const kind of ['job', 'cutter']) {
+          source.addEventListener(kind, (message) => {
+            const data = JSON.parse(message.data);
+            if (data.published_ms) window.__late.push(Date.now() - data.published_ms);
+          });
+        }
+        return source;
+      };
     });
     await page.goto(url, { waitUntil: 'load' });
     pages.push(page);

@@ -200,9 +200,17 @@ Result<std::optional<JobClaim>> LedgerClient::claim_job(double lease_s) {
 Status LedgerClient::renew(const Lease& lease, double lease_s) {
   return transact<bool>("renewing a lease", [&](pqxx::work& tx) -> Result<bool> {
            if (Status held = check_lease(tx, node_, lease); !held) return held;
-           tx.exec_params(
-               "UPDATE leases SET expires_at = now() + make_interval(secs => $3) WHERE kind = $1 AND object_id = $2",
+           // An expired lease is not brought back, even before a sweep has taken it: a node cut off
+           // longer than its lease must take its claim as lost, as its peers already may (found
+           // as a race in finished_work_outage_test: the renewal after the outage beat the sweep).
+           const pqxx::result renewed = tx.exec_params(
+               "UPDATE leases SET expires_at = now() + make_interval(secs => $3) "
+               "WHERE kind = $1 AND object_id = $2 AND expires_at > now()",
                to_string(lease.kind), lease.object_id, lease_s);
+           if (renewed.affected_rows() == 0) {
+             return Status::failure("lease lost: " + to_string(lease.kind) + " " + std::to_string(lease.object_id) +
+                                    " expired before this node could renew it");
+           }
            return true;
          })
       .status();

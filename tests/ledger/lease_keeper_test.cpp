@@ -79,7 +79,8 @@ TEST_F(LeaseKeeperTest, OutageIsLoggedOnceEachWayAndRenewalsResume) {
   ASSERT_NO_FATAL_FAILURE(hold_one_job(30, held));
   auto& [a, b, claim] = held;
   Lines log;
-  ledger::LeaseKeeper keeper(url_, "node-a", 2, 0.1, log.sink());
+  // A lease longer than the outage and the server's restart (an expired lease is never renewed).
+  ledger::LeaseKeeper keeper(url_, "node-a", 6, 0.1, log.sink());
   keeper.keep(claim.lease);
   sleep_s(0.3);
   ASSERT_TRUE(server_.stop().empty());
