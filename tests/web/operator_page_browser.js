@@ -95,10 +95,16 @@ async function main() {
     check(true, 'hide upload: ' + await page.$eval('#message', (node) => node.textContent));
 
     // The job page: its pictures and report, by the link in the queue.
-    await clickLive(page, `#column-done li[data-job="${heldId}"] a`);
+    // (A click that lands while the queue is being redrawn is lost, as a person's would be: again.)
+    for (let attempt = 0; attempt < 5; ++attempt) {
+      await clickLive(page, `#column-done li[data-job="${heldId}"] a`);
+      const opened = await page.waitForFunction(() => !document.getElementById('job-view').hidden, { timeout: 3000 })
+        .then(() => true, () => false);
+      if (opened) break;
+    }
     await page.waitForFunction(() => document.querySelectorAll('#job-pictures img').length > 0 &&
                                    [...document.querySelectorAll('#job-pictures img')].every((img) => img.complete && img.naturalWidth > 0),
-                               { timeout: 10000 });
+                               { timeout: 30000 });
     check(true, 'the job page shows its pictures');
     await page.screenshot({ path: path.join(shotsDir, 'operator-page-job.png'), fullPage: true });
 
