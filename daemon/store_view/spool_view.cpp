@@ -13,13 +13,6 @@
 namespace lastcut::daemon {
 namespace {
 
-nlohmann::json read_json(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) return nullptr;
-  auto json = nlohmann::json::parse(in, nullptr, false);
-  return json.is_discarded() ? nlohmann::json(nullptr) : json;
-}
-
 nlohmann::json job_summary(const JobState& state, JobFolder folder) {
   return {{"id", state.id},         {"folder", folder_name(folder)}, {"stage", to_string(state.stage)},
           {"order", state.ticket.order}, {"scan", state.scan_name},         {"cutter", state.ticket.cutter},
@@ -34,7 +27,7 @@ JobLine job_line(const nlohmann::json& job) {
 // The document `lastcut status --json` prints for a spool (docs/daemon.md).
 nlohmann::json collect_status(const Spool& spool, std::size_t recent_count) {
   nlohmann::json status;
-  const nlohmann::json daemon_status = read_json(spool.root() / "status.json");
+  const nlohmann::json daemon_status = read_json_or_null(spool.root() / "status.json");
   status["daemon"] = daemon_status.is_null() ? nlohmann::json{{"running", false}} : daemon_status;
   if (!daemon_status.is_null()) status["daemon"]["running"] = true;
   nlohmann::json counts, work = nlohmann::json::array(), held = nlohmann::json::array();
@@ -145,6 +138,13 @@ class SpoolView : public StoreView {
 };
 
 }  // namespace
+
+nlohmann::json read_json_or_null(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) return nullptr;
+  auto json = nlohmann::json::parse(in, nullptr, false);
+  return json.is_discarded() ? nlohmann::json(nullptr) : json;
+}
 
 std::unique_ptr<StoreView> make_spool_view(const std::string& spool_dir) {
   return std::make_unique<SpoolView>(spool_dir);

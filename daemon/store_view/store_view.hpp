@@ -6,6 +6,7 @@
 // lastcutd runs or not; the ledger's view shows the whole shop from any node.
 #include <cstddef>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <string>
@@ -63,6 +64,10 @@ class StoreView {
 // configuration cannot be read.
 Result<std::unique_ptr<StoreView>> open_store_view(const std::string& config_file, const std::string& spool_dir);
 std::unique_ptr<StoreView> open_store_view(const DaemonConfig& config);
+
+// A JSON file of the spool (state.json, report.json, status.json) as read by a viewer: null when
+// it is missing or unreadable (a running daemon may be replacing it).
+nlohmann::json read_json_or_null(const std::filesystem::path& file);
 
 // The two views (spool_view.cpp, ledger_view.cpp). `hide_materials`: the configuration's materials
 // of kind hide, whose computed jobs wait for a hide.

@@ -2,7 +2,6 @@
 #include "daemon/web/web_store.hpp"
 
 #include <algorithm>
-#include <fstream>
 
 #include "daemon/spool/spool.hpp"
 #include "daemon/web/web_route.hpp"
@@ -13,13 +12,6 @@ namespace {
 constexpr std::size_t kRecentJobs = 50;
 constexpr std::size_t kIncomingShown = 200;
 constexpr auto kOverviewMaxAge = std::chrono::milliseconds(500);
-
-nlohmann::json read_json_file(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) return nullptr;
-  auto json = nlohmann::json::parse(in, nullptr, false);
-  return json.is_discarded() ? nlohmann::json(nullptr) : json;
-}
 
 nlohmann::json job_json(const JobLine& job, const char* list) {
   return {{"id", job.id},       {"state", job.state}, {"where", job.where}, {"order", job.order},
@@ -105,8 +97,8 @@ Result<nlohmann::json> WebStore::job(const std::string& id) {
   for (const auto& line : (*all)["jobs"])
     if (line["id"] == id) out["line"] = line;
   if (const auto dir = spool_job_dir(id)) {
-    out["state"] = read_json_file(*dir / "state.json");
-    out["report"] = read_json_file(*dir / "report.json");
+    out["state"] = read_json_or_null(*dir / "state.json");
+    out["report"] = read_json_or_null(*dir / "report.json");
     out["files"] = job_files(*dir);
   } else if (!out.contains("line")) {
     return Status::failure("no job " + id);
