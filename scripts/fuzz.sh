@@ -5,19 +5,25 @@
 #   bash scripts/fuzz.sh --replay [TARGET...]     build, then run each target once over its in-tree seed
 #                                                 corpus (CI: the clang tree compiles and every libFuzzer
 #                                                 binary runs its regression inputs; no new inputs are made)
+#   bash scripts/fuzz.sh --build [CMAKE_TARGET...] build every fuzz target and these CMake targets
+#                                                 (CI: sanitize_tests, the tests run under ASan + UBSan)
 # Configures and builds the clang tree build-fuzz/ (-DLASTCUT_FUZZ=ON) when needed. Each target
 # starts from a copy of its in-tree seed corpus in build-fuzz/corpus/<target> (new inputs stay
 # there, not in the tree); crashes go to build-fuzz/artifacts/<target>/, logs to build-fuzz/logs/.
 # Prints a table of the runs; exits non-zero when any target crashed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-if [ $# -lt 1 ] || ! [[ "$1" =~ ^([0-9]+|--table|--replay)$ ]]; then
-  echo "usage: scripts/fuzz.sh SECONDS [TARGET...] | scripts/fuzz.sh --table [TARGET...] | scripts/fuzz.sh --replay [TARGET...]" >&2
+if [ $# -lt 1 ] || ! [[ "$1" =~ ^([0-9]+|--table|--replay|--build)$ ]]; then
+  echo "usage: scripts/fuzz.sh SECONDS [TARGET...] | scripts/fuzz.sh --table [TARGET...] | scripts/fuzz.sh --replay [TARGET...] | scripts/fuzz.sh --build [CMAKE_TARGET...]" >&2
   exit 2
 fi
 seconds="$1"
 shift
 build=build-fuzz
+if [ "$seconds" = --build ]; then
+  extra_cmake_targets=("$@")
+  set --
+fi
 if [ $# -gt 0 ]; then
   targets=("$@")
 else
@@ -45,13 +51,14 @@ max_len_of() {
   esac
 }
 
+# build_targets [CMAKE_TARGET...]: every fuzz binary and these targets, in the clang tree.
 build_targets() {
   export CCACHE_BASEDIR="$(pwd)" CCACHE_NOHASHDIR=true
   if [ ! -f "$build/CMakeCache.txt" ]; then
     CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DLASTCUT_FUZZ=ON -DLASTCUT_BUILD_BENCH=OFF >/dev/null
   fi
-  nice cmake --build "$build" --target lastcut_fuzz_all -j 2
+  nice cmake --build "$build" --target lastcut_fuzz_all "$@" -j "$(nproc)"
 }
 
 run_target() {
@@ -151,6 +158,7 @@ replay_all() {
 
 case "$seconds" in
   --table) print_table ;;
+  --build) build_targets "${extra_cmake_targets[@]}" ;;
   --replay)
     build_targets
     replay_all

@@ -8,9 +8,10 @@ root="$(pwd)"
 bash scripts/setup.sh  # installs the packaging tools too (debhelper, dpkg-dev, fakeroot, lintian, help2man)
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
+# -J: in parallel (debhelper builds with one job unless DEB_BUILD_OPTIONS holds parallel=N).
 git archive --format=tar --prefix=lastcut/ HEAD | tar -x -C "$work"
 # The archive has no working tree for the symlinks' targets to be missed: check them.
-(cd "$work/lastcut" && dpkg-checkbuilddeps && dpkg-buildpackage -us -uc -b) >"$work/build.log" 2>&1 ||
+(cd "$work/lastcut" && dpkg-checkbuilddeps && dpkg-buildpackage -us -uc -b -J"$(nproc)") >"$work/build.log" 2>&1 ||
   { tail -40 "$work/build.log"; echo "package: dpkg-buildpackage failed (log above)" >&2; exit 1; }
 mkdir -p "$root/dist"
 cp "$work"/lastcut_*.deb "$root/dist/"
