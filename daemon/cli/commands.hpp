@@ -10,7 +10,7 @@ void add_flatten_command(CLI::App& app, int& exit_code);   // flatten_command.cp
 void add_nest_command(CLI::App& app, int& exit_code);      // nest_command.cpp: molds -> layout
 void add_toolpath_command(CLI::App& app, int& exit_code);  // toolpath_command.cpp: layout -> cut file
 void add_send_command(CLI::App& app, int& exit_code);      // send_command.cpp: cut file -> cutter; also `ports`
-void add_status_commands(CLI::App& app, int& exit_code);   // status_command.cpp: `status`, `requeue`
+void add_status_commands(CLI::App& app, int& exit_code);   // status_command.cpp: `status`, `requeue`, `cancel`
 void add_generate_command(CLI::App& app, int& exit_code);  // generate_command.cpp: parametric sample lasts
 void add_subdivide_command(CLI::App& app, int& exit_code); // subdivide_command.cpp: quad mesh -> Bezier surface
 void add_hide_command(CLI::App& app, int& exit_code);     // hide_command.cpp: `hide load` (a stock hide onto a cutter)

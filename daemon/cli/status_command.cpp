@@ -1,7 +1,9 @@
-// `lastcut status` and `lastcut requeue ID`: the operator's view of the jobs and the one decision
-// the daemon never takes alone (cutting a held job again). Written once against StoreView
+// `lastcut status`, `lastcut requeue ID` and `lastcut cancel BATCH`: the operator's view of the jobs,
+// the one decision the daemon never takes alone (cutting a held job again), and taking back a batch
+// before it is cut. Written once against StoreView
 // (store_view.hpp): the configuration decides whether that is the station's spool or the shop's ledger.
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "daemon/cli/commands.hpp"
@@ -78,6 +80,22 @@ void add_status_commands(CLI::App& app, int& exit_code) {
     const Result<std::string> requeued = (*view)->requeue(job_id, again);
     if (!requeued) return fail("requeue", requeued.error(), 1);
     std::printf("%s\n", requeued->c_str());
+  });
+
+  static std::string batch_id;
+  auto* cancel = app.add_subcommand(
+      "cancel", "hold a nested batch that waits for its cutter, with its jobs (requeue them to nest them again)");
+  cancel->add_option("batch", batch_id, "batch id (see lastcut status)")->required();
+  cancel->add_option("-c,--config", config_file, "lastcutd configuration (its spool folder or [ledger])");
+  cancel->add_option("--spool", spool_dir, "spool folder (instead of reading the configuration)");
+  cancel->callback([fail] {
+    auto view = open_store_view(config_file, spool_dir);
+    if (!view) return fail("cancel", view.error(), 2);
+    const char* user = std::getenv("USER");
+    const std::string who = std::string(user != nullptr && *user != '\0' ? user : "an operator") + " (lastcut cancel)";
+    const Result<std::string> cancelled = (*view)->cancel_batch(batch_id, who);
+    if (!cancelled) return fail("cancel", cancelled.error(), 1);
+    std::printf("%s\n", cancelled->c_str());
   });
 }
 

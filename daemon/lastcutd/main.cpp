@@ -162,11 +162,13 @@ int run(const std::string& file) {
     }
   }
   const auto config = std::make_shared<lastcut::daemon::DaemonConfig>(*loaded.config);
+  // The cutters an operator paused from the page, before the page and the station that use them.
+  lastcut::daemon::CutterPauses pauses(config->paths.spool_dir / "paused-cutters.json");
   // The operator's page next, so that it too sees recovery; stopped after the station.
   lastcut::daemon::LiveEvents live_events;
   std::unique_ptr<lastcut::daemon::WebServer> web;
   if (config->web) {
-    web = std::make_unique<lastcut::daemon::WebServer>(config, live_events);
+    web = std::make_unique<lastcut::daemon::WebServer>(config, live_events, pauses);
     if (lastcut::Status started = web->start(); !started) {
       spdlog::critical("lastcutd cannot start: {}", started.error());
       if (live_status) live_status->stop();
@@ -183,7 +185,8 @@ int run(const std::string& file) {
       config, [on_ledger](const lastcut::daemon::RunningConfig& running) -> std::unique_ptr<lastcut::daemon::StationStore> {
         if (on_ledger) return std::make_unique<lastcut::daemon::LedgerNode>(running);
         return std::make_unique<lastcut::daemon::SpoolStore>(running);
-      });
+      },
+      &pauses);
   int code = 0;
   try {
     code = serve(file, *flow, signals, notifier, loaded.config->status, observers.empty() ? nullptr : &observers);

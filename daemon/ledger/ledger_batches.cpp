@@ -209,4 +209,19 @@ Status LedgerClient::hold_batch(const Lease& lease, const std::string& reason) {
       .status();
 }
 
+Result<long long> LedgerClient::cancel_queued_batch(long long batch_id, const std::string& reason) {
+  const std::string what = "batch " + std::to_string(batch_id);
+  return transact<long long>("cancelling " + what, [&](pqxx::work& tx) -> Result<long long> {
+    const pqxx::result row = tx.exec_params("SELECT state FROM batches WHERE id = $1 FOR UPDATE", batch_id);
+    if (row.empty()) return Status::failure("no " + what + " in the ledger");
+    const std::string state = row[0][0].as<std::string>();
+    if (state != "queued") return Status::failure(what + " is " + state + ": only a batch waiting for its cutter can be cancelled");
+    tx.exec_params("UPDATE batches SET state = 'held', reason = $2, updated_at = now() WHERE id = $1", batch_id, reason);
+    tx.exec_params("UPDATE jobs SET state = 'held', reason = $2, updated_at = now() WHERE batch_id = $1", batch_id, reason);
+    const std::vector<long long> jobs = jobs_of(tx, batch_id);
+    for (long long id : jobs) add_event(tx, id, node_, "held", reason);
+    return static_cast<long long>(jobs.size());
+  });
+}
+
 }  // namespace lastcut::ledger

@@ -166,10 +166,17 @@ struct LedgerOverview {
     std::string name, station;
     long long queued_batches = 0;
   };
+  struct QueuedBatch {  // nested, waiting for its cutter: what an operator may still cancel
+    long long id = 0;
+    std::string cutter;
+    long long jobs = 0;
+    int pieces = 0;
+  };
   std::vector<std::pair<std::string, long long>> jobs_per_state;  // by state name; states without jobs absent
   std::vector<std::pair<std::string, long long>> computed_per_material;  // computed jobs not yet in a batch
   std::vector<Node> nodes;
   std::vector<Cutter> cutters;
+  std::vector<QueuedBatch> queued_batches;  // oldest first, at most 100
 };
 
 class LedgerClient {
@@ -246,6 +253,10 @@ class LedgerClient {
   // a new attempt count. Fails with the reason for a job in any other state.
   Status requeue_held(long long job_id);
   Result<LedgerOverview> overview();
+  // An operator's cancel of a batch that waits for its cutter (`queued`): the batch and its jobs
+  // are held with `reason`, in one transaction with the claim's lock, so a station either claimed
+  // it first (refused: the batch's state) or never will. The number of jobs held.
+  Result<long long> cancel_queued_batch(long long batch_id, const std::string& reason);
   // The newest `limit` jobs (of one state when `state` is not empty), for `lastcut status`.
   Result<std::vector<JobRow>> recent_jobs(int limit, const std::string& state = "");
 

@@ -26,6 +26,11 @@ Result<LedgerOverview> LedgerClient::overview() {
              " FROM cutters c ORDER BY c.name")) {
       out.cutters.push_back({r[0].as<std::string>(), r[1].as<std::string>(), r[2].as<long long>()});
     }
+    for (const pqxx::row& r : tx.exec(
+             "SELECT b.id, b.cutter, (SELECT count(*) FROM jobs j WHERE j.batch_id = b.id), coalesce(b.pieces, 0)"
+             " FROM batches b WHERE b.state = 'queued' ORDER BY b.created_at, b.id LIMIT 100")) {
+      out.queued_batches.push_back({r[0].as<long long>(), r[1].as<std::string>(), r[2].as<long long>(), r[3].as<int>()});
+    }
     return out;
   });
 }

@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "daemon/spool/batch_lock.hpp"
 #include "daemon/spool_store/job_outcomes.hpp"
 
 namespace lastcut::daemon {
@@ -40,10 +41,21 @@ Result<std::optional<CutOrder>> SpoolCutStore::claim() {
 }
 
 Status SpoolCutStore::mark_sending(const CutOrder& order) {
+  // Under the batch's lock: an operator's cancel (spool_view.cpp) comes before or after, never between.
+  const auto lock = BatchLock::take(spool_.batch_dir(order.batch_id));
+  if (!lock) {
+    give_back(order);
+    return Status::failure(lock.error());
+  }
   auto batch = spool_.read_batch(order.batch_id);
   if (!batch) {
     give_back(order);
     return Status::failure("batch.json of " + order.batch_id + " unreadable");
+  }
+  if (batch->stage != BatchStage::Queued) {
+    // Cancelled since the claim: not given back, it is no longer this cutter's to cut.
+    return Status::failure("batch " + order.batch_id + " is " + std::string(to_string(batch->stage)) + " now (" +
+                           batch->reason + "), not queued");
   }
   if (!set_batch_stage(spool_, *batch, BatchStage::Sending, "sending to cutter " + cutter_, BatchLine::ByCaller)) {
     give_back(order);

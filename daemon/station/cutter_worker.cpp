@@ -100,6 +100,7 @@ void CutterWorker::run() {
 }
 
 double CutterWorker::turn() {
+  if (paused()) return kIdleWait_s;
   const std::optional<std::string> next = store_.next_batch();
   if (!next) return kIdleWait_s;
   const CutterSection section = settings_();
@@ -110,6 +111,7 @@ double CutterWorker::turn() {
   }
   note_cutter_problem("", probe.state, *next, section.retry_interval_s);
   if (stopping_) return 0;  // no new claim while stopping
+  if (paused()) return kIdleWait_s;  // paused during the probe
   const Result<std::optional<CutOrder>> claimed = store_.claim();
   note_store_trouble(claimed ? "" : claimed.error());
   if (!claimed) return section.retry_interval_s;
@@ -190,6 +192,25 @@ bool CutterWorker::cut(const CutOrder& order, const CutterSection& section) {
       return true;
   }
   return true;
+}
+
+bool CutterWorker::paused() {
+  const std::optional<std::string> by = pauses_ ? pauses_->paused_by(cutter_) : std::nullopt;
+  if (by) {
+    const std::string reason = "paused by " + *by + "; its batches wait until it is resumed";
+    set_condition(reason);
+    if (reported_state_ != "paused") {
+      spdlog::info("cutter {}: {}", cutter_, reason);
+      report("paused", "", reason);
+    }
+    return true;
+  }
+  if (reported_state_ == "paused") {
+    spdlog::info("cutter {}: resumed", cutter_);
+    set_condition("idle");
+    report("idle", "", "");
+  }
+  return false;
 }
 
 void CutterWorker::note_cutter_problem(const std::string& problem, const std::string& state,

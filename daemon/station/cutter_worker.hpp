@@ -19,6 +19,7 @@
 #include "daemon/config/daemon_config.hpp"
 #include "daemon/job/status_observer.hpp"
 #include "daemon/station/cut_store.hpp"
+#include "daemon/station/cutter_pauses.hpp"
 #include "daemon/station/progress_monitor.hpp"
 
 namespace lastcut::daemon {
@@ -37,6 +38,8 @@ class CutterWorker {
 
   // Live status of this cutter (StatusObserver::cutter_changed); set before start().
   void on_status(std::function<void(const CutterStatus&)> listener) { status_listener_ = std::move(listener); }
+  // The operator's pauses (cutter_pauses.hpp), asked at every turn; set before start(), outlives the worker.
+  void set_pauses(const CutterPauses* pauses) { pauses_ = pauses; }
   // Starts the thread; `first` is the cutter's state until its next batch (a batch held by an earlier run).
   void start(const CutterStatus& first);
   // New work may be in the store: the next turn comes now rather than after the idle wait.
@@ -64,6 +67,8 @@ class CutterWorker {
   void note_cutter_problem(const std::string& problem, const std::string& state, const std::string& next_batch,
                            double retry_s);
   void note_store_trouble(const std::string& trouble);
+  // True while an operator has this cutter paused; reports the change once.
+  bool paused();
   void report(const std::string& state, const std::string& batch_id, const std::string& reason,
               const drivers::SendProgress& progress = {});
 
@@ -72,6 +77,7 @@ class CutterWorker {
   ProgressMonitor& monitor_;
   std::function<CutterSection()> settings_;
   std::function<void(const CutterStatus&)> status_listener_;
+  const CutterPauses* pauses_ = nullptr;
   std::thread thread_;
   std::atomic<bool> stopping_{false};
   std::atomic<bool> cancel_{false};

@@ -4,8 +4,9 @@
 
 namespace lastcut::daemon {
 Station::Station(std::shared_ptr<const DaemonConfig> config,
-                 const std::function<std::unique_ptr<StationStore>(const RunningConfig&)>& make_store)
-    : config_(std::move(config)), store_(make_store(config_)) {}
+                 const std::function<std::unique_ptr<StationStore>(const RunningConfig&)>& make_store,
+                 const CutterPauses* pauses)
+    : config_(std::move(config)), pauses_(pauses), store_(make_store(config_)) {}
 
 Station::~Station() { stop(); }
 
@@ -49,6 +50,7 @@ Status Station::start() {
     if (observer_) {
       worker->on_status([observer = observer_](const CutterStatus& status) { observer->cutter_changed(status); });
     }
+    worker->set_pauses(pauses_);
     worker->start(place.first);
     cutters_.push_back(std::move(worker));
   }

@@ -27,8 +27,10 @@ namespace lastcut::daemon {
 class Station : public JobFlow {
  public:
   // `make_store` builds the store from the station's running configuration (it outlives the store).
+  // `pauses`: the operator's paused cutters (none when null); outlives the station.
   Station(std::shared_ptr<const DaemonConfig> config,
-          const std::function<std::unique_ptr<StationStore>(const RunningConfig&)>& make_store);
+          const std::function<std::unique_ptr<StationStore>(const RunningConfig&)>& make_store,
+          const CutterPauses* pauses = nullptr);
   ~Station() override;
   Station(const Station&) = delete;
   Station& operator=(const Station&) = delete;
@@ -49,6 +51,7 @@ class Station : public JobFlow {
   RunningConfig config_;
   ProgressMonitor monitor_;
   StatusObserver* observer_ = nullptr;
+  const CutterPauses* pauses_ = nullptr;
   std::unique_ptr<StationStore> store_;
   std::unique_ptr<FolderIntake> scans_;
   std::unique_ptr<FolderIntake> hides_;  // null when paths.hides is not set

@@ -83,6 +83,12 @@ class LedgerView : public StoreView {
       status["waiting_for_hide"][material] = count;
       overview.waiting_for_hide[material] = count;
     }
+    status["queued_batches"] = nlohmann::json::array();
+    for (const auto& batch : overview_rows->queued_batches) {
+      status["queued_batches"].push_back(
+          {{"id", batch.id}, {"cutter", batch.cutter}, {"jobs", batch.jobs}, {"pieces", batch.pieces}});
+      overview.queued_batches.push_back({std::to_string(batch.id), batch.cutter, batch.jobs, batch.pieces});
+    }
     status["hides"] = nlohmann::json::array();
     for (const auto& hide : *hides) {
       status["hides"].push_back(hide_json(hide));
@@ -116,6 +122,15 @@ class LedgerView : public StoreView {
     if (Status connected = connect(); !connected) return connected;
     if (Status requeued = client_->requeue_held(std::stoll(job_id)); !requeued) return requeued;
     return "job " + job_id + " is back in the ledger's queue; a compute node takes it up";
+  }
+
+  Result<std::string> cancel_batch(const std::string& batch_id, const std::string& who) override {
+    if (std::string problem = id_problem(batch_id); !problem.empty())
+      return Status::failure("\"" + batch_id + "\" is not a ledger batch id (a whole number)");
+    if (Status connected = connect(); !connected) return connected;
+    const auto held = client_->cancel_queued_batch(std::stoll(batch_id), cancel_reason(batch_id, who));
+    if (!held) return held.status();
+    return cancelled_line(batch_id, *held);
   }
 
  private:

@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "daemon/store_view/store_view.hpp"
+#include "daemon/spool/batch_lock.hpp"
 #include "daemon/spool/spool.hpp"
+#include "daemon/spool_store/job_outcomes.hpp"
 #include "daemon/station/engine_steps.hpp"
 
 namespace lastcut::daemon {
@@ -96,6 +98,9 @@ class SpoolView : public StoreView {
         overview.waiting_for_hide[material] = count.get<long long>();
     }
     for (const auto& batch : status["active_batches"]) {
+      if (batch.value("stage", "") == "queued")
+        overview.queued_batches.push_back({batch.value("id", ""), batch.value("cutter", ""),
+                                           static_cast<long long>(batch["jobs"].size()), batch.value("pieces", 0)});
       const std::string reason = batch.value("reason", "");
       overview.batch_lines.push_back(format_line("batch %s for %s: %s, %zu job(s), %d pieces%s", batch.value("id", "").c_str(),
                                             batch.value("cutter", "").c_str(), batch.value("stage", "").c_str(),
@@ -131,6 +136,24 @@ class SpoolView : public StoreView {
                    "requeued by an operator from " + folder_name(*folder) + "/");
     if (Status moved = spool_.move_job(*folder, JobFolder::Work, *state); !moved) return moved;
     return "job " + id + " is back in work/; lastcutd takes it up within a second";
+  }
+
+  Result<std::string> cancel_batch(const std::string& batch_id, const std::string& who) override {
+    if (!spool_.read_batch(batch_id)) return Status::failure("no batch " + batch_id + " in " + spool_.root().string());
+    // Under the batch's lock, as the cutter worker's `sending`: one of the two wins (batch_lock.hpp).
+    const auto lock = BatchLock::take(spool_.batch_dir(batch_id));
+    if (!lock) return lock.status();
+    auto batch = spool_.read_batch(batch_id);
+    if (!batch) return Status::failure("batch.json of " + batch_id + " unreadable");
+    if (batch->stage != BatchStage::Queued || !batch->stage_problem.empty()) {
+      return Status::failure("batch " + batch_id + " is " + std::string(to_string(batch->stage)) +
+                             ": only a batch waiting for its cutter can be cancelled");
+    }
+    const std::string reason = cancel_reason(batch_id, who);
+    if (!set_batch_stage(spool_, *batch, BatchStage::Held, reason))
+      return Status::failure("batch " + batch_id + " not cancelled: batch.json not written");
+    hold_batch_jobs(spool_, *batch, reason);
+    return cancelled_line(batch_id, static_cast<long long>(batch->job_ids.size()));
   }
 
  private:

@@ -36,6 +36,14 @@ struct JobLine {
   std::string reason;  // why held, failed, waiting; "" otherwise
 };
 
+// A nested batch waiting for its cutter: the one kind an operator may cancel.
+struct QueuedBatch {
+  std::string id;
+  std::string cutter;
+  long long jobs = 0;
+  int pieces = 0;
+};
+
 struct StoreOverview {
   std::string headline;                    // "spool /var/spool/lastcut: 2 in work, ..." or "ledger URL: 3 done, ..."
   std::vector<std::string> station_lines;  // the daemon or the nodes: running, pid, heartbeat
@@ -43,6 +51,7 @@ struct StoreOverview {
   std::map<std::string, long long> waiting_for_hide;  // hide material -> computed jobs waiting for a hide
   std::vector<std::string> batch_lines;    // batches in progress or held (spool), hides (ledger)
   std::vector<JobLine> in_work, held, recent;
+  std::vector<QueuedBatch> queued_batches;  // oldest first
   nlohmann::json json;                     // `--json`: the store's own document (docs/daemon.md, multi-station.md)
 };
 
@@ -57,7 +66,20 @@ class StoreView {
   // Puts a held or failed job back in the queue (`again`: also a job already cut, where the store
   // allows it). The line to print, or why not.
   virtual Result<std::string> requeue(const std::string& job_id, bool again) = 0;
+  // Cancels a batch that waits for its cutter: the batch and its jobs are held with the reason
+  // cancel_reason(), so requeueing the jobs nests them again. Atomic against the cutter's claim (the
+  // spool's batch lock, the ledger's row lock): a batch already taken is refused with its state.
+  // The line to print, or why not.
+  virtual Result<std::string> cancel_batch(const std::string& batch_id, const std::string& who) = 0;
 };
+
+// The reason a cancelled batch and its jobs are held with, and the line that says it was done.
+inline std::string cancel_reason(const std::string& batch_id, const std::string& who) {
+  return "batch " + batch_id + " cancelled by " + who + " before it was cut; requeue the job to nest it again";
+}
+inline std::string cancelled_line(const std::string& batch_id, long long jobs) {
+  return "batch " + batch_id + " cancelled: its " + std::to_string(jobs) + " job(s) are held";
+}
 
 // The view of the store the configuration names: the ledger when it has [ledger], else its spool
 // folder; `spool_dir` (--spool) names a spool folder directly. An error line when the

@@ -77,8 +77,14 @@ WebRoute parse_web_route(std::string_view method, std::string_view path) {
     if (parts.size() == 6 && is(3, "files") && is(4, "molds"))
       return with_method({WebRouteKind::JobFile, id, "molds/" + std::string(parts[5])}, method, "GET");
   }
+  if (is(1, "batches") && parts.size() == 4 && is(3, "cancel"))
+    return with_method({WebRouteKind::CancelBatch, std::string(parts[2])}, method, "POST");
   if (is(1, "batches") && parts.size() == 5 && is(3, "files"))
     return with_method({WebRouteKind::BatchFile, std::string(parts[2]), std::string(parts[4])}, method, "GET");
+  if (is(1, "cutters") && parts.size() == 4 && (is(3, "pause") || is(3, "resume"))) {
+    const auto kind = is(3, "pause") ? WebRouteKind::PauseCutter : WebRouteKind::ResumeCutter;
+    return with_method({kind, "", "", std::string(parts[2])}, method, "POST");
+  }
   if (is(1, "cutters") && parts.size() == 5 && is(3, "hides"))
     return with_method({WebRouteKind::LoadHide, "", std::string(parts[4]), std::string(parts[2])}, method, "POST");
   return not_found(path);

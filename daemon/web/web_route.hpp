@@ -20,6 +20,9 @@ enum class WebRouteKind {
   BatchFile,   // GET /api/batches/B/files/F  one file of a batch or hide (cut-map.json, preview.svg, layout.json)
   Requeue,     // POST /api/jobs/ID/requeue   hand a held or failed job back (token)
   LoadHide,    // POST /api/cutters/C/hides/NAME   the body is a hide file for cutter C's table (token)
+  CancelBatch,   // POST /api/batches/B/cancel  a batch that waits for its cutter is held with its jobs (token)
+  PauseCutter,   // POST /api/cutters/C/pause   cutter C starts no new batch until resumed (token)
+  ResumeCutter,  // POST /api/cutters/C/resume  (token)
   NotFound,    // a well-formed path the page does not have (404)
   Refused,     // a path that tries to leave its folder or is not text (400)
   WrongMethod  // a known path with another method (405)
@@ -27,9 +30,9 @@ enum class WebRouteKind {
 
 struct WebRoute {
   WebRouteKind kind = WebRouteKind::NotFound;
-  std::string job_id;   // Job, JobFile, Requeue; BatchFile: the batch's id
+  std::string job_id;   // Job, JobFile, Requeue; BatchFile, CancelBatch: the batch's id
   std::string name;     // Asset: file name; JobFile: "NAME" or "molds/NAME"; LoadHide: hide file name
-  std::string cutter;   // LoadHide
+  std::string cutter;   // LoadHide, PauseCutter, ResumeCutter
   std::string problem;  // Refused, NotFound, WrongMethod: one line for the answer and the log
 };
 

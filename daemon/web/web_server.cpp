@@ -72,8 +72,9 @@ bool send_file(httplib::Response& res, const std::filesystem::path& file, const 
 }  // namespace
 
 struct WebServer::Impl {
-  Impl(std::shared_ptr<const DaemonConfig> config_in, LiveEvents& events_in)
-      : config(std::move(config_in)), web(*config->web), events(events_in), store(config), limiter(web.requests_per_s),
+  Impl(std::shared_ptr<const DaemonConfig> config_in, LiveEvents& events_in, CutterPauses& pauses_in)
+      : config(std::move(config_in)), web(*config->web), events(events_in), pauses(pauses_in), store(config),
+        limiter(web.requests_per_s),
         assets(web.assets_dir.empty() ? std::filesystem::path(LASTCUT_WEB_ASSETS_DIR) : web.assets_dir) {}
 
   void routes();
@@ -82,11 +83,14 @@ struct WebServer::Impl {
   std::string actor(const httplib::Request& req, httplib::Response& res) const;
   void requeue(const WebRoute& route, const httplib::Request& req, httplib::Response& res);
   void load_hide(const WebRoute& route, const httplib::Request& req, httplib::Response& res);
+  void pause_or_resume(const WebRoute& route, const httplib::Request& req, httplib::Response& res);
+  void cancel_batch(const WebRoute& route, const httplib::Request& req, httplib::Response& res);
   void get(const WebRoute& route, const httplib::Request& req, httplib::Response& res);
 
   std::shared_ptr<const DaemonConfig> config;
   const WebConfig& web;
   LiveEvents& events;
+  CutterPauses& pauses;
   WebStore store;
   RateLimiter limiter;
   std::filesystem::path assets;
@@ -148,6 +152,31 @@ void WebServer::Impl::load_hide(const WebRoute& route, const httplib::Request& r
   answer(res, 200, *placed);
 }
 
+void WebServer::Impl::cancel_batch(const WebRoute& route, const httplib::Request& req, httplib::Response& res) {
+  const std::string who = actor(req, res);
+  if (who.empty()) return;
+  const auto done = store.cancel_batch(route.job_id, who);
+  if (!done) return answer(res, 409, "cancel of batch " + route.job_id + " refused: " + done.error());
+  spdlog::info("web: {} (token {}): {}", req.remote_addr, who, *done);
+  answer(res, 200, *done);
+}
+
+void WebServer::Impl::pause_or_resume(const WebRoute& route, const httplib::Request& req, httplib::Response& res) {
+  const std::string who = actor(req, res);
+  if (who.empty()) return;
+  const bool pause = route.kind == WebRouteKind::PauseCutter;
+  const std::string refused = std::string(pause ? "pause" : "resume") + " refused: ";
+  if (!config->cutters.contains(route.cutter))
+    return answer(res, 404, refused + "no cutter " + route.cutter + " in this station's configuration");
+  // A node's workers cut only for the cutters cabled to it: another node's page holds the switch.
+  if (config->ledger && !config->ledger->owns_cutter(route.cutter))
+    return answer(res, 409, refused + "cutter " + route.cutter + " is cabled to another station; use that station's page");
+  const auto done = pause ? pauses.pause(route.cutter, who) : pauses.resume(route.cutter, who);
+  if (!done) return answer(res, 409, refused + done.error());
+  spdlog::info("web: {} (token {}): {}", req.remote_addr, who, *done);
+  answer(res, 200, *done);
+}
+
 void WebServer::Impl::get(const WebRoute& route, const httplib::Request& req, httplib::Response& res) {
   switch (route.kind) {
     case WebRouteKind::Page:
@@ -161,6 +190,7 @@ void WebServer::Impl::get(const WebRoute& route, const httplib::Request& req, ht
       if (!overview) return answer(res, 503, "the store cannot be read: " + overview.error());
       nlohmann::json out = *overview;
       out["live_cutters"] = events.cutters();
+      out["paused_cutters"] = pauses.paused();
       out["event_id"] = events.newest_id();
       return answer_json(res, out);
     }
@@ -184,6 +214,9 @@ void WebServer::Impl::get(const WebRoute& route, const httplib::Request& req, ht
     }
     case WebRouteKind::Requeue:
     case WebRouteKind::LoadHide:
+    case WebRouteKind::PauseCutter:
+    case WebRouteKind::ResumeCutter:
+    case WebRouteKind::CancelBatch:
     case WebRouteKind::NotFound:
     case WebRouteKind::Refused:
     case WebRouteKind::WrongMethod: return answer(res, 404, "no such page");
@@ -249,6 +282,9 @@ void WebServer::Impl::routes() {
     const WebRoute route = parse_web_route(req.method, req.path);
     if (route.kind == WebRouteKind::Requeue) return requeue(route, req, res);
     if (route.kind == WebRouteKind::LoadHide) return load_hide(route, req, res);
+    if (route.kind == WebRouteKind::PauseCutter || route.kind == WebRouteKind::ResumeCutter)
+      return pause_or_resume(route, req, res);
+    if (route.kind == WebRouteKind::CancelBatch) return cancel_batch(route, req, res);
     get(route, req, res);
   };
   http.Get(".*", dispatch);
@@ -279,8 +315,8 @@ void WebServer::Impl::routes() {
   });
 }
 
-WebServer::WebServer(std::shared_ptr<const DaemonConfig> config, LiveEvents& events)
-    : impl_(std::make_unique<Impl>(std::move(config), events)) {}
+WebServer::WebServer(std::shared_ptr<const DaemonConfig> config, LiveEvents& events, CutterPauses& pauses)
+    : impl_(std::make_unique<Impl>(std::move(config), events, pauses)) {}
 
 WebServer::~WebServer() { stop(); }
 

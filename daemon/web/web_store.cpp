@@ -60,6 +60,9 @@ Result<nlohmann::json> WebStore::overview() {
   if (cached_ && now - cached_at_ < kOverviewMaxAge) return *cached_;
   auto read = view_->overview(kRecentJobs);
   if (!read) return read.status();
+  nlohmann::json queued = nlohmann::json::array();
+  for (const QueuedBatch& batch : read->queued_batches)
+    queued.push_back({{"id", batch.id}, {"cutter", batch.cutter}, {"jobs", batch.jobs}, {"pieces", batch.pieces}});
   nlohmann::json jobs = nlohmann::json::array();
   for (const JobLine& job : read->in_work) jobs.push_back(job_json(job, "work"));
   for (const JobLine& job : read->held) jobs.push_back(job_json(job, "held"));
@@ -69,6 +72,7 @@ Result<nlohmann::json> WebStore::overview() {
                         {"stations", read->station_lines},
                         {"cutters", read->cutter_lines},
                         {"batches", read->batch_lines},
+                        {"queued_batches", queued},
                         {"waiting_for_hide", read->waiting_for_hide},
                         {"incoming", incoming_files(config_->paths.watch_dir)},
                         {"jobs", jobs},
@@ -137,6 +141,12 @@ Result<std::string> WebStore::requeue(const std::string& id) {
   if (std::string problem = view_->id_problem(id); !problem.empty()) return Status::failure(problem);
   cached_.reset();
   return view_->requeue(id, false);
+}
+
+Result<std::string> WebStore::cancel_batch(const std::string& batch_id, const std::string& who) {
+  std::lock_guard lock(mutex_);
+  cached_.reset();
+  return view_->cancel_batch(batch_id, who);
 }
 
 }  // namespace lastcut::daemon

@@ -22,7 +22,7 @@ class WebStore {
  public:
   explicit WebStore(std::shared_ptr<const DaemonConfig> config);
 
-  // {mode, headline, stations[], cutters[], batches[], waiting_for_hide{}, incoming[], jobs[]}:
+  // {mode, headline, stations[], cutters[], batches[], queued_batches[], waiting_for_hide{}, incoming[], jobs[]}:
   // jobs are {id, state, where, order, scan, reason, list} with list "work", "held" or "recent".
   Result<nlohmann::json> overview();
   // One job: its line of the overview, and on a spool its state.json, report.json and file names.
@@ -32,6 +32,8 @@ class WebStore {
   // A file of a batch (or a hide cut as one): on a spool in batches/, on a ledger in its shared folder.
   Result<std::filesystem::path> batch_file(const std::string& batch_id, const std::string& name);
   Result<std::string> requeue(const std::string& id);
+  // StoreView::cancel_batch: the line, or why not.
+  Result<std::string> cancel_batch(const std::string& batch_id, const std::string& who);
 
  private:
   std::optional<std::filesystem::path> spool_job_dir(const std::string& id) const;

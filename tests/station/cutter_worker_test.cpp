@@ -37,9 +37,11 @@ class FakeCutStore : public CutStore {
   std::string sending_error;        // mark_sending fails with this line when set
   bool cannot_requeue = false;      // NotSent comes back Held, as the spool's when it cannot write the batch back
   std::function<void()> on_claim;   // runs between the worker's probe and its send
+  std::function<void()> on_next_batch;  // runs before the worker's probe
 
   std::optional<std::string> next_batch() override {
     calls.push_back("next_batch");
+    if (on_next_batch) on_next_batch();
     if (!has_work) return std::nullopt;
     return queue.empty() ? std::string() : queue.front().batch_id;
   }
@@ -236,6 +238,67 @@ TEST_F(CutterWorkerTest, WithNoWorkInTheStoreThePlotterIsNotAsked) {
   EXPECT_EQ(store.calls, (Calls{"next_batch"}));
   EXPECT_EQ(states(), Calls{});
   EXPECT_EQ(worker.condition(), "idle");
+}
+
+TEST_F(CutterWorkerTest, APausedCutterIsNotAskedAndClaimsNothingUntilResumed) {
+  start_plotter();
+  queue("B1");
+  CutterPauses pauses(dir.path() / "paused-cutters.json");
+  worker.set_pauses(&pauses);
+  ASSERT_TRUE(pauses.pause("bench", "anna"));
+  EXPECT_EQ(worker.turn(), 1.0) << "paused: the idle wait";
+  EXPECT_EQ(worker.turn(), 1.0);
+  EXPECT_TRUE(store.calls.empty()) << "neither the store nor the plotter is asked";
+  EXPECT_EQ(states(), (std::vector<std::string>{"paused"})) << "reported once";
+  EXPECT_EQ(reports.back().reason, "paused by anna; its batches wait until it is resumed");
+  EXPECT_EQ(worker.condition(), "paused by anna; its batches wait until it is resumed");
+  EXPECT_EQ(log.count("cutter bench: paused by anna"), 1);
+
+  ASSERT_TRUE(pauses.resume("bench", "ben"));
+  EXPECT_EQ(worker.turn(), 0.0);
+  EXPECT_EQ(store.calls, (Calls{"next_batch", "claim", "sending B1", "end B1 cut"}));
+  EXPECT_EQ(received(), kCutFile);
+  EXPECT_EQ(states().front(), "paused");
+  EXPECT_EQ(states()[1], "idle") << "the resume is reported before the cut";
+  EXPECT_EQ(log.count("cutter bench: resumed"), 1);
+}
+
+TEST_F(CutterWorkerTest, APauseThatComesDuringTheProbeStopsTheClaim) {
+  start_plotter();
+  queue("B1");
+  CutterPauses pauses(dir.path() / "paused-cutters.json");
+  worker.set_pauses(&pauses);
+  store.on_next_batch = [&] { ASSERT_TRUE(pauses.pause("bench", "anna")); };
+  EXPECT_EQ(worker.turn(), 1.0);
+  EXPECT_EQ(store.calls, (Calls{"next_batch"})) << "no claim once paused";
+  EXPECT_EQ(states(), (std::vector<std::string>{"paused"}));
+  EXPECT_EQ(received(), "");
+}
+
+TEST(CutterPausesFile, PausesOutliveARestartAndEachRefusalIsOneLine) {
+  TempDir dir;
+  const auto file = dir.path() / "paused-cutters.json";
+  {
+    CutterPauses pauses(file);
+    EXPECT_FALSE(pauses.paused_by("table-1"));
+    EXPECT_EQ(pauses.resume("table-1", "anna").error(), "cutter table-1 is not paused");
+    EXPECT_EQ(*pauses.pause("table-1", "anna"),
+              "cutter table-1 paused: it finishes the batch on its table, if any, and starts no other until resumed");
+    EXPECT_EQ(pauses.pause("table-1", "ben").error(), "cutter table-1 is already paused (by anna)");
+  }
+  {
+    LogLines log;
+    CutterPauses again(file);
+    EXPECT_EQ(again.paused_by("table-1"), std::optional<std::string>("anna"));
+    EXPECT_EQ(log.count("cutter table-1: paused (by anna) before this start; it takes no batch until resumed"), 1);
+    EXPECT_EQ(*again.resume("table-1", "ben"),
+              "cutter table-1 resumed (paused by anna, resumed by ben): its batches are cut again");
+  }
+  EXPECT_TRUE(CutterPauses(file).paused().empty());
+  std::ofstream(file) << "{\"paused\": [1, 2";
+  LogLines log;
+  EXPECT_TRUE(CutterPauses(file).paused().empty());
+  EXPECT_EQ(log.count(file.string() + " unreadable, no cutter is paused: "), 1);
 }
 
 }  // namespace

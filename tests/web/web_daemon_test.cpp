@@ -3,7 +3,8 @@
 // served, a dropped scan's stages arrive as live events, hostile requests (path traversal plain,
 // encoded and absolute, oversized bodies and headers, slow clients, actions without or with a
 // wrong token, a malformed hide) are each refused with the right status and one log line while
-// the daemon goes on, and a held job is requeued with the token and cut.
+// the daemon goes on, a held job is requeued with the token and cut, and a paused cutter starts no
+// batch, across a restart too, until it is resumed.
 #include <gtest/gtest.h>
 
 #include <thread>
@@ -173,6 +174,111 @@ TEST(OperatorPage, AHeldJobIsRequeuedWithTheTokenAndCut) {
   EXPECT_TRUE(wait_until([&] { return page.rig->jobs("done").count(id) == 1; }, 60)) << read_text(page.rig->daemon_log());
   EXPECT_EQ(page.rig->stop_daemon(), 0);
   cutter.stop();
+}
+
+// The events seen so far of one kind whose JSON has `key` = `value`.
+int events_with(const web_testing::EventReader& reader, const std::string& kind, const std::string& key,
+                const std::string& value) {
+  int count = 0;
+  for (const auto& event : reader.events())
+    if (event.kind == kind && nlohmann::json::parse(event.data).value(key, "") == value) ++count;
+  return count;
+}
+
+TEST(OperatorPage, APausedCutterStartsNoBatchAcrossARestartUntilResumed) {
+  PageRig page("web-pause");
+  const std::string auth = "Authorization: Bearer " + kToken + "\r\n";
+  EXPECT_EQ(http(page.port, "POST", "/api/cutters/cutter-1/pause").status, 401);
+  EXPECT_EQ(http(page.port, "POST", "/api/cutters/cutter-1/pause", "Authorization: Bearer wrong-token-0123456789\r\n").status, 403);
+  const auto unknown = http(page.port, "POST", "/api/cutters/nobody/pause", auth);
+  EXPECT_EQ(unknown.status, 404);
+  EXPECT_EQ(unknown.body, "pause refused: no cutter nobody in this station's configuration\n");
+  EXPECT_EQ(http(page.port, "POST", "/api/cutters/cutter-1/resume", auth).body, "resume refused: cutter cutter-1 is not paused\n");
+  const auto paused = http(page.port, "POST", "/api/cutters/cutter-1/pause", auth);
+  ASSERT_EQ(paused.status, 200) << paused.body;
+  const auto again = http(page.port, "POST", "/api/cutters/cutter-1/pause", auth);
+  EXPECT_EQ(again.status, 409);
+  EXPECT_EQ(again.body, "pause refused: cutter cutter-1 is already paused (by anna)\n");
+  EXPECT_NE(read_text(page.rig->daemon_log()).find("(token anna): cutter cutter-1 paused"), std::string::npos);
+
+  // Restarted while paused (as systemd would after a crash): still paused.
+  EXPECT_EQ(page.rig->stop_daemon(), 0);
+  page.rig->start_daemon();
+  ASSERT_TRUE(wait_until([&] { return http(page.port, "GET", "/api/overview").status == 200; }, 20));
+  EXPECT_NE(read_text(page.rig->daemon_log()).find("cutter cutter-1: paused (by anna) before this start"), std::string::npos);
+  const auto overview = nlohmann::json::parse(http(page.port, "GET", "/api/overview").body);
+  EXPECT_EQ(overview["paused_cutters"], (nlohmann::json{{"cutter-1", "anna"}}));
+
+  web_testing::EventReader reader(page.port);
+  ASSERT_TRUE(wait_until([&] { return reader.connected(); }, 10));
+  const auto staging = page.rig->root() / "staging";
+  std::filesystem::create_directories(staging);
+  write_variant(small_last(42, "left", 5), staging / "paused.stl", "paused");
+  drop(staging / "paused.stl", page.rig->watch(), "paused.stl");
+  ASSERT_TRUE(wait_until([&] { return events_with(reader, "job", "stage", "batched") == 1; }, 120))
+      << read_text(page.rig->daemon_log());
+  // Nested and queued, but the paused cutter does not take it.
+  std::this_thread::sleep_for(std::chrono::seconds(4));
+  EXPECT_EQ(events_with(reader, "job", "stage", "sending"), 0);
+  EXPECT_EQ(events_with(reader, "cutter", "state", "sending"), 0);
+  EXPECT_TRUE(page.rig->jobs("done").empty());
+
+  const auto resumed = http(page.port, "POST", "/api/cutters/cutter-1/resume", auth);
+  EXPECT_EQ(resumed.status, 200) << resumed.body;
+  EXPECT_EQ(resumed.body, "cutter cutter-1 resumed (paused by anna, resumed by anna): its batches are cut again\n");
+  EXPECT_TRUE(wait_until([&] { return page.rig->jobs("done").size() == 1; }, 60)) << read_text(page.rig->daemon_log());
+  const std::string log = read_text(page.rig->daemon_log());
+  EXPECT_NE(log.find("cutter cutter-1: resumed"), std::string::npos) << log;
+  EXPECT_EQ(nlohmann::json::parse(http(page.port, "GET", "/api/overview").body)["paused_cutters"], nlohmann::json::object());
+  EXPECT_EQ(page.rig->stop_daemon(), 0);
+}
+
+TEST(OperatorPage, ABatchWaitingForItsCutterIsCancelledItsJobHeldThenRequeuedAndCut) {
+  PageRig page("web-cancel");
+  const std::string auth = "Authorization: Bearer " + kToken + "\r\n";
+  // Paused, so that the batch waits for it long enough to be cancelled.
+  ASSERT_EQ(http(page.port, "POST", "/api/cutters/cutter-1/pause", auth).status, 200);
+  const auto staging = page.rig->root() / "staging";
+  std::filesystem::create_directories(staging);
+  write_variant(small_last(43, "right", 7), staging / "cancel.stl", "cancel");
+  drop(staging / "cancel.stl", page.rig->watch(), "cancel.stl");
+  std::string batch;
+  ASSERT_TRUE(wait_until([&] {
+    const auto overview = nlohmann::json::parse(http(page.port, "GET", "/api/overview").body);
+    if (overview["queued_batches"].empty()) return false;
+    batch = overview["queued_batches"][0]["id"];
+    EXPECT_EQ(overview["queued_batches"][0]["cutter"], "cutter-1");
+    EXPECT_EQ(overview["queued_batches"][0]["jobs"], 1);
+    return true;
+  }, 120)) << read_text(page.rig->daemon_log());
+
+  EXPECT_EQ(http(page.port, "POST", "/api/batches/" + batch + "/cancel").status, 401);
+  const auto unknown = http(page.port, "POST", "/api/batches/B-none/cancel", auth);
+  EXPECT_EQ(unknown.status, 409);
+  EXPECT_TRUE(unknown.body.starts_with("cancel of batch B-none refused: no batch B-none in ")) << unknown.body;
+  const auto cancelled = http(page.port, "POST", "/api/batches/" + batch + "/cancel", auth);
+  ASSERT_EQ(cancelled.status, 200) << cancelled.body;
+  EXPECT_EQ(cancelled.body, "batch " + batch + " cancelled: its 1 job(s) are held\n");
+  const auto again = http(page.port, "POST", "/api/batches/" + batch + "/cancel", auth);
+  EXPECT_EQ(again.status, 409);
+  EXPECT_EQ(again.body, "cancel of batch " + batch + " refused: batch " + batch +
+                            " is held: only a batch waiting for its cutter can be cancelled\n");
+  EXPECT_NE(read_text(page.rig->daemon_log()).find("(token anna): batch " + batch + " cancelled"), std::string::npos);
+  const auto held = page.rig->jobs("held");
+  ASSERT_EQ(held.size(), 1u);
+  const std::string id = held.begin()->first;
+  EXPECT_NE(held.begin()->second.value("reason", "").find("batch " + batch +
+                                                         " cancelled by anna before it was cut; requeue the job to nest it again"),
+            std::string::npos) << held.begin()->second.dump(1);
+  EXPECT_TRUE(nlohmann::json::parse(http(page.port, "GET", "/api/overview").body)["queued_batches"].empty());
+
+  // The cutter, resumed, does not cut the cancelled batch; the requeued job is nested again and cut.
+  ASSERT_EQ(http(page.port, "POST", "/api/cutters/cutter-1/resume", auth).status, 200);
+  std::this_thread::sleep_for(std::chrono::seconds(2));
+  EXPECT_TRUE(page.rig->jobs("done").empty());
+  ASSERT_EQ(http(page.port, "POST", "/api/jobs/" + id + "/requeue", auth).status, 200);
+  EXPECT_TRUE(wait_until([&] { return page.rig->jobs("done").count(id) == 1; }, 90)) << read_text(page.rig->daemon_log());
+  EXPECT_EQ(page.rig->stop_daemon(), 0);
 }
 
 }  // namespace

@@ -31,6 +31,12 @@ TEST(WebRoute, KnownPagesAndTheirParts) {
   EXPECT_EQ(hide.kind, WebRouteKind::LoadHide);
   EXPECT_EQ(hide.cutter, "cutter-1");
   EXPECT_EQ(hide.name, "hide-7.dxf");
+  const WebRoute pause = parse_web_route("POST", "/api/cutters/table-2/pause");
+  EXPECT_EQ(pause.kind, WebRouteKind::PauseCutter);
+  EXPECT_EQ(pause.cutter, "table-2");
+  EXPECT_EQ(parse_web_route("POST", "/api/cutters/table-2/resume").kind, WebRouteKind::ResumeCutter);
+  EXPECT_EQ(parse_web_route("GET", "/api/cutters/table-2/pause").problem, "GET is not allowed here, only POST");
+  EXPECT_EQ(parse_web_route("POST", "/api/cutters/table-2/stop").kind, WebRouteKind::NotFound);
 }
 
 TEST(WebRoute, PathsThatClimbOutOfTheirFolderAreRefused) {

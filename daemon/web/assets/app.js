@@ -61,6 +61,10 @@ function jobEvent(event) {
   state.incoming = state.incoming.filter((name) => name !== event.scan);
   draw();
   if (state.shownJob === event.id) showJob(event.id);
+  // A batch formed, taken or ended: its list comes with the overview (read once for a burst).
+  if (['batched', 'sending', 'cut', 'held'].includes(event.stage) && !state.batchReload) {
+    state.batchReload = setTimeout(() => { state.batchReload = null; loadOverview(); }, 700);
+  }
 }
 
 // The cut map of a batch (its pieces on the table and their bytes in the cut file), read once.
@@ -126,6 +130,11 @@ function drawCutters() {
       card.append(bar, el('div', `${Math.round(100 * cutter.bytes_sent / cutter.bytes_total)} % sent${lines}`, 'progress-text'));
     }
     if (cutter.reason) card.append(el('div', cutter.reason, 'reason'));
+    // Pause: the cutter finishes the batch on its table and starts no other until resumed.
+    const paused = cutter.state === 'paused' || (state.overview && name in (state.overview.paused_cutters || {}));
+    const toggle = el('button', paused ? 'Resume' : 'Pause', paused ? 'resume' : 'pause');
+    toggle.addEventListener('click', () => act('POST', `/api/cutters/${encodeURIComponent(name)}/${paused ? 'resume' : 'pause'}`));
+    card.append(toggle);
     const map = cutter.batch ? cutMap(cutter.batch) : null;
     if (map) {
       card.append(tablePicture(map, cutter.bytes_sent));
@@ -188,6 +197,16 @@ function draw() {
   for (const [material, count] of Object.entries(overview.waiting_for_hide))
     hideLines.push(`${count} job(s) of ${material} wait for a hide`);
   $('hide-lines').replaceChildren(...hideLines.map((line) => el('li', line)));
+  // Nested and waiting: the last moment a batch can be taken back (its jobs are held, to requeue).
+  const queued = overview.queued_batches || [];
+  $('queued-batches').replaceChildren(...(queued.length ? queued.map((batch) => {
+    const item = el('li', `batch ${batch.id} for ${batch.cutter}: ${batch.jobs} job(s), ${batch.pieces} pieces `);
+    item.dataset.batch = batch.id;
+    const cancel = el('button', 'Cancel', 'cancel');
+    cancel.addEventListener('click', () => act('POST', `/api/batches/${encodeURIComponent(batch.id)}/cancel`));
+    item.append(cancel);
+    return item;
+  }) : [el('li', 'none')]));
   drawCutters();
   drawQueue();
 }
