@@ -177,6 +177,14 @@ struct LedgerOverview {
   std::vector<Node> nodes;
   std::vector<Cutter> cutters;
   std::vector<QueuedBatch> queued_batches;  // oldest first, at most 100
+  struct CutBatch {  // cut in the last 24 hours
+    long long id = 0;
+    std::string cut_at_utc, material;  // ISO 8601 UTC
+    long long jobs = 0;
+    int pieces = 0;
+    double utilisation = 0;
+  };
+  std::vector<CutBatch> cut_last_24h;  // oldest first, at most 5000
 };
 
 class LedgerClient {

@@ -31,6 +31,14 @@ Result<LedgerOverview> LedgerClient::overview() {
              " FROM batches b WHERE b.state = 'queued' ORDER BY b.created_at, b.id LIMIT 100")) {
       out.queued_batches.push_back({r[0].as<long long>(), r[1].as<std::string>(), r[2].as<long long>(), r[3].as<int>()});
     }
+    for (const pqxx::row& r : tx.exec(
+             "SELECT b.id, to_char(b.updated_at AT TIME ZONE 'UTC', 'YYYY-MM-DD\"T\"HH24:MI:SS.MS\"Z\"'), b.material,"
+             " (SELECT count(*) FROM jobs j WHERE j.batch_id = b.id), coalesce(b.pieces, 0), coalesce(b.utilisation, 0)"
+             " FROM batches b WHERE b.state = 'cut' AND b.updated_at > now() - interval '24 hours'"
+             " ORDER BY b.updated_at, b.id LIMIT 5000")) {
+      out.cut_last_24h.push_back({r[0].as<long long>(), r[1].as<std::string>(), r[2].as<std::string>(),
+                                  r[3].as<long long>(), r[4].as<int>(), r[5].as<double>()});
+    }
     return out;
   });
 }

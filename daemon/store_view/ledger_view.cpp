@@ -93,6 +93,15 @@ class LedgerView : public StoreView {
     for (const auto& hide : *hides) {
       status["hides"].push_back(hide_json(hide));
       overview.batch_lines.push_back(hide_line(hide));
+      overview.hides.push_back({hide.name, hide.batch_id != 0 ? std::to_string(hide.batch_id) : "", hide.cutter,
+                                hide.material, hide.state, hide.pieces, hide.utilisation});
+    }
+    status["cut_last_24h"] = nlohmann::json::array();
+    for (const auto& batch : overview_rows->cut_last_24h) {
+      status["cut_last_24h"].push_back({{"id", batch.id}, {"cut_at", batch.cut_at_utc}, {"material", batch.material},
+                                        {"jobs", batch.jobs}, {"pieces", batch.pieces}, {"utilisation", batch.utilisation}});
+      overview.cut_last_24h.push_back({std::to_string(batch.id), batch.cut_at_utc, batch.material, batch.jobs,
+                                       batch.pieces, batch.utilisation});
     }
     status["held"] = nlohmann::json::array();
     for (const auto& job : *held) {

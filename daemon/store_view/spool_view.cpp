@@ -1,6 +1,8 @@
 // The spool's StoreView (store_view.hpp): the folders of one station read directly, and
 // spool/status.json, which a running lastcutd rewrites every 2 s (its cutters, queues, pid).
 #include <algorithm>
+#include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -24,6 +26,16 @@ nlohmann::json job_summary(const JobState& state, JobFolder folder) {
 JobLine job_line(const nlohmann::json& job) {
   return {job.value("id", ""),    job.value("stage", ""), job.value("folder", ""),
           job.value("order", ""), job.value("scan", ""),  job.value("reason", "")};
+}
+
+// The time `hours` ago as utc_now_iso() writes times (ISO 8601 UTC): such texts sort as times do.
+std::string utc_iso_hours_ago(int hours) {
+  const std::time_t then = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now() - std::chrono::hours(hours));
+  std::tm utc{};
+  gmtime_r(&then, &utc);
+  char text[40];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%S.000Z", &utc);
+  return text;
 }
 
 // The document `lastcut status --json` prints for a spool (docs/daemon.md).
@@ -52,19 +64,36 @@ nlohmann::json collect_status(const Spool& spool, std::size_t recent_count) {
   std::sort(finished.begin(), finished.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
   nlohmann::json recent = nlohmann::json::array();
   for (std::size_t i = 0; i < finished.size() && i < recent_count; ++i) recent.push_back(finished[i].second);
-  nlohmann::json batches = nlohmann::json::array();
+  nlohmann::json batches = nlohmann::json::array(), hides = nlohmann::json::array(), cut = nlohmann::json::array();
+  const std::string day_ago = utc_iso_hours_ago(24);
   for (const std::string& id : spool.list_batches()) {
     auto batch = spool.read_batch(id);
+    if (!batch) continue;
     // A batch.json without a known stage is shown too: it is held until an operator looks.
-    if (batch && (in_progress(batch->stage) || !batch->stage_problem.empty())) {
+    if (in_progress(batch->stage) || !batch->stage_problem.empty()) {
       batches.push_back({{"id", batch->id}, {"cutter", batch->cutter}, {"stage", to_string(batch->stage)},
                          {"jobs", batch->job_ids}, {"pieces", batch->piece_count}, {"reason", batch->reason}});
     }
+    if (!batch->hide_id.empty()) {
+      hides.push_back({{"hide", batch->hide_id}, {"batch", batch->id}, {"cutter", batch->cutter},
+                       {"material", batch->material}, {"stage", to_string(batch->stage)},
+                       {"pieces", batch->piece_count}, {"utilisation", batch->utilisation},
+                       {"created_at", batch->created_at}});
+    }
+    if (batch->stage == BatchStage::Cut && batch->updated_at >= day_ago) {
+      cut.push_back({{"id", batch->id}, {"cut_at", batch->updated_at}, {"material", batch->material},
+                     {"jobs", batch->job_ids.size()}, {"pieces", batch->piece_count}, {"utilisation", batch->utilisation}});
+    }
   }
+  std::sort(hides.begin(), hides.end(), [](const auto& a, const auto& b) { return a["created_at"] > b["created_at"]; });
+  if (hides.size() > 20) hides.erase(hides.begin() + 20, hides.end());
+  std::sort(cut.begin(), cut.end(), [](const auto& a, const auto& b) { return a["cut_at"] < b["cut_at"]; });
   status["counts"] = counts;
   status["work"] = work;
   status["held"] = held;
   status["active_batches"] = batches;
+  status["hides"] = hides;
+  status["cut_last_24h"] = cut;
   status["recent"] = recent;
   return status;
 }
@@ -106,6 +135,15 @@ class SpoolView : public StoreView {
                                             batch.value("cutter", "").c_str(), batch.value("stage", "").c_str(),
                                             batch["jobs"].size(), batch.value("pieces", 0),
                                             reason.empty() ? "" : (" - " + reason).c_str()));
+    }
+    for (const auto& hide : status["hides"]) {
+      overview.hides.push_back({hide.value("hide", ""), hide.value("batch", ""), hide.value("cutter", ""),
+                                hide.value("material", ""), hide.value("stage", ""), hide.value("pieces", 0),
+                                hide.value("utilisation", 0.0)});
+    }
+    for (const auto& batch : status["cut_last_24h"]) {
+      overview.cut_last_24h.push_back({batch.value("id", ""), batch.value("cut_at", ""), batch.value("material", ""),
+                                       batch.value("jobs", 0LL), batch.value("pieces", 0), batch.value("utilisation", 0.0)});
     }
     for (const auto& job : status["work"]) overview.in_work.push_back(job_line(job));
     for (const auto& job : status["held"]) overview.held.push_back(job_line(job));

@@ -44,6 +44,27 @@ struct QueuedBatch {
   int pieces = 0;
 };
 
+// A hide on a table: loaded, being nested, used (nested and cut or queued), empty.
+struct HideLine {
+  std::string hide;      // the hide's ID (its name)
+  std::string batch_id;  // the batch nested on it, "" before
+  std::string cutter;
+  std::string material;
+  std::string state;     // the store's word (spool: the batch's stage; ledger: the hide's state)
+  int pieces = 0;
+  double utilisation = 0;  // pieces / usable area, 0..1, once nested
+};
+
+// A batch cut in the last 24 hours, for the day's plots.
+struct CutBatch {
+  std::string batch_id;
+  std::string cut_at_utc;  // ISO 8601, "2026-11-28T13:49:37.123Z"
+  std::string material;
+  long long jobs = 0;
+  int pieces = 0;
+  double utilisation = 0;  // pieces / material used, 0..1
+};
+
 struct StoreOverview {
   std::string headline;                    // "spool /var/spool/lastcut: 2 in work, ..." or "ledger URL: 3 done, ..."
   std::vector<std::string> station_lines;  // the daemon or the nodes: running, pid, heartbeat
@@ -52,6 +73,8 @@ struct StoreOverview {
   std::vector<std::string> batch_lines;    // batches in progress or held (spool), hides (ledger)
   std::vector<JobLine> in_work, held, recent;
   std::vector<QueuedBatch> queued_batches;  // oldest first
+  std::vector<HideLine> hides;              // newest first, at most 20
+  std::vector<CutBatch> cut_last_24h;       // oldest first
   nlohmann::json json;                     // `--json`: the store's own document (docs/daemon.md, multi-station.md)
 };
 

@@ -63,6 +63,29 @@ Result<nlohmann::json> WebStore::overview() {
   nlohmann::json queued = nlohmann::json::array();
   for (const QueuedBatch& batch : read->queued_batches)
     queued.push_back({{"id", batch.id}, {"cutter", batch.cutter}, {"jobs", batch.jobs}, {"pieces", batch.pieces}});
+  // A nested hide's report (hide_step.cpp) says what is left of it: the offcut and its file.
+  nlohmann::json hides = nlohmann::json::array();
+  for (const HideLine& hide : read->hides) {
+    nlohmann::json line = {{"hide", hide.hide},     {"batch", hide.batch_id}, {"cutter", hide.cutter},
+                           {"material", hide.material}, {"state", hide.state}, {"pieces", hide.pieces},
+                           {"utilisation", hide.utilisation}};
+    if (!hide.batch_id.empty()) {
+      if (const auto report = batch_file(hide.batch_id, "hide-report.json")) {
+        const nlohmann::json figures = read_json_or_null(*report);
+        if (figures.is_object()) {
+          line["usable_area_m2"] = figures.value("usable_area_m2", 0.0);
+          line["offcut_area_m2"] = figures.value("offcut_area_m2", 0.0);
+          line["offcut_file"] = figures.value("offcut_file", "");
+        }
+      }
+    }
+    hides.push_back(line);
+  }
+  nlohmann::json cut = nlohmann::json::array();
+  for (const CutBatch& batch : read->cut_last_24h) {
+    cut.push_back({{"batch", batch.batch_id}, {"cut_at", batch.cut_at_utc}, {"material", batch.material},
+                   {"jobs", batch.jobs}, {"pieces", batch.pieces}, {"utilisation", batch.utilisation}});
+  }
   nlohmann::json jobs = nlohmann::json::array();
   for (const JobLine& job : read->in_work) jobs.push_back(job_json(job, "work"));
   for (const JobLine& job : read->held) jobs.push_back(job_json(job, "held"));
@@ -73,6 +96,8 @@ Result<nlohmann::json> WebStore::overview() {
                         {"cutters", read->cutter_lines},
                         {"batches", read->batch_lines},
                         {"queued_batches", queued},
+                        {"hides", hides},
+                        {"cut_last_24h", cut},
                         {"waiting_for_hide", read->waiting_for_hide},
                         {"incoming", incoming_files(config_->paths.watch_dir)},
                         {"jobs", jobs},

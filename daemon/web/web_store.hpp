@@ -22,7 +22,8 @@ class WebStore {
  public:
   explicit WebStore(std::shared_ptr<const DaemonConfig> config);
 
-  // {mode, headline, stations[], cutters[], batches[], queued_batches[], waiting_for_hide{}, incoming[], jobs[]}:
+  // {mode, headline, stations[], cutters[], batches[], queued_batches[], hides[], cut_last_24h[],
+  //  waiting_for_hide{}, incoming[], jobs[]}:
   // jobs are {id, state, where, order, scan, reason, list} with list "work", "held" or "recent".
   Result<nlohmann::json> overview();
   // One job: its line of the overview, and on a spool its state.json, report.json and file names.

@@ -93,6 +93,21 @@ async function main() {
     await page.waitForFunction(() => document.getElementById('message').textContent.includes('now lies on cutter'),
                                { timeout: 10000 });
     check(true, 'hide upload: ' + await page.$eval('#message', (node) => node.textContent));
+    // A leather job waited for a hide: the hide is nested and cut, and its card shows the layout,
+    // the share of the hide the pieces use and what is left (the offcut).
+    await page.waitForFunction(() => [...document.querySelectorAll('.card.hide')].some((card) =>
+      card.querySelector('.state').textContent.startsWith('cut') && card.querySelector('.figures') &&
+      card.querySelector('img').complete && card.querySelector('img').naturalWidth > 0), { timeout: 180000 });
+    const hideFigures = await page.$eval('.card.hide .figures', (node) => node.textContent);
+    check(/^\d+ pieces, \d+ % of its usable area, offcut [\d.]+ of [\d.]+ m\u00b2$/.test(hideFigures),
+          `the hide's card shows its layout and figures: ${hideFigures}`);
+    // The last 24 hours: three jobs cut, in the plots per hour and the yield of each material.
+    await page.waitForFunction(() => document.getElementById('day-summary').textContent.startsWith('3 job(s)'),
+                               { timeout: 30000 });
+    const summary = await page.$eval('#day-summary', (node) => node.textContent);
+    const bars = await page.$$eval('.plot .bar', (all) => all.filter((bar) => Number(bar.getAttribute('height')) > 0).length);
+    check(/yield .*leather \d+ %/.test(summary) && bars >= 3, `the day's plots: ${summary} (${bars} bars drawn)`);
+    await page.screenshot({ path: path.join(shotsDir, 'operator-page-hides-and-day.png'), fullPage: true });
 
     // The job page: its pictures and report, by the link in the queue.
     // (A click that lands while the queue is being redrawn is lost, as a person's would be: again.)

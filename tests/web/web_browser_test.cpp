@@ -21,7 +21,8 @@ TEST(OperatorPageInABrowser, FollowsAScanRequeuesAHeldJobAndLoadsAHide) {
   options.sim_faults = {{"cutter-1", "drop-at-line=20"}};
   options.extra_paths = "hides = \"hides\"\n";
   options.extra_config = "[web]\nlisten = \"127.0.0.1:" + std::to_string(port) + "\"\nassets = \"" +
-                         std::string(LASTCUT_SOURCE_DIR) + "/daemon/web/assets\"\n[web.tokens]\nanna = \"" + token + "\"\n";
+                         std::string(LASTCUT_SOURCE_DIR) + "/daemon/web/assets\"\n[web.tokens]\nanna = \"" + token + "\"\n"
+                         "[materials.leather]\nkind = \"hide\"\ncutter = \"cutter-1\"\nrotation_step_deg = 90\n";
   DaemonRig rig("web-browser", options);
   rig.start_cutters();
   rig.start_daemon();
@@ -39,6 +40,10 @@ TEST(OperatorPageInABrowser, FollowsAScanRequeuesAHeldJobAndLoadsAHide) {
                   "--record", (rig.root() / "record2").string(), "--time-scale", "1", "--buffer", "8192"},
                  rig.root() / "sim2.log");
   write_variant(small_last(42, "left", 7), staging / "browser-scan.stl", "browser");
+  // A job of the hide material: it waits for the hide the page uploads, which is then nested and cut.
+  write_variant(small_last(39, "right", 8), staging / "leather.stl", "leather");
+  write_text(rig.watch() / "leather.job.toml", "material = \"leather\"\n");
+  drop(staging / "leather.stl", rig.watch(), "leather.stl");
   write_hide_dxf(staging / "hide-7.dxf", 1200, 900, false);
   const auto shots = rig.root() / "shots";
   std::filesystem::create_directories(shots);
@@ -53,6 +58,7 @@ TEST(OperatorPageInABrowser, FollowsAScanRequeuesAHeldJobAndLoadsAHide) {
   EXPECT_TRUE(std::filesystem::exists(rig.root() / "hides" / "hide-7.dxf") ||
               read_text(rig.daemon_log()).find("hide-7") != std::string::npos);
   EXPECT_NE(read_text(rig.daemon_log()).find("(token anna) requeued job"), std::string::npos);
+  EXPECT_EQ(rig.jobs("done").size(), 3u) << "the dropped scan, the requeued job and the job cut on the hide";
   EXPECT_EQ(rig.stop_daemon(), 0);
   cutter.stop();
 }

@@ -86,6 +86,15 @@ TEST(OperatorPage, AScanDroppedAppearsAsLiveEventsThroughItsStages) {
   }
   EXPECT_EQ(stages, (std::vector<std::string>{"claimed", "computed", "batched", "sending", "cut"}));
   EXPECT_TRUE(cutter_sending);
+  // The day's figures: the one batch cut, with its job, pieces and yield.
+  const auto overview = nlohmann::json::parse(http(page.port, "GET", "/api/overview").body);
+  ASSERT_EQ(overview["cut_last_24h"].size(), 1u) << overview.dump(1);
+  const auto& cut = overview["cut_last_24h"][0];
+  EXPECT_EQ(cut["jobs"], 1);
+  EXPECT_GE(cut["pieces"].get<int>(), 2) << "a medial and a lateral mold";
+  EXPECT_GT(cut["utilisation"].get<double>(), 0.05);
+  EXPECT_LE(cut["utilisation"].get<double>(), 1.0);
+  EXPECT_TRUE(cut["cut_at"].get<std::string>().ends_with("Z"));
   EXPECT_EQ(page.rig->stop_daemon(), 0);
 }
 

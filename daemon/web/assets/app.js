@@ -188,6 +188,97 @@ function drawQueue() {
   }
 }
 
+// The hides nested lately: each one's layout, how much of it the pieces use, and what is left.
+function drawHides() {
+  const hides = state.overview.hides || [];
+  $('hide-cards').replaceChildren(...hides.map((hide) => {
+    const card = el('div', undefined, 'card hide');
+    card.dataset.hide = hide.hide;
+    card.append(el('h3', 'hide ' + hide.hide), el('div', `${hide.state} - ${hide.material} on ${hide.cutter}`, 'state'));
+    if (hide.batch) {
+      const base = `/api/batches/${encodeURIComponent(hide.batch)}/files/`;
+      const picture = el('img');
+      picture.src = base + 'preview.svg';
+      picture.alt = 'layout on hide ' + hide.hide;
+      const figures = [`${hide.pieces} pieces`, `${Math.round(100 * hide.utilisation)} % of its usable area`];
+      if (hide.offcut_area_m2 !== undefined) {
+        figures.push(`offcut ${hide.offcut_area_m2.toFixed(2)} of ${hide.usable_area_m2.toFixed(2)} m\u00b2`);
+      }
+      card.append(picture, el('div', figures.join(', '), 'figures'));
+      if (hide.offcut_file) {
+        const link = el('a', 'offcut (DXF)');
+        link.href = base + encodeURIComponent(hide.offcut_file);
+        card.append(link);
+      }
+    }
+    return card;
+  }));
+}
+
+// Bars of `values` (one per label), the largest one's height full; the value over each bar.
+function barChart(title, labels, values, format) {
+  const figure = el('figure', undefined, 'plot');
+  const svg = document.createElementNS(SVG, 'svg');
+  const [width, height, top, bottom] = [480, 160, 16, 18];
+  svg.setAttribute('viewBox', `0 0 ${width} ${height}`);
+  const most = Math.max(1e-9, ...values);
+  const step = width / values.length;
+  values.forEach((value, i) => {
+    const barHeight = (height - top - bottom) * value / most;
+    const bar = document.createElementNS(SVG, 'rect');
+    bar.setAttribute('x', i * step + 2);
+    bar.setAttribute('y', height - bottom - barHeight);
+    bar.setAttribute('width', Math.max(1, step - 4));
+    bar.setAttribute('height', barHeight);
+    bar.setAttribute('class', 'bar');
+    const tip = document.createElementNS(SVG, 'title');
+    tip.textContent = `${labels[i]}: ${format(value)}`;
+    bar.append(tip);
+    svg.append(bar);
+    const texts = [[labels[i], height - 4]];
+    if (value > 0) texts.push([format(value), height - bottom - barHeight - 3]);
+    for (const [text, y] of texts) {
+      const label = document.createElementNS(SVG, 'text');
+      label.setAttribute('x', i * step + step / 2);
+      label.setAttribute('y', y);
+      label.setAttribute('text-anchor', 'middle');
+      label.textContent = text;
+      svg.append(label);
+    }
+  });
+  figure.append(svg, el('figcaption', title));
+  return figure;
+}
+
+// The last 24 hours from the batches cut: pieces and jobs per hour (local time) and the yield per
+// material (pieces' area over the material they used, weighted by pieces).
+function drawDay() {
+  const batches = state.overview.cut_last_24h || [];
+  const hourMs = 3600 * 1000;
+  const firstHour = Math.floor(Date.now() / hourMs) * hourMs - 23 * hourMs;
+  const pieces = new Array(24).fill(0);
+  const jobs = new Array(24).fill(0);
+  const hours = pieces.map((_, i) => String(new Date(firstHour + i * hourMs).getHours()));
+  const materials = {};
+  for (const batch of batches) {
+    const slot = Math.floor((Date.parse(batch.cut_at) - firstHour) / hourMs);
+    if (slot >= 0 && slot < 24) { pieces[slot] += batch.pieces; jobs[slot] += batch.jobs; }
+    const material = materials[batch.material] || (materials[batch.material] = { weighted: 0, pieces: 0 });
+    material.weighted += batch.utilisation * batch.pieces;
+    material.pieces += batch.pieces;
+  }
+  const names = Object.keys(materials).sort();
+  const yields = names.map((name) => (materials[name].pieces ? materials[name].weighted / materials[name].pieces : 0));
+  const totalPieces = pieces.reduce((a, b) => a + b, 0);
+  const totalJobs = jobs.reduce((a, b) => a + b, 0);
+  $('day-summary').textContent = `${totalJobs} job(s), ${totalPieces} pieces in ${batches.length} batch(es) cut` +
+    (names.length ? '; yield ' + names.map((name, i) => `${name} ${Math.round(100 * yields[i])} %`).join(', ') : '');
+  const count = (value) => String(value);
+  const plots = [barChart('pieces cut per hour', hours, pieces, count), barChart('jobs cut per hour', hours, jobs, count)];
+  if (names.length) plots.push(barChart('yield per material', names, yields, (value) => `${Math.round(100 * value)} %`));
+  $('day-plots').replaceChildren(...plots);
+}
+
 function draw() {
   const overview = state.overview;
   if (!overview) return;
@@ -209,6 +300,8 @@ function draw() {
   }) : [el('li', 'none')]));
   drawCutters();
   drawQueue();
+  drawHides();
+  drawDay();
 }
 
 async function showJob(id) {
