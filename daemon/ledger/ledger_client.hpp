@@ -143,6 +143,16 @@ struct JobRow {
   int attempts = 0;
 };
 
+// One job for the operator's page: where its results are and what happened to it.
+struct JobDetail {
+  std::string state, reason;
+  std::string job_folder;  // job_folder_name(): jobs/<this> in the shared folder
+  struct Event {
+    std::string at_utc, node, event, detail;  // at: ISO 8601 UTC
+  };
+  std::vector<Event> history;  // oldest first
+};
+
 // A computed job waiting for a strip batch, as make_batch offers it to the batching rule.
 struct ComputedJob {
   long long job_id = 0;
@@ -261,6 +271,8 @@ class LedgerClient {
   // a new attempt count. Fails with the reason for a job in any other state.
   Status requeue_held(long long job_id);
   Result<LedgerOverview> overview();
+  // One job's state, results folder and history; an error line when there is no such job.
+  Result<JobDetail> job_detail(long long job_id);
   // An operator's cancel of a batch that waits for its cutter (`queued`): the batch and its jobs
   // are held with `reason`, in one transaction with the claim's lock, so a station either claimed
   // it first (refused: the batch's state) or never will. The number of jobs held.

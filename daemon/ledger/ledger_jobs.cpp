@@ -289,4 +289,23 @@ Result<std::vector<JobRow>> LedgerClient::recent_jobs(int limit, const std::stri
   });
 }
 
+Result<JobDetail> LedgerClient::job_detail(long long job_id) {
+  return transact<JobDetail>("reading job " + std::to_string(job_id), [&](pqxx::work& tx) -> Result<JobDetail> {
+    const pqxx::result row = tx.exec_params(
+        "SELECT state, coalesce(reason, ''), scan_sha256, coalesce(duplicate_of, 0) FROM jobs WHERE id = $1", job_id);
+    if (row.empty()) return Status::failure("no job " + std::to_string(job_id) + " in the ledger");
+    JobDetail out;
+    out.state = row[0][0].as<std::string>();
+    out.reason = row[0][1].as<std::string>();
+    out.job_folder = job_folder_name(row[0][2].as<std::string>(), job_id, row[0][3].as<long long>());
+    for (const pqxx::row& r : tx.exec_params(
+             "SELECT to_char(at AT TIME ZONE 'UTC', 'YYYY-MM-DD\"T\"HH24:MI:SS.MS\"Z\"'), node, event, detail"
+             " FROM job_events WHERE job_id = $1 ORDER BY id",
+             job_id)) {
+      out.history.push_back({r[0].as<std::string>(), r[1].as<std::string>(), r[2].as<std::string>(), r[3].as<std::string>()});
+    }
+    return out;
+  });
+}
+
 }  // namespace lastcut::ledger

@@ -133,6 +133,18 @@ class LedgerView : public StoreView {
     return "job " + job_id + " is back in the ledger's queue; a compute node takes it up";
   }
 
+  Result<JobRecord> job_record(const std::string& job_id) override {
+    if (std::string problem = id_problem(job_id); !problem.empty()) return Status::failure(problem);
+    if (Status connected = connect(); !connected) return connected;
+    const auto detail = client_->job_detail(std::stoll(job_id));
+    if (!detail) return detail.status();
+    nlohmann::json history = nlohmann::json::array();
+    for (const auto& event : detail->history)
+      history.push_back({{"at", event.at_utc}, {"stage", event.event}, {"note", event.detail + " (" + event.node + ")"}});
+    return JobRecord{ledger_.shared_dir / "jobs" / detail->job_folder,
+                     {{"stage", detail->state}, {"reason", detail->reason}, {"history", history}}};
+  }
+
   Result<std::string> cancel_batch(const std::string& batch_id, const std::string& who) override {
     if (std::string problem = id_problem(batch_id); !problem.empty())
       return Status::failure("\"" + batch_id + "\" is not a ledger batch id (a whole number)");

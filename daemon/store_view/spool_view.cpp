@@ -176,6 +176,13 @@ class SpoolView : public StoreView {
     return "job " + id + " is back in work/; lastcutd takes it up within a second";
   }
 
+  Result<JobRecord> job_record(const std::string& job_id) override {
+    const auto folder = spool_.locate(job_id);
+    if (!folder) return Status::failure("no job " + job_id + " in " + spool_.root().string());
+    const auto dir = spool_.job_dir(*folder, job_id);
+    return JobRecord{dir, read_json_or_null(dir / "state.json")};
+  }
+
   Result<std::string> cancel_batch(const std::string& batch_id, const std::string& who) override {
     if (!spool_.read_batch(batch_id)) return Status::failure("no batch " + batch_id + " in " + spool_.root().string());
     // Under the batch's lock, as the cutter worker's `sending`: one of the two wins (batch_lock.hpp).

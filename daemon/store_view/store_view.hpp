@@ -65,6 +65,12 @@ struct CutBatch {
   double utilisation = 0;  // pieces / material used, 0..1
 };
 
+// One job's record, as the operator page's job view shows it.
+struct JobRecord {
+  std::filesystem::path folder;  // its files (molds/, report.json, ...); may be missing before it is computed
+  nlohmann::json state;          // {stage, reason, history: [{at, stage, note}]}: the spool's state.json or the ledger's
+};
+
 struct StoreOverview {
   std::string headline;                    // "spool /var/spool/lastcut: 2 in work, ..." or "ledger URL: 3 done, ..."
   std::vector<std::string> station_lines;  // the daemon or the nodes: running, pid, heartbeat
@@ -94,6 +100,8 @@ class StoreView {
   // spool's batch lock, the ledger's row lock): a batch already taken is refused with its state.
   // The line to print, or why not.
   virtual Result<std::string> cancel_batch(const std::string& batch_id, const std::string& who) = 0;
+  // One job's record; why not when there is no such job.
+  virtual Result<JobRecord> job_record(const std::string& job_id) = 0;
 };
 
 // The reason a cancelled batch and its jobs are held with, and the line that says it was done.

@@ -107,30 +107,25 @@ Result<nlohmann::json> WebStore::overview() {
   return out;
 }
 
-std::optional<std::filesystem::path> WebStore::spool_job_dir(const std::string& id) const {
-  if (config_->ledger) return std::nullopt;
-  const Spool spool(config_->paths.spool_dir);
-  const auto folder = spool.locate(id);
-  if (!folder) return std::nullopt;
-  return spool.job_dir(*folder, id);
+Result<JobRecord> WebStore::record(const std::string& id) {
+  std::lock_guard lock(mutex_);
+  if (std::string problem = view_->id_problem(id); !problem.empty()) return Status::failure(problem);
+  return view_->job_record(id);
 }
 
 Result<nlohmann::json> WebStore::job(const std::string& id) {
-  {
-    std::lock_guard lock(mutex_);
-    if (std::string problem = view_->id_problem(id); !problem.empty()) return Status::failure(problem);
-  }
+  const auto found = record(id);
   auto all = overview();
   if (!all) return all.status();
   nlohmann::json out = {{"id", id}};
   for (const auto& line : (*all)["jobs"])
     if (line["id"] == id) out["line"] = line;
-  if (const auto dir = spool_job_dir(id)) {
-    out["state"] = read_json_or_null(*dir / "state.json");
-    out["report"] = read_json_or_null(*dir / "report.json");
-    out["files"] = job_files(*dir);
+  if (found) {
+    out["state"] = found->state;
+    out["report"] = read_json_or_null(found->folder / "report.json");
+    out["files"] = job_files(found->folder);
   } else if (!out.contains("line")) {
-    return Status::failure("no job " + id);
+    return found.status();
   }
   return out;
 }
@@ -150,9 +145,9 @@ Result<std::filesystem::path> regular_file_in(const std::filesystem::path& dir, 
 }  // namespace
 
 Result<std::filesystem::path> WebStore::job_file(const std::string& id, const std::string& name) {
-  const auto dir = spool_job_dir(id);
-  if (!dir) return Status::failure("no job " + id + " on this station's spool");
-  return regular_file_in(*dir, name, "job " + id);
+  const auto found = record(id);
+  if (!found) return found.status();
+  return regular_file_in(found->folder, name, "job " + id);
 }
 
 Result<std::filesystem::path> WebStore::batch_file(const std::string& batch_id, const std::string& name) {

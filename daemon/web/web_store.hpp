@@ -26,9 +26,9 @@ class WebStore {
   //  waiting_for_hide{}, incoming[], jobs[]}:
   // jobs are {id, state, where, order, scan, reason, list} with list "work", "held" or "recent".
   Result<nlohmann::json> overview();
-  // One job: its line of the overview, and on a spool its state.json, report.json and file names.
+  // One job: its line of the overview, its state and history, report.json and file names.
   Result<nlohmann::json> job(const std::string& id);
-  // A file of a job on the spool: "NAME" or "molds/NAME", already checked by safe_name().
+  // A file of a job: "NAME" or "molds/NAME", already checked by safe_name().
   Result<std::filesystem::path> job_file(const std::string& id, const std::string& name);
   // A file of a batch (or a hide cut as one): on a spool in batches/, on a ledger in its shared folder.
   Result<std::filesystem::path> batch_file(const std::string& batch_id, const std::string& name);
@@ -37,7 +37,8 @@ class WebStore {
   Result<std::string> cancel_batch(const std::string& batch_id, const std::string& who);
 
  private:
-  std::optional<std::filesystem::path> spool_job_dir(const std::string& id) const;
+  // The job's record from the view (its folder: on a spool, in the ledger's shared folder).
+  Result<JobRecord> record(const std::string& id);
 
   std::shared_ptr<const DaemonConfig> config_;
   std::mutex mutex_;  // the view's ledger connection serves one request at a time

@@ -52,6 +52,19 @@ async function main() {
     await page.waitForFunction((id) => document.querySelector(`#column-done li[data-job="${id}"]`), { timeout: 120000 }, heldId);
     check(true, `the requeued job ${heldId} was cut`);
     await page.screenshot({ path: shot, fullPage: true });
+    // Its page, from the shop's shared folder: the molds' stretch maps and the ledger's history.
+    for (let attempt = 0; attempt < 5; ++attempt) {
+      await clickLive(page, `#column-done li[data-job="${heldId}"] a`);
+      const opened = await page.waitForFunction(() => !document.getElementById('job-view').hidden, { timeout: 3000 })
+        .then(() => true, () => false);
+      if (opened) break;
+    }
+    await page.waitForFunction(() => document.querySelectorAll('#job-pictures img').length > 0 &&
+                                   [...document.querySelectorAll('#job-pictures img')].every((img) => img.complete && img.naturalWidth > 0),
+                               { timeout: 30000 });
+    const history = await page.$$eval('#job-history li', (items) => items.map((item) => item.textContent));
+    check(history.some((line) => line.includes('requeued')) && history.some((line) => line.includes('held')),
+          `the job's page shows its pictures and its history from the ledger (${history.length} events)`);
     check(await page.evaluate(() => window.__noReload) === 'first page', 'the page was never reloaded');
     check(errors.length === 0, 'no script error on the page ' + errors.join('; '));
   } finally {
