@@ -1,14 +1,20 @@
 # Every dependency is a Debian bookworm package installed by scripts/setup.sh.
-# All are REQUIRED: a missing install step fails the configure, not a test later.
+# All are REQUIRED: a missing install step fails the configure, not a test later. The test and
+# benchmark frameworks only where tests and benchmarks are built (the demo and the Debian package
+# build the programs alone, scripts/setup.sh --programs).
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(OpenMesh REQUIRED)
 find_package(spdlog REQUIRED)
 find_package(fmt REQUIRED)
-find_package(GTest REQUIRED)
+if(LASTCUT_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()
 find_package(CLI11 REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(tomlplusplus REQUIRED)
-find_package(benchmark REQUIRED)
+if(LASTCUT_BUILD_BENCH)
+  find_package(benchmark REQUIRED)
+endif()
 find_package(Threads REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(MODBUS REQUIRED IMPORTED_TARGET libmodbus)

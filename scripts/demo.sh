@@ -14,9 +14,14 @@ root="$(pwd)"
 if [ -n "${LASTCUT_DEMO_BUILD:-}" ]; then
   bin="$(cd "$LASTCUT_DEMO_BUILD" && pwd)/bin"
 else
-  bash scripts/setup.sh
-  # Only the three programs the demo runs, not the tests and benchmarks.
-  LASTCUT_BUILD_TARGET="lastcutd lastcut lastcut-sim" bash scripts/build.sh build
+  # Only what the three programs the demo runs need, not the test suite's browser, servers and tools.
+  bash scripts/setup.sh --programs
+  # Only those three programs, not the tests and benchmarks. A new build folder is configured
+  # without them (so their frameworks need not be installed); one the test suite configured is
+  # kept as it is, and only the programs are brought up to date in it.
+  options=()
+  if [ ! -f build/CMakeCache.txt ]; then options=(-DLASTCUT_BUILD_TESTS=OFF -DLASTCUT_BUILD_BENCH=OFF); fi
+  LASTCUT_BUILD_TARGET="lastcutd lastcut lastcut-sim" bash scripts/build.sh build "${options[@]}"
   bin="$root/build/bin"
 fi
 

@@ -12,7 +12,8 @@ stage() { echo "== $* (at $((SECONDS / 60)) min $((SECONDS % 60)) s)"; }
 bash scripts/setup.sh
 
 stage "build (RelWithDebInfo)"
-bash scripts/build.sh build
+# Tests and benchmarks on, also in a build folder the demo configured without them.
+bash scripts/build.sh build -DLASTCUT_BUILD_TESTS=ON -DLASTCUT_BUILD_BENCH=ON
 stage "tests"
 # Every test, the ones on the real grbl 1.1h firmware included (labels firmware, firmware-slow:
 # tests/peers, docs/grbl-firmware.md); they share one resource lock, so one firmware runs at a time.

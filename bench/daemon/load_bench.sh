@@ -7,12 +7,17 @@
 # daemon serves its operator page and that many pages of it watch in one headless chromium
 # (page_watchers.js): the table gains the watchers, the events they saw and how late (median,
 # p99, max, and how many over 1 s); compare with a run of 0 watchers (page_load_bench.sh does both).
-# Usage: load_bench.sh BUILD_DIR [SCANS] [TRIANGLES] [WATCHERS]
+# KIND `stream` (default) makes the pages' requests without browsers (stream_watchers.js: the
+# daemon's cost of serving them, as on a shop floor where the pages run on other computers);
+# `browser` runs the real page in chromium on this machine (page_watchers.js: the browsers' own
+# rendering then competes with the daemon for the same cores).
+# Usage: load_bench.sh BUILD_DIR [SCANS] [TRIANGLES] [WATCHERS] [KIND]
 set -euo pipefail
 build="$(cd "${1:-build}" && pwd)"
 scans="${2:-200}"
 triangles="${3:-2000}"
 watchers="${4:-0}"
+kind="${5:-stream}"
 source_dir="$(cd "$(dirname "$0")/../.." && pwd)"
 bin="$build/bin"
 root="$build/bench-scratch/daemon-load"
@@ -49,10 +54,16 @@ wait_for_line "$root/sim.log" "ready:" || true
 "$bin/lastcutd" --config "$root/lastcut.toml" > "$root/lastcutd.log" 2>&1 &
 daemon=$!
 wait_for_line "$root/lastcutd.log" "lastcutd ready" || true
-if [ "$watchers" -gt 0 ]; then
+if [ "$watchers" -gt 0 ] && [ "$kind" = browser ]; then
   node "$source_dir/bench/daemon/page_watchers.js" "http://127.0.0.1:$web_port/" "$watchers" \
     "$source_dir/tests/node/node_modules" > "$root/watchers.json" 2> "$root/watchers.log" &
   watcher_pid=$!
+elif [ "$watchers" -gt 0 ]; then
+  node "$source_dir/bench/daemon/stream_watchers.js" "http://127.0.0.1:$web_port/" "$watchers" \
+    "$root/watchers.json" 2> "$root/watchers.log" &
+  watcher_pid=$!
+fi
+if [ "$watchers" -gt 0 ]; then
   for _ in $(seq 600); do grep -q "pages live" "$root/watchers.log" && break; sleep 0.1; done
   grep -q "pages live" "$root/watchers.log" || { echo "the watching pages did not start:"; cat "$root/watchers.log"; exit 1; }
 fi
@@ -68,7 +79,8 @@ while :; do
 done
 end=$(date +%s.%N)
 peak_kb=$(awk '/VmHWM/ {print $2}' /proc/$daemon/status)
-if [ "$watchers" -gt 0 ]; then kill -TERM "$watcher_pid"; wait "$watcher_pid" || true; fi
+# The last events (the final cut) reach the watchers within a second or two.
+if [ "$watchers" -gt 0 ]; then sleep 3; kill -TERM "$watcher_pid"; wait "$watcher_pid" || true; fi
 kill -TERM $daemon; wait $daemon || true; daemon=""
 kill -TERM $sim; wait $sim || true
 
@@ -98,7 +110,7 @@ awk -v n="$scans" -v t="$triangles" -v w="$(nproc)" -v e="$elapsed" -v d="$done_
     -v l="$left" -v c="$cut_jobs" -v o="$overflows" -v r0="$rss_start_kb" -v r="$peak_kb" \
   'BEGIN { printf "| %d | %d | %d | %.1f | %.1f | %d | %d | %d | %d | %d | %d | %.1f | %.1f |\n", n, t, w, e, 60 * n / e, d, f, h, l, c, o, r0 / 1024, r / 1024 }'
 if [ "$watchers" -gt 0 ]; then
-  echo "watching pages: $(cat "$root/watchers.json")"
+  echo "watching pages ($kind): $(cat "$root/watchers.json")"
   grep -q '"over_1s":0' "$root/watchers.json" || echo "SOME EVENTS ARRIVED LATER THAN 1 s"
 fi
 [ "$done_count" -eq "$scans" ] && [ "$left" -eq 0 ] && [ "$cut_jobs" -eq "$scans" ]

@@ -17,7 +17,7 @@ namespace lastcut::drivers::sim {
 
 namespace {
 
-double clock_s() {
+double since_start_s() {
   static const auto start = std::chrono::steady_clock::now();
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -95,7 +95,7 @@ int run_byte_device(ByteDevice& device, const ByteLinkOptions& options, const st
   auto io_fd = [&] { return pty.master >= 0 ? pty.master : client; };
 
   while (!stop.load()) {
-    const double now = clock_s();
+    const double now = since_start_s();
     if (follow_client) {
       const int baud = client_baud(pty.slave_keep);
       if (baud > 0 && baud != wire_baud) {
@@ -150,7 +150,7 @@ int run_byte_device(ByteDevice& device, const ByteLinkOptions& options, const st
     // times anyway): waking at most every 0.5 ms for input keeps the loop cheap on a busy PC.
     double wake = std::min({std::max(inbound.next_s(), now + 0.0005), outbound.next_s(), device.next_event_s(), now + 0.05});
     if (!unsent.empty()) wake = std::min(wake, now + 0.002);
-    const double wait_s = std::max(0.0, wake - clock_s());
+    const double wait_s = std::max(0.0, wake - since_start_s());
     pollfd fds[2];
     nfds_t count = 0;
     const int fd = io_fd();
@@ -167,7 +167,7 @@ int run_byte_device(ByteDevice& device, const ByteLinkOptions& options, const st
       char buffer[4096];
       const ssize_t got = ::read(fds[i].fd, buffer, sizeof buffer);
       if (got > 0) {
-        inbound.push(buffer, static_cast<size_t>(got), clock_s());
+        inbound.push(buffer, static_cast<size_t>(got), since_start_s());
       } else if (client >= 0 && fds[i].fd == client && (got == 0 || (errno != EAGAIN && errno != EINTR))) {
         ::close(client);  // the sender hung up; wait for the next one
         client = -1;

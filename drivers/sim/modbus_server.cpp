@@ -14,7 +14,7 @@ namespace lastcut::drivers::sim {
 
 namespace {
 
-double clock_s() {
+double steady_now_s() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
@@ -61,7 +61,7 @@ bool serve_one(modbus_t* ctx, int fd, Served& served, ModbusPlc& plc, const Modb
     return ::write(fd, noise, sizeof noise) >= 0;
   }
   modbus_reply(ctx, query, length, served.mapping);
-  plc.update(clock_s());
+  plc.update(steady_now_s());
   return fault_now(options.faults, plc.blocks_received()) != LinkFault::Drop;
 }
 
@@ -83,7 +83,7 @@ int run_modbus_tcp(const ModbusSimOptions& options, int port, const std::atomic<
     if (!dropped) fds.push_back({listener, POLLIN, 0});
     for (int c : clients) fds.push_back({c, POLLIN, 0});
     const int ready_count = ::poll(fds.data(), fds.size(), 20);
-    plc.update(clock_s());
+    plc.update(steady_now_s());
     if (ready_count <= 0) continue;
     for (const auto& p : fds) {
       if (!(p.revents & (POLLIN | POLLHUP | POLLERR))) continue;
@@ -126,7 +126,7 @@ int run_modbus_rtu(const ModbusSimOptions& options, const std::string& link_path
   while (!stop.load()) {
     pollfd p{pty.master, POLLIN, 0};
     const int ready_count = dropped ? (::usleep(20000), 0) : ::poll(&p, 1, 20);
-    plc.update(clock_s());
+    plc.update(steady_now_s());
     if (ready_count <= 0 || !(p.revents & POLLIN)) continue;
     if (!serve_one(ctx, pty.master, served, plc, options)) {
       if (fault_now(options.faults, plc.blocks_received()) == LinkFault::Drop) {

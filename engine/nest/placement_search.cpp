@@ -7,7 +7,7 @@
 namespace lastcut::nest_detail {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kNoBound = std::numeric_limits<double>::infinity();
 // Step schedule of the two descents, as ratios of the piece's smaller box side (sparrow's values).
 constexpr double kCoarseFirst = 0.25, kCoarseLast = 0.02, kFineFirst = 0.01, kFineLast = 0.001;
 constexpr double kStepSuccess = 1.1, kStepFailure = 0.5;
@@ -16,14 +16,14 @@ constexpr double kDistinctShare = 0.05;
 
 struct Sample {
   PieceState state;
-  double cost = kInfinity;
+  double cost = kNoBound;
 };
 
 // The best `capacity` samples, pairwise distinct, cheapest first.
 class BestSamples {
  public:
   BestSamples(size_t capacity, double distinct_mm) : capacity_(capacity), distinct_mm_(distinct_mm) {}
-  double bound() const { return samples_.size() < capacity_ ? kInfinity : samples_.back().cost; }
+  double bound() const { return samples_.size() < capacity_ ? kNoBound : samples_.back().cost; }
   const std::vector<Sample>& samples() const { return samples_; }
   void report(const Sample& s) {
     for (Sample& known : samples_)
@@ -61,7 +61,7 @@ Sample descend(Sample start, double first_step, double last_step, const Containe
     const Point2 step(kAxes[axis][0] * step_x, kAxes[axis][1] * step_y);
     Sample best;
     for (const double sign : {1.0, -1.0}) {
-      Sample candidate{start.state, kInfinity};
+      Sample candidate{start.state, kNoBound};
       candidate.state.offset = container.clamp_offset(shape, start.state.offset + sign * step);
       candidate.cost = cost(candidate.state, start.cost);
       if (candidate.cost < best.cost) best = candidate;
@@ -84,10 +84,10 @@ std::pair<PieceState, double> search_placement(const PreparedItem& item, const P
                                                const SearchSettings& settings, Random& random) {
   const int orientations = static_cast<int>(item.orientations.size());
   BestSamples best(static_cast<size_t>(settings.refined_samples), kDistinctShare * smaller_side(item, current));
-  best.report({current, cost(current, kInfinity)});
+  best.report({current, cost(current, kNoBound)});
   const double radius = 0.25 * item.diameter_mm;
   for (int k = 0; k < settings.focused_samples && best.samples().front().cost > 0; ++k) {
-    Sample s{{random.uniform() < 0.7 ? current.orientation : random.below(orientations), current.offset}, kInfinity};
+    Sample s{{random.uniform() < 0.7 ? current.orientation : random.below(orientations), current.offset}, kNoBound};
     const Box range = container.offset_range(item.orientations[s.state.orientation]);
     if (range.x0 > range.x1 || range.y0 > range.y1) continue;
     s.state.offset = container.clamp_offset(item.orientations[s.state.orientation],
@@ -96,7 +96,7 @@ std::pair<PieceState, double> search_placement(const PreparedItem& item, const P
     best.report(s);
   }
   for (int k = 0; k < settings.container_samples && best.samples().front().cost > 0; ++k) {
-    Sample s{{random.below(orientations), Point2::Zero()}, kInfinity};
+    Sample s{{random.below(orientations), Point2::Zero()}, kNoBound};
     const Box range = container.offset_range(item.orientations[s.state.orientation]);
     if (range.x0 > range.x1 || range.y0 > range.y1) continue;
     s.state.offset = {random.uniform(range.x0, range.x1), random.uniform(range.y0, range.y1)};

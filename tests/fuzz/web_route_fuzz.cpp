@@ -44,6 +44,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     case WebRouteKind::Job:
     case WebRouteKind::Requeue:
       break;
+    case WebRouteKind::CancelBatch:  // the batch's id: checked below with every id
+      if (route.job_id.empty()) std::abort();
+      break;
+    case WebRouteKind::PauseCutter:
+    case WebRouteKind::ResumeCutter:
+      if (route.cutter.empty()) std::abort();
+      break;
   }
   if (!route.job_id.empty() && !safe_name(route.job_id)) std::abort();
   if (!route.cutter.empty() && !safe_name(route.cutter)) std::abort();

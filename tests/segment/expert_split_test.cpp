@@ -11,10 +11,12 @@
 #include "engine/segment/expert_split_plane.hpp"
 #include "engine/segment/segment_last.hpp"
 
+#include "tests/segment/foot_side_param_name.hpp"
+
 namespace lastcut {
 namespace {
 
-std::string side_name(const testing::TestParamInfo<FootSide>& param) { return std::string(to_string(param.param)); }
+using test::side_name;
 
 // A closed circle of `count` points, radius r (mm) about (cx, 0, z), starting at `phase_rad`.
 std::vector<Eigen::Vector3d> circle(double cx, double z, double r, int count, double phase_rad) {

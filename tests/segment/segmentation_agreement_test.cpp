@@ -10,10 +10,12 @@
 #include "engine/segment/segment_halves.hpp"
 #include "engine/segment/segmentation_agreement.hpp"
 
+#include "tests/segment/foot_side_param_name.hpp"
+
 namespace lastcut {
 namespace {
 
-std::string side_name(const testing::TestParamInfo<FootSide>& param) { return std::string(to_string(param.param)); }
+using test::side_name;
 
 // A band with no sole and no top: every face between the contours (sole and top fields < 0).
 BandCut band_of(TriMesh mesh) {

@@ -3,24 +3,14 @@
 #include <gtest/gtest.h>
 
 #include "daemon/station/batching_policy.hpp"
+#include "tests/station/batch_rule_helpers.hpp"
 
 namespace lastcut::daemon {
 namespace {
 
-BatchConfig rule(double window_s, int max_pieces) {
-  BatchConfig config;
-  config.window_s = window_s;
-  config.max_pieces = max_pieces;
-  return config;
-}
-
-std::vector<std::vector<std::string>> ids_of(const std::vector<DueBatch>& batches) {
-  std::vector<std::vector<std::string>> ids;
-  for (const DueBatch& batch : batches) ids.push_back(batch.job_ids);
-  return ids;
-}
-
-using Ids = std::vector<std::vector<std::string>>;
+using testing::Ids;
+using testing::ids_of;
+using testing::rule;
 
 TEST(BatchingPolicy, AWindowOfZeroNestsEachJobAloneAtOnce) {
   // However many wait together (a ledger node's worker may find several computed at once): alone.

@@ -4,25 +4,15 @@
 #include <gtest/gtest.h>
 
 #include "daemon/station/strip_batcher.hpp"
+#include "tests/station/batch_rule_helpers.hpp"
 
 namespace lastcut::daemon {
 namespace {
 
 using Clock = StripBatcher::Clock;
-using Ids = std::vector<std::vector<std::string>>;
-
-BatchConfig rule(double window_s, int max_pieces) {
-  BatchConfig config;
-  config.window_s = window_s;
-  config.max_pieces = max_pieces;
-  return config;
-}
-
-Ids ids_of(const std::vector<DueBatch>& batches) {
-  Ids ids;
-  for (const DueBatch& batch : batches) ids.push_back(batch.job_ids);
-  return ids;
-}
+using testing::Ids;
+using testing::ids_of;
+using testing::rule;
 
 Clock::time_point at_s(double seconds) {
   return Clock::time_point{} + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));

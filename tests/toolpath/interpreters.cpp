@@ -12,16 +12,10 @@
 #include <sys/wait.h>
 
 #include "tests/support/temp_dir.hpp"
+#include "tests/toolpath/test_layouts.hpp"
 
 namespace lastcut::test {
 namespace {
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 }  // namespace
 
