@@ -16,8 +16,8 @@ CutterPauses::CutterPauses(std::filesystem::path file) : file_(std::move(file)) 
   std::ostringstream text;
   text << in.rdbuf();
   try {
-    for (const auto& [cutter, who] : nlohmann::json::parse(text.str()).at("paused").items())
-      paused_[cutter] = who.get<std::string>();
+    const nlohmann::json saved = nlohmann::json::parse(text.str());  // named: items() refers into it
+    for (const auto& [cutter, who] : saved.at("paused").items()) paused_[cutter] = who.get<std::string>();
   } catch (const std::exception& error) {
     paused_.clear();
     spdlog::error("{} unreadable, no cutter is paused: {}", file_.string(), error.what());

@@ -289,7 +289,7 @@ TEST(CutterPausesFile, PausesOutliveARestartAndEachRefusalIsOneLine) {
   {
     LogLines log;
     CutterPauses again(file);
-    EXPECT_EQ(again.paused_by("table-1"), std::optional<std::string>("anna"));
+    ASSERT_EQ(again.paused_by("table-1"), std::optional<std::string>("anna"));
     EXPECT_EQ(log.count("cutter table-1: paused (by anna) before this start; it takes no batch until resumed"), 1);
     EXPECT_EQ(*again.resume("table-1", "ben"),
               "cutter table-1 resumed (paused by anna, resumed by ben): its batches are cut again");
