@@ -79,6 +79,9 @@ Eigen::VectorXd smoothed_elevation_rad(const TriMesh& mesh, const MeshTopology& 
     for (int k = 0; k < 3; ++k) normals.row(mesh.F(f, k)) += area_normal;
   }
   Eigen::MatrixXd next(vertex_count, 3);
+  // A mesh without edges (empty: the caller refuses it later with its reason) gives no edge length
+  // and so a NaN or infinite count: no smoothing then, rather than a cast of NaN to int (UB).
+  if (!std::isfinite(passes) || passes < 0) passes = 0;
   // A fractional last pass adds only that share of the neighbours, so the smoothing radius in mm
   // can follow the edge length continuously.
   for (int pass = 0; pass < static_cast<int>(std::ceil(passes)); ++pass) {
