@@ -36,8 +36,9 @@ bash scripts/fuzz.sh --replay
 # and checked by lintian. Nothing else builds it, and once a missing comma in debian/control kept
 # it from building for days unseen. (scripts/check_package.sh, the install into a fresh debootstrap
 # root, needs mount and chroot and stays a manual step.)
-# Unoptimised (noopt): CI checks the packaging (rules, install lists, systemd files, lintian), and
-# the optimised code is what the stages above tested; an admin's scripts/package.sh optimises.
+# Unoptimised and without debug information (noopt, -g0): CI checks the packaging (rules, install
+# lists, systemd files, lintian), and the optimised code is what the stages above tested; an
+# admin's scripts/package.sh optimises (it took 9.5 minutes here, this one a few).
 stage "the Debian package (scripts/package.sh)"
-DEB_BUILD_OPTIONS="noopt noautodbgsym" bash scripts/package.sh
+DEB_BUILD_OPTIONS="noopt noautodbgsym" DEB_CXXFLAGS_APPEND="-g0" bash scripts/package.sh
 stage "done"
