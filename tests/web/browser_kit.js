@@ -33,9 +33,23 @@ async function clickLive(page, selector) {
   }
 }
 
+// Opens job `jobId`'s page by its link in the Done column and waits until its pictures have loaded.
+// (A click that lands while the queue is being redrawn is lost, as a person's would be: again.)
+async function openDoneJobPage(page, jobId) {
+  for (let attempt = 0; attempt < 5; ++attempt) {
+    await clickLive(page, `#column-done li[data-job="${jobId}"] a`);
+    const opened = await page.waitForFunction(() => !document.getElementById('job-view').hidden, { timeout: 3000 })
+      .then(() => true, () => false);
+    if (opened) break;
+  }
+  await page.waitForFunction(() => document.querySelectorAll('#job-pictures img').length > 0 &&
+                                 [...document.querySelectorAll('#job-pictures img')].every((img) => img.complete && img.naturalWidth > 0),
+                             { timeout: 30000 });
+}
+
 // Runs `main` and exits 1 with the error when it fails.
 function run(main) {
   main().catch((error) => { console.error(error.stack || String(error)); process.exit(1); });
 }
 
-module.exports = { launchChromium, check, clickLive, run };
+module.exports = { launchChromium, check, clickLive, openDoneJobPage, run };

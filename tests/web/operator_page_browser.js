@@ -15,7 +15,7 @@ if (!modulesDir) {
   console.error('usage: node operator_page_browser.js URL TOKEN WATCH_DIR SCAN_FILE HIDE_FILE SHOTS_DIR NODE_MODULES');
   process.exit(2);
 }
-const { launchChromium, check, clickLive, run } = require('./browser_kit');
+const { launchChromium, check, clickLive, openDoneJobPage, run } = require('./browser_kit');
 
 // The queue column a job (by scan name or id) is listed in now, or null.
 function columnOf(page, text) {
@@ -110,16 +110,7 @@ async function main() {
     await page.screenshot({ path: path.join(shotsDir, 'operator-page-hides-and-day.png'), fullPage: true });
 
     // The job page: its pictures and report, by the link in the queue.
-    // (A click that lands while the queue is being redrawn is lost, as a person's would be: again.)
-    for (let attempt = 0; attempt < 5; ++attempt) {
-      await clickLive(page, `#column-done li[data-job="${heldId}"] a`);
-      const opened = await page.waitForFunction(() => !document.getElementById('job-view').hidden, { timeout: 3000 })
-        .then(() => true, () => false);
-      if (opened) break;
-    }
-    await page.waitForFunction(() => document.querySelectorAll('#job-pictures img').length > 0 &&
-                                   [...document.querySelectorAll('#job-pictures img')].every((img) => img.complete && img.naturalWidth > 0),
-                               { timeout: 30000 });
+    await openDoneJobPage(page, heldId);
     check(true, 'the job page shows its pictures');
     await page.screenshot({ path: path.join(shotsDir, 'operator-page-job.png'), fullPage: true });
 

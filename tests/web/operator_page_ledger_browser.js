@@ -12,7 +12,7 @@ if (!modulesDir) {
   console.error('usage: node operator_page_ledger_browser.js PAGE_URL TOKEN SCAN_NAME NODE_A NODE_B SHOT NODE_MODULES');
   process.exit(2);
 }
-const { launchChromium, check, clickLive, run } = require('./browser_kit');
+const { launchChromium, check, clickLive, openDoneJobPage, run } = require('./browser_kit');
 
 async function main() {
   const browser = await launchChromium(modulesDir);
@@ -53,15 +53,7 @@ async function main() {
     check(true, `the requeued job ${heldId} was cut`);
     await page.screenshot({ path: shot, fullPage: true });
     // Its page, from the shop's shared folder: the molds' stretch maps and the ledger's history.
-    for (let attempt = 0; attempt < 5; ++attempt) {
-      await clickLive(page, `#column-done li[data-job="${heldId}"] a`);
-      const opened = await page.waitForFunction(() => !document.getElementById('job-view').hidden, { timeout: 3000 })
-        .then(() => true, () => false);
-      if (opened) break;
-    }
-    await page.waitForFunction(() => document.querySelectorAll('#job-pictures img').length > 0 &&
-                                   [...document.querySelectorAll('#job-pictures img')].every((img) => img.complete && img.naturalWidth > 0),
-                               { timeout: 30000 });
+    await openDoneJobPage(page, heldId);
     const history = await page.$$eval('#job-history li', (items) => items.map((item) => item.textContent));
     check(history.some((line) => line.includes('requeued')) && history.some((line) => line.includes('held')),
           `the job's page shows its pictures and its history from the ledger (${history.length} events)`);
