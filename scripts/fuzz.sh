@@ -20,6 +20,10 @@ fi
 seconds="$1"
 shift
 build=build-fuzz
+# libFuzzer's coverage instrumentation of every library: needed to fuzz, not to replay stored inputs
+# or run the sanitizer tests. CI sets LASTCUT_FUZZ_COVERAGE=OFF for --build and --replay.
+coverage=ON
+if [[ "$seconds" =~ ^(--build|--replay)$ ]] && [ "${LASTCUT_FUZZ_COVERAGE:-ON}" = OFF ]; then coverage=OFF; fi
 if [ "$seconds" = --build ]; then
   extra_cmake_targets=("$@")
   set --
@@ -55,9 +59,12 @@ max_len_of() {
 build_targets() {
   export CCACHE_BASEDIR="$(pwd)" CCACHE_NOHASHDIR=true
   if [ ! -f "$build/CMakeCache.txt" ]; then
-    # -O1, as sanitizer builds usually are: a fifth less compile time than -O2 in CI.
+    # -O1, as sanitizer builds usually are.
     CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DLASTCUT_FUZZ=ON -DLASTCUT_BUILD_BENCH=OFF >/dev/null
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DLASTCUT_FUZZ=ON -DLASTCUT_BUILD_BENCH=OFF \
+      -DLASTCUT_FUZZ_COVERAGE="$coverage" >/dev/null
+  elif ! grep -qx "LASTCUT_FUZZ_COVERAGE:BOOL=$coverage" "$build/CMakeCache.txt"; then
+    cmake -S . -B "$build" -DLASTCUT_FUZZ_COVERAGE="$coverage" >/dev/null
   fi
   nice cmake --build "$build" --target lastcut_fuzz_all "$@" -j "$(nproc)"
 }

@@ -24,6 +24,10 @@ async function main() {
     await page.goto(url, { waitUntil: 'load' });
     await page.waitForFunction(() => document.getElementById('live').textContent === 'live', { timeout: 10000 });
     await page.evaluate(() => { window.__noReload = 'first page'; });
+    // The live badge comes with the stream; the headline with the overview, read at the same time:
+    // reading it at once raced with that read ("reading the store...", one failure in a few runs).
+    await page.waitForFunction(() => document.getElementById('headline').textContent !== 'reading the store...',
+                               { timeout: 10000 });
     const headline = await page.$eval('#headline', (node) => node.textContent);
     check(headline.startsWith('ledger '), `the page reads the shop's ledger: ${headline}`);
     await page.waitForFunction((a, b) => {

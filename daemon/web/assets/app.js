@@ -14,7 +14,12 @@ const COLUMN_OF = {
   sending: 'sending', cut: 'done', done: 'done', skipped: 'done', failed: 'failed', held: 'held',
 };
 
-const state = { overview: null, jobs: new Map(), cutters: {}, incoming: [], source: null, shownJob: null, cutMaps: {} };
+const state = { overview: null, jobs: new Map(), cutters: {}, incoming: [], source: null, shownJob: null, cutMaps: {},
+                redraw: { queue: false, cutters: false, timer: null } };
+// Live events redraw at most this often: a busy shop sends tens of events a second (every cutter's
+// progress), and redrawing the queue and the table's picture for each one kept a screen's
+// processor busy; a quarter of a second is well inside the promised 1 s.
+const REDRAW_EVERY_MS = 250;
 const SVG = 'http://www.w3.org/2000/svg';
 
 const $ = (id) => document.getElementById(id);
@@ -59,12 +64,24 @@ function jobEvent(event) {
     reason: event.reason, note: event.note, cutter: event.cutter, batch: event.batch,
   });
   state.incoming = state.incoming.filter((name) => name !== event.scan);
-  draw();
+  redrawSoon('queue');
   if (state.shownJob === event.id) showJob(event.id);
   // A batch formed, taken or ended: its list comes with the overview (read once for a burst).
   if (['batched', 'sending', 'cut', 'held'].includes(event.stage) && !state.batchReload) {
     state.batchReload = setTimeout(() => { state.batchReload = null; loadOverview(); }, 700);
   }
+}
+
+// Marks a part of the page to redraw and draws every marked part once, REDRAW_EVERY_MS from the first mark.
+function redrawSoon(part) {
+  state.redraw[part] = true;
+  if (state.redraw.timer) return;
+  state.redraw.timer = setTimeout(() => {
+    const { queue, cutters } = state.redraw;
+    state.redraw = { queue: false, cutters: false, timer: null };
+    if (queue) drawQueue();
+    if (cutters) drawCutters();
+  }, REDRAW_EVERY_MS);
 }
 
 // The cut map of a batch (its pieces on the table and their bytes in the cut file), read once.
@@ -371,7 +388,7 @@ function follow() {
   source.addEventListener('cutter', (message) => {
     const cutter = JSON.parse(message.data);
     state.cutters[cutter.cutter] = cutter;
-    drawCutters();
+    redrawSoon('cutters');
   });
   source.addEventListener('resync', () => loadOverview());
 }
