@@ -27,7 +27,7 @@ endfunction()
 
 # lastcut_test(NAME SOURCES... DEPS ... [LABELS ...]): a GoogleTest executable registered with CTest.
 function(lastcut_test name)
-  cmake_parse_arguments(ARG "" "TIMEOUT;RESOURCE_LOCK" "SOURCES;DEPS;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "" "TIMEOUT;RESOURCE_LOCK;COST" "SOURCES;DEPS;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gtest_main)
   target_compile_definitions(${name} PRIVATE
@@ -53,6 +53,11 @@ function(lastcut_test name)
   set(lock_property "")
   if(ARG_RESOURCE_LOCK)
     set(lock_property RESOURCE_LOCK ${ARG_RESOURCE_LOCK})
+  endif()
+  # COST: ctest starts the costliest tests first when it has no timings of its own yet (a fresh
+  # clone, CI): the long ones then overlap the many short ones instead of running alone at the end.
+  if(ARG_COST)
+    list(APPEND lock_property COST ${ARG_COST})
   endif()
   include(GoogleTest)
   if("sanitize" IN_LIST ARG_LABELS)
