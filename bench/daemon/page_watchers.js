@@ -12,7 +12,9 @@ const pageCount = Number(pagesArgument);
 
 async function main() {
   const browser = await launchChromium(modulesDir, ['--disable-background-timer-throttling', '--disable-renderer-backgrounding',
-                                                    '--disable-backgrounding-occluded-windows']);
+                                                    '--disable-backgrounding-occluded-windows'],
+                                       // The summary is made on SIGTERM: puppeteer must not close the browser first.
+                                       { handleSIGTERM: false, handleSIGINT: false });
   const pages = [];
   for (let i = 0; i < pageCount; ++i) {
     // Each page in a browser context of its own, as N browsers: a context has its own connections

@@ -4,11 +4,11 @@
 'use strict';
 const path = require('path');
 
-// `modulesDir`: tests/node/node_modules.
-function launchChromium(modulesDir, extraArgs = []) {
+// `modulesDir`: tests/node/node_modules; `options`: more of puppeteer's launch options.
+function launchChromium(modulesDir, extraArgs = [], options = {}) {
   const puppeteer = require(path.join(modulesDir, 'puppeteer-core'));
   return puppeteer.launch({
-    executablePath: '/usr/bin/chromium', headless: true,
+    ...options, executablePath: '/usr/bin/chromium', headless: true,
     args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
            '--disable-component-update', '--disable-sync', ...extraArgs],
   });

@@ -14,7 +14,7 @@ const COLUMN_OF = {
   sending: 'sending', cut: 'done', done: 'done', skipped: 'done', failed: 'failed', held: 'held',
 };
 
-const state = { overview: null, jobs: new Map(), cutters: {}, incoming: [], source: null, shownJob: null, cutMaps: {},
+const state = { overview: null, jobs: new Map(), cutters: {}, incoming: [], source: null, shownJob: null, cutMaps: {}, tables: {},
                 redraw: { queue: false, cutters: false, timer: null } };
 // Live events redraw at most this often: a busy shop sends tens of events a second (every cutter's
 // progress), and redrawing the queue and the table's picture for each one kept a screen's
@@ -96,24 +96,22 @@ function cutMap(batch) {
   return state.cutMaps[batch];
 }
 
-// The layout on the cutter's table: each piece cut, being cut or waiting, by the bytes sent.
-function tablePicture(map, bytesSent) {
+// The layout on the cutter's table, drawn once per batch: {svg, shapes: [{piece, outline, title, status}]}.
+function tablePicture(map) {
   const svg = document.createElementNS(SVG, 'svg');
   svg.setAttribute('class', 'table');
+  const shapes = [];
   const points = map.pieces.flatMap((piece) => piece.outline_mm);
-  if (points.length === 0) return svg;
+  if (points.length === 0) return { svg, shapes };
   const xs = points.map((p) => p[0]);
   const ys = points.map((p) => p[1]);
   const [x0, x1, y0, y1] = [Math.min(...xs) - 10, Math.max(...xs) + 10, Math.min(...ys) - 10, Math.max(...ys) + 10];
   svg.setAttribute('viewBox', `${x0} ${-y1} ${x1 - x0} ${y1 - y0}`);  // y up, as on the table
   for (const piece of map.pieces) {
-    const status = bytesSent >= piece.end_byte ? 'cut' : bytesSent >= piece.first_byte ? 'cutting' : 'waiting';
     const outline = document.createElementNS(SVG, 'polygon');
     outline.setAttribute('points', piece.outline_mm.map((p) => `${p[0]},${-p[1]}`).join(' '));
-    outline.setAttribute('class', 'piece ' + status);
     outline.dataset.label = piece.label;
     const title = document.createElementNS(SVG, 'title');
-    title.textContent = `${piece.label} (${status})`;
     outline.append(title);
     const px = piece.outline_mm.map((p) => p[0]);
     const py = piece.outline_mm.map((p) => p[1]);
@@ -124,8 +122,31 @@ function tablePicture(map, bytesSent) {
     label.setAttribute('text-anchor', 'middle');
     label.textContent = piece.label;
     svg.append(outline, label);
+    shapes.push({ piece, outline, title, status: null });
   }
-  return svg;
+  return { svg, shapes };
+}
+
+// Each piece cut, being cut or waiting, by the bytes sent; only the pieces whose state changed are
+// touched (a cutter reports progress many times a second, and redrawing a picture of a hundred
+// pieces for each report kept a screen's processor busy).
+function markPieces(table, bytesSent) {
+  for (const shape of table.shapes) {
+    const { piece } = shape;
+    const status = bytesSent >= piece.end_byte ? 'cut' : bytesSent >= piece.first_byte ? 'cutting' : 'waiting';
+    if (status === shape.status) continue;
+    shape.status = status;
+    shape.outline.setAttribute('class', 'piece ' + status);
+    shape.title.textContent = `${piece.label} (${status})`;
+  }
+}
+
+// Cutter `name`'s table picture for `batch`, kept while the batch is on its table.
+function tableOf(name, batch, map) {
+  const kept = state.tables[name];
+  if (kept && kept.batch === batch) return kept;
+  state.tables[name] = { batch, ...tablePicture(map) };
+  return state.tables[name];
 }
 
 function drawCutters() {
@@ -154,13 +175,18 @@ function drawCutters() {
     card.append(toggle);
     const map = cutter.batch ? cutMap(cutter.batch) : null;
     if (map) {
-      card.append(tablePicture(map, cutter.bytes_sent));
+      const table = tableOf(name, cutter.batch, map);
+      markPieces(table, cutter.bytes_sent);
+      card.append(table.svg);
       const current = map.pieces.find((piece) => cutter.bytes_sent >= piece.first_byte && cutter.bytes_sent < piece.end_byte);
       const cut = map.pieces.filter((piece) => cutter.bytes_sent >= piece.end_byte).length;
       card.append(el('div', `${cut} of ${map.pieces.length} pieces cut` + (current ? `; cutting ${current.label}` : ''), 'pieces-text'));
     }
     box.append(card);
   }
+  // Only the batches on the tables now: a page left open for weeks keeps no map of every batch cut.
+  const onTables = new Set(names.map((name) => state.cutters[name].batch).filter(Boolean));
+  for (const batch of Object.keys(state.cutMaps)) if (!onTables.has(batch)) delete state.cutMaps[batch];
   const select = $('hide-cutter');
   const chosen = select.value;
   select.replaceChildren(...names.map((name) => el('option', name)));
