@@ -12,6 +12,9 @@
 # `browser` runs the real page in chromium on this machine (page_watchers.js: the browsers' own
 # rendering then competes with the daemon for the same cores).
 # Usage: load_bench.sh BUILD_DIR [SCANS] [TRIANGLES] [WATCHERS] [KIND]
+# STATION_CPUS=0 WATCHER_CPUS=1 (taskset lists): the station (lastcutd, its workers, the simulated
+# cutter) and the watching pages on separate cores, as the pages are on other computers in a shop;
+# compute workers = the station's cores. Give both runs of a comparison the same STATION_CPUS.
 set -euo pipefail
 build="$(cd "${1:-build}" && pwd)"
 scans="${2:-200}"
@@ -24,10 +27,15 @@ root="$build/bench-scratch/daemon-load"
 rm -rf "$root"
 mkdir -p "$root/incoming" "$root/staging" "$root/lasts"
 
+station=() watcher_cpus=()
+workers="$(nproc)"
+if [ -n "${STATION_CPUS:-}" ]; then station=(taskset -c "$STATION_CPUS"); workers="$(taskset -c "$STATION_CPUS" nproc)"; fi
+if [ -n "${WATCHER_CPUS:-}" ]; then watcher_cpus=(taskset -c "$WATCHER_CPUS"); fi
+
 source "$source_dir/tests/stress/daemon_scratch.sh"
 write_daemon_config "$root/lastcut.toml" "$source_dir" \
   'stable_interval_s = 0.1' \
-  "compute_workers = $(nproc)" \
+  "compute_workers = $workers" \
   $'window_s = 5\nmax_pieces = 16\nnest_time_s = 1' \
   'retry_interval_s = 0.5'
 if [ "$watchers" -gt 0 ]; then
@@ -47,19 +55,19 @@ for i in range(count):
     open(os.path.join(root, 'staging', f'scan-{i:04d}.stl'), 'wb').write(data)
 PY
 
-"$bin/lastcut-sim" hpgl --link "$root/cutter-1.tty" --record "$root/record" --time-scale 0 > "$root/sim.log" 2>&1 &
+"${station[@]}" "$bin/lastcut-sim" hpgl --link "$root/cutter-1.tty" --record "$root/record" --time-scale 0 > "$root/sim.log" 2>&1 &
 sim=$!
 trap 'kill $sim 2>/dev/null || true; [ -n "${daemon:-}" ] && kill $daemon 2>/dev/null || true' EXIT
 wait_for_line "$root/sim.log" "ready:" || true
-"$bin/lastcutd" --config "$root/lastcut.toml" > "$root/lastcutd.log" 2>&1 &
+"${station[@]}" "$bin/lastcutd" --config "$root/lastcut.toml" > "$root/lastcutd.log" 2>&1 &
 daemon=$!
 wait_for_line "$root/lastcutd.log" "lastcutd ready" || true
 if [ "$watchers" -gt 0 ] && [ "$kind" = browser ]; then
-  node "$source_dir/bench/daemon/page_watchers.js" "http://127.0.0.1:$web_port/" "$watchers" \
+  "${watcher_cpus[@]}" node "$source_dir/bench/daemon/page_watchers.js" "http://127.0.0.1:$web_port/" "$watchers" \
     "$source_dir/tests/node/node_modules" > "$root/watchers.json" 2> "$root/watchers.log" &
   watcher_pid=$!
 elif [ "$watchers" -gt 0 ]; then
-  node "$source_dir/bench/daemon/stream_watchers.js" "http://127.0.0.1:$web_port/" "$watchers" \
+  "${watcher_cpus[@]}" node "$source_dir/bench/daemon/stream_watchers.js" "http://127.0.0.1:$web_port/" "$watchers" \
     "$root/watchers.json" 2> "$root/watchers.log" &
   watcher_pid=$!
 fi
@@ -106,7 +114,7 @@ PY
 elapsed=$(awk -v a="$start" -v b="$end" 'BEGIN { printf "%.1f", b - a }')
 echo "| scans | triangles each | workers | time to all done (s) | jobs/min | done | failed | held | left in watch folder | jobs cut (record) | inotify overflows | RSS after start (MB) | peak RSS (MB) |"
 echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
-awk -v n="$scans" -v t="$triangles" -v w="$(nproc)" -v e="$elapsed" -v d="$done_count" -v f="$failed_count" -v h="$held_count" \
+awk -v n="$scans" -v t="$triangles" -v w="$workers" -v e="$elapsed" -v d="$done_count" -v f="$failed_count" -v h="$held_count" \
     -v l="$left" -v c="$cut_jobs" -v o="$overflows" -v r0="$rss_start_kb" -v r="$peak_kb" \
   'BEGIN { printf "| %d | %d | %d | %.1f | %.1f | %d | %d | %d | %d | %d | %d | %.1f | %.1f |\n", n, t, w, e, 60 * n / e, d, f, h, l, c, o, r0 / 1024, r / 1024 }'
 if [ "$watchers" -gt 0 ]; then
