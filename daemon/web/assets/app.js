@@ -178,9 +178,9 @@ function drawCutters() {
       const table = tableOf(name, cutter.batch, map);
       markPieces(table, cutter.bytes_sent);
       card.append(table.svg);
-      const current = map.pieces.find((piece) => cutter.bytes_sent >= piece.first_byte && cutter.bytes_sent < piece.end_byte);
-      const cut = map.pieces.filter((piece) => cutter.bytes_sent >= piece.end_byte).length;
-      card.append(el('div', `${cut} of ${map.pieces.length} pieces cut` + (current ? `; cutting ${current.label}` : ''), 'pieces-text'));
+      const current = table.shapes.find((shape) => shape.status === 'cutting');
+      const cut = table.shapes.filter((shape) => shape.status === 'cut').length;
+      card.append(el('div', `${cut} of ${map.pieces.length} pieces cut` + (current ? `; cutting ${current.piece.label}` : ''), 'pieces-text'));
     }
     box.append(card);
   }
