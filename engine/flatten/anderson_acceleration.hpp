@@ -10,6 +10,9 @@
 
 namespace lastcut {
 
+// History length for ARAP's iterations; Peng et al. 2018 find 5-6 a good default for ARAP.
+constexpr int kArapAndersonDepth = 5;
+
 class AndersonAcceleration {
  public:
   explicit AndersonAcceleration(int depth);

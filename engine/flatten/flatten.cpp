@@ -2,6 +2,7 @@
 #include "engine/flatten/flatten.hpp"
 
 #include <chrono>
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 
@@ -9,6 +10,8 @@
 #include "engine/flatten/abf_angles.hpp"
 #include "engine/flatten/abf_reconstruction.hpp"
 #include "engine/flatten/arap_iterations.hpp"
+#include "engine/flatten/barrier_arap_iterations.hpp"
+#include "engine/flatten/boundary_barrier.hpp"
 #include "engine/flatten/boundary_first_start.hpp"
 #include "engine/flatten/cotangent_laplacian.hpp"
 #include "engine/flatten/disk_topology.hpp"
@@ -58,9 +61,17 @@ void make_outline_simple(const TriMesh& disk, const TriangleFrames& frames, cons
   } else {
     injective = flip_free_start(disk, frames, topology, laplacian, options, result);
   }
-  const ArapIterationReport report =
-      run_arap_iterations(frames, laplacian, factor, injective, options.max_iterations,
-                          options.relative_energy_tolerance, true, options.anderson_acceleration, &outline);
+  const std::vector<int>& loop = outline.loop();
+  std::vector<double> arc_mm(loop.size());
+  for (size_t k = 0; k < loop.size(); ++k)
+    arc_mm[k] = (disk.V.row(loop[(k + 1) % loop.size()]) - disk.V.row(loop[k])).norm();
+  BoundaryBarrierOptions barrier_options;
+  barrier_options.activation_mm = options.barrier_reach_mm;
+  barrier_options.least_activation_mm = std::min(options.barrier_reach_mm, 2.0 * options.outline_clearance_mm);
+  const BoundaryBarrier barrier(loop, arc_mm, barrier_options);
+  const BarrierArapReport report =
+      run_barrier_arap_iterations(frames, laplacian, factor, barrier, outline, injective, options.bijective_max_iterations,
+                                  options.relative_energy_tolerance, options.anderson_acceleration);
   UV = std::move(injective);
   result.iterations += replayed + report.iterations;
   result.energy_final = report.energy_final;
@@ -68,12 +79,14 @@ void make_outline_simple(const TriMesh& disk, const TriangleFrames& frames, cons
   const std::string from =
       from_start ? "last of " + std::to_string(replayed) + " replayed ARAP iterations before a crossing or fold"
                  : std::string("Tutte map");
-  char line[300];
+  char line[400];
   std::snprintf(line, sizeof line,
-                "the ARAP outline crossed itself: reran injective ARAP from the %s (%d iterations, %d steps "
-                "shortened, outline clearance %.2f mm%s)",
-                from.c_str(), report.iterations, report.shortened_steps, options.outline_clearance_mm,
-                report.stalled_on_flips ? "; stopped where even a 1/1024 step would fold or cross" : "");
+                "the ARAP outline crossed itself: reran bijective ARAP (boundary barrier within %.2f mm) from the "
+                "%s: %d iterations, %d steps shortened, %d outline vertex-edge pairs held apart, outline clearance "
+                "%.2f mm%s",
+                options.barrier_reach_mm, from.c_str(), report.iterations, report.shortened_steps,
+                report.active_pairs_final, options.outline_clearance_mm,
+                report.stalled ? "; stopped where even a 2^-20 step would fold, cross or not lower the energy" : "");
   result.notes.push_back(line);
 }
 
@@ -248,9 +261,12 @@ void run_abf(const TriMesh& disk, const TriangleFrames& frames, const MeshTopolo
 }
 
 void check_options(const FlattenOptions& options) {
-  if (options.max_iterations < 0) throw EngineError("flatten: max_iterations must not be negative");
+  if (options.max_iterations < 0 || options.bijective_max_iterations < 0)
+    throw EngineError("flatten: max_iterations must not be negative");
   if (!(options.relative_energy_tolerance >= 0.0)) throw EngineError("flatten: energy tolerance must be >= 0");
   if (!(options.outline_clearance_mm >= 0.0)) throw EngineError("flatten: the outline clearance must be >= 0 mm");
+  if (!(options.barrier_reach_mm > options.outline_clearance_mm))
+    throw EngineError("flatten: the boundary barrier's reach must exceed the outline clearance");
   if (options.abf_max_newton_iterations < 0) throw EngineError("flatten: ABF++ Newton iterations must not be negative");
   if (!(options.abf_gradient_tolerance >= 0.0)) throw EngineError("flatten: ABF++ tolerance must be >= 0");
 }

@@ -15,8 +15,10 @@
 // they are untangled locally (untangle.hpp, star_untangle.hpp) and polished with flip-guarded steps; if
 // that fails, flip-guarded ARAP restarts from the flip-free Tutte embedding (tutte_embedding.hpp, one more
 // factorization). Either way FlattenResult::notes says what happened and flipped_triangles what is left
-// (0 in every case we have seen). If the result's outline crosses itself, ARAP is rerun injectively from a
-// start with a simple outline, its steps cut so the outline keeps a clearance (outline_clearance.hpp).
+// (0 in every case we have seen). If the result's outline crosses itself, ARAP is rerun bijectively from a
+// start with a simple outline: a boundary barrier repels the outline's parts that come near each other
+// (Smith & Schaefer 2015; barrier_arap_iterations.hpp) and the steps are cut so the outline keeps a
+// clearance (outline_clearance.hpp).
 // LSCM: B. Lévy, S. Petitjean, N. Ray, J. Maillot, SIGGRAPH 2002 (lscm.hpp), for comparison.
 // ABF++: A. Sheffer, B. Lévy, M. Mogilnitsky, A. Bogomyakov, ACM TOG 24(2), 2005: the corner angles by
 // Newton's method (abf_angles.hpp), then the map by least squares (abf_reconstruction.hpp), scaled to the
@@ -63,6 +65,13 @@ struct FlattenOptions {
   // so a narrow notch stays a slit the simplified outline does not close, yet well below a knife's accuracy.
   bool injective_outline = true;
   double outline_clearance_mm = 0.1;
+  // The rerun is bijective ARAP (barrier_arap_iterations.hpp): outline vertices and edges closer than this
+  // repel each other (Smith & Schaefer 2015), so the outline's parts that ARAP would lay over each other
+  // end up side by side, at most this far apart, instead of the iteration stopping where they meet.
+  double barrier_reach_mm = 1.0;
+  // Iterations of that rerun at most: from the Tutte map (when no iterate of plain ARAP was bijective) a
+  // half needs hundreds (the 420-degree ramp of the tests: ~450), from a replayed iterate a dozen.
+  int bijective_max_iterations = 1000;
   // ABF++ (method Abf): Newton iterations at most and the tolerance on ||grad L|| (abf_angles.hpp).
   int abf_max_newton_iterations = 50;
   double abf_gradient_tolerance = 1e-6;

@@ -171,6 +171,15 @@ double rms_distance_after_rigid_alignment(const Eigen::MatrixXd& moving, const E
 }
 
 // Spherical cap of radius_mm up to polar angle cap_deg, as a ring grid with a fan at the pole.
+TriMesh square_10mm() {
+  TriMesh square;
+  square.V.resize(4, 3);
+  square.V << 0, 0, 0, 10, 0, 0, 10, 10, 0, 0, 10, 0;
+  square.F.resize(2, 3);
+  square.F << 0, 1, 2, 0, 2, 3;
+  return square;
+}
+
 TriMesh spherical_cap(double radius_mm, double cap_deg, int rings, int around) {
   TriMesh mesh;
   mesh.V.resize(1 + rings * around, 3);

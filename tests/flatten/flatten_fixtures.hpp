@@ -32,6 +32,9 @@ TriMesh read_off(const std::filesystem::path& path, double scale);
 // 1-to-4 midpoint subdivision (4x triangles, geometry unchanged).
 TriMesh subdivide_midpoint(const TriMesh& mesh);
 
+// The 10 mm square in the plane z = 0 as two triangles (0, 1, 2) and (0, 2, 3), counter-clockwise.
+TriMesh square_10mm();
+
 // Spherical cap of radius_mm up to polar angle cap_deg, as a ring grid with a fan at the pole (a disk, mm).
 TriMesh spherical_cap(double radius_mm, double cap_deg, int rings, int around);
 

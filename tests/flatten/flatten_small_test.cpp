@@ -127,11 +127,7 @@ TEST(Lscm, DevelopsACylinderPatchAndIsConformalOnACap) {
 
 TEST(Distortion, MeasuresKnownMapsAndCountsFlips) {
   // Unit right triangle pair in the plane, mapped by known linear maps.
-  TriMesh square;
-  square.V.resize(4, 3);
-  square.V << 0, 0, 0, 10, 0, 0, 10, 10, 0, 0, 10, 0;
-  square.F.resize(2, 3);
-  square.F << 0, 1, 2, 0, 2, 3;
+  const TriMesh square = testing::square_10mm();
   const Eigen::MatrixXd identity = square.V.leftCols(2);
   DistortionMeasures d = measure_distortion(square, identity);
   EXPECT_DOUBLE_EQ(d.D_angle, 2.0);

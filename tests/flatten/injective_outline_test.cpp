@@ -1,5 +1,7 @@
-// Injective ARAP (outline_clearance.hpp): the outline filter on hand-made polygons, and a helicoidal ramp
-// whose near-isometric flattening must overlap itself, flattened with a simple outline.
+// Bijective ARAP: the outline filter (outline_clearance.hpp) and the barriers (boundary_barrier.hpp,
+// fold_barrier.hpp: zero where nothing is near, infinite at contact, gradients against central
+// differences) on hand-made polygons, and a helicoidal ramp whose near-isometric flattening must overlap
+// itself, flattened with a simple outline.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,10 +9,13 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "engine/flatten/arap_iterations.hpp"
+#include "engine/flatten/boundary_barrier.hpp"
 #include "engine/flatten/disk_topology.hpp"
 #include "engine/flatten/flatten.hpp"
+#include "engine/flatten/fold_barrier.hpp"
 #include "engine/flatten/outline_clearance.hpp"
 #include "engine/flatten/plane_rotation_start.hpp"
 #include "tests/flatten/flatten_fixtures.hpp"
@@ -55,6 +60,67 @@ TEST(OutlineClearance, StepKeepsTheClearanceOrStopsShortOfIt) {
   EXPECT_NEAR(outline.smallest_gap_mm(notch(0.1), 1), 0.1, 1e-12);
 }
 
+std::vector<double> drawn_lengths(const Eigen::MatrixXd& UV) {
+  std::vector<double> arc(static_cast<size_t>(UV.rows()));
+  for (Eigen::Index k = 0; k < UV.rows(); ++k) arc[static_cast<size_t>(k)] = (UV.row((k + 1) % UV.rows()) - UV.row(k)).norm();
+  return arc;
+}
+
+// Central differences of energy(UV) against the analytic gradient, every coordinate.
+template <typename Energy>
+void expect_gradient_matches(const Eigen::MatrixXd& UV, Energy energy) {
+  std::vector<double> gradient(2 * static_cast<size_t>(UV.rows()), 0.0);
+  energy(UV, &gradient);
+  constexpr double kStep = 1e-6;
+  for (Eigen::Index v = 0; v < UV.rows(); ++v) {
+    for (int c = 0; c < 2; ++c) {
+      Eigen::MatrixXd plus = UV, minus = UV;
+      plus(v, c) += kStep;
+      minus(v, c) -= kStep;
+      const double numeric = (energy(plus, nullptr) - energy(minus, nullptr)) / (2 * kStep);
+      EXPECT_NEAR(gradient[2 * static_cast<size_t>(v) + c], numeric, 1e-5 * (1.0 + std::abs(numeric)))
+          << "vertex " << v << " coordinate " << c;
+    }
+  }
+}
+
+TEST(BoundaryBarrier, ZeroFarAwayGrowingNearAndInfiniteAtContact) {
+  const std::vector<int> loop = {0, 1, 2, 3, 4, 5, 6};
+  BoundaryBarrierOptions options;  // reach 1 mm
+  const BoundaryBarrier barrier(loop, drawn_lengths(notch(5.0)), options);
+  EXPECT_EQ(barrier.energy(notch(5.0)), 0.0);
+  EXPECT_EQ(barrier.active_pairs(notch(5.0)), 0);
+  // Tip against edge 0-1 only: lambda (1 / d - 1)^2 with lambda = 1 mm^2.
+  EXPECT_NEAR(barrier.energy(notch(0.5)), 1.0, 1e-12);
+  EXPECT_NEAR(barrier.energy(notch(0.25)), 9.0, 1e-12);
+  EXPECT_EQ(barrier.active_pairs(notch(0.25)), 1);
+  EXPECT_TRUE(std::isinf(barrier.energy(notch(0.0))));
+}
+
+TEST(BoundaryBarrier, GradientMatchesDifferences) {
+  const std::vector<int> loop = {0, 1, 2, 3, 4, 5, 6};
+  const BoundaryBarrier barrier(loop, drawn_lengths(notch(5.0)), BoundaryBarrierOptions{});
+  Eigen::MatrixXd UV = notch(0.4);
+  UV(4, 0) = 3.3;  // the tip off the middle of the edge, so t is not 1/2
+  expect_gradient_matches(UV, [&](const Eigen::MatrixXd& X, std::vector<double>* g) { return barrier.energy(X, g); });
+}
+
+TEST(FoldBarrier, ZeroForHealthyTrianglesAndGradientMatchesForThinOnes) {
+  const TriMesh mesh = testing::square_10mm();
+  const TriangleFrames frames = compute_triangle_frames(mesh);
+  Eigen::MatrixXd UV = mesh.V.leftCols(2);
+  const FoldBarrier barrier(frames, UV);
+  EXPECT_EQ(barrier.energy(UV), 0.0);
+  // Vertex 1 pulled near the diagonal 0-2 squeezes triangle 0 to 9 % of its area.
+  Eigen::MatrixXd thin = UV;
+  thin.row(1) << 5.5, 4.6;
+  EXPECT_GT(barrier.energy(thin), 0.0);
+  expect_gradient_matches(thin, [&](const Eigen::MatrixXd& X, std::vector<double>* g) { return barrier.energy(X, g); });
+  Eigen::MatrixXd folded = UV;
+  folded.row(1) << 4.0, 6.0;  // across the diagonal 0-2: triangle 0 flips
+  EXPECT_TRUE(std::isinf(barrier.energy(folded)));
+}
+
 TEST(InjectiveArap, HelicoidalRampFlattensWithASimpleOutline) {
   const TriMesh ramp = helicoidal_ramp(40.0, 80.0, 420.0, 20.0, 10, 240);
   const MeshTopology topology = check_disk(ramp);
@@ -74,10 +140,12 @@ TEST(InjectiveArap, HelicoidalRampFlattensWithASimpleOutline) {
   // Brute force over all pairs sharing no vertex: at least the clearance apart.
   const double gap_mm = outline.smallest_gap_mm(result.UV, 1);
   EXPECT_GE(gap_mm, 0.1 * (1.0 - 1e-9));
-  EXPECT_LE(gap_mm, 0.2);  // the ends met: it was the filter, not the iteration limit, that kept them apart
+  // The ends met: the boundary barrier, not the iteration limit, kept them apart.
+  EXPECT_LE(gap_mm, options.barrier_reach_mm);
   EXPECT_EQ(result.flipped_triangles, 0);
+  EXPECT_TRUE(result.converged) << "bijective ARAP converges where the outline meets itself";
   ASSERT_FALSE(result.notes.empty());
-  EXPECT_NE(result.notes.back().find("reran injective ARAP"), std::string::npos) << result.notes.back();
+  EXPECT_NE(result.notes.back().find("reran bijective ARAP"), std::string::npos) << result.notes.back();
 
   const DistortionMeasures d = measure_distortion(ramp, result.UV, topology);
   const DistortionMeasures d_plain = measure_distortion(ramp, overlapping.UV, topology);
