@@ -44,8 +44,8 @@ Eigen::MatrixXd solve_step(const ReducedLaplacian& laplacian, const SparseCholes
                            const std::vector<BoundaryBarrier::Curvature>& fold, const Eigen::MatrixXd& R,
                            int& conjugate_gradients) {
   using PerColumn = Eigen::Array<double, 1, 2>;  // one scalar per column (u, v)
-  const auto apply = [&](const Eigen::MatrixXd& X) {
-    Eigen::MatrixXd product = laplacian.matrix * X;
+  // H X, with H's terms as rank-one updates; L X is never formed in the loop: for X = L^-1 Y it is Y.
+  const auto apply_curvature = [&](const Eigen::MatrixXd& X, Eigen::MatrixXd& product) {
     for (const auto* terms : {&boundary, &fold}) {
       for (const auto& term : *terms) {
         Eigen::RowVector2d along = Eigen::RowVector2d::Zero();
@@ -59,18 +59,21 @@ Eigen::MatrixXd solve_step(const ReducedLaplacian& laplacian, const SparseCholes
         }
       }
     }
-    return product;
   };
   Eigen::MatrixXd delta = preconditioner.solve(R);
   if (boundary.empty() && fold.empty()) return delta;  // ARAP's own global step
-  Eigen::MatrixXd residual = R - apply(delta);
+  Eigen::MatrixXd applied = R;  // L delta = R, so (L + H / 2) delta = R + H delta / 2
+  apply_curvature(delta, applied);
+  Eigen::MatrixXd residual = R - applied;
   Eigen::MatrixXd preconditioned = preconditioner.solve(residual);
   Eigen::MatrixXd direction = preconditioned;
+  Eigen::MatrixXd laplacian_direction = residual;  // L direction, kept by the recursion below
   PerColumn residual_dot = (residual.array() * preconditioned.array()).colwise().sum();
   const PerColumn goal = kConjugateGradientTolerance * R.colwise().norm().array();
   for (int k = 0; k < kMostConjugateGradients; ++k) {
     if ((residual.colwise().norm().array() <= goal).all()) break;
-    const Eigen::MatrixXd applied = apply(direction);
+    applied = laplacian_direction;
+    apply_curvature(direction, applied);
     const PerColumn curvature_along = (direction.array() * applied.array()).colwise().sum();
     const PerColumn alpha = (curvature_along > 0.0).select(residual_dot / curvature_along, 0.0);
     delta.array() += direction.array().rowwise() * alpha;
@@ -79,6 +82,7 @@ Eigen::MatrixXd solve_step(const ReducedLaplacian& laplacian, const SparseCholes
     const PerColumn next_dot = (residual.array() * preconditioned.array()).colwise().sum();
     const PerColumn beta = (residual_dot > 0.0).select(next_dot / residual_dot, 0.0);
     direction = (preconditioned.array() + direction.array().rowwise() * beta).matrix();
+    laplacian_direction = (residual.array() + laplacian_direction.array().rowwise() * beta).matrix();
     residual_dot = next_dot;
     ++conjugate_gradients;
   }
