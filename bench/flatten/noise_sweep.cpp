@@ -9,9 +9,11 @@
 // exports mesh) x triangle counts x noise 0..0.3 mm (along normals / isotropic) x holes, random
 // poses. Prints one row per case and the totals; figures and the command: docs/benchmarks-noise.md.
 //   bench_noise_sweep [--quick] [--strict] [--surface lofted] [--triangles N] [--size EU] [--seams N] [--smooth-all]
+//                     [--truth same|fine]
 //   --strict: exit 1 when any case is WRONG; --surface/--triangles/--size: only those cases;
 //   --seams N: N stitching seams in every scan, judged against the seamless noise-free mold;
 //   --smooth-all: smooth every scan, the noise-free reference too (tells smoothing's own effect apart)
+//   --truth fine: judge against the same last remeshed at 150,000 triangles without noise
 #include <CLI/CLI.hpp>
 
 #include <unistd.h>
@@ -60,6 +62,10 @@ struct Sweep {
   int triangles = 0;    // 0: both counts
   int eu_size = 0;      // 0: three sizes
   int seams = 0;        // stitching seams in every scan but the noise-free reference
+  // The reference: "same" (default), the noise-free scan of the same last and triangulation; "fine", the
+  // noise-free scan of the same last remeshed at 150,000 triangles, the nearest the sweep has to the
+  // last's exact surface (a coarse lofted mesh is itself a faceted copy of it).
+  std::string truth = "same";
 };
 
 ScanResult run_case(const Case& c, bool pose, bool smooth_all, const fs::path& scratch) {
@@ -134,9 +140,14 @@ int run(const Sweep& sweep) {
     for (const LastSurface surface : surfaces)
       for (const int triangles : counts) {
         Case base{size, surface, triangles, 0.0, ScanNoise::AlongNormal, 0, static_cast<uint64_t>(size)};
+        Case truth = base;
+        if (sweep.truth == "fine") {
+          truth.surface = LastSurface::Remeshed;
+          truth.triangles = 150000;
+        }
         std::optional<ScanResult> reference;
         try {
-          reference = run_case(base, false, sweep.smooth_all, scratch);
+          reference = run_case(truth, false, sweep.smooth_all, scratch);
         } catch (const EngineError&) {
           reference.reset();  // no noise-free mold: the outline test is skipped, the rest still applies
         }
@@ -187,6 +198,8 @@ int main(int argc, char** argv) {
   app.add_option("--size", sweep.eu_size, "only this EU size");
   app.add_option("--seams", sweep.seams, "stitching seams (0.2 mm step) in every scan but the seamless, noise-free reference");
   app.add_flag("--smooth-all", sweep.smooth_all, "smooth every scan, the noise-free reference too");
+  app.add_option("--truth", sweep.truth, "the reference: the same triangulation without noise, or the same last remeshed fine")
+      ->check(CLI::IsMember({"same", "fine"}));
   CLI11_PARSE(app, argc, argv);
   return lastcut::run(sweep);
 }
