@@ -96,18 +96,14 @@ Eigen::MatrixXd place_flattening(const Eigen::MatrixXd& UV, const std::map<std::
 
 // Slivers and scanner noise off the scan (engine/mesh/sliver_collapse.hpp, scan_denoise.hpp), after
 // the checks that refuse absurd input (a stray point 161 m off must be refused, not smoothed).
-// Returns the vertices as they were before the smoothing (#V x 3, mm; empty when it did not smooth):
-// the segmentation places the feather line and the top rim on that shape, whose creases are intact.
-Eigen::MatrixXd clean_scan(MeshIntake& intake, const DenoiseOptions& options, ScanResult& result, StageClock& clock) {
+void clean_scan(MeshIntake& intake, const DenoiseOptions& options, ScanResult& result, StageClock& clock) {
   if (const SliverReport slivers = collapse_slivers(intake.mesh); slivers.collapsed > 0) {
     intake.topology = build_mesh_topology(intake.mesh.F, intake.mesh.V.rows());
     result.notes.push_back("scan slivers: " + std::to_string(slivers.collapsed) + " edges shorter than " +
                            fixed_text(slivers.limit_mm, 2) + " mm collapsed");
     clock.lap("slivers");
   }
-  Eigen::MatrixXd as_scanned = intake.mesh.V;
   const DenoiseReport denoised = denoise_scan(intake.mesh, intake.topology, options);
-  if (denoised.passes == 0) as_scanned.resize(0, 3);
   if (denoised.passes > 0) {
     char note[200];
     std::snprintf(note, sizeof note, "scan noise about %.2f mm taken off (Taubin smoothing, %d passes; %.2f mm left)",
@@ -115,7 +111,6 @@ Eigen::MatrixXd clean_scan(MeshIntake& intake, const DenoiseOptions& options, Sc
     result.notes.push_back(note);
   }
   clock.lap("denoise");
-  return as_scanned;
 }
 
 // topology: of mesh3d, built once and used by the disk check, the distortion measures and the mold.
@@ -174,19 +169,14 @@ ScanResult scan_to_molds(const std::filesystem::path& scan, const ScanOptions& o
     refuse_open_patch(intake.mesh, intake.topology, options.segment_options);
     check_is_last(intake.mesh);
     clock.lap("last check");
-    Eigen::MatrixXd as_scanned;
-    if (options.denoise) as_scanned = clean_scan(intake, options.denoise_options, result, clock);
+    if (options.denoise) clean_scan(intake, options.denoise_options, result, clock);
     const OrientedLast oriented = orient_last(intake.mesh, options.side);
-    if (as_scanned.rows() > 0) {
-      const Eigen::Matrix3d rotation = oriented.scan_to_canonical.linear();
-      as_scanned = ((as_scanned * rotation.transpose()).rowwise() + oriented.scan_to_canonical.translation().transpose()).eval();
-    }
     if (!oriented.side_unnamed) result.side = oriented.side;
     result.notes.insert(result.notes.end(), oriented.notes.begin(), oriented.notes.end());
     result.warnings = oriented.warnings;
     clock.lap("orient");
     // Orienting moves the vertices only: the intake's topology is the oriented last's.
-    Segmentation halves = segment_last(oriented, intake.topology, options.segment_options, as_scanned);
+    Segmentation halves = segment_last(oriented, intake.topology, options.segment_options);
     result.notes.insert(result.notes.end(), halves.notes.begin(), halves.notes.end());
     result.repairs = halves.repairs;
     for (const HoleRepair& repair : halves.repairs)

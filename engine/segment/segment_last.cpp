@@ -1,8 +1,6 @@
 #include "engine/segment/segment_last.hpp"
 
 #include <algorithm>
-#include <array>
-#include <map>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -112,32 +110,13 @@ bool meets_at_sharp_rim(const TriMesh& mesh, const MeshTopology& topology, const
   return turns[turns.size() / 2] > kSharpRimTurnRad;
 }
 
-// The mesh whose shape places the curves: `mesh` with each vertex that came from last.mesh moved to
-// its row of as_scanned. Hole filling keeps the rows it does not drop (and may renumber them) and adds
-// patch vertices; rows are matched by their exact coordinates, patch vertices stay where they are.
-TriMesh shape_for_curves(const TriMesh& mesh, const TriMesh& last_mesh, const Eigen::MatrixXd& as_scanned) {
-  if (as_scanned.rows() == 0) return mesh;
-  if (as_scanned.rows() != last_mesh.V.rows() || as_scanned.cols() != 3)
-    throw EngineError("segmentation: the scan's positions before denoising do not match its vertices");
-  std::map<std::array<double, 3>, Eigen::Index> row_of;
-  for (Eigen::Index v = 0; v < last_mesh.V.rows(); ++v)
-    row_of.emplace(std::array<double, 3>{last_mesh.V(v, 0), last_mesh.V(v, 1), last_mesh.V(v, 2)}, v);
-  TriMesh shape = mesh;
-  for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) {
-    const auto found = row_of.find({mesh.V(v, 0), mesh.V(v, 1), mesh.V(v, 2)});
-    if (found != row_of.end()) shape.V.row(v) = as_scanned.row(found->second);
-  }
-  return shape;
-}
-
 }  // namespace
 
 BandCut cut_band(const OrientedLast& last, const SegmentOptions& options) {
   return cut_band(last, build_mesh_topology(last.mesh.F, last.mesh.V.rows()), options);
 }
 
-BandCut cut_band(const OrientedLast& last, const MeshTopology& last_topology, const SegmentOptions& options,
-                 const Eigen::MatrixXd& as_scanned) {
+BandCut cut_band(const OrientedLast& last, const MeshTopology& last_topology, const SegmentOptions& options) {
   if (!(options.sole_angle_rad < 0.0 && options.top_angle_rad > 0.0))
     throw EngineError("segmentation angles must be negative for the sole and positive for the top");
   if (options.smoothing_passes < 0) throw EngineError("segmentation smoothing passes must not be negative");
@@ -183,13 +162,8 @@ BandCut cut_band(const OrientedLast& last, const MeshTopology& last_topology, co
   // Where the fits hold, the curves are placed by the shape (a height above the sole, a depth
   // below the top plane), lightly smoothed against scanner noise; else by the classification.
   const double geometric_passes = kGeometricSmoothingPasses * std::pow(kReferenceEdgeMm / edge_mm, 2);
-  // The feather line from the sole as scanned (see segment_last.hpp); the top rim from the smoothed
-  // surface: placed on the scan as it came, the rim's depth field leaked down the back of the heel
-  // (molds 5-7 mm short there on lofted 20k scans with 0.2 mm noise), and the top plane's fit is
-  // already over the flat cut only.
-  const TriMesh shape = shape_for_curves(mesh, last.mesh, as_scanned);
   const std::optional<ContourField> sole_field =
-      sole_height_field(shape, topology, sole, areas, options.feather_height_mm, kMaxFitRmsMm);
+      sole_height_field(mesh, topology, sole, areas, options.feather_height_mm, kMaxFitRmsMm);
   const std::optional<ContourField> top_field = top_plane_field(mesh, topology, top, areas, options.rim_depth_mm, kMaxFitRmsMm);
   // Clamped to a ramp symmetric about the curve before the moving average: otherwise the steep
   // drop of the height down the side walls would drag the averaged curve onto the flat part.
@@ -291,12 +265,7 @@ Segmentation segment_last(const OrientedLast& last, const SegmentOptions& option
 }
 
 Segmentation segment_last(const OrientedLast& last, const MeshTopology& topology, const SegmentOptions& options) {
-  return segment_last(last, topology, options, Eigen::MatrixXd());
-}
-
-Segmentation segment_last(const OrientedLast& last, const MeshTopology& topology, const SegmentOptions& options,
-                          const Eigen::MatrixXd& as_scanned) {
-  const BandCut band = cut_band(last, topology, options, as_scanned);
+  const BandCut band = cut_band(last, topology, options);
   const SplitPlane plane = place_split_plane(band, options);
   Segmentation result = split_band(band, plane);
   if (options.split_rule == SplitRule::Expert)

@@ -88,20 +88,12 @@ struct BandCut {
 // Throws EngineError when a step fails (no sole, no top cut, a half that is not one sheet) or the
 // topology was built for another mesh.
 Segmentation segment_last(const OrientedLast& last, const MeshTopology& topology, const SegmentOptions& options = {});
-// as_scanned: the scan's vertices before denoising (engine/mesh/scan_denoise.hpp), in the canonical frame,
-// rows as last.mesh.V (empty: last.mesh itself). The feather line is placed on that shape (the height
-// above the fitted sole, step 3), the cuts made on last.mesh: smoothing rounds the feather edge the
-// line runs along, and on a coarse scan (rings of vertices a few mm apart across it, as lofted meshes
-// have) that moved it on the mold (docs/benchmarks-noise.md).
-Segmentation segment_last(const OrientedLast& last, const MeshTopology& topology, const SegmentOptions& options,
-                          const Eigen::MatrixXd& as_scanned);
 // The same, building last.mesh's topology itself.
 Segmentation segment_last(const OrientedLast& last, const SegmentOptions& options = {});
 
 // The three stages of segment_last, for callers that split one last by more than one plane.
 // Each throws EngineError like segment_last; topology as there.
-BandCut cut_band(const OrientedLast& last, const MeshTopology& topology, const SegmentOptions& options = {},
-                 const Eigen::MatrixXd& as_scanned = {});
+BandCut cut_band(const OrientedLast& last, const MeshTopology& topology, const SegmentOptions& options = {});
 BandCut cut_band(const OrientedLast& last, const SegmentOptions& options = {});
 SplitPlane place_split_plane(const BandCut& band, const SegmentOptions& options = {});
 Segmentation split_band(const BandCut& band, const SplitPlane& plane);
