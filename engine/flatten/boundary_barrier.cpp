@@ -53,7 +53,9 @@ void BoundaryBarrier::for_each_active_pair(const Eigen::MatrixXd& UV, Visit visi
     if (d < reach_mm) visit(k, e, t, d, reach_mm);
   };
   // Each vertex is the start of one edge: for a near pair of edges (i, j), vertex i against edge j and
-  // vertex j against edge i cover every vertex-edge pair closer than epsilon (boxes grown by epsilon / 2).
+  // vertex j against edge i cover every vertex-edge pair closer than epsilon (boxes grown by epsilon / 2)
+  // except a vertex against the edge after its own next one: the broad phase skips edges that share a
+  // vertex, as the outline filter does. That angle closing is the fold barrier's and the guard's business.
   for_each_near_edge_pair(n, [&](int k) { return Point2(point(k)); }, 0.5 * epsilon_mm_, [&](int i, int j) {
     try_pair(i, j);
     try_pair(j, i);
