@@ -82,9 +82,9 @@ void make_outline_simple(const TriMesh& disk, const TriangleFrames& frames, cons
   char line[400];
   std::snprintf(line, sizeof line,
                 "the ARAP outline crossed itself: reran bijective ARAP (boundary barrier within %.2f mm) from the "
-                "%s: %d iterations, %d steps shortened, %d outline vertex-edge pairs held apart, outline clearance "
-                "%.2f mm%s",
-                options.barrier_reach_mm, from.c_str(), report.iterations, report.shortened_steps,
+                "%s: %d iterations (%d conjugate gradients), %d steps shortened, %d outline vertex-edge pairs held "
+                "apart, outline clearance %.2f mm%s",
+                options.barrier_reach_mm, from.c_str(), report.iterations, report.conjugate_gradients, report.shortened_steps,
                 report.active_pairs_final, options.outline_clearance_mm,
                 report.stalled ? "; stopped where even a 2^-20 step would fold, cross or not lower the energy" : "");
   result.notes.push_back(line);
