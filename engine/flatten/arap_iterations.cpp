@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/core/engine_error.hpp"
 #include "engine/flatten/anderson_acceleration.hpp"
 #include "engine/flatten/arap_local_step.hpp"
 
@@ -15,6 +16,8 @@ ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const Redu
                                         const SparseCholesky& factor, Eigen::MatrixXd& UV, int max_iterations,
                                         double relative_energy_tolerance, bool flip_guard, bool accelerate,
                                         const OutlineClearance* outline, int give_up_after_crossing) {
+  if (flip_guard && outline != nullptr)
+    throw EngineError("flatten: an outline is watched by unguarded ARAP only (bijective ARAP keeps it clear)");
   ArapIterationReport report;
   const int vertex_count = static_cast<int>(UV.rows());
 
@@ -46,45 +49,11 @@ ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const Redu
     local_step.expand(factor.solve(reduced_rhs), UV, candidate);
 
     const double previous = energy;
-    // The Anderson-mixed point of UV and the plain step into `accelerated`, its energy (right-hand side
-    // into spare_rhs).
-    const auto mix_accelerated = [&] {
-      accelerated = anderson.mix(Eigen::Map<const Eigen::VectorXd>(UV.data(), UV.size()),
-                                 Eigen::Map<const Eigen::VectorXd>(candidate.data(), candidate.size()))
-                        .reshaped(UV.rows(), 2);
-      return local_step.run(accelerated, spare_rhs);
-    };
-    const auto take_accelerated = [&](double accelerated_energy) {
-      UV.swap(accelerated);
-      rhs.swap(spare_rhs);
-      energy = accelerated_energy;
-    };
-    bool took_accelerated = false;
-    if (flip_guard && outline != nullptr && accelerate) {
-      // Injective mode: an Anderson point is kept only if it lowers the energy, folds nothing and keeps
-      // the outline clear; otherwise the filtered plain step below.
-      const double accelerated_energy = mix_accelerated();
-      if (accelerated_energy < previous) {
-        classify_triangles(frames, accelerated, state_candidate);
-        if (no_triangle_worse(state_now, state_candidate) && outline->keeps_clear(UV, accelerated)) {
-          state_now.swap(state_candidate);
-          take_accelerated(accelerated_energy);
-          took_accelerated = true;
-        }
-      }
-      if (!took_accelerated) {
-        anderson.reset();
-        ++report.rejected_accelerations;
-      }
-    }
-    if (took_accelerated) {
-      // Kept above: on to the convergence test.
-    } else if (flip_guard) {
+    if (flip_guard) {
       double step = 1.0;
       const auto acceptable_step = [&] {
         classify_triangles(frames, candidate, state_candidate);
-        return no_triangle_worse(state_now, state_candidate) &&
-               (outline == nullptr || outline->keeps_clear(UV, candidate));
+        return no_triangle_worse(state_now, state_candidate);
       };
       bool acceptable = acceptable_step();
       while (!acceptable && step > 1.0 / 1024.0) {
@@ -106,9 +75,14 @@ ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const Redu
     } else {
       // Anderson-accelerated point, kept only if it lowers the energy more than the plain step is
       // guaranteed to (Peng et al. 2018); otherwise the plain step and a fresh history.
-      const double accelerated_energy = mix_accelerated();
+      accelerated = anderson.mix(Eigen::Map<const Eigen::VectorXd>(UV.data(), UV.size()),
+                                 Eigen::Map<const Eigen::VectorXd>(candidate.data(), candidate.size()))
+                        .reshaped(UV.rows(), 2);
+      const double accelerated_energy = local_step.run(accelerated, spare_rhs);
       if (accelerated_energy < previous) {
-        take_accelerated(accelerated_energy);
+        UV.swap(accelerated);
+        rhs.swap(spare_rhs);
+        energy = accelerated_energy;
       } else {
         anderson.reset();
         ++report.rejected_accelerations;

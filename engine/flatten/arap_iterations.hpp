@@ -25,7 +25,7 @@ struct ArapIterationReport {
   bool converged = false;      // relative energy change fell below the tolerance
   int shortened_steps = 0;     // global steps shortened so no triangle would flip or collapse
   int rejected_accelerations = 0;  // Anderson steps that did not lower the energy (plain step taken)
-  bool stalled_on_flips = false;  // stopped: a 1/1024 step would flip or collapse a triangle or cross the outline
+  bool stalled_on_flips = false;  // stopped: a 1/1024 step would flip or collapse a triangle
   bool gave_up_crossed = false;   // stopped: the outline crossed itself give_up_after_crossing iterations in a row
 };
 
@@ -33,14 +33,12 @@ struct ArapIterationReport {
 // Laplacian pinned at laplacian.pinned and `factor` its factorization. With flip_guard, a global step that
 // would flip or collapse (UV area < 5% of 3D area) any triangle that was not so before is halved until it does not
 // (the energy still decreases: it is convex in u for fixed rotations), so a flip-free start stays flip-free.
-// With flip_guard and an `outline` filter (outline_clearance.hpp) a step is also halved until the outline
-// keeps its clearance, so a flip-free start with a simple outline stays injective (Smith & Schaefer 2015);
-// then Anderson points are tried too (accelerate) and rejected like plain steps when they fold or cross.
-// Without flip_guard, an `outline` makes the run stop at the first iterate that flips a triangle or whose
-// outline crosses, UV then holding the iterate before it (the injective rerun's start, flatten.cpp).
+// Guarded runs take no `outline` (EngineError): keeping an outline clear is bijective ARAP's job
+// (barrier_arap_iterations.hpp). Without flip_guard, an `outline` makes the run stop at the first
+// iterate that flips a triangle or whose outline crosses, UV then holding the iterate before it (the bijective rerun's start, flatten.cpp).
 // Unless give_up_after_crossing > 0: then the run goes on through folds and crossings, as without
 // `outline`, but gives up (gave_up_crossed) once the outline has crossed itself at that many iterations
-// in a row, UV holding the last iterate: a result whose outline crosses is replaced by the injective
+// in a row, UV holding the last iterate: a result whose outline crosses is replaced by the bijective
 // rerun anyway, so the iterations after that are wasted (FIND medial half: crossed from the 2nd of 54).
 // Without `outline` the iterations are exactly those of before; with it, the iterates are the same.
 ArapIterationReport run_arap_iterations(const TriangleFrames& frames, const ReducedLaplacian& laplacian,
