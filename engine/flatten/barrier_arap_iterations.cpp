@@ -41,28 +41,25 @@ constexpr double kConjugateGradientTolerance = 1e-2;
 // D_angle (2.0102) and D_area (2.0117 against 2.0116). At most 10 per step instead of 40: the run
 // stops after 6 steps at D_area 2.0152, short of the minimum; 20: the same mold, 229 against 243 in all.
 Eigen::MatrixXd solve_step(const ReducedLaplacian& laplacian, const SparseCholesky& preconditioner,
-                           const std::vector<BoundaryBarrier::Curvature>& boundary,
-                           const std::vector<BoundaryBarrier::Curvature>& fold, const Eigen::MatrixXd& R,
+                           const std::vector<BarrierCurvature>& terms, const Eigen::MatrixXd& R,
                            int& conjugate_gradients) {
   using PerColumn = Eigen::Array<double, 1, 2>;  // one scalar per column (u, v)
   // H X, with H's terms as rank-one updates; L X is never formed in the loop: for X = L^-1 Y it is Y.
   const auto apply_curvature = [&](const Eigen::MatrixXd& X, Eigen::MatrixXd& product) {
-    for (const auto* terms : {&boundary, &fold}) {
-      for (const auto& term : *terms) {
-        Eigen::RowVector2d along = Eigen::RowVector2d::Zero();
-        int rows[3];
-        for (int k = 0; k < 3; ++k) {
-          rows[k] = laplacian.row_of_vertex[term.vertex[k]];
-          if (rows[k] >= 0) along += term.weight[k] * X.row(rows[k]);
-        }
-        for (int k = 0; k < 3; ++k) {
-          if (rows[k] >= 0) product.row(rows[k]) += 0.5 * term.curvature * term.weight[k] * along;
-        }
+    for (const BarrierCurvature& term : terms) {
+      Eigen::RowVector2d along = Eigen::RowVector2d::Zero();
+      int rows[3];
+      for (int k = 0; k < 3; ++k) {
+        rows[k] = laplacian.row_of_vertex[term.vertex[k]];
+        if (rows[k] >= 0) along += term.weight[k] * X.row(rows[k]);
+      }
+      for (int k = 0; k < 3; ++k) {
+        if (rows[k] >= 0) product.row(rows[k]) += 0.5 * term.curvature * term.weight[k] * along;
       }
     }
   };
   Eigen::MatrixXd delta = preconditioner.solve(R);
-  if (boundary.empty() && fold.empty()) return delta;  // ARAP's own global step
+  if (terms.empty()) return delta;  // ARAP's own global step
   Eigen::MatrixXd applied = R;  // L delta = R, so (L + H / 2) delta = R + H delta / 2
   apply_curvature(delta, applied);
   Eigen::MatrixXd residual = R - applied;
@@ -130,17 +127,17 @@ BarrierArapReport run_barrier_arap_iterations(const TriangleFrames& frames, cons
       break;
     }
     // The Newton-like step: (L + H / 2) delta = b - L UV - grad E_barriers / 2, with H the barriers'
-    // curvature (BoundaryBarrier::Curvature); without active terms ARAP's own global step (one solve).
+    // curvature (BarrierCurvature); without active terms ARAP's own global step (one solve).
     std::vector<double> rhs = now.rhs;
     for (size_t k = 0; k < rhs.size(); ++k) rhs[k] -= 0.5 * now.gradient[k];
     local_step.reduce(rhs, now.UV, reduced_rhs);
     reduced_uv.resize(reduced_rhs.rows(), 2);
     for (Eigen::Index r = 0; r < reduced_uv.rows(); ++r) reduced_uv.row(r) = now.UV.row(laplacian.vertex_of_row[r]);
     reduced_rhs -= laplacian.matrix * reduced_uv;
-    const std::vector<BoundaryBarrier::Curvature> boundary_terms = barrier.curvatures(now.UV);
-    std::vector<BoundaryBarrier::Curvature> fold_terms;
-    fold_barrier.add_curvatures(now.UV, fold_terms);
-    reduced_uv += solve_step(laplacian, factor, boundary_terms, fold_terms, reduced_rhs, report.conjugate_gradients);
+    std::vector<BarrierCurvature> terms;
+    barrier.add_curvatures(now.UV, terms);
+    fold_barrier.add_curvatures(now.UV, terms);
+    reduced_uv += solve_step(laplacian, factor, terms, reduced_rhs, report.conjugate_gradients);
     local_step.expand(reduced_uv, now.UV, target);
 
     const double previous = now.total();

@@ -71,12 +71,11 @@ double BoundaryBarrier::energy(const Eigen::MatrixXd& UV, std::vector<double>* g
       total = std::numeric_limits<double>::infinity();
       return;
     }
-    const double lambda_mm2 = stiffness_ * reach_mm * reach_mm;
-    const double excess = reach_mm / d - 1.0;
-    total += lambda_mm2 * excess * excess;
+    const BarrierValue f = barrier_at(stiffness_ * reach_mm * reach_mm, reach_mm, d);
+    total += f.value;
     if (gradient == nullptr) return;
     // dE/dd, and d(d)/d(position): n for the vertex, -(1 - t) n and -t n for the edge's ends.
-    const double slope = -2.0 * lambda_mm2 * excess * reach_mm / (d * d);
+    const double slope = f.slope;
     const int v = loop_[static_cast<size_t>(k)], a = loop_[static_cast<size_t>(e)],
               b = loop_[static_cast<size_t>((e + 1) % n)];
     const Eigen::Vector2d closest =
@@ -92,20 +91,14 @@ double BoundaryBarrier::energy(const Eigen::MatrixXd& UV, std::vector<double>* g
   return total;
 }
 
-std::vector<BoundaryBarrier::Curvature> BoundaryBarrier::curvatures(const Eigen::MatrixXd& UV) const {
+void BoundaryBarrier::add_curvatures(const Eigen::MatrixXd& UV, std::vector<BarrierCurvature>& terms) const {
   const int n = static_cast<int>(loop_.size());
-  std::vector<Curvature> terms;
   for_each_active_pair(UV, [&](int k, int e, double t, double d, double reach_mm) {
     if (d <= 0.0) return;
-    // E = lambda (r / d - 1)^2: E'' = 2 lambda r^2 / d^4 + 4 lambda r (r / d - 1) / d^3, positive for d < r.
-    const double lambda_mm2 = stiffness_ * reach_mm * reach_mm;
-    const double curvature = 2.0 * lambda_mm2 * reach_mm * reach_mm / (d * d * d * d) +
-                             4.0 * lambda_mm2 * reach_mm * (reach_mm / d - 1.0) / (d * d * d);
     terms.push_back({{loop_[static_cast<size_t>(k)], loop_[static_cast<size_t>(e)], loop_[static_cast<size_t>((e + 1) % n)]},
                      {1.0, -(1.0 - t), -t},
-                     curvature});
+                     barrier_at(stiffness_ * reach_mm * reach_mm, reach_mm, d).curvature});
   });
-  return terms;
 }
 
 int BoundaryBarrier::active_pairs(const Eigen::MatrixXd& UV) const {

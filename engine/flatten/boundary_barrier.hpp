@@ -5,7 +5,7 @@
 //
 // J. Smith, S. Schaefer, "Bijective Parameterization with Free Boundaries", ACM TOG 34(4), 2015, eq. 4:
 // for each outline vertex v and outline edge e with distance d(v, e) < epsilon,
-//   E_B = sum lambda * (epsilon / d - 1)^2        (0 where d >= epsilon)
+//   E_B = sum lambda * (epsilon / d - 1)^2        (0 where d >= epsilon; barrier_function.hpp)
 // which is smooth (its value and slope vanish at d = epsilon) and infinite at contact. Epsilon is set
 // per pair: a vertex and an edge that are close along the 3D outline (a corner, a spike's two sides,
 // neighbours) are that close on the surface too, so their epsilon is half their distance along the
@@ -14,6 +14,8 @@
 // Broad phase: engine/core/near_edge_pairs.hpp over the edges' boxes grown by epsilon / 2.
 #include <Eigen/Core>
 #include <vector>
+
+#include "engine/flatten/barrier_function.hpp"
 
 namespace lastcut {
 
@@ -35,16 +37,11 @@ class BoundaryBarrier {
   // Infinite when a vertex touches an edge it is paired with.
   double energy(const Eigen::MatrixXd& UV, std::vector<double>* gradient = nullptr) const;
 
-  // The barrier's curvature for a Newton-like step: per active pair, its vertices (the outline vertex, the
-  // edge's two ends), the weights c = (1, -(1 - t), -t) with which they make the distance's change, and
-  // d2E/dd2. sum curvature * (c . dU)^2 over both coordinates bounds the pair's Gauss-Newton term from
-  // above (the distance's direction n has |n| = 1), so the same matrix serves u and v.
-  struct Curvature {
-    int vertex[3];
-    double weight[3];
-    double curvature;  // d2E/dd2 (mm^2 / mm^2)
-  };
-  std::vector<Curvature> curvatures(const Eigen::MatrixXd& UV) const;
+  // Appends the barrier's curvature for a Newton-like step, one term per active pair: its vertices (the
+  // outline vertex, the edge's two ends), the weights c = (1, -(1 - t), -t) with which they make the
+  // distance's change, and d2E/dd2. sum curvature * (c . dU)^2 over both coordinates bounds the pair's
+  // Gauss-Newton term from above (the distance's direction n has |n| = 1), so the same matrix serves u and v.
+  void add_curvatures(const Eigen::MatrixXd& UV, std::vector<BarrierCurvature>& terms) const;
 
   // Vertex-edge pairs closer than their epsilon under UV (for reports).
   int active_pairs(const Eigen::MatrixXd& UV) const;

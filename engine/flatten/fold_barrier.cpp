@@ -57,11 +57,10 @@ double FoldBarrier::energy(const Eigen::MatrixXd& UV, std::vector<double>* gradi
       total = std::numeric_limits<double>::infinity();
       return;
     }
-    const double mu = stiffness_ * frames_.area_mm2(static_cast<Eigen::Index>(f));
-    const double excess = s / r - 1.0;
-    total += mu * excess * excess;
+    const BarrierValue barrier = barrier_at(stiffness_ * frames_.area_mm2(static_cast<Eigen::Index>(f)), s, r);
+    total += barrier.value;
     if (gradient == nullptr) return;
-    const double slope = -2.0 * mu * excess * s / (r * r);
+    const double slope = barrier.slope;
     std::vector<double>& g = *gradient;
     for (int k = 0; k < 3; ++k) {
       const size_t vertex = static_cast<size_t>(frames_.triangles[f][k]);
@@ -72,13 +71,11 @@ double FoldBarrier::energy(const Eigen::MatrixXd& UV, std::vector<double>* gradi
   return total;
 }
 
-void FoldBarrier::add_curvatures(const Eigen::MatrixXd& UV, std::vector<BoundaryBarrier::Curvature>& terms) const {
+void FoldBarrier::add_curvatures(const Eigen::MatrixXd& UV, std::vector<BarrierCurvature>& terms) const {
   for_each_active_triangle(UV, [&](size_t f, double r, const double* q_u, const double* q_v) {
     const double s = activation_ratio_[f];
     if (r <= 0.0) return;
-    const double mu = stiffness_ * frames_.area_mm2(static_cast<Eigen::Index>(f));
-    // E = mu (s / r - 1)^2: E'' = 2 mu s^2 / r^4 + 4 mu s (s / r - 1) / r^3, positive for r < s.
-    const double curvature = 2.0 * mu * s * s / (r * r * r * r) + 4.0 * mu * s * (s / r - 1.0) / (r * r * r);
+    const double curvature = barrier_at(stiffness_ * frames_.area_mm2(static_cast<Eigen::Index>(f)), s, r).curvature;
     const auto& t = frames_.triangles[f];
     terms.push_back({{t[0], t[1], t[2]}, {q_u[0], q_u[1], q_u[2]}, 2.0 * curvature});
     terms.push_back({{t[0], t[1], t[2]}, {q_v[0], q_v[1], q_v[2]}, 2.0 * curvature});

@@ -6,7 +6,7 @@
 // C. Schüller, L. Kavan, D. Panozzo, O. Sorkine-Hornung, "Locally Injective Mappings", SGP 2013: a barrier
 // on each triangle's signed area, zero above a threshold and infinite at zero, added to ARAP's energy.
 // Here, per triangle with area ratio r = (area in the map) / (3D area),
-//   E_F = sum mu * A_3D * (s / r - 1)^2     for r < s (0 otherwise),
+//   E_F = sum mu * A_3D * (s / r - 1)^2     for r < s (0 otherwise; barrier_function.hpp),
 // smooth at r = s like the boundary barrier (boundary_barrier.hpp). s = 0.2: four times the flip guard's
 // collapse threshold (5 % of the 3D area, arap_local_step.hpp), so healthy triangles meet the barrier long
 // before the guard; a triangle already thinner in the start map gets half its start ratio as its s (as
@@ -15,7 +15,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "engine/flatten/boundary_barrier.hpp"
+#include "engine/flatten/barrier_function.hpp"
 #include "engine/flatten/cotangent_laplacian.hpp"
 
 namespace lastcut {
@@ -31,9 +31,9 @@ class FoldBarrier {
   // when a triangle has zero or negative area.
   double energy(const Eigen::MatrixXd& UV, std::vector<double>* gradient = nullptr) const;
 
-  // Per triangle below the threshold, two terms bounding its Gauss-Newton curvature from above with the
-  // same matrix for u and v (see BoundaryBarrier::Curvature): q q^T <= 2 (q_u q_u^T + q_v q_v^T) per column.
-  void add_curvatures(const Eigen::MatrixXd& UV, std::vector<BoundaryBarrier::Curvature>& terms) const;
+  // Appends, per triangle below the threshold, two terms bounding its Gauss-Newton curvature from above
+  // with the same matrix for u and v: q q^T <= 2 (q_u q_u^T + q_v q_v^T) per column.
+  void add_curvatures(const Eigen::MatrixXd& UV, std::vector<BarrierCurvature>& terms) const;
 
  private:
   // visit(f, r, q_u[3], q_v[3]) for each triangle with r < s; q: dr/du and dr/dv at its corners.
