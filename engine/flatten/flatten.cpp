@@ -1,8 +1,8 @@
 // The flattening pipeline: checks, start map, ARAP, LSCM or ABF++, flip check and fallback; see flatten.hpp.
 #include "engine/flatten/flatten.hpp"
 
-#include <chrono>
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <optional>
 
