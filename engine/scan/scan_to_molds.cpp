@@ -120,6 +120,8 @@ SegmentResult flatten_segment(std::string name, TriMesh mesh3d, const MeshTopolo
   SegmentResult result;
   result.name = std::move(name);
   result.mesh3d = std::move(mesh3d);
+  result.topology = topology;
+  result.landmarks = landmarks;
   result.flatten = flatten(result.mesh3d, topology, options.flatten);
   result.UV = place_flattening(result.flatten.UV, landmarks);
   clock.lap(result.name + ": flatten");
@@ -172,6 +174,7 @@ ScanResult scan_to_molds(const std::filesystem::path& scan, const ScanOptions& o
     if (options.denoise) clean_scan(intake, options.denoise_options, result, clock);
     const OrientedLast oriented = orient_last(intake.mesh, options.side);
     if (!oriented.side_unnamed) result.side = oriented.side;
+    result.scan_to_canonical = oriented.scan_to_canonical;
     result.notes.insert(result.notes.end(), oriented.notes.begin(), oriented.notes.end());
     result.warnings = oriented.warnings;
     clock.lap("orient");

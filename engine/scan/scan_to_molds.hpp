@@ -14,7 +14,9 @@
 // (heel -> toe landmark along +X) with its bounding box starting at (0, 0); a patch without
 // landmarks is turned so its longest extent is along X. Rigid motions do not change any measure.
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,6 +49,8 @@ struct ScanOptions {
 struct SegmentResult {
   std::string name;             // "medial", "lateral" or "patch"; "side_a", "side_b" for an unnamed symmetric last
   TriMesh mesh3d;               // the triangles that were flattened, mm (canonical frame when segmented)
+  MeshTopology topology;        // of mesh3d
+  std::map<std::string, int> landmarks;  // boundary vertices "toe", "heel", "top_front", "top_back" (none for a patch)
   Eigen::MatrixXd UV;           // #V x 2, mm, same vertex order as mesh3d, placed as described above
   FlattenResult flatten;        // iterations, timings, notes (its UV is the unplaced one)
   DistortionMeasures measures;  // of UV against mesh3d
@@ -58,6 +62,7 @@ struct ScanResult {
   std::string input;                 // the scan's path as given
   IntakeReport intake;               // what reading the file found and repaired
   std::optional<FootSide> side;      // known when segmented, unless a symmetric last with no side named
+  Eigen::Affine3d scan_to_canonical = Eigen::Affine3d::Identity();  // rigid: the scan's frame to the segments' (after cleaning)
   std::vector<SegmentResult> segments;
   std::vector<std::string> notes;    // from orientation, segmentation and flattening, one line each
   std::vector<std::string> warnings; // what the operator should look at (also among the notes)

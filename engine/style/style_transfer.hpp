@@ -1,0 +1,62 @@
+#pragma once
+// Style lines taken from a reference last to another scanned last (issue 34, point 2): a point of the
+// reference's upper is found on its medial or lateral half, carried through that half's forme map
+// (forme_map.hpp) into the new last's flattening of the same half, and lifted back onto the new last's
+// surface. A point on the feather line or the top edge (or a centre seam) goes by its share of that edge,
+// so it lands exactly on the new last's edge. Curves are resampled on the reference first, so the
+// transferred curve follows the new surface and stays as smooth as drawn.
+//
+// precompute (the constructor) / solve (transfer_*) split: the maps and point locators are built once
+// per pair of lasts, every line of a style then costs a few tree searches per millimetre.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/scan/scan_to_molds.hpp"
+
+namespace lastcut {
+
+struct StyleTransferOptions {
+  double max_off_surface_mm = 1.5;  // a reference point farther than this from the upper is not on it
+  double sample_spacing_mm = 1.0;   // curves are resampled this finely on the reference before transfer
+};
+
+struct TransferredPoint {
+  Eigen::Vector3d position_mm = Eigen::Vector3d::Zero();  // on the new last, in its scan's frame
+  std::string half;           // "medial" or "lateral"
+  bool on_outline = false;    // on the feather line, the top edge or a centre seam
+};
+
+struct TransferredCurve {
+  std::vector<TransferredPoint> points;  // in the order of the reference curve
+  int dropped_points = 0;                // resampled points that were not on the reference's upper
+};
+
+class StyleTransfer {
+ public:
+  // reference, target: segmented scans (scan_to_molds) with named medial and lateral halves; kept by
+  // reference, they must outlive the transfer. Throws EngineError (one line) when a last has no
+  // medial and lateral half or a half's outline cannot be split at its landmarks.
+  StyleTransfer(const ScanResult& reference, const ScanResult& target, const StyleTransferOptions& options = {});
+  ~StyleTransfer();
+  StyleTransfer(StyleTransfer&&) noexcept;
+
+  // reference_point: in the reference scan's frame (mm). Nothing when it is not on the reference's upper.
+  std::optional<TransferredPoint> transfer_point(const Eigen::Vector3d& reference_point) const;
+  // polyline: in the reference scan's frame (mm), >= 1 point.
+  TransferredCurve transfer_curve(const std::vector<Eigen::Vector3d>& polyline) const;
+
+  // Reference triangles whose image in the target forme is folded, summed over both halves (0 for a good map).
+  int folded_triangles() const;
+
+ private:
+  struct HalfPair;
+  std::vector<std::unique_ptr<HalfPair>> halves_;
+  Eigen::Affine3d reference_to_canonical_, target_canonical_to_scan_;
+  StyleTransferOptions options_;
+};
+
+}  // namespace lastcut
