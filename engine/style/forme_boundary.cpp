@@ -1,7 +1,6 @@
 #include "engine/style/forme_boundary.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 #include "engine/core/engine_error.hpp"
 
@@ -28,50 +27,6 @@ std::vector<int> walk(const std::vector<int>& loop, std::size_t start, int step,
     path.push_back(loop[at]);
   } while (!is_landmark[static_cast<std::size_t>(loop[at])] && at != start);
   return path;
-}
-
-// The share of each vertex along a boundary polyline, measured on the curve with its triangle-scale
-// zigzag smoothed away: a level-set cut crosses each triangle on a chord, and the chords of a coarse and a
-// fine mesh add up to different lengths in different places, which would slide the correspondence along
-// the edge by most of a millimetre. The polyline is resampled every kSampleStep_mm of its own length,
-// smoothed by binomial passes (a Gaussian of about kSmoothingSigma_mm, ends fixed) and measured again.
-std::vector<double> smoothed_shares(const TriMesh& mesh, const std::vector<int>& vertices) {
-  constexpr double kSampleStep_mm = 0.5, kSmoothingSigma_mm = 3.0;
-  std::vector<double> raw(vertices.size(), 0.0);
-  for (std::size_t i = 1; i < vertices.size(); ++i)
-    raw[i] = raw[i - 1] + (mesh.V.row(vertices[i]) - mesh.V.row(vertices[i - 1])).norm();
-  const double length_mm = raw.back();
-  if (!(length_mm > 0)) throw EngineError("an edge of the half's outline has no length");
-  const int steps = std::max(2, static_cast<int>(std::ceil(length_mm / kSampleStep_mm)));
-  std::vector<Eigen::Vector3d> samples(static_cast<std::size_t>(steps) + 1);
-  std::size_t segment = 1;
-  for (int j = 0; j <= steps; ++j) {
-    const double at = length_mm * j / steps;
-    while (segment + 1 < raw.size() && raw[segment] < at) ++segment;
-    const double span = raw[segment] - raw[segment - 1];
-    const double t = span > 0 ? std::clamp((at - raw[segment - 1]) / span, 0.0, 1.0) : 0.0;
-    samples[static_cast<std::size_t>(j)] =
-        (1 - t) * mesh.V.row(vertices[segment - 1]).transpose() + t * mesh.V.row(vertices[segment]).transpose();
-  }
-  // A binomial pass (1/4, 1/2, 1/4) adds variance step^2 / 2.
-  const int passes = static_cast<int>(std::ceil(2 * std::pow(kSmoothingSigma_mm / (length_mm / steps), 2)));
-  std::vector<Eigen::Vector3d> next = samples;
-  for (int pass = 0; pass < passes; ++pass) {
-    for (std::size_t j = 1; j + 1 < samples.size(); ++j) next[j] = 0.25 * samples[j - 1] + 0.5 * samples[j] + 0.25 * samples[j + 1];
-    std::swap(samples, next);
-  }
-  std::vector<double> smooth(samples.size(), 0.0);
-  for (std::size_t j = 1; j < samples.size(); ++j) smooth[j] = smooth[j - 1] + (samples[j] - samples[j - 1]).norm();
-  std::vector<double> share(vertices.size());
-  for (std::size_t i = 0; i < vertices.size(); ++i) {
-    const double position = raw[i] / length_mm * steps;
-    const std::size_t j = std::min(static_cast<std::size_t>(position), static_cast<std::size_t>(steps) - 1);
-    const double t = position - static_cast<double>(j);
-    share[i] = ((1 - t) * smooth[j] + t * smooth[j + 1]) / smooth.back();
-  }
-  share.front() = 0;
-  share.back() = 1;
-  return share;
 }
 
 }  // namespace
@@ -107,7 +62,12 @@ FormeBoundary forme_boundary(const TriMesh& mesh, const MeshTopology& topology, 
     FormeEdge& edge = boundary.edges[static_cast<std::size_t>(ends.kind)];
     edge.kind = ends.kind;
     edge.vertices = std::move(path);
-    edge.share = smoothed_shares(mesh, edge.vertices);
+    edge.share.assign(edge.vertices.size(), 0.0);
+    for (std::size_t i = 1; i < edge.vertices.size(); ++i)
+      edge.share[i] = edge.share[i - 1] + (mesh.V.row(edge.vertices[i]) - mesh.V.row(edge.vertices[i - 1])).norm();
+    const double length_mm = edge.share.back();
+    if (!(length_mm > 0)) throw EngineError("an edge of the half's outline has no length");
+    for (double& share : edge.share) share /= length_mm;
     for (std::size_t i = 1; i < edge.vertices.size(); ++i) {
       const int u = edge.vertices[i - 1], v = edge.vertices[i];
       boundary.spans[FormeBoundary::edge_key(u, v)] = {ends.kind, u, v, edge.share[i - 1], edge.share[i]};
