@@ -26,9 +26,9 @@ struct StyleTransfer::HalfPair {
     return (1 - weight_b) * target.mesh3d.V.row(a).transpose() + weight_b * target.mesh3d.V.row(b).transpose();
   }
 
-  // The hit's point on the target when it lies on the reference's outline (one vertex, or two on an
-  // outline edge): by its share of the same outline edge.
-  std::optional<Eigen::Vector3d> along_outline(const SurfaceHit& hit) const {
+  // Where on the reference's outline the hit lies (one vertex, or two on an outline edge): the edge and
+  // the share of its 3D length. Nothing for a hit inside the half.
+  std::optional<std::pair<EdgeKind, double>> outline_share(const SurfaceHit& hit) const {
     std::vector<std::pair<int, double>> corners;
     for (int k = 0; k < 3; ++k)
       if (hit.barycentric(k) > 0) corners.emplace_back(reference.mesh3d.F(hit.face, k), hit.barycentric(k));
@@ -37,17 +37,19 @@ struct StyleTransfer::HalfPair {
       if (span == map.reference_outline.spans.end()) return std::nullopt;
       const auto& s = span->second;
       const double weight_v = corners[0].first == s.v ? corners[0].second : corners[1].second;
-      const EdgeSpot spot = spot_at_share(map.target_outline.edge(s.kind), (1 - weight_v) * s.share_u + weight_v * s.share_v);
-      return target_point(spot.a, spot.b, spot.weight_b);
+      return std::pair{s.kind, (1 - weight_v) * s.share_u + weight_v * s.share_v};
     }
     if (corners.size() == 1)
       for (const FormeEdge& edge : map.reference_outline.edges)
         for (std::size_t i = 0; i < edge.vertices.size(); ++i)
-          if (edge.vertices[i] == corners[0].first) {
-            const EdgeSpot spot = spot_at_share(map.target_outline.edge(edge.kind), edge.share[i]);
-            return target_point(spot.a, spot.b, spot.weight_b);
-          }
+          if (edge.vertices[i] == corners[0].first) return std::pair{edge.kind, edge.share[i]};
     return std::nullopt;
+  }
+
+  // The target's outline point at the same share of the same edge.
+  Eigen::Vector3d along_outline(EdgeKind kind, double share) const {
+    const EdgeSpot spot = spot_at_share(map.target_outline.edge(kind), share);
+    return target_point(spot.a, spot.b, spot.weight_b);
   }
 
   Eigen::Vector3d carry(const SurfaceHit& hit) const {
@@ -82,25 +84,37 @@ StyleTransfer::StyleTransfer(const ScanResult& reference, const ScanResult& targ
 StyleTransfer::~StyleTransfer() = default;
 StyleTransfer::StyleTransfer(StyleTransfer&&) noexcept = default;
 
-std::optional<TransferredPoint> StyleTransfer::transfer_point(const Eigen::Vector3d& reference_point) const {
+StyleTransfer::Located StyleTransfer::locate(const Eigen::Vector3d& reference_point) const {
   const Eigen::Vector3d canonical = reference_to_canonical_ * reference_point;
-  const HalfPair* nearest = nullptr;
-  SurfaceHit hit;
-  hit.distance_mm = INFINITY;
+  Located located;
+  located.hit.distance_mm = INFINITY;
   for (const auto& half : halves_) {
     const SurfaceHit candidate = half->reference_surface.closest(canonical);
-    if (candidate.distance_mm < hit.distance_mm) {
-      hit = candidate;
-      nearest = half.get();
+    if (candidate.distance_mm < located.hit.distance_mm) {
+      located.hit = candidate;
+      located.half = half.get();
     }
   }
-  if (!(hit.distance_mm <= options_.max_off_surface_mm)) return std::nullopt;
+  located.outline = located.half->outline_share(located.hit);
+  // Beyond an edge the closest point is on the outline and the offset runs along the surface, not off it.
+  located.on_upper = located.hit.distance_mm <= (located.outline ? kOnEdge_mm : options_.max_off_surface_mm);
+  return located;
+}
+
+TransferredPoint StyleTransfer::carry(const Located& located) const {
   TransferredPoint result;
-  result.half = nearest->reference.name;
-  const std::optional<Eigen::Vector3d> on_outline = nearest->along_outline(hit);
-  result.on_outline = on_outline.has_value();
-  result.position_mm = target_canonical_to_scan_ * (on_outline ? *on_outline : nearest->carry(hit));
+  result.half = located.half->reference.name;
+  result.on_outline = located.outline.has_value();
+  const Eigen::Vector3d canonical = located.outline ? located.half->along_outline(located.outline->first, located.outline->second)
+                                                    : located.half->carry(located.hit);
+  result.position_mm = target_canonical_to_scan_ * canonical;
   return result;
+}
+
+std::optional<TransferredPoint> StyleTransfer::transfer_point(const Eigen::Vector3d& reference_point) const {
+  const Located located = locate(reference_point);
+  if (!located.on_upper) return std::nullopt;
+  return carry(located);
 }
 
 TransferredCurve StyleTransfer::transfer_curve(const std::vector<Eigen::Vector3d>& polyline) const {
@@ -114,11 +128,27 @@ TransferredCurve StyleTransfer::transfer_curve(const std::vector<Eigen::Vector3d
     }
     samples.push_back(polyline[i]);
   }
+  // Where the line leaves or enters the upper between two samples, the crossing is found by bisection and
+  // carried as an outline point, so the line ends exactly on the new last's edge.
+  std::optional<std::pair<Eigen::Vector3d, Located>> previous;
   for (const Eigen::Vector3d& sample : samples) {
-    if (std::optional<TransferredPoint> point = transfer_point(sample))
-      curve.points.push_back(std::move(*point));
+    const Located located = locate(sample);
+    if (previous && previous->second.on_upper != located.on_upper) {
+      Eigen::Vector3d inside = located.on_upper ? sample : previous->first;
+      Eigen::Vector3d outside = located.on_upper ? previous->first : sample;
+      for (int halving = 0; halving < kCrossingHalvings; ++halving) {
+        const Eigen::Vector3d middle = 0.5 * (inside + outside);
+        (locate(middle).on_upper ? inside : outside) = middle;
+      }
+      Located crossing = locate(inside);
+      if (!crossing.outline) crossing = locate(outside);  // the outside end's hit lies on the outline
+      if (crossing.outline) curve.points.push_back(carry(crossing));
+    }
+    if (located.on_upper)
+      curve.points.push_back(carry(located));
     else
       ++curve.dropped_points;
+    previous.emplace(sample, located);
   }
   return curve;
 }

@@ -4,7 +4,9 @@
 // (forme_map.hpp) into the new last's flattening of the same half, and lifted back onto the new last's
 // surface. A point on the feather line or the top edge (or a centre seam) goes by its share of that edge,
 // so it lands exactly on the new last's edge. Curves are resampled on the reference first, so the
-// transferred curve follows the new surface and stays as smooth as drawn.
+// transferred curve follows the new surface and stays as smooth as drawn; where a curve leaves the upper
+// (runs over the feather line onto the sole, or over the top edge), the crossing is found and kept, and the
+// samples beyond it are dropped.
 //
 // precompute (the constructor) / solve (transfer_*) split: the maps and point locators are built once
 // per pair of lasts, every line of a style then costs a few tree searches per millimetre.
@@ -15,12 +17,15 @@
 #include <string>
 #include <vector>
 
+#include "engine/mold/edge_allowance.hpp"
 #include "engine/scan/scan_to_molds.hpp"
+#include "engine/style/triangle_locator.hpp"
 
 namespace lastcut {
 
 struct StyleTransferOptions {
-  double max_off_surface_mm = 1.5;  // a reference point farther than this from the upper is not on it
+  double max_off_surface_mm = 1.5;  // a reference point farther than this from the upper is not on it (as drawn
+                                    // on a coarser copy of the last); beyond an edge the limit is kOnEdge_mm
   double sample_spacing_mm = 1.0;   // curves are resampled this finely on the reference before transfer
 };
 
@@ -49,11 +54,26 @@ class StyleTransfer {
   // polyline: in the reference scan's frame (mm), >= 1 point.
   TransferredCurve transfer_curve(const std::vector<Eigen::Vector3d>& polyline) const;
 
+  // A point whose closest point on the reference's upper lies on its outline is beyond the edge unless this
+  // close (mm): the line has left the upper there.
+  static constexpr double kOnEdge_mm = 1e-3;
+
   // Reference triangles whose image in the target forme is folded, summed over both halves (0 for a good map).
   int folded_triangles() const;
 
  private:
   struct HalfPair;
+  struct Located {
+    const HalfPair* half = nullptr;
+    SurfaceHit hit;
+    std::optional<std::pair<EdgeKind, double>> outline;  // the hit's edge and share, when on the outline
+    bool on_upper = false;
+  };
+  static constexpr int kCrossingHalvings = 30;  // a 1 mm sample step found to 1e-9 mm
+
+  Located locate(const Eigen::Vector3d& reference_point) const;  // reference scan frame
+  TransferredPoint carry(const Located& located) const;
+
   std::vector<std::unique_ptr<HalfPair>> halves_;
   Eigen::Affine3d reference_to_canonical_, target_canonical_to_scan_;
   StyleTransferOptions options_;
