@@ -22,8 +22,15 @@ struct StyleTransfer::HalfPair {
         reference_surface(from.mesh3d.V, from.mesh3d.F),
         target_forme(to.UV, to.mesh3d.F) {}
 
-  Eigen::Vector3d target_point(int a, int b, double weight_b) const {
-    return (1 - weight_b) * target.mesh3d.V.row(a).transpose() + weight_b * target.mesh3d.V.row(b).transpose();
+  // A place on the target half: its 3D point (canonical frame) and its point in the half's flattening.
+  struct Spot {
+    Eigen::Vector3d point;
+    Eigen::Vector2d uv;
+  };
+
+  Spot target_spot(int a, int b, double weight_b) const {
+    return {(1 - weight_b) * target.mesh3d.V.row(a).transpose() + weight_b * target.mesh3d.V.row(b).transpose(),
+            (1 - weight_b) * target.UV.row(a).transpose() + weight_b * target.UV.row(b).transpose()};
   }
 
   // Where on the reference's outline the hit lies (one vertex, or two on an outline edge): the edge and
@@ -47,18 +54,22 @@ struct StyleTransfer::HalfPair {
   }
 
   // The target's outline point at the same share of the same edge.
-  Eigen::Vector3d along_outline(EdgeKind kind, double share) const {
+  Spot along_outline(EdgeKind kind, double share) const {
     const EdgeSpot spot = spot_at_share(map.target_outline.edge(kind), share);
-    return target_point(spot.a, spot.b, spot.weight_b);
+    return target_spot(spot.a, spot.b, spot.weight_b);
   }
 
-  Eigen::Vector3d carry(const SurfaceHit& hit) const {
+  Spot carry(const SurfaceHit& hit) const {
     Eigen::Vector2d uv = Eigen::Vector2d::Zero();
     for (int k = 0; k < 3; ++k) uv += hit.barycentric(k) * map.target_uv.row(reference.mesh3d.F(hit.face, k)).transpose();
     const SurfaceHit onto = target_forme.closest(uv);
-    Eigen::Vector3d point = Eigen::Vector3d::Zero();
-    for (int k = 0; k < 3; ++k) point += onto.barycentric(k) * target.mesh3d.V.row(target.mesh3d.F(onto.face, k)).transpose();
-    return point;
+    Spot spot{Eigen::Vector3d::Zero(), Eigen::Vector2d::Zero()};
+    for (int k = 0; k < 3; ++k) {
+      const int v = target.mesh3d.F(onto.face, k);
+      spot.point += onto.barycentric(k) * target.mesh3d.V.row(v).transpose();
+      spot.uv += onto.barycentric(k) * target.UV.row(v).transpose();
+    }
+    return spot;
   }
 };
 
@@ -102,13 +113,41 @@ StyleTransfer::Located StyleTransfer::locate(const Eigen::Vector3d& reference_po
 }
 
 TransferredPoint StyleTransfer::carry(const Located& located) const {
+  return carry(located, *located.half);
+}
+
+TransferredPoint StyleTransfer::carry(const Located& located, const HalfPair& half) const {
   TransferredPoint result;
-  result.half = located.half->reference.name;
+  result.half = half.reference.name;
   result.on_outline = located.outline.has_value();
-  const Eigen::Vector3d canonical = located.outline ? located.half->along_outline(located.outline->first, located.outline->second)
-                                                    : located.half->carry(located.hit);
-  result.position_mm = target_canonical_to_scan_ * canonical;
+  if (located.outline) result.edge = located.outline->first;
+  const HalfPair::Spot spot =
+      located.outline ? half.along_outline(located.outline->first, located.outline->second) : half.carry(located.hit);
+  result.position_mm = target_canonical_to_scan_ * spot.point;
+  result.forme_uv_mm = spot.uv;
   return result;
+}
+
+std::pair<TransferredPoint, TransferredPoint> StyleTransfer::seam_crossing(Eigen::Vector3d from, Eigen::Vector3d to) const {
+  const HalfPair* from_half = locate(from).half;
+  for (int halving = 0; halving < kCrossingHalvings; ++halving) {
+    const Eigen::Vector3d middle = 0.5 * (from + to);
+    (locate(middle).half == from_half ? from : to) = middle;
+  }
+  // The seam is an outline edge of both halves with the same shares: the crossing's share on the first
+  // half's seam places it on the second's too. The bisection ends a hair inside the first half, so the
+  // hit's weight on the far vertex is snapped to the seam.
+  Located crossing = locate(from);
+  for (int k = 0; k < 3; ++k)
+    if (crossing.hit.barycentric(k) < kSeamSnapWeight) crossing.hit.barycentric(k) = 0;
+  crossing.hit.barycentric /= crossing.hit.barycentric.sum();
+  crossing.outline = from_half->outline_share(crossing.hit);
+  const HalfPair* other = halves_[0].get() == from_half ? halves_[1].get() : halves_[0].get();
+  if (!crossing.outline || (crossing.outline->first != EdgeKind::FrontSeam && crossing.outline->first != EdgeKind::BackSeam)) {
+    // The halves meet only at the seams; should a crossing not lie on one, each side is carried as found.
+    return {carry(locate(from)), carry(locate(to))};
+  }
+  return {carry(crossing, *from_half), carry(crossing, *other)};
 }
 
 std::optional<TransferredPoint> StyleTransfer::transfer_point(const Eigen::Vector3d& reference_point) const {
@@ -143,6 +182,11 @@ TransferredCurve StyleTransfer::transfer_curve(const std::vector<Eigen::Vector3d
       Located crossing = locate(inside);
       if (!crossing.outline) crossing = locate(outside);  // the outside end's hit lies on the outline
       if (crossing.outline) curve.points.push_back(carry(crossing));
+    }
+    if (previous && previous->second.on_upper && located.on_upper && previous->second.half != located.half) {
+      const auto [leaving, entering] = seam_crossing(previous->first, sample);
+      curve.points.push_back(leaving);
+      curve.points.push_back(entering);
     }
     if (located.on_upper)
       curve.points.push_back(carry(located));

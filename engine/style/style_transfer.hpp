@@ -32,11 +32,15 @@ struct StyleTransferOptions {
 struct TransferredPoint {
   Eigen::Vector3d position_mm = Eigen::Vector3d::Zero();  // on the new last, in its scan's frame
   std::string half;           // "medial" or "lateral"
+  Eigen::Vector2d forme_uv_mm = Eigen::Vector2d::Zero();  // in that half's flattening (SegmentResult::UV)
   bool on_outline = false;    // on the feather line, the top edge or a centre seam
+  EdgeKind edge = EdgeKind::Feather;  // which, when on_outline
 };
 
 struct TransferredCurve {
-  std::vector<TransferredPoint> points;  // in the order of the reference curve
+  // In the order of the reference curve. Where it crosses a centre seam, the crossing comes twice, as a
+  // point of the half it leaves and of the half it enters (same 3D point, each half's flattening).
+  std::vector<TransferredPoint> points;
   int dropped_points = 0;                // resampled points that were not on the reference's upper
 };
 
@@ -70,9 +74,13 @@ class StyleTransfer {
     bool on_upper = false;
   };
   static constexpr int kCrossingHalvings = 30;  // a 1 mm sample step found to 1e-9 mm
+  static constexpr double kSeamSnapWeight = 1e-6;  // a barycentric weight this small at a seam crossing is 0
 
   Located locate(const Eigen::Vector3d& reference_point) const;  // reference scan frame
   TransferredPoint carry(const Located& located) const;
+  TransferredPoint carry(const Located& located, const HalfPair& half) const;
+  // The crossing of a centre seam between two samples on different halves (reference scan frame).
+  std::pair<TransferredPoint, TransferredPoint> seam_crossing(Eigen::Vector3d from, Eigen::Vector3d to) const;
 
   std::vector<std::unique_ptr<HalfPair>> halves_;
   Eigen::Affine3d reference_to_canonical_, target_canonical_to_scan_;
