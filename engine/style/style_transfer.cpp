@@ -1,6 +1,7 @@
 #include "engine/style/style_transfer.hpp"
 
 #include <cmath>
+#include <tuple>
 
 #include "engine/core/engine_error.hpp"
 #include "engine/style/forme_map.hpp"
@@ -120,7 +121,7 @@ TransferredPoint StyleTransfer::carry(const Located& located, const HalfPair& ha
   TransferredPoint result;
   result.half = half.reference.name;
   result.on_outline = located.outline.has_value();
-  if (located.outline) result.edge = located.outline->first;
+  if (located.outline) std::tie(result.edge, result.share) = *located.outline;
   const HalfPair::Spot spot =
       located.outline ? half.along_outline(located.outline->first, located.outline->second) : half.carry(located.hit);
   result.position_mm = target_canonical_to_scan_ * spot.point;

@@ -35,6 +35,7 @@ struct TransferredPoint {
   Eigen::Vector2d forme_uv_mm = Eigen::Vector2d::Zero();  // in that half's flattening (SegmentResult::UV)
   bool on_outline = false;    // on the feather line, the top edge or a centre seam
   EdgeKind edge = EdgeKind::Feather;  // which, when on_outline
+  double share = 0;                   // and where along it (forme_boundary.hpp), the same on both lasts
 };
 
 struct TransferredCurve {

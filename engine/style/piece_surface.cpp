@@ -1,0 +1,206 @@
+#include "engine/style/piece_surface.hpp"
+
+#include <cmath>
+#include <unordered_map>
+#include <vector>
+
+#include "engine/core/engine_error.hpp"
+#include "engine/mold/clipper_paths.hpp"
+
+namespace lastcut {
+namespace {
+
+using ClipperLib::cInt;
+
+constexpr cInt kCell = static_cast<cInt>(2.0 * kClipperUnitsPerMm);  // grid cell of the region's edges: 2 mm
+
+struct Box {
+  cInt x0, y0, x1, y1;
+};
+
+// Which region edges pass through which 2 mm cell.
+class EdgeGrid {
+ public:
+  explicit EdgeGrid(const ClipperLib::Paths& rings) {
+    for (const ClipperLib::Path& ring : rings)
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const ClipperLib::IntPoint a = ring[i], b = ring[(i + 1) % ring.size()];
+        for (cInt cx = cell(std::min(a.X, b.X)); cx <= cell(std::max(a.X, b.X)); ++cx)
+          for (cInt cy = cell(std::min(a.Y, b.Y)); cy <= cell(std::max(a.Y, b.Y)); ++cy) cells_[key(cx, cy)] = 1;
+      }
+  }
+  // True when some region edge may pass through the box.
+  bool touches(const Box& box) const {
+    for (cInt cx = cell(box.x0); cx <= cell(box.x1); ++cx)
+      for (cInt cy = cell(box.y0); cy <= cell(box.y1); ++cy)
+        if (cells_.count(key(cx, cy))) return true;
+    return false;
+  }
+
+ private:
+  static cInt cell(cInt v) { return v >= 0 ? v / kCell : -((-v + kCell - 1) / kCell); }
+  static std::uint64_t key(cInt cx, cInt cy) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(cx)) << 32) | static_cast<std::uint32_t>(cy);
+  }
+  std::unordered_map<std::uint64_t, char> cells_;
+};
+
+bool inside_rings(const ClipperLib::Paths& rings, const ClipperLib::IntPoint& p) {
+  if (ClipperLib::PointInPolygon(p, rings.front()) != 1) return false;
+  for (std::size_t i = 1; i < rings.size(); ++i)
+    if (ClipperLib::PointInPolygon(p, rings[i]) != 0) return false;
+  return true;
+}
+
+double cross(const Point2& o, const Point2& a, const Point2& b) {
+  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+}
+
+// Ear clipping of a simple polygon (mm): triangles as index triples into `polygon`, counter-clockwise.
+std::vector<std::array<int, 3>> ear_clip(const std::vector<Point2>& polygon) {
+  std::vector<int> left(polygon.size());
+  for (std::size_t i = 0; i < left.size(); ++i) left[i] = static_cast<int>(i);
+  double area = 0;
+  for (std::size_t i = 0; i < polygon.size(); ++i) area += cross(Point2::Zero(), polygon[i], polygon[(i + 1) % polygon.size()]);
+  if (area < 0) std::reverse(left.begin(), left.end());
+  std::vector<std::array<int, 3>> triangles;
+  std::size_t guard = 0;
+  while (left.size() > 3 && guard < 4 * polygon.size() * polygon.size()) {
+    bool cut = false;
+    for (std::size_t i = 0; i < left.size() && !cut; ++i, ++guard) {
+      const int a = left[(i + left.size() - 1) % left.size()], b = left[i], c = left[(i + 1) % left.size()];
+      const Point2 &pa = polygon[static_cast<std::size_t>(a)], &pb = polygon[static_cast<std::size_t>(b)],
+                   &pc = polygon[static_cast<std::size_t>(c)];
+      if (cross(pa, pb, pc) <= 0) continue;  // reflex or flat corner: not an ear
+      bool empty = true;
+      for (const int v : left) {
+        if (v == a || v == b || v == c) continue;
+        const Point2& p = polygon[static_cast<std::size_t>(v)];
+        if (cross(pa, pb, p) >= 0 && cross(pb, pc, p) >= 0 && cross(pc, pa, p) >= 0) {
+          empty = false;
+          break;
+        }
+      }
+      if (!empty) continue;
+      triangles.push_back({a, b, c});
+      left.erase(left.begin() + static_cast<std::ptrdiff_t>(i));
+      cut = true;
+    }
+    if (!cut) break;  // only flat corners left: the rest has no area
+  }
+  if (left.size() == 3 && cross(polygon[static_cast<std::size_t>(left[0])], polygon[static_cast<std::size_t>(left[1])],
+                                polygon[static_cast<std::size_t>(left[2])]) > 0)
+    triangles.push_back({left[0], left[1], left[2]});
+  return triangles;
+}
+
+// Vertices of the piece, welded within kWeld_mm by a grid of kWeld_mm cells.
+class WeldedVertices {
+ public:
+  int add(const Eigen::Vector3d& p) {
+    const std::array<long long, 3> c = cell(p);
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy)
+        for (long long dz = -1; dz <= 1; ++dz) {
+          const auto found = cells_.find(key({c[0] + dx, c[1] + dy, c[2] + dz}));
+          if (found == cells_.end()) continue;
+          for (const int v : found->second)
+            if ((points_[static_cast<std::size_t>(v)] - p).norm() <= kWeld_mm) return v;
+        }
+    points_.push_back(p);
+    cells_[key(c)].push_back(static_cast<int>(points_.size()) - 1);
+    return static_cast<int>(points_.size()) - 1;
+  }
+  const std::vector<Eigen::Vector3d>& points() const { return points_; }
+
+ private:
+  static std::array<long long, 3> cell(const Eigen::Vector3d& p) {
+    return {std::llround(std::floor(p.x() / kWeld_mm)), std::llround(std::floor(p.y() / kWeld_mm)),
+            std::llround(std::floor(p.z() / kWeld_mm))};
+  }
+  static std::uint64_t key(const std::array<long long, 3>& c) {
+    return (static_cast<std::uint64_t>(c[0] & 0x1fffff) << 42) | (static_cast<std::uint64_t>(c[1] & 0x1fffff) << 21) |
+           static_cast<std::uint64_t>(c[2] & 0x1fffff);
+  }
+  std::vector<Eigen::Vector3d> points_;
+  std::unordered_map<std::uint64_t, std::vector<int>> cells_;
+};
+
+}  // namespace
+
+PieceSurface cut_piece_surface(const std::array<const SegmentResult*, 2>& halves, const PieceRegion& piece) {
+  PieceSurface surface;
+  surface.name = piece.name;
+  WeldedVertices vertices;
+  std::vector<std::array<int, 3>> faces;
+  for (const HalfRegion& part : piece.parts) {
+    const SegmentResult& half = *halves[static_cast<std::size_t>(part.half)];
+    const EdgeGrid grid(part.rings);
+    const ClipperLib::IntRect bounds = [&] {
+      ClipperLib::Clipper bounds_of;
+      bounds_of.AddPath(part.rings.front(), ClipperLib::ptSubject, true);
+      return bounds_of.GetBounds();
+    }();
+    for (Eigen::Index f = 0; f < half.mesh3d.F.rows(); ++f) {
+      std::array<Point2, 3> uv;
+      std::array<Eigen::Vector3d, 3> xyz;
+      for (int k = 0; k < 3; ++k) {
+        uv[static_cast<std::size_t>(k)] = half.UV.row(half.mesh3d.F(f, k)).transpose();
+        xyz[static_cast<std::size_t>(k)] = half.mesh3d.V.row(half.mesh3d.F(f, k)).transpose();
+      }
+      const ClipperLib::Path triangle = to_clipper_path({uv[0], uv[1], uv[2]});
+      Box box{triangle[0].X, triangle[0].Y, triangle[0].X, triangle[0].Y};
+      for (const auto& q : triangle)
+        box = {std::min(box.x0, q.X), std::min(box.y0, q.Y), std::max(box.x1, q.X), std::max(box.y1, q.Y)};
+      if (box.x1 < bounds.left || box.x0 > bounds.right || box.y1 < bounds.top || box.y0 > bounds.bottom) continue;
+      if (!grid.touches(box)) {
+        const Point2 centroid = (uv[0] + uv[1] + uv[2]) / 3.0;
+        if (!inside_rings(part.rings, to_clipper_path({centroid}).front())) continue;
+        faces.push_back({vertices.add(xyz[0]), vertices.add(xyz[1]), vertices.add(xyz[2])});
+        continue;
+      }
+      ClipperLib::Clipper clipper;
+      clipper.StrictlySimple(true);
+      clipper.AddPath(triangle, ClipperLib::ptSubject, true);
+      clipper.AddPaths(part.rings, ClipperLib::ptClip, true);
+      ClipperLib::Paths pieces_of_triangle;
+      clipper.Execute(ClipperLib::ctIntersection, pieces_of_triangle, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+      if (pieces_of_triangle.empty()) continue;
+      ++surface.clipped_triangles;
+      // Barycentric coordinates in the triangle's flattening lift a point to 3D.
+      const double area2 = cross(uv[0], uv[1], uv[2]);
+      const bool facing = area2 > 0;  // the clipped polygons come counter-clockwise; keep the triangle's turn
+      for (const ClipperLib::Path& path : pieces_of_triangle) {
+        const std::vector<Point2> polygon = from_clipper_path(path).points;
+        std::vector<int> ids;
+        for (const Point2& p : polygon) {
+          const double w0 = cross(p, uv[1], uv[2]) / area2, w1 = cross(uv[0], p, uv[2]) / area2;
+          ids.push_back(vertices.add(w0 * xyz[0] + w1 * xyz[1] + (1 - w0 - w1) * xyz[2]));
+        }
+        for (const auto& t : ear_clip(polygon)) {
+          std::array<int, 3> face{ids[static_cast<std::size_t>(t[0])], ids[static_cast<std::size_t>(t[1])], ids[static_cast<std::size_t>(t[2])]};
+          if (!facing) std::swap(face[1], face[2]);
+          faces.push_back(face);
+        }
+      }
+    }
+  }
+  // Welding may have merged the corners of a sliver: such a face has no area left.
+  std::vector<std::array<int, 3>> kept;
+  for (const auto& face : faces)
+    if (face[0] != face[1] && face[1] != face[2] && face[0] != face[2]) kept.push_back(face);
+  if (kept.empty()) throw EngineError("piece " + piece.name + " has no surface on this last");
+  const std::vector<Eigen::Vector3d>& points = vertices.points();
+  surface.mesh.V.resize(static_cast<Eigen::Index>(points.size()), 3);
+  for (std::size_t v = 0; v < points.size(); ++v) surface.mesh.V.row(static_cast<Eigen::Index>(v)) = points[v].transpose();
+  surface.mesh.F.resize(static_cast<Eigen::Index>(kept.size()), 3);
+  for (std::size_t f = 0; f < kept.size(); ++f)
+    for (int k = 0; k < 3; ++k) surface.mesh.F(static_cast<Eigen::Index>(f), k) = kept[f][static_cast<std::size_t>(k)];
+  for (const auto& face : kept)
+    surface.area_mm2 += 0.5 * (points[static_cast<std::size_t>(face[1])] - points[static_cast<std::size_t>(face[0])])
+                                  .cross(points[static_cast<std::size_t>(face[2])] - points[static_cast<std::size_t>(face[0])])
+                                  .norm();
+  return surface;
+}
+
+}  // namespace lastcut

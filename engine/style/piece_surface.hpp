@@ -1,0 +1,33 @@
+#pragma once
+// A piece's 3D surface cut from the new last (issue 34, point 3, "flattening by the 3D contour"): the
+// triangles of each half that lie in the piece's region (upper_regions.hpp), clipped exactly to it in
+// the half's flattening and lifted back to 3D by their barycentric coordinates, the parts on the two
+// halves joined along the centre seam. The piece is then flattened on its own.
+//
+// Clipping: Clipper (libpolyclipping) intersects a triangle with the region only where a region edge
+// passes through the triangle's box (a grid of the region's edges tells which); the others lie wholly
+// inside or outside and are kept or dropped by their centroid. Clipped polygons are triangulated by ear
+// clipping (H. Meisters, "Polygons have ears", Amer. Math. Monthly 82, 1975: every simple polygon with
+// more than three corners has two ears to cut off). Vertices are welded within kWeld_mm: the same cut
+// point computed from the two triangles of an edge, and a piece's seam vertices on both halves.
+#include <array>
+#include <string>
+
+#include "engine/core/tri_mesh.hpp"
+#include "engine/style/upper_regions.hpp"
+
+namespace lastcut {
+
+inline constexpr double kWeld_mm = 0.05;
+
+struct PieceSurface {
+  std::string name;
+  TriMesh mesh;            // canonical frame of the new last, mm, outward like the last
+  double area_mm2 = 0;
+  int clipped_triangles = 0;  // triangles of the halves cut by the piece's outline
+};
+
+// halves: the new last's medial and lateral halves (the ones piece_regions was given).
+PieceSurface cut_piece_surface(const std::array<const SegmentResult*, 2>& halves, const PieceRegion& piece);
+
+}  // namespace lastcut
