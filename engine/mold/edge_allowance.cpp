@@ -124,14 +124,20 @@ std::vector<NetEdge> split_net_edges(const Polygon2& net, const std::vector<std:
 
 Polygon2 grow_by_edge_allowances(const Polygon2& net, const std::vector<NetEdge>& edges,
                                  const EdgeAllowances& allowances, double tolerance_mm) {
-  for (double value : {allowances.lasting_mm, allowances.seam_mm, allowances.top_mm})
-    if (!(value >= 0.0) || !std::isfinite(value))
+  std::vector<AllowanceEdge> grown_edges;
+  for (const NetEdge& edge : edges) grown_edges.push_back({edge.points, allowance_of(allowances, edge.kind)});
+  return grow_by_allowances(net, grown_edges, tolerance_mm);
+}
+
+Polygon2 grow_by_allowances(const Polygon2& net, const std::vector<AllowanceEdge>& edges, double tolerance_mm) {
+  for (const AllowanceEdge& edge : edges)
+    if (!(edge.allowance_mm >= 0.0) || !std::isfinite(edge.allowance_mm))
       throw EngineError("every edge allowance must be a finite number of millimetres >= 0");
   if (!(tolerance_mm > 0.0)) throw EngineError("the allowance tolerance must be positive");
 
   ClipperLib::Paths grown{to_clipper_path(net.points)};
-  for (const NetEdge& edge : edges) {
-    const double distance_mm = allowance_of(allowances, edge.kind);
+  for (const AllowanceEdge& edge : edges) {
+    const double distance_mm = edge.allowance_mm;
     if (distance_mm <= 0.0) continue;
     const ClipperLib::Paths band =
         offset_paths({to_clipper_path(edge.points)}, ClipperLib::etOpenRound, distance_mm, tolerance_mm);
@@ -141,9 +147,9 @@ Polygon2 grow_by_edge_allowances(const Polygon2& net, const std::vector<NetEdge>
   // Fillets where two different allowances meet: the closing of the grown shape, kept only near
   // the landmark so the rest of the outline stays at its exact distances.
   for (size_t i = 0; i < edges.size(); ++i) {
-    const NetEdge& before = edges[i];
-    const NetEdge& after = edges[(i + 1) % edges.size()];
-    const double d1 = allowance_of(allowances, before.kind), d2 = allowance_of(allowances, after.kind);
+    const AllowanceEdge& before = edges[i];
+    const AllowanceEdge& after = edges[(i + 1) % edges.size()];
+    const double d1 = before.allowance_mm, d2 = after.allowance_mm;
     if (d1 == d2) continue;
     const double radius_mm = std::max(d1, d2);
     const ClipperLib::Paths closed =

@@ -47,6 +47,18 @@ inline constexpr const char* kEdgeLandmarks[] = {"toe", "heel", "top_back", "top
 // toe, heel, top_back, top_front around the outline (either direction).
 std::vector<NetEdge> split_net_edges(const Polygon2& net, const std::vector<std::pair<std::string, int>>& landmark_index);
 
+// One stretch of a net outline and how far the cut line lies outside it (mm, >= 0).
+struct AllowanceEdge {
+  std::vector<Point2> points;  // mm, >= 2 points, in outline order; consecutive edges share their end points
+  double allowance_mm = 0.0;
+};
+
+// The cut outline (CCW, simple, mm) of net grown edge by edge: every point of an edge's band lies
+// allowance_mm from it; where two different allowances meet, the corner is filled (see above).
+// tolerance_mm: chord error of the round parts (> 0). Throws EngineError for a negative or infinite
+// allowance.
+Polygon2 grow_by_allowances(const Polygon2& net, const std::vector<AllowanceEdge>& edges, double tolerance_mm);
+
 // The cut outline (CCW, simple, mm) of net grown per edge: every point of edge e's band boundary
 // lies allowance_of(e) from e. tolerance_mm: chord error of the round parts (> 0).
 // Throws EngineError when an allowance is negative or not finite.
