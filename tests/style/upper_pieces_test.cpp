@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
 #include <regex>
 
@@ -16,6 +17,8 @@
 #include "engine/flatten/flatten.hpp"
 #include "engine/lastgen/generate_last.hpp"
 #include "engine/mesh/write_mesh.hpp"
+#include "engine/mold/outline_geometry.hpp"
+#include "engine/style/piece_mold.hpp"
 #include "engine/style/piece_surface.hpp"
 #include "engine/style/style_transfer.hpp"
 #include "engine/style/upper_regions.hpp"
@@ -134,6 +137,59 @@ TEST_F(UpperPieces, DerbyPiecesTileTheUpperAndFlattenEachAsADisk) {
   }
   std::printf("upper %.1f mm2, pieces %.1f mm2 (%+.4f %%)\n", upper_mm2, pieces_mm2, 100 * (pieces_mm2 - upper_mm2) / upper_mm2);
   EXPECT_NEAR(pieces_mm2, upper_mm2, 1e-3 * upper_mm2);  // tiles the upper: nothing missing, nothing twice
+}
+
+// The derby's allowances by shoemaking's defaults: lasting 18 mm on the feather line, folding 5 mm on the
+// top edge, the vamp under the quarters (underlay 8 mm on the vamp line) and the quarters under the
+// counter (8 mm on the counter line), the other side of a line and the cut seams butted (0).
+double derby_allowance(const std::string& piece, const PieceEdgeSource& source) {
+  switch (source.kind) {
+    case PieceEdgeSource::Kind::Feather: return 18;
+    case PieceEdgeSource::Kind::Top: return 5;
+    case PieceEdgeSource::Kind::FrontSeam:
+    case PieceEdgeSource::Kind::BackSeam: return 0;
+    case PieceEdgeSource::Kind::Line:
+      if (source.line == 0) return piece == "vamp" ? 8 : 0;      // the vamp line
+      return piece.find("quarter") != std::string::npos ? 8 : 0;  // the counter line
+  }
+  return 0;
+}
+
+// Measured on the cut outline, independently of how it was grown: the points of the middle third of a
+// stretch of the net lie their edge's allowance inside the cut outline.
+TEST_F(UpperPieces, EachEdgeCarriesItsAllowance) {
+  const Derby& d = *derby_;
+  const std::vector<PieceRegion> regions = piece_regions(d.halves, {d.vamp, d.counter}, d.labels, d.cuts);
+  const PieceEdgeCurves curves = piece_edge_curves(d.halves, {d.vamp, d.counter}, d.target.scan_to_canonical);
+  std::map<std::string, int> stretches_measured;
+  for (const PieceRegion& region : regions) {
+    const PieceSurface piece = cut_piece_surface(d.halves, region);
+    const PieceMold mold =
+        make_piece_mold(piece, curves, [&](const PieceEdgeSource& source) { return derby_allowance(piece.name, source); });
+    EXPECT_GE(mold.edges.size(), 2u) << piece.name;
+    for (const PieceMoldEdge& edge : mold.edges) {
+      double length_mm = 0;
+      for (std::size_t i = 1; i < edge.net_points.size(); ++i) length_mm += (edge.net_points[i] - edge.net_points[i - 1]).norm();
+      if (length_mm < 3 * edge.allowance_mm + 15) continue;  // too short to have a middle away from the corners
+      double walked = 0;
+      std::vector<double> distances;
+      for (std::size_t i = 1; i < edge.net_points.size(); ++i) {
+        walked += (edge.net_points[i] - edge.net_points[i - 1]).norm();
+        if (walked < length_mm / 3 || walked > 2 * length_mm / 3) continue;
+        distances.push_back(closest_outline_point(mold.mold.outline, edge.net_points[i]).distance_mm);
+      }
+      ASSERT_FALSE(distances.empty());
+      std::sort(distances.begin(), distances.end());
+      const std::string where = piece.name + " " + to_string(edge.source, {"vamp", "counter"});
+      // Nothing cuts into the margin; typically exactly the allowance; at a kink where the net turns
+      // away from the cut line (concave) the corner of the offset lies d / cos(turn / 2) away.
+      EXPECT_GE(distances.front(), edge.allowance_mm - 0.03) << where;
+      EXPECT_NEAR(distances[distances.size() / 2], edge.allowance_mm, 0.02) << where;
+      EXPECT_LE(distances.back(), edge.allowance_mm + 0.2) << where;
+      ++stretches_measured[piece.name];
+    }
+  }
+  EXPECT_EQ(stretches_measured.size(), 4u);
 }
 
 // Refusals name what is wrong in one line.

@@ -1,0 +1,143 @@
+#include "engine/style/piece_mold.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/core/engine_error.hpp"
+#include "engine/flatten/disk_topology.hpp"
+#include "engine/mold/outward_allowance.hpp"
+#include "engine/mold/outline_geometry.hpp"
+#include "engine/mold/outline_simplify.hpp"
+#include "engine/style/forme_boundary.hpp"
+
+namespace lastcut {
+namespace {
+
+double distance_to_curve(const Eigen::Vector3d& p, const std::vector<Eigen::Vector3d>& curve) {
+  double nearest = INFINITY;
+  for (std::size_t i = 1; i < curve.size(); ++i) {
+    const Eigen::Vector3d ab = curve[i] - curve[i - 1];
+    const double t = std::clamp((p - curve[i - 1]).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+    nearest = std::min(nearest, (curve[i - 1] + t * ab - p).norm());
+  }
+  return nearest;
+}
+
+PieceEdgeSource::Kind kind_of(EdgeKind kind) {
+  switch (kind) {
+    case EdgeKind::Feather: return PieceEdgeSource::Kind::Feather;
+    case EdgeKind::Top: return PieceEdgeSource::Kind::Top;
+    case EdgeKind::FrontSeam: return PieceEdgeSource::Kind::FrontSeam;
+    case EdgeKind::BackSeam: return PieceEdgeSource::Kind::BackSeam;
+  }
+  return PieceEdgeSource::Kind::Feather;
+}
+
+}  // namespace
+
+std::string to_string(const PieceEdgeSource& source, const std::vector<std::string>& line_names) {
+  switch (source.kind) {
+    case PieceEdgeSource::Kind::Feather: return "feather line";
+    case PieceEdgeSource::Kind::Top: return "top edge";
+    case PieceEdgeSource::Kind::FrontSeam: return "front seam";
+    case PieceEdgeSource::Kind::BackSeam: return "back seam";
+    case PieceEdgeSource::Kind::Line:
+      return source.line >= 0 && static_cast<std::size_t>(source.line) < line_names.size()
+                 ? "line " + line_names[static_cast<std::size_t>(source.line)]
+                 : "line " + std::to_string(source.line);
+  }
+  return "?";
+}
+
+PieceEdgeCurves piece_edge_curves(const std::array<const SegmentResult*, 2>& halves, const std::vector<TransferredCurve>& lines,
+                                  const Eigen::Affine3d& scan_to_canonical) {
+  PieceEdgeCurves curves;
+  for (const SegmentResult* half : halves) {
+    const FormeBoundary boundary = forme_boundary(half->mesh3d, half->topology, half->landmarks);
+    for (const FormeEdge& edge : boundary.edges) {
+      std::vector<Eigen::Vector3d> points;
+      for (const int v : edge.vertices) points.push_back(half->mesh3d.V.row(v).transpose());
+      curves.curves.emplace_back(PieceEdgeSource{kind_of(edge.kind), -1}, std::move(points));
+    }
+  }
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    std::vector<Eigen::Vector3d> points;
+    for (const TransferredPoint& point : lines[i].points) points.push_back(scan_to_canonical * point.position_mm);
+    curves.curves.emplace_back(PieceEdgeSource{PieceEdgeSource::Kind::Line, static_cast<int>(i)}, std::move(points));
+  }
+  return curves;
+}
+
+PieceMold make_piece_mold(const PieceSurface& piece, const PieceEdgeCurves& curves, const AllowanceRule& allowance_of,
+                          const FlattenOptions& options) {
+  PieceMold result;
+  const MeshTopology topology = build_mesh_topology(piece.mesh.F, piece.mesh.V.rows());
+  if (topology.boundary_loops.size() != 1)
+    throw EngineError("piece " + piece.name + " is not one patch with one outline (" +
+                      std::to_string(topology.boundary_loops.size()) + " outlines): check the style's lines around it");
+  check_disk(piece.mesh, topology);
+  result.flatten = flatten(piece.mesh, topology, options);
+  result.UV = result.flatten.UV;
+  result.measures = measure_distortion(piece.mesh, result.UV, topology);
+
+  // The outline in the flattening, counter-clockwise, and what each of its vertices lies on in 3D.
+  std::vector<int> loop = topology.boundary_loops.front();
+  Polygon2 net;
+  for (const int v : loop) net.points.push_back(result.UV.row(v).transpose());
+  if (signed_area(net) < 0) {
+    std::reverse(loop.begin(), loop.end());
+    std::reverse(net.points.begin(), net.points.end());
+  }
+  if (!is_simple(net)) throw EngineError("piece " + piece.name + ": the flattened outline overlaps itself");
+  // A corner where a line meets an edge or crosses a seam lies on both: it goes with the line, so a
+  // seam crossing does not become a stretch of its own.
+  constexpr double kSameDistance_mm = 0.01;
+  std::vector<PieceEdgeSource> source(loop.size());
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const Eigen::Vector3d p = piece.mesh.V.row(loop[i]).transpose();
+    double nearest = INFINITY, nearest_line = INFINITY;
+    PieceEdgeSource line;
+    for (const auto& [candidate, curve] : curves.curves) {
+      const double distance = distance_to_curve(p, curve);
+      if (distance < nearest) nearest = distance, source[i] = candidate;
+      if (candidate.kind == PieceEdgeSource::Kind::Line && distance < nearest_line) nearest_line = distance, line = candidate;
+    }
+    if (nearest_line <= nearest + kSameDistance_mm) source[i] = line;
+  }
+  // Stretches of one source, starting where the source changes (a piece cut by nothing but one
+  // closed line has a single stretch, from vertex 0).
+  const std::size_t n = loop.size();
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!(source[i] == source[(i + n - 1) % n])) {
+      start = i;
+      break;
+    }
+  std::vector<int> stretch_starts;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = (start + k) % n;
+    if (k == 0 || !(source[i] == source[(i + n - 1) % n])) stretch_starts.push_back(static_cast<int>(i));
+  }
+  const std::vector<int> kept = simplify_outline(net, kPieceSimplifyTolerance_mm, stretch_starts);
+  const Polygon2 simple = select_points(net, kept);
+  // Kept indices are increasing; walk them from the first stretch start round the loop.
+  const std::size_t first = static_cast<std::size_t>(std::find(kept.begin(), kept.end(), stretch_starts.front()) - kept.begin());
+  std::vector<AllowanceEdge> grown;
+  for (std::size_t k = 0; k <= kept.size(); ++k) {
+    const std::size_t at = (first + k) % kept.size();
+    const int vertex = kept[at];
+    const bool starts = std::find(stretch_starts.begin(), stretch_starts.end(), vertex) != stretch_starts.end();
+    if (!result.edges.empty()) result.edges.back().net_points.push_back(simple.points[at]);
+    if (starts && k < kept.size()) {
+      const PieceEdgeSource& what = source[static_cast<std::size_t>(vertex)];
+      result.edges.push_back({what, allowance_of(what), {simple.points[at]}});
+    }
+  }
+  for (const PieceMoldEdge& edge : result.edges) grown.push_back({edge.net_points, edge.allowance_mm});
+  result.mold.name = piece.name;
+  result.mold.net = simple;
+  result.mold.outline = grow_outward_by_allowances(simple, grown, kPieceSimplifyTolerance_mm);
+  return result;
+}
+
+}  // namespace lastcut

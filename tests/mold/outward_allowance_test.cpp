@@ -1,0 +1,69 @@
+// Outward allowances (engine/mold/outward_allowance.hpp), measured on the result: an edge with no
+// allowance stays exactly where it is even where the piece is narrower than its neighbour's allowance,
+// and an edge with one lies that far inside the cut line.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/core/engine_error.hpp"
+#include "engine/mold/outline_geometry.hpp"
+#include "engine/mold/outward_allowance.hpp"
+
+namespace lastcut {
+namespace {
+
+// How far from p along `direction` (unit) the outline is crossed first (mm).
+double ray_to_outline(const Polygon2& outline, const Point2& p, const Point2& direction) {
+  double nearest = INFINITY;
+  for (std::size_t i = 0; i < outline.points.size(); ++i) {
+    const Point2 a = outline.points[i], e = outline.points[(i + 1) % outline.points.size()] - a, w = a - p;
+    const double det = direction.x() * e.y() - direction.y() * e.x();
+    if (det == 0) continue;
+    const double t = (w.x() * e.y() - w.y() * e.x()) / det, u = (w.x() * direction.y() - w.y() * direction.x()) / det;
+    if (u >= 0 && u <= 1 && t > 1e-9) nearest = std::min(nearest, t);
+  }
+  return nearest;
+}
+
+TEST(OutwardAllowance, RectangleWithALastingEdge) {
+  Polygon2 net;
+  net.points = {{0, 0}, {100, 0}, {100, 40}, {0, 40}};
+  const std::vector<AllowanceEdge> edges = {{{{0, 0}, {100, 0}}, 18}, {{{100, 0}, {100, 40}}, 0},
+                                            {{{100, 40}, {0, 40}}, 0}, {{{0, 40}, {0, 0}}, 0}};
+  const Polygon2 cut = grow_outward_by_allowances(net, edges, 0.02);
+  EXPECT_GT(signed_area(cut), 0);
+  for (const double x : {10.0, 50.0, 90.0}) {
+    EXPECT_NEAR(ray_to_outline(cut, {x, 0}, {0, -1}), 18, 1e-4) << x;
+    EXPECT_NEAR(closest_outline_point(cut, {x, 40}).distance_mm, 0, 1e-4) << x;
+  }
+  // Round the corner the cut line goes from 18 mm to 0: it never comes nearer the net than the smaller.
+  for (const Point2& p : cut.points) EXPECT_GE(p.y(), -18.0 - 1e-4);
+}
+
+// A wedge 6 mm wide at its base with 18 mm on its long bottom edge: a two-sided band would reach over
+// the top edge; growing outward leaves the top edge where it is.
+TEST(OutwardAllowance, NarrowWedgeKeepsItsOtherEdge) {
+  Polygon2 net;
+  net.points = {{0, 0}, {120, 0}, {0, 6}};
+  const std::vector<AllowanceEdge> edges = {{{{0, 0}, {120, 0}}, 18}, {{{120, 0}, {0, 6}}, 0}, {{{0, 6}, {0, 0}}, 0}};
+  const Polygon2 cut = grow_outward_by_allowances(net, edges, 0.02);
+  for (const double t : {0.2, 0.5, 0.8}) {
+    const Point2 on_top = (1 - t) * Point2(120, 0) + t * Point2(0, 6);
+    EXPECT_NEAR(closest_outline_point(cut, on_top).distance_mm, 0, 1e-4) << t;
+    EXPECT_NEAR(ray_to_outline(cut, {120 * t, 0}, {0, -1}), 18, 1e-4) << t;
+  }
+}
+
+TEST(OutwardAllowance, NegativeAllowanceIsRefused) {
+  Polygon2 net;
+  net.points = {{0, 0}, {10, 0}, {0, 10}};
+  try {
+    grow_outward_by_allowances(net, {{{{0, 0}, {10, 0}}, -1}, {{{10, 0}, {0, 10}, {0, 0}}, 0}}, 0.02);
+    FAIL() << "no error";
+  } catch (const EngineError& error) {
+    EXPECT_STREQ(error.what(), "every edge allowance must be a finite number of millimetres >= 0");
+  }
+}
+
+}  // namespace
+}  // namespace lastcut
