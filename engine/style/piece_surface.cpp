@@ -13,6 +13,7 @@ namespace {
 using ClipperLib::cInt;
 
 constexpr cInt kCell = static_cast<cInt>(2.0 * kClipperUnitsPerMm);  // grid cell of the region's edges: 2 mm
+constexpr cInt kTile = static_cast<cInt>(16.0 * kClipperUnitsPerMm);  // the region is cut into tiles this size
 
 struct Box {
   cInt x0, y0, x1, y1;
@@ -43,6 +44,46 @@ class EdgeGrid {
     return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(cx)) << 32) | static_cast<std::uint32_t>(cy);
   }
   std::unordered_map<std::uint64_t, char> cells_;
+};
+
+cInt floor_div(cInt v, cInt step) { return v >= 0 ? v / step : -((-v + step - 1) / step); }
+
+// The region cut into square tiles, each computed when first needed: a triangle is clipped against the
+// few region edges of the tiles under it, not against the whole outline.
+class RegionTiles {
+ public:
+  explicit RegionTiles(const ClipperLib::Paths& rings) : rings_(rings) {}
+
+  // The region within the tiles that cover the box.
+  ClipperLib::Paths around(const Box& box) {
+    const cInt tx0 = floor_div(box.x0, kTile), tx1 = floor_div(box.x1, kTile);
+    const cInt ty0 = floor_div(box.y0, kTile), ty1 = floor_div(box.y1, kTile);
+    if (tx0 == tx1 && ty0 == ty1) return tile(tx0, ty0);
+    ClipperLib::Clipper joined;
+    for (cInt tx = tx0; tx <= tx1; ++tx)
+      for (cInt ty = ty0; ty <= ty1; ++ty) joined.AddPaths(tile(tx, ty), ClipperLib::ptSubject, true);
+    ClipperLib::Paths local;
+    joined.Execute(ClipperLib::ctUnion, local, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    return local;
+  }
+
+ private:
+  const ClipperLib::Paths& tile(cInt tx, cInt ty) {
+    const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(tx)) << 32) | static_cast<std::uint32_t>(ty);
+    const auto found = tiles_.find(key);
+    if (found != tiles_.end()) return found->second;
+    const ClipperLib::Path square = {{tx * kTile, ty * kTile}, {(tx + 1) * kTile, ty * kTile},
+                                     {(tx + 1) * kTile, (ty + 1) * kTile}, {tx * kTile, (ty + 1) * kTile}};
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(rings_, ClipperLib::ptSubject, true);
+    clipper.AddPath(square, ClipperLib::ptClip, true);
+    ClipperLib::Paths local;
+    clipper.Execute(ClipperLib::ctIntersection, local, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    return tiles_.emplace(key, std::move(local)).first->second;
+  }
+
+  const ClipperLib::Paths& rings_;
+  std::unordered_map<std::uint64_t, ClipperLib::Paths> tiles_;
 };
 
 bool inside_rings(const ClipperLib::Paths& rings, const ClipperLib::IntPoint& p) {
@@ -136,35 +177,72 @@ PieceSurface cut_piece_surface(const std::array<const SegmentResult*, 2>& halves
   for (const HalfRegion& part : piece.parts) {
     const SegmentResult& half = *halves[static_cast<std::size_t>(part.half)];
     const EdgeGrid grid(part.rings);
+    RegionTiles tiles(part.rings);
     const ClipperLib::IntRect bounds = [&] {
       ClipperLib::Clipper bounds_of;
       bounds_of.AddPath(part.rings.front(), ClipperLib::ptSubject, true);
       return bounds_of.GetBounds();
     }();
-    for (Eigen::Index f = 0; f < half.mesh3d.F.rows(); ++f) {
+    // Triangles no region edge comes near are wholly inside or outside, and so is every group of them
+    // connected through such triangles: one point-in-region test per group decides.
+    enum : char { kOutside, kFree, kTouched };
+    const Eigen::Index face_count = half.mesh3d.F.rows();
+    std::vector<char> state(static_cast<std::size_t>(face_count), kOutside);
+    for (Eigen::Index f = 0; f < face_count; ++f) {
+      const ClipperLib::Path triangle =
+          to_clipper_path({half.UV.row(half.mesh3d.F(f, 0)).transpose(), half.UV.row(half.mesh3d.F(f, 1)).transpose(),
+                           half.UV.row(half.mesh3d.F(f, 2)).transpose()});
+      Box box{triangle[0].X, triangle[0].Y, triangle[0].X, triangle[0].Y};
+      for (const auto& q : triangle)
+        box = {std::min(box.x0, q.X), std::min(box.y0, q.Y), std::max(box.x1, q.X), std::max(box.y1, q.Y)};
+      if (box.x1 < bounds.left || box.x0 > bounds.right || box.y1 < bounds.top || box.y0 > bounds.bottom) continue;
+      state[static_cast<std::size_t>(f)] = grid.touches(box) ? kTouched : kFree;
+    }
+    std::vector<char> keep(static_cast<std::size_t>(face_count), 0), seen(static_cast<std::size_t>(face_count), 0);
+    for (Eigen::Index seed = 0; seed < face_count; ++seed) {
+      if (state[static_cast<std::size_t>(seed)] != kFree || seen[static_cast<std::size_t>(seed)]) continue;
+      Point2 centroid = Point2::Zero();
+      for (int k = 0; k < 3; ++k) centroid += half.UV.row(half.mesh3d.F(seed, k)).transpose() / 3.0;
+      const char inside = inside_rings(part.rings, to_clipper_path({centroid}).front()) ? 1 : 0;
+      std::vector<Eigen::Index> stack{seed};
+      seen[static_cast<std::size_t>(seed)] = 1;
+      while (!stack.empty()) {
+        const Eigen::Index f = stack.back();
+        stack.pop_back();
+        keep[static_cast<std::size_t>(f)] = inside;
+        for (int k = 0; k < 3; ++k) {
+          const int g = half.topology.face_across(f, k);
+          if (g < 0 || seen[static_cast<std::size_t>(g)] || state[static_cast<std::size_t>(g)] != kFree) continue;
+          seen[static_cast<std::size_t>(g)] = 1;
+          stack.push_back(g);
+        }
+      }
+    }
+    for (Eigen::Index f = 0; f < face_count; ++f) {
+      if (state[static_cast<std::size_t>(f)] == kOutside) continue;
       std::array<Point2, 3> uv;
       std::array<Eigen::Vector3d, 3> xyz;
       for (int k = 0; k < 3; ++k) {
         uv[static_cast<std::size_t>(k)] = half.UV.row(half.mesh3d.F(f, k)).transpose();
         xyz[static_cast<std::size_t>(k)] = half.mesh3d.V.row(half.mesh3d.F(f, k)).transpose();
       }
+      if (state[static_cast<std::size_t>(f)] == kFree) {
+        if (keep[static_cast<std::size_t>(f)]) faces.push_back({vertices.add(xyz[0]), vertices.add(xyz[1]), vertices.add(xyz[2])});
+        continue;
+      }
       const ClipperLib::Path triangle = to_clipper_path({uv[0], uv[1], uv[2]});
       Box box{triangle[0].X, triangle[0].Y, triangle[0].X, triangle[0].Y};
       for (const auto& q : triangle)
         box = {std::min(box.x0, q.X), std::min(box.y0, q.Y), std::max(box.x1, q.X), std::max(box.y1, q.Y)};
-      if (box.x1 < bounds.left || box.x0 > bounds.right || box.y1 < bounds.top || box.y0 > bounds.bottom) continue;
-      if (!grid.touches(box)) {
-        const Point2 centroid = (uv[0] + uv[1] + uv[2]) / 3.0;
-        if (!inside_rings(part.rings, to_clipper_path({centroid}).front())) continue;
-        faces.push_back({vertices.add(xyz[0]), vertices.add(xyz[1]), vertices.add(xyz[2])});
-        continue;
-      }
       ClipperLib::Clipper clipper;
       clipper.StrictlySimple(true);
       clipper.AddPath(triangle, ClipperLib::ptSubject, true);
-      clipper.AddPaths(part.rings, ClipperLib::ptClip, true);
+      clipper.AddPaths(tiles.around(box), ClipperLib::ptClip, true);
       ClipperLib::Paths pieces_of_triangle;
       clipper.Execute(ClipperLib::ctIntersection, pieces_of_triangle, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+      // Where a tile's side crossed the region's edge inside this triangle the result keeps a point on
+      // a straight stretch; no other triangle has it, so it would leave a crack: dropped.
+      ClipperLib::CleanPolygons(pieces_of_triangle, 2.0);
       if (pieces_of_triangle.empty()) continue;
       ++surface.clipped_triangles;
       // Barycentric coordinates in the triangle's flattening lift a point to 3D.

@@ -22,7 +22,7 @@
 #include "engine/style/piece_surface.hpp"
 #include "engine/style/style_transfer.hpp"
 #include "engine/style/upper_regions.hpp"
-#include "tests/support/style_line_geometry.hpp"
+#include "tests/support/derby_style.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
@@ -33,24 +33,6 @@ ScanResult segmented(const TriMesh& mesh, const std::filesystem::path& file) {
   ScanOptions options;
   options.side = FootSide::Right;
   return scan_to_molds(file, options);
-}
-
-// The reference vertex that maximises `score` among those `near` accepts.
-template <typename Near, typename Score>
-Eigen::Vector3d vertex_where(const TriMesh& mesh, Near near, Score score) {
-  Eigen::Vector3d best = Eigen::Vector3d::Constant(NAN);
-  double best_score = -INFINITY;
-  for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) {
-    const Eigen::Vector3d p = mesh.V.row(v).transpose();
-    if (near(p) && score(p) > best_score) best_score = score(p), best = p;
-  }
-  return best;
-}
-
-double seam_share(const TransferredCurve& curve, EdgeKind seam) {
-  for (const TransferredPoint& point : curve.points)
-    if (point.on_outline && point.edge == seam) return point.share;
-  return NAN;
 }
 
 // One derby on one pair of lasts for every test: the scans take most of the time.
@@ -79,24 +61,11 @@ class UpperPieces : public ::testing::Test {
     params.seed = 3;
     d.target = segmented(generate_last(params).mesh, dir / "posed.stl");
     d.transfer = std::make_unique<StyleTransfer>(d.reference, d.target);
-    d.vamp = d.transfer->transfer_curve(test::plane_section_through(d.reference_mesh, {1, 0, 0.35}, {170, 0, 40}));
-    d.counter = d.transfer->transfer_curve(test::plane_section_through(d.reference_mesh, {0.45, 0, 1}, {0, 0, 60}));
-    // The lacing opening above the vamp line, the quarters' back seam above the counter.
-    d.cuts = {{EdgeKind::FrontSeam, seam_share(d.vamp, EdgeKind::FrontSeam), 1.0},
-              {EdgeKind::BackSeam, seam_share(d.counter, EdgeKind::BackSeam), 1.0}};
-    const auto label = [&](const std::string& name, const Eigen::Vector3d& at) {
-      return PieceLabel{name, d.transfer->transfer_point(at).value_or(TransferredPoint{})};
-    };
-    const TriMesh& m = d.reference_mesh;
-    d.labels = {
-        label("vamp", vertex_where(m, [](const Eigen::Vector3d& p) { return std::abs(p.x() - 240) < 2 && std::abs(p.y()) < 5; },
-                                   [](const Eigen::Vector3d& p) { return p.z(); })),
-        label("counter", vertex_where(m, [](const Eigen::Vector3d& p) { return std::abs(p.z() - 40) < 2 && std::abs(p.y()) < 5; },
-                                      [](const Eigen::Vector3d& p) { return -p.x(); })),
-        label("medial quarter", vertex_where(m, [](const Eigen::Vector3d& p) { return std::abs(p.x() - 110) < 2 && std::abs(p.z() - 50) < 3; },
-                                             [](const Eigen::Vector3d& p) { return p.y(); })),
-        label("lateral quarter", vertex_where(m, [](const Eigen::Vector3d& p) { return std::abs(p.x() - 110) < 2 && std::abs(p.z() - 50) < 3; },
-                                              [](const Eigen::Vector3d& p) { return -p.y(); }))};
+    const test::TransferredDerby derby = test::transfer_derby(d.reference_mesh, *d.transfer);
+    d.vamp = derby.lines[0];
+    d.counter = derby.lines[1];
+    d.cuts = derby.cuts;
+    d.labels = derby.labels;
     d.halves = {&d.target.segments[0], &d.target.segments[1]};
   }
   static void TearDownTestSuite() { delete derby_; }
@@ -139,22 +108,6 @@ TEST_F(UpperPieces, DerbyPiecesTileTheUpperAndFlattenEachAsADisk) {
   EXPECT_NEAR(pieces_mm2, upper_mm2, 1e-3 * upper_mm2);  // tiles the upper: nothing missing, nothing twice
 }
 
-// The derby's allowances by shoemaking's defaults: lasting 18 mm on the feather line, folding 5 mm on the
-// top edge, the vamp under the quarters (underlay 8 mm on the vamp line) and the quarters under the
-// counter (8 mm on the counter line), the other side of a line and the cut seams butted (0).
-double derby_allowance(const std::string& piece, const PieceEdgeSource& source) {
-  switch (source.kind) {
-    case PieceEdgeSource::Kind::Feather: return 18;
-    case PieceEdgeSource::Kind::Top: return 5;
-    case PieceEdgeSource::Kind::FrontSeam:
-    case PieceEdgeSource::Kind::BackSeam: return 0;
-    case PieceEdgeSource::Kind::Line:
-      if (source.line == 0) return piece == "vamp" ? 8 : 0;      // the vamp line
-      return piece.find("quarter") != std::string::npos ? 8 : 0;  // the counter line
-  }
-  return 0;
-}
-
 // Measured on the cut outline, independently of how it was grown: the points of the middle third of a
 // stretch of the net lie their edge's allowance inside the cut outline.
 TEST_F(UpperPieces, EachEdgeCarriesItsAllowance) {
@@ -165,7 +118,7 @@ TEST_F(UpperPieces, EachEdgeCarriesItsAllowance) {
   for (const PieceRegion& region : regions) {
     const PieceSurface piece = cut_piece_surface(d.halves, region);
     const PieceMold mold =
-        make_piece_mold(piece, curves, [&](const PieceEdgeSource& source) { return derby_allowance(piece.name, source); });
+        make_piece_mold(piece, curves, [&](const PieceEdgeSource& source) { return test::derby_allowance(piece.name, source); });
     EXPECT_GE(mold.edges.size(), 2u) << piece.name;
     for (const PieceMoldEdge& edge : mold.edges) {
       double length_mm = 0;
