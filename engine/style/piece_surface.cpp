@@ -135,20 +135,25 @@ std::vector<std::array<int, 3>> ear_clip(const std::vector<Point2>& polygon) {
   return triangles;
 }
 
-// Vertices of the piece, welded within kWeld_mm by a grid of kWeld_mm cells.
+// Vertices of the piece, welded: within one half's part only the same point computed twice (from the
+// two triangles of an edge) is one vertex, across parts the seam's points within kSeamWeld_mm are. A
+// wider weld inside a part would pinch a piece's narrow tip into a non-manifold vertex.
 class WeldedVertices {
  public:
-  int add(const Eigen::Vector3d& p) {
+  int add(const Eigen::Vector3d& p, int part) {
     const std::array<long long, 3> c = cell(p);
     for (long long dx = -1; dx <= 1; ++dx)
       for (long long dy = -1; dy <= 1; ++dy)
         for (long long dz = -1; dz <= 1; ++dz) {
           const auto found = cells_.find(key({c[0] + dx, c[1] + dy, c[2] + dz}));
           if (found == cells_.end()) continue;
-          for (const int v : found->second)
-            if ((points_[static_cast<std::size_t>(v)] - p).norm() <= kWeld_mm) return v;
+          for (const int v : found->second) {
+            const double reach = part_[static_cast<std::size_t>(v)] == part ? kSameWeld_mm : kSeamWeld_mm;
+            if ((points_[static_cast<std::size_t>(v)] - p).norm() <= reach) return v;
+          }
         }
     points_.push_back(p);
+    part_.push_back(part);
     cells_[key(c)].push_back(static_cast<int>(points_.size()) - 1);
     return static_cast<int>(points_.size()) - 1;
   }
@@ -156,14 +161,15 @@ class WeldedVertices {
 
  private:
   static std::array<long long, 3> cell(const Eigen::Vector3d& p) {
-    return {std::llround(std::floor(p.x() / kWeld_mm)), std::llround(std::floor(p.y() / kWeld_mm)),
-            std::llround(std::floor(p.z() / kWeld_mm))};
+    return {std::llround(std::floor(p.x() / kSeamWeld_mm)), std::llround(std::floor(p.y() / kSeamWeld_mm)),
+            std::llround(std::floor(p.z() / kSeamWeld_mm))};
   }
   static std::uint64_t key(const std::array<long long, 3>& c) {
     return (static_cast<std::uint64_t>(c[0] & 0x1fffff) << 42) | (static_cast<std::uint64_t>(c[1] & 0x1fffff) << 21) |
            static_cast<std::uint64_t>(c[2] & 0x1fffff);
   }
   std::vector<Eigen::Vector3d> points_;
+  std::vector<int> part_;
   std::unordered_map<std::uint64_t, std::vector<int>> cells_;
 };
 
@@ -174,7 +180,9 @@ PieceSurface cut_piece_surface(const std::array<const SegmentResult*, 2>& halves
   surface.name = piece.name;
   WeldedVertices vertices;
   std::vector<std::array<int, 3>> faces;
-  for (const HalfRegion& part : piece.parts) {
+  for (std::size_t part_index_size = 0; part_index_size < piece.parts.size(); ++part_index_size) {
+    const HalfRegion& part = piece.parts[part_index_size];
+    const int part_index = static_cast<int>(part_index_size);
     const SegmentResult& half = *halves[static_cast<std::size_t>(part.half)];
     const EdgeGrid grid(part.rings);
     RegionTiles tiles(part.rings);
@@ -227,7 +235,7 @@ PieceSurface cut_piece_surface(const std::array<const SegmentResult*, 2>& halves
         xyz[static_cast<std::size_t>(k)] = half.mesh3d.V.row(half.mesh3d.F(f, k)).transpose();
       }
       if (state[static_cast<std::size_t>(f)] == kFree) {
-        if (keep[static_cast<std::size_t>(f)]) faces.push_back({vertices.add(xyz[0]), vertices.add(xyz[1]), vertices.add(xyz[2])});
+        if (keep[static_cast<std::size_t>(f)]) faces.push_back({vertices.add(xyz[0], part_index), vertices.add(xyz[1], part_index), vertices.add(xyz[2], part_index)});
         continue;
       }
       const ClipperLib::Path triangle = to_clipper_path({uv[0], uv[1], uv[2]});
@@ -253,7 +261,7 @@ PieceSurface cut_piece_surface(const std::array<const SegmentResult*, 2>& halves
         std::vector<int> ids;
         for (const Point2& p : polygon) {
           const double w0 = cross(p, uv[1], uv[2]) / area2, w1 = cross(uv[0], p, uv[2]) / area2;
-          ids.push_back(vertices.add(w0 * xyz[0] + w1 * xyz[1] + (1 - w0 - w1) * xyz[2]));
+          ids.push_back(vertices.add(w0 * xyz[0] + w1 * xyz[1] + (1 - w0 - w1) * xyz[2], part_index));
         }
         for (const auto& t : ear_clip(polygon)) {
           std::array<int, 3> face{ids[static_cast<std::size_t>(t[0])], ids[static_cast<std::size_t>(t[1])], ids[static_cast<std::size_t>(t[2])]};

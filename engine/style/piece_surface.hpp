@@ -8,8 +8,10 @@
 // passes through the triangle's box (a grid of the region's edges tells which); the others lie wholly
 // inside or outside and are kept or dropped by their centroid. Clipped polygons are triangulated by ear
 // clipping (H. Meisters, "Polygons have ears", Amer. Math. Monthly 82, 1975: every simple polygon with
-// more than three corners has two ears to cut off). Vertices are welded within kWeld_mm: the same cut
-// point computed from the two triangles of an edge, and a piece's seam vertices on both halves.
+// more than three corners has two ears to cut off). Vertices are welded: the same cut point computed
+// from the two triangles of an edge (within kSameWeld_mm), and a piece's seam vertices on both halves
+// (within kSeamWeld_mm: where a line crosses the seam, its strip meets the seam a few micrometres apart
+// in the two flattenings).
 #include <array>
 #include <string>
 
@@ -18,7 +20,8 @@
 
 namespace lastcut {
 
-inline constexpr double kWeld_mm = 0.05;
+inline constexpr double kSameWeld_mm = 1e-4;
+inline constexpr double kSeamWeld_mm = 0.05;
 
 struct PieceSurface {
   std::string name;

@@ -1,0 +1,52 @@
+#pragma once
+// A style as the pattern maker defines it once, on a reference last (issue 34, point 1): the style
+// lines drawn on the last, which stretches of the centre seams are cut, a label point inside each
+// piece, and the allowance rules. Plain data; read from a style folder by daemon/config/style_folder.hpp.
+//
+// Allowances by edge (shoemaking's defaults, all configurable): the feather line carries the lasting
+// margin (18 mm, folded under the insole), the top edge is folded (5 mm), a style line gives the piece
+// that lies under its neighbour the underlay (8 mm) and the other one a butted or raw edge (0), a cut
+// seam is butted (0).
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "engine/mold/edge_allowance.hpp"
+#include "engine/style/style_lines_obj.hpp"
+
+namespace lastcut {
+
+struct StyleAllowances {
+  double lasting_mm = 18;
+  double folding_mm = 5;
+  double underlay_mm = 8;
+  double butted_mm = 0;
+};
+
+struct StyleLineRule {
+  std::string line;   // a line's name in the style's lines
+  std::string under;  // the piece lying under its neighbour along the line (gets the underlay); empty: none
+};
+
+struct StyleSeamCut {
+  EdgeKind seam = EdgeKind::BackSeam;  // FrontSeam or BackSeam
+  std::string from_line;               // cut from where this line crosses the seam up to the top edge; empty: all of it
+};
+
+struct StylePiece {
+  std::string name;
+  Eigen::Vector3d label_mm = Eigen::Vector3d::Zero();  // a point inside the piece on the reference last (its scan's frame)
+  std::string material = "upper leather";
+  int quantity = 1;  // per shoe
+};
+
+struct StyleDefinition {
+  std::string name;
+  std::vector<StyleLine> lines;  // on the reference last, in its scan's frame (mm)
+  std::vector<StyleLineRule> line_rules;
+  std::vector<StyleSeamCut> seam_cuts;
+  std::vector<StylePiece> pieces;
+  StyleAllowances allowances;
+};
+
+}  // namespace lastcut

@@ -1,0 +1,38 @@
+#pragma once
+// A style's pieces on a scanned last, start to end (issue 34, points 2 and 3): the style's lines and
+// labels are transferred from the reference last (style_transfer.hpp), the new last's upper is split
+// into the pieces (upper_regions.hpp), each piece's surface is cut out (piece_surface.hpp), flattened
+// and grown by its allowances (piece_mold.hpp).
+#include <string>
+#include <vector>
+
+#include "engine/scan/scan_to_molds.hpp"
+#include "engine/style/piece_mold.hpp"
+#include "engine/style/style_definition.hpp"
+
+namespace lastcut {
+
+struct StylePieceResult {
+  StylePiece spec;
+  PieceSurface surface;  // 3D, the new last's canonical frame
+  PieceMold mold;
+};
+
+struct StyleResult {
+  std::vector<StylePieceResult> pieces;  // in the style's order
+  double upper_area_mm2 = 0;             // the new last's two halves
+  double pieces_area_mm2 = 0;            // the pieces' 3D surfaces, together
+  std::vector<std::string> notes;        // one line each: points of lines off the upper, ...
+};
+
+// reference, target: scan_to_molds of the reference last and of the new one, both segmented with
+// named halves. Throws EngineError (one line) when the style does not fit: a line rule or seam cut
+// naming no line, a seam cut's line that does not cross its seam, a label off the upper, a region
+// without a label or with two, a piece that is not one patch.
+StyleResult make_style_pieces(const StyleDefinition& style, const ScanResult& reference, const ScanResult& target,
+                              const FlattenOptions& flatten_options = {});
+
+// The allowance of an edge of a piece by the style's rules (see style_definition.hpp).
+double style_allowance(const StyleDefinition& style, const std::string& piece, const PieceEdgeSource& source);
+
+}  // namespace lastcut
