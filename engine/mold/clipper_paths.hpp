@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "engine/core/engine_error.hpp"
 #include "engine/core/polygon.hpp"
 
 namespace lastcut {
@@ -38,6 +39,20 @@ inline const ClipperLib::Path* largest_ring(const ClipperLib::Paths& paths) {
     if (area > outer_area) outer_area = area, outer = &candidate;
   }
   return outer;
+}
+
+// The outer ring of a grown outline as a counter-clockwise polygon (mm), with the vertices within half
+// of tolerance_mm of their neighbours' line dropped: where two grown shapes meet, Clipper's chord error
+// leaves steps of micrometres that would turn the knife by up to 90 degrees. Throws EngineError when
+// there is no ring.
+inline Polygon2 outer_cut_outline(const ClipperLib::Paths& grown, double tolerance_mm) {
+  const ClipperLib::Path* outer = largest_ring(grown);
+  if (outer == nullptr) throw EngineError("allowance offset produced no outline");
+  ClipperLib::Path ring = *outer;
+  ClipperLib::CleanPolygon(ring, 0.5 * tolerance_mm * kClipperUnitsPerMm);
+  Polygon2 outline = from_clipper_path(ring);
+  make_counter_clockwise(outline);
+  return outline;
 }
 
 }  // namespace lastcut

@@ -161,16 +161,7 @@ Polygon2 grow_by_allowances(const Polygon2& net, const std::vector<AllowanceEdge
   }
 
   // Growing a simple polygon gives one outer ring (and possibly holes where narrow bays close).
-  const ClipperLib::Path* outer = largest_ring(grown);
-  if (outer == nullptr) throw EngineError("allowance offset produced no outline");
-  // Where the closing meets the unclosed shape at the zone's rim the two differ by Clipper's chord
-  // error, leaving steps of micrometres that would turn the knife by up to 90 degrees; vertices
-  // that far off their neighbours' line are dropped (within the tolerance of the result).
-  ClipperLib::Path ring = *outer;
-  ClipperLib::CleanPolygon(ring, 0.5 * tolerance_mm * kClipperUnitsPerMm);
-  Polygon2 outline = from_clipper_path(ring);
-  make_counter_clockwise(outline);
-  return outline;
+  return outer_cut_outline(grown, tolerance_mm);
 }
 
 }  // namespace lastcut

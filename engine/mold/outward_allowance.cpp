@@ -70,13 +70,7 @@ Polygon2 grow_outward_by_allowances(const Polygon2& net, const std::vector<Allow
   clipper.AddPaths(shapes, ClipperLib::ptSubject, true);
   ClipperLib::Paths grown;
   clipper.Execute(ClipperLib::ctUnion, grown, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-  const ClipperLib::Path* outer = largest_ring(grown);
-  if (outer == nullptr) throw EngineError("allowance offset produced no outline");
-  ClipperLib::Path ring = *outer;
-  ClipperLib::CleanPolygon(ring, 0.5 * tolerance_mm * kClipperUnitsPerMm);
-  Polygon2 outline = from_clipper_path(ring);
-  make_counter_clockwise(outline);
-  return outline;
+  return outer_cut_outline(grown, tolerance_mm);
 }
 
 }  // namespace lastcut
