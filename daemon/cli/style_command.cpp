@@ -54,8 +54,14 @@ nlohmann::json piece_json(const StyleDefinition& style, const StylePieceResult& 
   std::vector<std::string> line_names;
   for (const StyleLine& line : style.lines) line_names.push_back(line.name);
   nlohmann::json edges = nlohmann::json::array();
-  for (const PieceMoldEdge& edge : piece.mold.edges)
-    edges.push_back({{"on", to_string(edge.source, line_names)}, {"allowance_mm", edge.allowance_mm}});
+  for (const PieceMoldEdge& edge : piece.mold.edges) {
+    double length_mm = 0;
+    for (std::size_t i = 1; i < edge.net_points.size(); ++i) length_mm += (edge.net_points[i] - edge.net_points[i - 1]).norm();
+    edges.push_back({{"on", to_string(edge.source, line_names)},
+                     {"allowance_mm", edge.allowance_mm},
+                     {"length_mm", length_mm},
+                     {"length_3d_mm", edge.length_3d_mm}});
+  }
   const DistortionMeasures& m = piece.mold.measures;
   return {{"name", piece.spec.name},
           {"material", piece.spec.material},

@@ -118,6 +118,16 @@ PieceMold make_piece_mold(const PieceSurface& piece, const PieceEdgeCurves& curv
     const std::size_t i = (start + k) % n;
     if (k == 0 || !(source[i] == source[(i + n - 1) % n])) stretch_starts.push_back(static_cast<int>(i));
   }
+  // Each stretch's length on the last, from its start to the next stretch's.
+  std::vector<double> length_3d(stretch_starts.size(), 0.0);
+  for (std::size_t s = 0; s < stretch_starts.size(); ++s) {
+    const std::size_t from = static_cast<std::size_t>(stretch_starts[s]);
+    const std::size_t to = static_cast<std::size_t>(stretch_starts[(s + 1) % stretch_starts.size()]);
+    for (std::size_t i = from; i != to || (stretch_starts.size() == 1 && i == from && length_3d[s] == 0); i = (i + 1) % n) {
+      length_3d[s] += (piece.mesh.V.row(loop[(i + 1) % n]) - piece.mesh.V.row(loop[i])).norm();
+      if ((i + 1) % n == to) break;
+    }
+  }
   const std::vector<int> kept = simplify_outline(net, kPieceSimplifyTolerance_mm, stretch_starts);
   const Polygon2 simple = select_points(net, kept);
   // Kept indices are increasing; walk them from the first stretch start round the loop.
@@ -130,7 +140,9 @@ PieceMold make_piece_mold(const PieceSurface& piece, const PieceEdgeCurves& curv
     if (!result.edges.empty()) result.edges.back().net_points.push_back(simple.points[at]);
     if (starts && k < kept.size()) {
       const PieceEdgeSource& what = source[static_cast<std::size_t>(vertex)];
-      result.edges.push_back({what, allowance_of(what), {simple.points[at]}});
+      const std::size_t stretch = static_cast<std::size_t>(
+          std::find(stretch_starts.begin(), stretch_starts.end(), vertex) - stretch_starts.begin());
+      result.edges.push_back({what, allowance_of(what), {simple.points[at]}, length_3d[stretch]});
     }
   }
   for (const PieceMoldEdge& edge : result.edges) grown.push_back({edge.net_points, edge.allowance_mm});

@@ -43,6 +43,7 @@ struct PieceMoldEdge {
   PieceEdgeSource source;
   double allowance_mm = 0;
   std::vector<Point2> net_points;  // the stretch of the net outline, mm
+  double length_3d_mm = 0;         // the same stretch on the last (its 2D length differs by the flattening's stretch)
 };
 
 struct PieceMold {
