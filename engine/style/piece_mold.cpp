@@ -123,10 +123,11 @@ PieceMold make_piece_mold(const PieceSurface& piece, const PieceEdgeCurves& curv
   for (std::size_t s = 0; s < stretch_starts.size(); ++s) {
     const std::size_t from = static_cast<std::size_t>(stretch_starts[s]);
     const std::size_t to = static_cast<std::size_t>(stretch_starts[(s + 1) % stretch_starts.size()]);
-    for (std::size_t i = from; i != to || (stretch_starts.size() == 1 && i == from && length_3d[s] == 0); i = (i + 1) % n) {
+    std::size_t i = from;
+    do {  // a single stretch (from == to) goes once round
       length_3d[s] += (piece.mesh.V.row(loop[(i + 1) % n]) - piece.mesh.V.row(loop[i])).norm();
-      if ((i + 1) % n == to) break;
-    }
+      i = (i + 1) % n;
+    } while (i != to);
   }
   const std::vector<int> kept = simplify_outline(net, kPieceSimplifyTolerance_mm, stretch_starts);
   const Polygon2 simple = select_points(net, kept);
