@@ -13,6 +13,7 @@ namespace {
 using ClipperLib::cInt;
 
 constexpr cInt kCell = static_cast<cInt>(2.0 * kClipperUnitsPerMm);  // grid cell of the region's edges: 2 mm
+constexpr double kOnOutline_mm = 1e-4;  // a clipped point this close to a triangle's outline edge lies on it
 constexpr cInt kTile = static_cast<cInt>(16.0 * kClipperUnitsPerMm);  // the region is cut into tiles this size
 
 struct Box {
@@ -136,30 +137,54 @@ std::vector<std::array<int, 3>> ear_clip(const std::vector<Point2>& polygon) {
 }
 
 // Vertices of the piece, welded: within one half's part only the same point computed twice (from the
-// two triangles of an edge) is one vertex, across parts the seam's points within kSeamWeld_mm are. A
-// wider weld inside a part would pinch a piece's narrow tip into a non-manifold vertex.
+// two triangles of an edge) is one vertex; across parts a point on its half's outline takes the nearest
+// outline point of another part within kSeamWeld_mm that no point of its own part has taken yet (the
+// split plane's cut leaves slivers along the seam, whose inner corners lie that close to the seam too). One to one: where a part's
+// triangles are small (at the toe), two of its points near one point of the other part would otherwise
+// both be welded to it and the triangle between them would vanish, leaving a hole. A wider weld inside
+// a part would pinch a piece's narrow tip into a non-manifold vertex.
 class WeldedVertices {
  public:
-  int add(const Eigen::Vector3d& p, int part) {
+  // on_outline: p lies on its half's outline, the only place two halves' points can be one.
+  int add(const Eigen::Vector3d& p, int part, bool on_outline) {
+    const std::uint64_t own = part_bit(part);
     const std::array<long long, 3> c = cell(p);
+    int other = -1;
+    double other_mm = kSeamWeld_mm;
     for (long long dx = -1; dx <= 1; ++dx)
       for (long long dy = -1; dy <= 1; ++dy)
         for (long long dz = -1; dz <= 1; ++dz) {
           const auto found = cells_.find(key({c[0] + dx, c[1] + dy, c[2] + dz}));
           if (found == cells_.end()) continue;
-          for (const int v : found->second) {
-            const double reach = part_[static_cast<std::size_t>(v)] == part ? kSameWeld_mm : kSeamWeld_mm;
-            if ((points_[static_cast<std::size_t>(v)] - p).norm() <= reach) return v;
+          for (const int a : found->second) {
+            const Alias& alias = aliases_[static_cast<std::size_t>(a)];
+            const double distance = (alias.point - p).norm();
+            if (alias.part == part && distance <= kSameWeld_mm) return alias.vertex;
+            if (on_outline && alias.on_outline && alias.part != part && distance <= other_mm &&
+                !(parts_of_[static_cast<std::size_t>(alias.vertex)] & own))
+              other_mm = distance, other = alias.vertex;
           }
         }
-    points_.push_back(p);
-    part_.push_back(part);
-    cells_[key(c)].push_back(static_cast<int>(points_.size()) - 1);
-    return static_cast<int>(points_.size()) - 1;
+    if (other < 0) {
+      other = static_cast<int>(points_.size());
+      points_.push_back(p);
+      parts_of_.push_back(0);
+    }
+    parts_of_[static_cast<std::size_t>(other)] |= own;
+    aliases_.push_back({p, part, other, on_outline});
+    cells_[key(c)].push_back(static_cast<int>(aliases_.size()) - 1);
+    return other;
   }
   const std::vector<Eigen::Vector3d>& points() const { return points_; }
 
  private:
+  struct Alias {
+    Eigen::Vector3d point;  // as this part computed it
+    int part;
+    int vertex;  // the welded vertex it stands for
+    bool on_outline;
+  };
+  static std::uint64_t part_bit(int part) { return std::uint64_t{1} << (part % 64); }
   static std::array<long long, 3> cell(const Eigen::Vector3d& p) {
     return {std::llround(std::floor(p.x() / kSeamWeld_mm)), std::llround(std::floor(p.y() / kSeamWeld_mm)),
             std::llround(std::floor(p.z() / kSeamWeld_mm))};
@@ -169,7 +194,8 @@ class WeldedVertices {
            static_cast<std::uint64_t>(c[2] & 0x1fffff);
   }
   std::vector<Eigen::Vector3d> points_;
-  std::vector<int> part_;
+  std::vector<std::uint64_t> parts_of_;  // per vertex: the parts whose points are welded to it
+  std::vector<Alias> aliases_;
   std::unordered_map<std::uint64_t, std::vector<int>> cells_;
 };
 
@@ -186,6 +212,9 @@ PieceSurface cut_piece_surface(const std::array<const SegmentResult*, 2>& halves
     const SegmentResult& half = *halves[static_cast<std::size_t>(part.half)];
     const EdgeGrid grid(part.rings);
     RegionTiles tiles(part.rings);
+    std::vector<char> on_half_outline(static_cast<std::size_t>(half.mesh3d.V.rows()), 0);
+    for (const std::vector<int>& loop : half.topology.boundary_loops)
+      for (const int v : loop) on_half_outline[static_cast<std::size_t>(v)] = 1;
     const ClipperLib::IntRect bounds = [&] {
       ClipperLib::Clipper bounds_of;
       bounds_of.AddPath(part.rings.front(), ClipperLib::ptSubject, true);
@@ -235,7 +264,13 @@ PieceSurface cut_piece_surface(const std::array<const SegmentResult*, 2>& halves
         xyz[static_cast<std::size_t>(k)] = half.mesh3d.V.row(half.mesh3d.F(f, k)).transpose();
       }
       if (state[static_cast<std::size_t>(f)] == kFree) {
-        if (keep[static_cast<std::size_t>(f)]) faces.push_back({vertices.add(xyz[0], part_index), vertices.add(xyz[1], part_index), vertices.add(xyz[2], part_index)});
+        if (keep[static_cast<std::size_t>(f)]) {
+          std::array<int, 3> face;
+          for (int k = 0; k < 3; ++k)
+            face[static_cast<std::size_t>(k)] = vertices.add(xyz[static_cast<std::size_t>(k)], part_index,
+                                                             on_half_outline[static_cast<std::size_t>(half.mesh3d.F(f, k))]);
+          faces.push_back(face);
+        }
         continue;
       }
       const ClipperLib::Path triangle = to_clipper_path({uv[0], uv[1], uv[2]});
@@ -261,7 +296,14 @@ PieceSurface cut_piece_surface(const std::array<const SegmentResult*, 2>& halves
         std::vector<int> ids;
         for (const Point2& p : polygon) {
           const double w0 = cross(p, uv[1], uv[2]) / area2, w1 = cross(uv[0], p, uv[2]) / area2;
-          ids.push_back(vertices.add(w0 * xyz[0] + w1 * xyz[1] + (1 - w0 - w1) * xyz[2], part_index));
+          bool on_outline = false;  // on an outline edge of the triangle, or at a corner on the outline
+          for (int k = 0; k < 3; ++k) {
+            const Point2& a = uv[static_cast<std::size_t>(k)];
+            on_outline = on_outline ||
+                         (half.topology.face_across(f, k) < 0 && distance_to_segment(p, a, uv[static_cast<std::size_t>((k + 1) % 3)]) < kOnOutline_mm) ||
+                         (on_half_outline[static_cast<std::size_t>(half.mesh3d.F(f, k))] && (p - a).norm() < kOnOutline_mm);
+          }
+          ids.push_back(vertices.add(w0 * xyz[0] + w1 * xyz[1] + (1 - w0 - w1) * xyz[2], part_index, on_outline));
         }
         for (const auto& t : ear_clip(polygon)) {
           std::array<int, 3> face{ids[static_cast<std::size_t>(t[0])], ids[static_cast<std::size_t>(t[1])], ids[static_cast<std::size_t>(t[2])]};

@@ -25,6 +25,7 @@ ClipperLib::IntPoint to_int(const Point2& p) { return to_clipper_path({p}).front
 std::array<std::vector<Run>, 2> runs_per_half(const std::vector<TransferredCurve>& lines) {
   std::array<std::vector<Run>, 2> runs;
   for (const TransferredCurve& line : lines) {
+    std::vector<std::pair<int, Run>> line_runs;  // (half, run) in the line's order
     std::size_t begin = 0;
     while (begin < line.points.size()) {
       std::size_t end = begin + 1;
@@ -34,10 +35,23 @@ std::array<std::vector<Run>, 2> runs_per_half(const std::vector<TransferredCurve
       if (run.size() >= 2) {
         if (line.points[begin].on_outline) run.front() += kLineOvershoot_mm * (run[0] - run[1]).normalized();
         if (line.points[end - 1].on_outline) run.back() += kLineOvershoot_mm * (run[run.size() - 1] - run[run.size() - 2]).normalized();
-        runs[static_cast<std::size_t>(half_index(line.points[begin].half))].push_back(std::move(run));
       }
+      line_runs.emplace_back(half_index(line.points[begin].half), std::move(run));
       begin = end;
     }
+    // A closed line starts and ends at one point in the middle of a half: its last and first runs are
+    // one stretch, joined here so their strips do not meet end to end (where they could leave a point
+    // through which the regions on the two sides touch).
+    const bool closed = line.points.size() > 2 && line_runs.size() > 1 &&
+                        (line.points.front().position_mm - line.points.back().position_mm).norm() < 1e-9 &&
+                        line_runs.front().first == line_runs.back().first;
+    if (closed) {
+      Run& last = line_runs.back().second;
+      last.insert(last.end(), line_runs.front().second.begin() + 1, line_runs.front().second.end());
+      line_runs.erase(line_runs.begin());
+    }
+    for (auto& [half, run] : line_runs)
+      if (run.size() >= 2) runs[static_cast<std::size_t>(half)].push_back(std::move(run));
   }
   return runs;
 }
@@ -52,8 +66,8 @@ ClipperLib::Path outline_path(const SegmentResult& half) {
 
 // The half's outline minus the strips of its runs, as regions (outer ring and holes each).
 std::vector<HalfRegion> split_half(int half, const ClipperLib::Path& outline, const std::vector<Run>& runs) {
-  ClipperLib::ClipperOffset offset;
-  for (const Run& run : runs) offset.AddPath(to_clipper_path(run), ClipperLib::jtMiter, ClipperLib::etOpenButt);
+  ClipperLib::ClipperOffset offset(2.0, kStripHalfWidth_mm * kClipperUnitsPerMm / 4);  // round ends and joins of a few points
+  for (const Run& run : runs) offset.AddPath(to_clipper_path(run), ClipperLib::jtRound, ClipperLib::etOpenRound);
   ClipperLib::Paths strips;
   offset.Execute(strips, kStripHalfWidth_mm * kClipperUnitsPerMm);
   ClipperLib::Clipper clipper;

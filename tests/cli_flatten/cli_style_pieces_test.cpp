@@ -9,6 +9,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "engine/lastgen/generate_last.hpp"
 #include "engine/mesh/write_mesh.hpp"
@@ -50,6 +52,25 @@ TEST(CliStylePieces, ShippedDerbyOnAnotherLast) {
     bool lasting = false;
     for (const auto& edge : piece["edges"]) lasting = lasting || (edge["on"] == "feather line" && edge["allowance_mm"] == 18.0);
     EXPECT_TRUE(lasting) << name;
+  }
+}
+
+// Lasts where earlier versions failed, both feet (the derby is drawn on a right last): EU 38 right, where
+// the closed counter line's two ends met end to end and let the counter and a quarter touch; EU 36 and
+// 47 at the ends of the size range; 20k triangles, posed.
+TEST(CliStylePieces, DerbyOnSizesAndBothFeet) {
+  const test::TempDir dir("cli-style-sizes");
+  for (const auto& [size, side] : std::vector<std::pair<int, FootSide>>{{38, FootSide::Right}, {36, FootSide::Left}, {47, FootSide::Left}}) {
+    LastParams params = LastParams::for_eu_size(size, side);
+    params.target_triangles = 20000;
+    params.random_pose = true;
+    params.seed = static_cast<std::uint64_t>(size);
+    write_mesh(dir / "last.stl", generate_last(params).mesh);
+    const test::CommandRun run = test::run_lastcut("style pieces '" + kDerby.string() + "' '" + (dir / "last.stl").string() + "' -o '" +
+                                                       (dir / "out").string() + "' --side " + (side == FootSide::Left ? "left" : "right"),
+                                                   dir);
+    EXPECT_EQ(run.exit_code, 0) << size << ": " << run.all();
+    EXPECT_NE(run.out.find("4 pieces of style derby"), std::string::npos) << size << ": " << run.out;
   }
 }
 
