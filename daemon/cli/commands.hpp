@@ -15,6 +15,6 @@ void add_generate_command(CLI::App& app, int& exit_code);  // generate_command.c
 void add_subdivide_command(CLI::App& app, int& exit_code); // subdivide_command.cpp: quad mesh -> Bezier surface
 void add_hide_command(CLI::App& app, int& exit_code);     // hide_command.cpp: `hide load` (a stock hide onto a cutter)
 void add_compare_command(CLI::App& app, int& exit_code);   // compare_command.cpp: mold vs reference pattern
-void add_style_command(CLI::App& app, int& exit_code);     // style_command.cpp: `style pieces` (a style's pieces on a last)
+void add_style_command(CLI::App& app, int& exit_code);     // style_command.cpp: `style pieces` (a style's pieces on a last), `style transfer` (lines onto a last)
 
 }  // namespace lastcut::cli

@@ -1,5 +1,6 @@
 #include "engine/style/style_lines_obj.hpp"
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -46,7 +47,9 @@ std::vector<StyleLine> read_style_lines_obj(const std::filesystem::path& path) {
       if (!(words >> x >> y >> z)) throw EngineError(at(path, line_number) + "a vertex needs three coordinates");
       vertices.emplace_back(number(x, path, line_number), number(y, path, line_number), number(z, path, line_number));
     } else if (record == "o" || record == "g") {
+      current_name.clear();  // a bare `o` names nothing: the lines after it are numbered
       std::getline(words >> std::ws, current_name);
+      while (!current_name.empty() && std::isspace(static_cast<unsigned char>(current_name.back()))) current_name.pop_back();
     } else if (record == "f") {
       throw EngineError(at(path, line_number) + "a face: style lines are polylines (l records), not a surface");
     } else if (record == "l") {

@@ -51,6 +51,13 @@ TEST_F(StyleLinesObj, RelativeIndicesGroupsAndUnnamedLines) {
   EXPECT_DOUBLE_EQ(lines[1].points_mm[1].x(), 3);
 }
 
+TEST_F(StyleLinesObj, NamesLoseTrailingBlanksAndABareObjectEndsTheName) {
+  const std::vector<StyleLine> lines = read_style_lines_obj(write("v 0 0 0\nv 1 0 0\no vamp \t\nl 1 2\no\nl 2 1\n"));
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0].name, "vamp");
+  EXPECT_EQ(lines[1].name, "line 2");
+}
+
 TEST_F(StyleLinesObj, BadFilesAreRefusedInOneLine) {
   EXPECT_EQ(refusal("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "lines.obj line 4: a face: style lines are polylines (l records), not a surface");
   EXPECT_EQ(refusal("v 0 0 x\n"), "lines.obj line 1: 'x' is not a number");
