@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -45,10 +46,17 @@ void print_style_error(std::string reason) {
   std::fprintf(stderr, "lastcut: error: %s\n", reason.c_str());
 }
 
-ScanResult segmented(const fs::path& scan, FootSide side) {
+ScanResult segmented(const fs::path& scan, std::optional<FootSide> side) {
   ScanOptions options;
   options.side = side;
   return scan_to_molds(scan, options);
+}
+
+// "left" or "right" as a side; anything else (an unset option) names none.
+std::optional<FootSide> side_named(const std::string& side) {
+  if (side == "left") return FootSide::Left;
+  if (side == "right") return FootSide::Right;
+  return std::nullopt;
 }
 
 // A file name for a piece: letters, digits and '-' kept, anything else '-'.
@@ -102,7 +110,7 @@ int run_style_pieces(const StyleArguments& arguments) {
     }
     const ScanResult reference = segmented(reference_scan, folder->reference_side);
     if (folder->generated_reference) fs::remove(reference_scan);
-    const ScanResult target = segmented(arguments.scan, arguments.side == "left" ? FootSide::Left : FootSide::Right);
+    const ScanResult target = segmented(arguments.scan, side_named(arguments.side));
     const StyleResult result = make_style_pieces(folder->style, reference, target);
     nlohmann::json report = {{"style", folder->style.name},
                              {"scan", arguments.scan},
@@ -129,9 +137,7 @@ int run_style_pieces(const StyleArguments& arguments) {
     std::printf("%zu pieces of style %s in %s (upper %.0f mm2, pieces %.0f mm2)\n", result.pieces.size(),
                 folder->style.name.c_str(), arguments.out_dir.c_str(), result.upper_area_mm2, result.pieces_area_mm2);
     return 0;
-  } catch (const EngineError& error) {
-    print_style_error(error.what());
-  } catch (const std::exception& error) {
+  } catch (const std::exception& error) {  // EngineError among them: one line either way
     print_style_error(error.what());
   }
   return 1;
@@ -147,11 +153,6 @@ std::string side_problem(const std::string& option, const std::string& value) {
   return value.empty() || value == "left" || value == "right" ? "" : option + " must be left or right, not \"" + value + "\"";
 }
 
-ScanResult segmented_for(const fs::path& scan, const std::string& side) {
-  ScanOptions options;
-  if (!side.empty()) options.side = side == "left" ? FootSide::Left : FootSide::Right;
-  return scan_to_molds(scan, options);
-}
 
 bool on_upper_edge(const TransferredPoint& point) {
   return point.on_outline && (point.edge == EdgeKind::Feather || point.edge == EdgeKind::Top);
@@ -195,8 +196,8 @@ int run_style_transfer(const TransferArguments& arguments) {
   }
   try {
     const std::vector<StyleLine> lines = read_style_lines_obj(arguments.lines);  // a bad file is refused before the scans are read
-    const ScanResult reference = segmented_for(arguments.reference_scan, arguments.reference_side);
-    const ScanResult target = segmented_for(arguments.scan, arguments.side);
+    const ScanResult reference = segmented(arguments.reference_scan, side_named(arguments.reference_side));
+    const ScanResult target = segmented(arguments.scan, side_named(arguments.side));
     const StyleTransfer transfer(reference, target);
     std::set<std::string> names;
     for (const StyleLine& line : lines) names.insert(line.name);
@@ -228,9 +229,7 @@ int run_style_transfer(const TransferArguments& arguments) {
     for (const std::string& line : summary) std::printf("%s\n", line.c_str());
     std::printf("%zu lines onto %s in %s\n", lines.size(), arguments.scan.c_str(), arguments.out.c_str());
     return 0;
-  } catch (const EngineError& error) {
-    print_style_error(error.what());
-  } catch (const std::exception& error) {
+  } catch (const std::exception& error) {  // EngineError among them: one line either way
     print_style_error(error.what());
   }
   return 1;
