@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "engine/core/engine_error.hpp"
+#include "engine/mesh/short_edge_collapse.hpp"
 #include "engine/mold/clipper_paths.hpp"
 
 namespace lastcut {
@@ -324,10 +325,8 @@ PieceSurface cut_piece_surface(const std::array<const SegmentResult*, 2>& halves
   surface.mesh.F.resize(static_cast<Eigen::Index>(kept.size()), 3);
   for (std::size_t f = 0; f < kept.size(); ++f)
     for (int k = 0; k < 3; ++k) surface.mesh.F(static_cast<Eigen::Index>(f), k) = kept[f][static_cast<std::size_t>(k)];
-  for (const auto& face : kept)
-    surface.area_mm2 += 0.5 * (points[static_cast<std::size_t>(face[1])] - points[static_cast<std::size_t>(face[0])])
-                                  .cross(points[static_cast<std::size_t>(face[2])] - points[static_cast<std::size_t>(face[0])])
-                                  .norm();
+  collapse_short_edges(surface.mesh, kShortestEdge_mm);
+  surface.area_mm2 = surface_area(surface.mesh);
   return surface;
 }
 

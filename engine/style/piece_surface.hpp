@@ -11,7 +11,8 @@
 // more than three corners has two ears to cut off). Vertices are welded: the same cut point computed
 // from the two triangles of an edge (within kSameWeld_mm), and a piece's seam vertices on both halves
 // (within kSeamWeld_mm: where a line crosses the seam, its strip meets the seam a few micrometres apart
-// in the two flattenings).
+// in the two flattenings). Edges under kShortestEdge_mm, crumbs of a cut passing next to a vertex of the
+// last, are collapsed (engine/mesh/short_edge_collapse.hpp).
 #include <array>
 #include <string>
 
@@ -22,6 +23,8 @@ namespace lastcut {
 
 inline constexpr double kSameWeld_mm = 1e-4;
 inline constexpr double kSeamWeld_mm = 0.05;
+// Far below the outline's simplification tolerance (0.02 mm, piece_mold.hpp) and any knife's accuracy.
+inline constexpr double kShortestEdge_mm = 0.01;
 
 struct PieceSurface {
   std::string name;
