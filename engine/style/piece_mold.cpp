@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "engine/core/engine_error.hpp"
+#include "engine/flatten/arap_held_lengths.hpp"
 #include "engine/flatten/disk_topology.hpp"
 #include "engine/mold/outward_allowance.hpp"
 #include "engine/mold/outline_geometry.hpp"
@@ -33,6 +34,57 @@ PieceEdgeSource::Kind kind_of(EdgeKind kind) {
   return PieceEdgeSource::Kind::Feather;
 }
 
+
+// Two curves this close to a point are as near as each other: the point is a corner of both.
+constexpr double kSameDistance_mm = 0.01;
+
+// Whether p lies on a curve of `source`.
+bool lies_on(const Eigen::Vector3d& p, const PieceEdgeSource& source, const PieceEdgeCurves& curves) {
+  for (const auto& [candidate, curve] : curves.curves)
+    if (candidate == source && distance_to_curve(p, curve) <= kSameDistance_mm) return true;
+  return false;
+}
+
+// What each vertex of the outline `loop` lies on: the nearest of the curves, a line when it is as near.
+std::vector<PieceEdgeSource> outline_sources(const TriMesh& mesh, const std::vector<int>& loop, const PieceEdgeCurves& curves) {
+  std::vector<PieceEdgeSource> source(loop.size());
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const Eigen::Vector3d p = mesh.V.row(loop[i]).transpose();
+    double nearest = INFINITY, nearest_line = INFINITY;
+    PieceEdgeSource line;
+    for (const auto& [candidate, curve] : curves.curves) {
+      const double distance = distance_to_curve(p, curve);
+      if (distance < nearest) nearest = distance, source[i] = candidate;
+      if (candidate.kind == PieceEdgeSource::Kind::Line && distance < nearest_line) nearest_line = distance, line = candidate;
+    }
+    if (nearest_line <= nearest + kSameDistance_mm) source[i] = line;
+  }
+  return source;
+}
+
+// Sewn to another piece: a style line or a cut stretch of a centre seam (an uncut one is inside a piece).
+// The feather line is lasted and the top edge folded: they are sewn to nothing and stay free.
+bool is_sewn(const PieceEdgeSource& source) {
+  return source.kind == PieceEdgeSource::Kind::Line || source.kind == PieceEdgeSource::Kind::FrontSeam ||
+         source.kind == PieceEdgeSource::Kind::BackSeam;
+}
+
+// The piece's flattening with its sewn outline edges held at their 3D length (arap_held_lengths.hpp), so
+// the two pieces of every seam have the seam's length. Its steps never fold a triangle.
+void hold_sewn_lengths(const PieceSurface& piece, const MeshTopology& topology, const std::vector<int>& loop,
+                       const std::vector<PieceEdgeSource>& source, PieceMold& result) {
+  std::vector<std::array<int, 2>> held;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const std::size_t next = (i + 1) % loop.size();
+    if (is_sewn(source[i]) && is_sewn(source[next])) held.push_back({loop[i], loop[next]});
+  }
+  if (held.empty()) return;
+  const HeldLengthReport report = hold_edge_lengths(piece.mesh, topology, held, result.UV);
+  result.flatten.notes.push_back("sewn edges held at their 3D length (" + std::to_string(held.size()) + " edges, " +
+                                 std::to_string(report.iterations) + " iterations" +
+                                 (report.shortened_steps > 0 ? ", " + std::to_string(report.shortened_steps) + " steps shortened against folds" : "") +
+                                 (report.stalled_on_flips ? ", stopped where a step would fold a triangle" : "") + ")");
+}
 }  // namespace
 
 std::string to_string(const PieceEdgeSource& source, const std::vector<std::string>& line_names) {
@@ -69,43 +121,37 @@ PieceEdgeCurves piece_edge_curves(const std::array<const SegmentResult*, 2>& hal
 }
 
 PieceMold make_piece_mold(const PieceSurface& piece, const PieceEdgeCurves& curves, const AllowanceRule& allowance_of,
-                          const FlattenOptions& options) {
+                          const PieceMoldOptions& options) {
   PieceMold result;
   const MeshTopology topology = build_mesh_topology(piece.mesh.F, piece.mesh.V.rows());
   if (topology.boundary_loops.size() != 1)
     throw EngineError("piece " + piece.name + " is not one patch with one outline (" +
                       std::to_string(topology.boundary_loops.size()) + " outlines): check the style's lines around it");
   check_disk(piece.mesh, topology);
-  result.flatten = flatten(piece.mesh, topology, options);
+  // What each outline vertex lies on in 3D. A corner where a line meets an edge or crosses a seam lies on
+  // both: it goes with the line, so a seam crossing does not become a stretch of its own.
+  std::vector<int> loop = topology.boundary_loops.front();
+  std::vector<PieceEdgeSource> source = outline_sources(piece.mesh, loop, curves);
+
+  result.flatten = flatten(piece.mesh, topology, options.flatten);
   result.UV = result.flatten.UV;
+  if (options.hold_sewn_lengths) hold_sewn_lengths(piece, topology, loop, source, result);
   result.measures = measure_distortion(piece.mesh, result.UV, topology);
 
-  // The outline in the flattening, counter-clockwise, and what each of its vertices lies on in 3D.
-  std::vector<int> loop = topology.boundary_loops.front();
+  // The outline in the flattening, counter-clockwise.
   Polygon2 net;
   for (const int v : loop) net.points.push_back(result.UV.row(v).transpose());
   if (signed_area(net) < 0) {
     std::reverse(loop.begin(), loop.end());
+    std::reverse(source.begin(), source.end());
     std::reverse(net.points.begin(), net.points.end());
   }
   if (!is_simple(net)) throw EngineError("piece " + piece.name + ": the flattened outline overlaps itself");
-  // A corner where a line meets an edge or crosses a seam lies on both: it goes with the line, so a
-  // seam crossing does not become a stretch of its own.
-  constexpr double kSameDistance_mm = 0.01;
-  std::vector<PieceEdgeSource> source(loop.size());
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    const Eigen::Vector3d p = piece.mesh.V.row(loop[i]).transpose();
-    double nearest = INFINITY, nearest_line = INFINITY;
-    PieceEdgeSource line;
-    for (const auto& [candidate, curve] : curves.curves) {
-      const double distance = distance_to_curve(p, curve);
-      if (distance < nearest) nearest = distance, source[i] = candidate;
-      if (candidate.kind == PieceEdgeSource::Kind::Line && distance < nearest_line) nearest_line = distance, line = candidate;
-    }
-    if (nearest_line <= nearest + kSameDistance_mm) source[i] = line;
-  }
   // Stretches of one source, starting where the source changes (a piece cut by nothing but one
-  // closed line has a single stretch, from vertex 0).
+  // closed line has a single stretch, from vertex 0). Two stretches share their corner, which lies on
+  // both and was told to one of them: where the vertex before the change lies on the next stretch's
+  // curve too, the next stretch starts there, so the edges from the corner on count for the same stretch
+  // on every piece, whichever way the piece's outline runs.
   const std::size_t n = loop.size();
   std::size_t start = 0;
   for (std::size_t i = 0; i < n; ++i)
@@ -114,9 +160,17 @@ PieceMold make_piece_mold(const PieceSurface& piece, const PieceEdgeCurves& curv
       break;
     }
   std::vector<int> stretch_starts;
+  std::vector<PieceEdgeSource> stretch_source;
   for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t i = (start + k) % n;
-    if (k == 0 || !(source[i] == source[(i + n - 1) % n])) stretch_starts.push_back(static_cast<int>(i));
+    const std::size_t i = (start + k) % n, before = (i + n - 1) % n;
+    if (k > 0 && source[i] == source[before]) continue;
+    const int corner = static_cast<int>(lies_on(piece.mesh.V.row(loop[before]).transpose(), source[i], curves) ? before : i);
+    if (!stretch_starts.empty() && stretch_starts.back() == corner) {  // a line stretch of its corner alone
+      stretch_source.back() = source[i];
+      continue;
+    }
+    stretch_starts.push_back(corner);
+    stretch_source.push_back(source[i]);
   }
   // Each stretch's length on the last, from its start to the next stretch's.
   std::vector<double> length_3d(stretch_starts.size(), 0.0);
@@ -140,9 +194,9 @@ PieceMold make_piece_mold(const PieceSurface& piece, const PieceEdgeCurves& curv
     const bool starts = std::find(stretch_starts.begin(), stretch_starts.end(), vertex) != stretch_starts.end();
     if (!result.edges.empty()) result.edges.back().net_points.push_back(simple.points[at]);
     if (starts && k < kept.size()) {
-      const PieceEdgeSource& what = source[static_cast<std::size_t>(vertex)];
       const std::size_t stretch = static_cast<std::size_t>(
           std::find(stretch_starts.begin(), stretch_starts.end(), vertex) - stretch_starts.begin());
+      const PieceEdgeSource& what = stretch_source[stretch];
       result.edges.push_back({what, allowance_of(what), {simple.points[at]}, length_3d[stretch]});
     }
   }

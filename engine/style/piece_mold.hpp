@@ -58,8 +58,15 @@ using AllowanceRule = std::function<double(const PieceEdgeSource&)>;
 
 inline constexpr double kPieceSimplifyTolerance_mm = 0.02;
 
+struct PieceMoldOptions {
+  FlattenOptions flatten;
+  // Hold the sewn stretches (style lines, cut centre seams) at their 3D length after flattening
+  // (arap_held_lengths.hpp), so both pieces of a seam have its length; off: plain ARAP, as the halves.
+  bool hold_sewn_lengths = true;
+};
+
 // Throws EngineError (one line, naming the piece) when the piece is not a disk or its flattening overlaps.
 PieceMold make_piece_mold(const PieceSurface& piece, const PieceEdgeCurves& curves, const AllowanceRule& allowance_of,
-                          const FlattenOptions& options = {});
+                          const PieceMoldOptions& options = {});
 
 }  // namespace lastcut

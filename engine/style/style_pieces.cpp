@@ -42,7 +42,7 @@ double style_allowance(const StyleDefinition& style, const std::string& piece, c
 }
 
 StyleResult make_style_pieces(const StyleDefinition& style, const ScanResult& reference, const ScanResult& target,
-                              const FlattenOptions& flatten_options) {
+                              const PieceMoldOptions& mold_options) {
   StyleResult result;
   for (const StyleLineRule& rule : style.line_rules) {
     line_index(style, rule.line, "a line rule");
@@ -93,7 +93,7 @@ StyleResult make_style_pieces(const StyleDefinition& style, const ScanResult& re
       piece.surface = cut_piece_surface(halves, regions[p]);
       piece.mold = make_piece_mold(
           piece.surface, curves, [&](const PieceEdgeSource& source) { return style_allowance(style, piece.spec.name, source); },
-          flatten_options);
+          mold_options);
     } catch (const EngineError& error) {
       const std::string reason = error.what();
       if (reason.find("piece " + piece.spec.name) != std::string::npos) throw;

@@ -30,7 +30,7 @@ struct StyleResult {
 // naming no line, a seam cut's line that does not cross its seam, a label off the upper, a region
 // without a label or with two, a piece that is not one patch.
 StyleResult make_style_pieces(const StyleDefinition& style, const ScanResult& reference, const ScanResult& target,
-                              const FlattenOptions& flatten_options = {});
+                              const PieceMoldOptions& mold_options = {});
 
 // The allowance of an edge of a piece by the style's rules (see style_definition.hpp).
 double style_allowance(const StyleDefinition& style, const std::string& piece, const PieceEdgeSource& source);
