@@ -154,39 +154,6 @@ std::string side_problem(const std::string& option, const std::string& value) {
 }
 
 
-bool on_upper_edge(const TransferredPoint& point) {
-  return point.on_outline && (point.edge == EdgeKind::Feather || point.edge == EdgeKind::Top);
-}
-
-// Closer than this, two transferred points are one (a seam crossing comes once per half, at one point).
-constexpr double kSamePoint_mm = 1e-6;
-// Where a line leaves the upper and comes back (over the sole, across the top opening), its two crossings
-// follow each other; farther apart than this (3 reference samples), they end one run and start the next,
-// and no chord is drawn across the sole. A line through a corner of the upper enters and leaves within one.
-constexpr double kRunGap_mm = 3.0;
-
-// A transferred line as the runs it makes on the new last's upper, each >= 2 points. A closed line
-// (first point repeated last) whose start lies on the upper has its last run go on into its first.
-std::vector<std::vector<Eigen::Vector3d>> runs_on_upper(const TransferredCurve& curve, bool closed) {
-  std::vector<std::vector<Eigen::Vector3d>> runs(1);
-  for (std::size_t i = 0; i < curve.points.size(); ++i) {
-    const Eigen::Vector3d& p = curve.points[i].position_mm;
-    if (i > 0) {
-      const double step_mm = (p - curve.points[i - 1].position_mm).norm();
-      if (step_mm < kSamePoint_mm) continue;
-      if (step_mm > kRunGap_mm && on_upper_edge(curve.points[i - 1]) && on_upper_edge(curve.points[i])) runs.emplace_back();
-    }
-    runs.back().push_back(p);
-  }
-  if (closed && runs.size() > 1 && !on_upper_edge(curve.points.front()) &&
-      (runs.back().back() - runs.front().front()).norm() < kSamePoint_mm) {
-    runs.back().insert(runs.back().end(), runs.front().begin() + 1, runs.front().end());
-    runs.erase(runs.begin());
-  }
-  std::erase_if(runs, [](const auto& run) { return run.size() < 2; });
-  return runs;
-}
-
 int run_style_transfer(const TransferArguments& arguments) {
   for (const std::string& problem :
        {side_problem("--side", arguments.side), side_problem("--reference-side", arguments.reference_side)}) {
@@ -205,8 +172,7 @@ int run_style_transfer(const TransferArguments& arguments) {
     std::vector<std::string> summary;
     for (const StyleLine& line : lines) {
       const TransferredCurve curve = transfer.transfer_curve(line.points_mm);
-      const bool closed = (line.points_mm.back() - line.points_mm.front()).norm() < kSamePoint_mm;
-      const std::vector<std::vector<Eigen::Vector3d>> runs = runs_on_upper(curve, closed);
+      const std::vector<std::vector<Eigen::Vector3d>> runs = runs_on_upper(curve);
       if (runs.empty()) throw EngineError("the line \"" + line.name + "\" does not lie on the reference last's upper");
       std::size_t written = 0;
       for (std::size_t r = 0; r < runs.size(); ++r) {

@@ -15,6 +15,7 @@ constexpr int kMaxHalvings = 10;  // a step cut to 1/1024 that still folds a tri
 struct HeldSpring {
   int from = 0, to = 0;  // vertex ids
   double length_mm = 0;  // on the last
+  double weight = 0;     // s in the energy (hpp)
 };
 
 // The spring's best target for the current map: its 3D length along (u_to - u_from) (any direction
@@ -34,6 +35,12 @@ int free_vertex(const std::vector<HeldSpring>& springs, Eigen::Index vertex_coun
   return it == on_spring.end() ? 0 : static_cast<int>(it - on_spring.begin());
 }
 
+bool no_new_flips(const std::vector<char>& before, const std::vector<char>& after) {
+  for (std::size_t f = 0; f < before.size(); ++f)
+    if (after[f] == kFlipped && before[f] != kFlipped) return false;
+  return true;
+}
+
 }  // namespace
 
 HeldLengthReport hold_edge_lengths(const TriMesh& mesh, const MeshTopology& topology, const std::vector<std::array<int, 2>>& held,
@@ -41,20 +48,26 @@ HeldLengthReport hold_edge_lengths(const TriMesh& mesh, const MeshTopology& topo
   HeldLengthReport report;
   if (held.empty()) return report;
   std::vector<HeldSpring> springs;
-  for (const auto& [from, to] : held) springs.push_back({from, to, (mesh.V.row(to) - mesh.V.row(from)).norm()});
+  for (const auto& [from, to] : held) springs.push_back({from, to, (mesh.V.row(to) - mesh.V.row(from)).norm(), 0});
 
   const TriangleFrames frames = compute_triangle_frames(mesh);
   ReducedLaplacian laplacian = build_reduced_pattern(frames, topology, free_vertex(springs, mesh.V.rows()));
   std::vector<char> fixed(static_cast<std::size_t>(mesh.V.rows()), 0);
   fixed[static_cast<std::size_t>(laplacian.pinned)] = 1;  // its entries have no slot in the reduced pattern
   assemble_laplacian(frames, frames.half_weight, fixed, laplacian);
-  // The springs' part of the matrix: s on both diagonals, -s between (entries of mesh edges, in the pattern).
+  // The springs' part of the matrix: s on both diagonals, -s between (entries of mesh edges, in the
+  // pattern). s is the weight times the stiffness the cotangent weights give the edge's ends (at least
+  // 1): next to a sliver of the cut those are thousands, and a plain weight would not hold the edge.
+  for (HeldSpring& spring : springs) {
+    const int a = laplacian.row_of_vertex[spring.from], b = laplacian.row_of_vertex[spring.to];
+    spring.weight = options.weight * std::max(1.0, 0.5 * (laplacian.matrix.coeff(a, a) + laplacian.matrix.coeff(b, b)));
+  }
   for (const HeldSpring& spring : springs) {
     const int a = laplacian.row_of_vertex[spring.from], b = laplacian.row_of_vertex[spring.to];
-    laplacian.matrix.coeffRef(a, a) += options.weight;
-    laplacian.matrix.coeffRef(b, b) += options.weight;
-    laplacian.matrix.coeffRef(a, b) -= options.weight;
-    laplacian.matrix.coeffRef(b, a) -= options.weight;
+    laplacian.matrix.coeffRef(a, a) += spring.weight;
+    laplacian.matrix.coeffRef(b, b) += spring.weight;
+    laplacian.matrix.coeffRef(a, b) -= spring.weight;
+    laplacian.matrix.coeffRef(b, a) -= spring.weight;
   }
   SparseCholesky factor(options.solver);
   factor.analyze_pattern(laplacian.matrix);
@@ -68,10 +81,10 @@ HeldLengthReport hold_edge_lengths(const TriMesh& mesh, const MeshTopology& topo
     for (const HeldSpring& spring : springs) {
       const Eigen::Vector2d target = spring_target(spring, map);
       const Eigen::Vector2d along = (map.row(spring.to) - map.row(spring.from)).transpose();
-      energy += options.weight * (along - target).squaredNorm();
+      energy += spring.weight * (along - target).squaredNorm();
       for (int c = 0; c < 2; ++c) {
-        rhs[2 * static_cast<std::size_t>(spring.to) + c] += options.weight * target[c];
-        rhs[2 * static_cast<std::size_t>(spring.from) + c] -= options.weight * target[c];
+        rhs[2 * static_cast<std::size_t>(spring.to) + c] += spring.weight * target[c];
+        rhs[2 * static_cast<std::size_t>(spring.from) + c] -= spring.weight * target[c];
       }
     }
     return energy;
@@ -83,10 +96,12 @@ HeldLengthReport hold_edge_lengths(const TriMesh& mesh, const MeshTopology& topo
   for (report.iterations = 0; report.iterations < options.max_iterations;) {
     local.reduce(rhs, UV, reduced_rhs);
     local.expand(factor.solve(reduced_rhs), UV, next);
-    // The flip guard of arap_iterations.hpp: a step that would flip or collapse a triangle is halved
-    // (E is convex in u for fixed rotations and targets, so a shorter step still lowers it).
+    // The flip guard of arap_iterations.hpp, against flips only: a step that would flip a triangle is
+    // halved (E is convex in u for fixed rotations and targets, so a shorter step still lowers it). A
+    // cut piece keeps slivers along its outline whose area any step changes by a large share; guarding
+    // them against collapse too (to 5 % of their 3D area) stalled the hold on most derby vamps.
     int halvings = 0;
-    for (classify_triangles(frames, next, next_state); !no_triangle_worse(state, next_state) && halvings < kMaxHalvings;
+    for (classify_triangles(frames, next, next_state); !no_new_flips(state, next_state) && halvings < kMaxHalvings;
          classify_triangles(frames, next, next_state)) {
       next = 0.5 * (UV + next);
       ++halvings;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "engine/core/engine_error.hpp"
+#include "engine/core/polyline_3d.hpp"
 #include "engine/flatten/arap_held_lengths.hpp"
 #include "engine/flatten/disk_topology.hpp"
 #include "engine/mold/outward_allowance.hpp"
@@ -14,15 +15,7 @@
 namespace lastcut {
 namespace {
 
-double distance_to_curve(const Eigen::Vector3d& p, const std::vector<Eigen::Vector3d>& curve) {
-  double nearest = INFINITY;
-  for (std::size_t i = 1; i < curve.size(); ++i) {
-    const Eigen::Vector3d ab = curve[i] - curve[i - 1];
-    const double t = std::clamp((p - curve[i - 1]).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
-    nearest = std::min(nearest, (curve[i - 1] + t * ab - p).norm());
-  }
-  return nearest;
-}
+double distance_to_curve(const Eigen::Vector3d& p, const Polyline3& curve) { return closest_on_polyline(p, curve).distance_mm; }
 
 PieceEdgeSource::Kind kind_of(EdgeKind kind) {
   switch (kind) {
@@ -112,11 +105,12 @@ PieceEdgeCurves piece_edge_curves(const std::array<const SegmentResult*, 2>& hal
       curves.curves.emplace_back(PieceEdgeSource{kind_of(edge.kind), -1}, std::move(points));
     }
   }
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    std::vector<Eigen::Vector3d> points;
-    for (const TransferredPoint& point : lines[i].points) points.push_back(scan_to_canonical * point.position_mm);
-    curves.curves.emplace_back(PieceEdgeSource{PieceEdgeSource::Kind::Line, static_cast<int>(i)}, std::move(points));
-  }
+  // A line in its runs on the upper: a chord across the sole would pass next to the feather line there.
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    for (std::vector<Eigen::Vector3d>& run : runs_on_upper(lines[i])) {
+      for (Eigen::Vector3d& point : run) point = scan_to_canonical * point;
+      curves.curves.emplace_back(PieceEdgeSource{PieceEdgeSource::Kind::Line, static_cast<int>(i)}, std::move(run));
+    }
   return curves;
 }
 
@@ -199,6 +193,15 @@ PieceMold make_piece_mold(const PieceSurface& piece, const PieceEdgeCurves& curv
       const PieceEdgeSource& what = stretch_source[stretch];
       result.edges.push_back({what, allowance_of(what), {simple.points[at]}, length_3d[stretch]});
     }
+  }
+  for (std::size_t e = 0; e < result.edges.size(); ++e) {  // edges[e] is stretch e
+    const std::size_t to = static_cast<std::size_t>(stretch_starts[(e + 1) % stretch_starts.size()]);
+    std::size_t i = static_cast<std::size_t>(stretch_starts[e]);
+    do {
+      result.edges[e].outline_vertices.push_back(loop[i]);
+      i = (i + 1) % n;
+    } while (i != to);
+    result.edges[e].outline_vertices.push_back(loop[to]);
   }
   for (const PieceMoldEdge& edge : result.edges) grown.push_back({edge.net_points, edge.allowance_mm});
   result.mold.name = piece.name;

@@ -30,6 +30,7 @@ struct PieceEdgeSource {
 std::string to_string(const PieceEdgeSource& source, const std::vector<std::string>& line_names);
 
 // The 3D curves a piece's outline may lie on, in the new last's canonical frame (mm).
+// Each half's outline edges, and each style line as its runs on the upper (runs_on_upper).
 struct PieceEdgeCurves {
   std::vector<std::pair<PieceEdgeSource, std::vector<Eigen::Vector3d>>> curves;
 };
@@ -43,7 +44,8 @@ struct PieceMoldEdge {
   PieceEdgeSource source;
   double allowance_mm = 0;
   std::vector<Point2> net_points;  // the stretch of the net outline, mm
-  double length_3d_mm = 0;         // the same stretch on the last (its 2D length differs by the flattening's stretch)
+  double length_3d_mm = 0;         // the same stretch on the last (sewn stretches are held to it in 2D)
+  std::vector<int> outline_vertices;  // the stretch's vertices of the piece's mesh, corner to corner, CCW in UV
 };
 
 struct PieceMold {

@@ -24,7 +24,7 @@ namespace lastcut {
 inline constexpr double kSameWeld_mm = 1e-4;
 inline constexpr double kSeamWeld_mm = 0.05;
 // Far below the outline's simplification tolerance (0.02 mm, piece_mold.hpp) and any knife's accuracy.
-inline constexpr double kShortestEdge_mm = 0.01;
+inline constexpr double kShortestEdge_mm = 0.05;
 
 struct PieceSurface {
   std::string name;

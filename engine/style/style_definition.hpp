@@ -38,6 +38,7 @@ struct StylePiece {
   Eigen::Vector3d label_mm = Eigen::Vector3d::Zero();  // a point inside the piece on the reference last (its scan's frame)
   std::string material = "upper leather";
   int quantity = 1;  // per shoe
+  double grain_deg = 0;  // the grain line, counter-clockwise from the last's heel-to-toe axis (piece_grain.hpp)
 };
 
 struct StyleDefinition {
@@ -47,6 +48,7 @@ struct StyleDefinition {
   std::vector<StyleSeamCut> seam_cuts;
   std::vector<StylePiece> pieces;
   StyleAllowances allowances;
+  double balance_notch_spacing_mm = 50;  // along every seam (piece_notches.hpp)
 };
 
 }  // namespace lastcut

@@ -102,6 +102,19 @@ StyleResult make_style_pieces(const StyleDefinition& style, const ScanResult& re
     result.pieces_area_mm2 += piece.surface.area_mm2;
     result.pieces.push_back(std::move(piece));
   }
+  // Notches, grain lines and the seams' lengths on both sides.
+  std::vector<std::string> line_names;
+  for (const StyleLine& line : style.lines) line_names.push_back(line.name);
+  const std::vector<SewnCurve> sewn = sewn_curves(curves, line_names);
+  const std::vector<NotchPoint> notch_points =
+      seam_notch_points(sewn, line_junctions(lines, line_names, target.scan_to_canonical), style.balance_notch_spacing_mm);
+  std::vector<std::pair<const PieceSurface*, const PieceMold*>> molds;
+  for (StylePieceResult& piece : result.pieces) {
+    piece.notches = place_piece_notches(piece.surface, notch_points, piece.mold);
+    piece.grain = piece_grain_line(piece.surface, piece.mold, piece.spec.grain_deg);
+    molds.emplace_back(&piece.surface, &piece.mold);
+  }
+  result.seams = seam_reports(sewn, molds);
   return result;
 }
 

@@ -2,12 +2,16 @@
 // A style's pieces on a scanned last, start to end (issue 34, points 2 and 3): the style's lines and
 // labels are transferred from the reference last (style_transfer.hpp), the new last's upper is split
 // into the pieces (upper_regions.hpp), each piece's surface is cut out (piece_surface.hpp), flattened
-// and grown by its allowances (piece_mold.hpp).
+// and grown by its allowances (piece_mold.hpp), and given its notches (piece_notches.hpp) and grain
+// line (piece_grain.hpp); the seams' lengths on both sides are reported (seam_report.hpp).
 #include <string>
 #include <vector>
 
 #include "engine/scan/scan_to_molds.hpp"
+#include "engine/style/piece_grain.hpp"
 #include "engine/style/piece_mold.hpp"
+#include "engine/style/piece_notches.hpp"
+#include "engine/style/seam_report.hpp"
 #include "engine/style/style_definition.hpp"
 
 namespace lastcut {
@@ -15,13 +19,16 @@ namespace lastcut {
 struct StylePieceResult {
   StylePiece spec;
   PieceSurface surface;  // 3D, the new last's canonical frame
-  PieceMold mold;
+  PieceMold mold;        // its marks are the notches below, as cut
+  std::vector<PieceNotch> notches;
+  GrainLine grain;
 };
 
 struct StyleResult {
   std::vector<StylePieceResult> pieces;  // in the style's order
   double upper_area_mm2 = 0;             // the new last's two halves
   double pieces_area_mm2 = 0;            // the pieces' 3D surfaces, together
+  std::vector<SeamReport> seams;         // every sewn curve: its length on the pieces of both sides
   std::vector<std::string> notes;        // one line each: points of lines off the upper, ...
 };
 

@@ -195,7 +195,28 @@ TransferredCurve StyleTransfer::transfer_curve(const std::vector<Eigen::Vector3d
       ++curve.dropped_points;
     previous.emplace(sample, located);
   }
+  curve.closed = polyline.size() > 2 && (polyline.back() - polyline.front()).norm() < kSamePoint_mm;
   return curve;
+}
+
+std::vector<std::vector<Eigen::Vector3d>> runs_on_upper(const TransferredCurve& curve) {
+  std::vector<std::vector<Eigen::Vector3d>> runs(1);
+  for (std::size_t i = 0; i < curve.points.size(); ++i) {
+    const Eigen::Vector3d& p = curve.points[i].position_mm;
+    if (i > 0) {
+      const double step_mm = (p - curve.points[i - 1].position_mm).norm();
+      if (step_mm < kSamePoint_mm) continue;  // a seam crossing comes once per half, at one point
+      if (step_mm > kRunGap_mm && on_upper_edge(curve.points[i - 1]) && on_upper_edge(curve.points[i])) runs.emplace_back();
+    }
+    runs.back().push_back(p);
+  }
+  if (curve.closed && runs.size() > 1 && !on_upper_edge(curve.points.front()) &&
+      (runs.back().back() - runs.front().front()).norm() < kSamePoint_mm) {
+    runs.back().insert(runs.back().end(), runs.front().begin() + 1, runs.front().end());
+    runs.erase(runs.begin());
+  }
+  std::erase_if(runs, [](const auto& run) { return run.size() < 2; });
+  return runs;
 }
 
 int StyleTransfer::folded_triangles() const {

@@ -43,7 +43,22 @@ struct TransferredCurve {
   // point of the half it leaves and of the half it enters (same 3D point, each half's flattening).
   std::vector<TransferredPoint> points;
   int dropped_points = 0;                // resampled points that were not on the reference's upper
+  bool closed = false;                   // the reference polyline ends where it starts
 };
+
+// A transferred curve as the runs it makes on the new last's upper, each >= 2 points (positions, the new
+// scan's frame). Where the curve leaves the upper and comes back (over the sole, across the top opening)
+// its two crossings follow each other farther apart than kRunGap_mm: they end one run and start the next,
+// and no chord is drawn across the sole. A closed curve whose start lies on the upper has its last run go
+// on into its first.
+inline constexpr double kSamePoint_mm = 1e-6;  // closer than this, two transferred points are one
+inline constexpr double kRunGap_mm = 3.0;  // 3 reference samples; a line through a corner of the upper enters and leaves within one
+std::vector<std::vector<Eigen::Vector3d>> runs_on_upper(const TransferredCurve& curve);
+
+// On the feather line or the top edge: where a line ends or leaves the upper (a centre seam is inside it).
+inline bool on_upper_edge(const TransferredPoint& point) {
+  return point.on_outline && (point.edge == EdgeKind::Feather || point.edge == EdgeKind::Top);
+}
 
 class StyleTransfer {
  public:

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/core/tri_mesh.hpp"
+#include "engine/core/polyline_3d.hpp"
 
 namespace lastcut::test {
 
@@ -62,14 +63,6 @@ Polyline longest_run(const Polyline& loop, Keep keep) {
   return best;
 }
 
-inline double distance_to_polyline(const Eigen::Vector3d& p, const Polyline& line) {
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 1; i < line.size(); ++i) {
-    const Eigen::Vector3d ab = line[i] - line[i - 1];
-    const double t = std::clamp((p - line[i - 1]).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
-    best = std::min(best, (line[i - 1] + t * ab - p).norm());
-  }
-  return best;
-}
+inline double distance_to_polyline(const Eigen::Vector3d& p, const Polyline& line) { return closest_on_polyline(p, line).distance_mm; }
 
 }  // namespace lastcut::test

@@ -1,0 +1,167 @@
+// Seams match (issue 34): the shipped derby (config/styles/derby) cut from ten generated lasts, sizes
+// EU 36 to 47, both feet, two widths, one posed. On every seam the pieces of the two sides must have the
+// same flattened length within 0.5 mm, and every balance notch must lie on both sides of its seam at the
+// same arc length: consecutive notches of a seam are one spacing apart along each piece's net line,
+// measured in the piece's flattening. Junction notches go on the piece that runs straight through the
+// junction. The grain line lies inside its piece and turns with the style's angle.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+
+#include "daemon/config/style_folder.hpp"
+#include "engine/core/segment_predicates.hpp"
+#include "engine/lastgen/generate_last.hpp"
+#include "engine/mesh/write_mesh.hpp"
+#include "engine/scan/scan_to_molds.hpp"
+#include "engine/style/style_pieces.hpp"
+#include "tests/support/temp_dir.hpp"
+
+namespace lastcut {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double kSeamMismatch_mm = 0.5;  // issue 34
+constexpr double kNotchGap_mm = 0.1;      // a notch is cut to about a tenth of a millimetre
+
+ScanResult segmented(const TriMesh& mesh, const fs::path& file, FootSide side) {
+  write_mesh(file, mesh);
+  ScanOptions options;
+  options.side = side;
+  return scan_to_molds(file, options);
+}
+
+struct TestLast {
+  int eu_size;
+  FootSide side;
+  double girth = 1.0;  // ball and heel width against the size's medium
+  bool posed = false;
+};
+
+std::string describe(const TestLast& last) {
+  char text[64];
+  std::snprintf(text, sizeof text, "EU %d %s%s%s", last.eu_size, last.side == FootSide::Left ? "left" : "right",
+                last.girth < 1 ? " narrow" : last.girth > 1 ? " wide" : "", last.posed ? " posed" : "");
+  return text;
+}
+
+class StyleSeams : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    static const test::TempDir dir("style-seams");
+    dir_ = &dir;
+    const Result<daemon::StyleFolder> folder = daemon::read_style_folder(fs::path(LASTCUT_SOURCE_DIR) / "config" / "styles" / "derby");
+    ASSERT_TRUE(folder) << folder.error();
+    ASSERT_TRUE(folder->generated_reference);
+    style_ = new StyleDefinition(folder->style);
+    reference_ = new ScanResult(segmented(generate_last(*folder->generated_reference).mesh, dir / "reference.stl", FootSide::Right));
+  }
+  static void TearDownTestSuite() {
+    delete style_;
+    delete reference_;
+  }
+  static StyleResult cut(const TestLast& last, int triangles = 20000) {
+    LastParams params = LastParams::for_eu_size(last.eu_size, last.side);
+    params.target_triangles = triangles;
+    params.ball_width_mm *= last.girth;
+    params.heel_width_mm *= last.girth;
+    params.random_pose = last.posed;
+    params.seed = 11;
+    const ScanResult target = segmented(generate_last(params).mesh, *dir_ / "last.stl", last.side);
+    return make_style_pieces(*style_, *reference_, target);
+  }
+  static inline const test::TempDir* dir_ = nullptr;
+  static inline StyleDefinition* style_ = nullptr;
+  static inline ScanResult* reference_ = nullptr;
+};
+
+// The arc length of net_point along the piece's outline stretch, in the flattening (mm); NAN when it
+// is not on the stretch.
+double arc_along_stretch(const PieceMold& mold, const PieceMoldEdge& stretch, const Point2& net_point) {
+  double along = 0;
+  for (std::size_t i = 1; i < stretch.outline_vertices.size(); ++i) {
+    const Point2 a = mold.UV.row(stretch.outline_vertices[i - 1]).transpose(), b = mold.UV.row(stretch.outline_vertices[i]).transpose();
+    if (distance_to_segment(net_point, a, b) < 1e-6) return along + (net_point - a).norm();
+    along += (b - a).norm();
+  }
+  return NAN;
+}
+
+TEST_F(StyleSeams, TheDerbysSeamsMatchOnTenLasts) {
+  const std::vector<TestLast> lasts = {{36, FootSide::Right}, {37, FootSide::Right}, {38, FootSide::Left},
+                                       {39, FootSide::Right, 0.95}, {40, FootSide::Right}, {42, FootSide::Right, 1.0, true},
+                                       {43, FootSide::Left, 1.05}, {44, FootSide::Right}, {46, FootSide::Left}, {47, FootSide::Right}};
+  double worst_mm = 0;
+  std::string worst_where;
+  for (const TestLast& last : lasts) {
+    const StyleResult result = cut(last);
+    const std::string where = describe(last);
+    ASSERT_EQ(result.seams.size(), 4u) << where;  // the vamp line, the counter line, the front and back seams' cut parts
+    std::printf("%-22s", where.c_str());
+    for (const SeamReport& seam : result.seams) {
+      std::printf("  %s %+.2f", seam.seam.c_str(), seam.difference_mm());
+      EXPECT_GT(seam.one_side_mm, 20) << where << ", " << seam.seam;
+      EXPECT_LE(std::abs(seam.difference_mm()), kSeamMismatch_mm) << where << ", " << seam.seam;
+      if (std::abs(seam.difference_mm()) > worst_mm) worst_mm = std::abs(seam.difference_mm()), worst_where = where + ", " + seam.seam;
+    }
+    std::printf(" mm\n");
+    // Every balance notch on both sides of its seam (a line's on two pieces; a seam's on none where the
+    // seam is not cut), one spacing from the next along each piece's net line.
+    std::map<std::string, int> pieces_with;
+    for (const StylePieceResult& piece : result.pieces) {
+      EXPECT_EQ(piece.mold.mold.marks.size(), piece.notches.size()) << where << ", " << piece.spec.name;
+      for (const PieceNotch& notch : piece.notches) ++pieces_with[notch.name];
+      for (const PieceMoldEdge& stretch : piece.mold.edges) {
+        std::vector<std::pair<double, double>> arcs;  // (3D arc along the curve, 2D arc along the stretch) of its balance notches
+        for (const PieceNotch& notch : piece.notches)
+          if (const double arc = arc_along_stretch(piece.mold, stretch, notch.net_point_mm); notch.balance && std::isfinite(arc))
+            arcs.emplace_back(notch.arc_length_mm, arc);
+        std::sort(arcs.begin(), arcs.end());
+        for (std::size_t i = 1; i < arcs.size(); ++i)
+          EXPECT_NEAR(std::abs(arcs[i].second - arcs[i - 1].second), arcs[i].first - arcs[i - 1].first, kNotchGap_mm)
+              << where << ", " << piece.spec.name;
+      }
+    }
+    for (const auto& [name, count] : pieces_with) {
+      if (name.find(" x ") != std::string::npos)
+        EXPECT_EQ(count, 1) << where << ": junction notch " << name;  // on the vamp or the counter
+      else
+        EXPECT_EQ(count, 2) << where << ": balance notch " << name;
+    }
+    EXPECT_EQ(pieces_with.count("vamp x front seam"), 1u) << where;
+    EXPECT_EQ(pieces_with.count("counter x back seam"), 1u) << where;
+    const auto vamp_line_notches = std::count_if(pieces_with.begin(), pieces_with.end(), [](const auto& entry) {
+      return entry.first.rfind("vamp ", 0) == 0 && entry.first.find(" x ") == std::string::npos;
+    });
+    EXPECT_GE(vamp_line_notches, 2) << where;
+  }
+  std::printf("worst seam mismatch %.2f mm (%s)\n", worst_mm, worst_where.c_str());
+}
+
+TEST_F(StyleSeams, TheGrainLineLiesInsideItsPieceAndTurnsWithTheStyle) {
+  const TestLast last{41, FootSide::Right};
+  const StyleResult along = cut(last);
+  const StyleDefinition saved = *style_;
+  for (StylePiece& piece : style_->pieces) piece.grain_deg = 90;
+  const StyleResult across = cut(last);
+  *style_ = saved;
+  ASSERT_EQ(along.pieces.size(), across.pieces.size());
+  for (std::size_t p = 0; p < along.pieces.size(); ++p) {
+    const StylePieceResult& piece = along.pieces[p];
+    const Point2 one = piece.grain.to_mm - piece.grain.from_mm;
+    const Point2 other = across.pieces[p].grain.to_mm - across.pieces[p].grain.from_mm;
+    EXPECT_GT(one.norm(), 20) << piece.spec.name;
+    for (const Point2& end : {piece.grain.from_mm, piece.grain.to_mm})
+      EXPECT_TRUE(point_in_ring(end, piece.mold.mold.net.points)) << piece.spec.name;
+    // Turned counter-clockwise by 90 degrees (the same flattening both times: the grain does not change it).
+    EXPECT_NEAR(one.normalized().dot(other.normalized()), 0, 1e-9) << piece.spec.name;
+    EXPECT_GT(one.x() * other.y() - one.y() * other.x(), 0) << piece.spec.name;
+  }
+}
+
+}  // namespace
+}  // namespace lastcut
