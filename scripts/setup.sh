@@ -29,6 +29,9 @@ TEST_PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # independent interpreters and tools the tests run against our output
   hp2xx mbpoll socat systemd procps python3 openssl
+  # DXF-AAMA pattern files (tests/pattern): ezdxf reads and audits them, LibreCAD renders them to
+  # PDF (dxf2pdf, headless) and poppler's pdftoppm turns the page into a picture
+  python3-ezdxf librecad poppler-utils
   # the real grbl 1.1h firmware simulator (tests/peers) and the load it is tested under
   make gcc
   # fuzzing the parsers (clang's libFuzzer, tests/fuzz)

@@ -1,6 +1,7 @@
 #include "engine/core/dxf_document.hpp"
 
 #include <cstdio>
+#include <stdexcept>
 #include <utility>
 
 namespace lastcut {
@@ -40,13 +41,66 @@ class DxfDocument::Writer {
 DxfDocument::DxfDocument(DxfVersion version, std::vector<DxfLayer> layers)
     : version_(version), layers_(std::move(layers)) {}
 
-void DxfDocument::extend(const Point2& point_mm) {
-  low_mm_ = has_extents_ ? Point2(low_mm_.cwiseMin(point_mm)) : point_mm;
-  high_mm_ = has_extents_ ? Point2(high_mm_.cwiseMax(point_mm)) : point_mm;
-  has_extents_ = true;
+void DxfDocument::Extents::add(const Point2& point_mm) {
+  low_mm = any ? Point2(low_mm.cwiseMin(point_mm)) : point_mm;
+  high_mm = any ? Point2(high_mm.cwiseMax(point_mm)) : point_mm;
+  any = true;
 }
 
-void DxfDocument::include_in_extents(const Point2& point_mm) { extend(point_mm); }
+// Inside a block the points are the block's own; they reach the drawing's extents through insert().
+void DxfDocument::extend(const Point2& point_mm) {
+  (open_block_.empty() ? extents_ : block_extents_[open_block_]).add(point_mm);
+}
+
+std::string& DxfDocument::body() { return open_block_.empty() ? entities_ : blocks_; }
+
+void DxfDocument::include_in_extents(const Point2& point_mm) { extents_.add(point_mm); }
+
+void DxfDocument::begin_block(const std::string& name, const std::string& layer) {
+  if (version_ != DxfVersion::R12) throw std::logic_error("DxfDocument: blocks are written in R12 files only");
+  if (!open_block_.empty() || name.empty() || block_extents_.count(name))
+    throw std::logic_error("DxfDocument: block '" + name + "' is open, empty or defined twice");
+  open_block_ = name;
+  open_block_layer_ = layer;
+  block_extents_[name];
+  Writer out(blocks_);
+  out.pair(0, "BLOCK");
+  out.pair(8, layer);
+  out.pair(2, name);
+  out.pair(70, 0);
+  out.point(10, Point2::Zero());
+  out.pair(3, name);
+}
+
+void DxfDocument::end_block() {
+  if (open_block_.empty()) throw std::logic_error("DxfDocument: end_block without begin_block");
+  Writer out(blocks_);
+  out.pair(0, "ENDBLK");
+  out.pair(8, open_block_layer_);
+  open_block_.clear();
+}
+
+void DxfDocument::insert(const std::string& layer, const std::string& name, const Point2& at_mm) {
+  const auto block = block_extents_.find(name);
+  if (block == block_extents_.end() || name == open_block_)
+    throw std::logic_error("DxfDocument: insert of block '" + name + "', which is not defined");
+  if (block->second.any) {
+    extents_.add(block->second.low_mm + at_mm);
+    extents_.add(block->second.high_mm + at_mm);
+  }
+  Writer out(entities_);
+  entity_start(out, "INSERT", layer, "AcDbBlockReference");
+  out.pair(2, name);
+  out.point(10, at_mm);
+}
+
+void DxfDocument::point(const std::string& layer, const Point2& at_mm, double angle_deg) {
+  extend(at_mm);
+  Writer out(body());
+  entity_start(out, "POINT", layer, "AcDbPoint");
+  out.point(10, at_mm);
+  out.number(50, angle_deg);
+}
 
 void DxfDocument::entity_start(Writer& out, const char* type, const std::string& layer, const char* subclass) {
   out.pair(0, type);
@@ -60,7 +114,7 @@ void DxfDocument::entity_start(Writer& out, const char* type, const std::string&
 
 void DxfDocument::polyline(const std::string& layer, const std::vector<Point2>& points_mm, bool closed) {
   for (const Point2& p : points_mm) extend(p);
-  Writer out(entities_);
+  Writer out(body());
   if (version_ == DxfVersion::R2000) {
     entity_start(out, "LWPOLYLINE", layer, "AcDbPolyline");
     out.pair(90, static_cast<int>(points_mm.size()));
@@ -85,7 +139,7 @@ void DxfDocument::polyline(const std::string& layer, const std::vector<Point2>& 
 void DxfDocument::line(const std::string& layer, const Point2& from_mm, const Point2& to_mm) {
   extend(from_mm);
   extend(to_mm);
-  Writer out(entities_);
+  Writer out(body());
   entity_start(out, "LINE", layer, "AcDbLine");
   out.point(10, from_mm);
   out.point(11, to_mm);
@@ -93,7 +147,7 @@ void DxfDocument::line(const std::string& layer, const Point2& from_mm, const Po
 
 void DxfDocument::text(const std::string& layer, const Point2& at_mm, double height_mm, const std::string& text) {
   extend(at_mm);
-  Writer out(entities_);
+  Writer out(body());
   entity_start(out, "TEXT", layer, "AcDbText");
   out.point(10, at_mm);
   out.number(40, height_mm);
@@ -102,6 +156,7 @@ void DxfDocument::text(const std::string& layer, const Point2& at_mm, double hei
 }
 
 std::string DxfDocument::str() const {
+  if (!open_block_.empty()) throw std::logic_error("DxfDocument: block '" + open_block_ + "' is not ended");
   const bool r2000 = version_ == DxfVersion::R2000;
   std::string file;
   Writer out(file);
@@ -131,9 +186,9 @@ std::string DxfDocument::str() const {
   out.pair(9, "$MEASUREMENT");
   out.pair(70, 1);  // metric
   out.pair(9, "$EXTMIN");
-  out.point(10, low_mm_);
+  out.point(10, extents_.low_mm);
   out.pair(9, "$EXTMAX");
-  out.point(10, high_mm_);
+  out.point(10, extents_.high_mm);
   if (r2000) {
     out.pair(9, "$HANDSEED");
     out.hex(5, next_entity_handle_);
@@ -166,6 +221,7 @@ std::string DxfDocument::str() const {
 
   out.pair(0, "SECTION");
   out.pair(2, "BLOCKS");
+  file += blocks_;
   out.pair(0, "ENDSEC");
 
   out.pair(0, "SECTION");
