@@ -99,20 +99,32 @@ DxfDrawing read_dxf_drawing(const std::filesystem::path& path) {
       section = groups[g + 1].value;
       continue;
     }
+    if (group.code == 0 && group.value == "ENDSEC") {
+      section.clear();
+      continue;
+    }
     if (section == "HEADER" && group.code == 9 && group.value == "$INSUNITS" && g + 1 < groups.size())
       drawing.insunits = integer(path, groups[g + 1].value);
+    if (section == "TABLES" && group.code == 0 && group.value == "LAYER")
+      for (size_t k = g + 1; k < groups.size() && groups[k].code != 0; ++k)
+        if (groups[k].code == 2) drawing.layers.push_back(groups[k].value);
     if (section != "ENTITIES" || group.code != 0) continue;
     // An entity: its groups run to the next code 0.
     size_t end = g + 1;
     while (end < groups.size() && groups[end].code != 0) ++end;
-    std::string layer, text;
+    std::string layer, text, text_chunks;
     int flags = 0;
+    std::string radius = "0", start_deg = "0", end_deg = "0";  // an ARC's, read as numbers for ARCs only
     std::vector<DxfVertex> vertices;
     Point2 line_end = Point2::Zero();
     for (size_t k = g + 1; k < end; ++k) {
       const Group& field = groups[k];
       if (field.code == 8) layer = field.value;
       if (field.code == 1) text = field.value;
+      if (field.code == 3) text_chunks += field.value;  // MTEXT: the parts of a long text before its last (group 1)
+      if (field.code == 40) radius = field.value;
+      if (field.code == 50) start_deg = field.value;
+      if (field.code == 51) end_deg = field.value;
       if (field.code == 70) flags = integer(path, field.value);
       if (field.code == 10) vertices.push_back({Point2(number(path, field.value), 0.0), 0.0});
       if (field.code == 20 && !vertices.empty()) vertices.back().point.y() = number(path, field.value);
@@ -132,8 +144,14 @@ DxfDrawing read_dxf_drawing(const std::filesystem::path& path) {
       in_polyline = false;
     } else if (group.value == "LINE") {
       if (vertices.size() == 1) drawing.lines.push_back({layer, vertices.front().point, line_end});
-    } else if (group.value == "TEXT") {
-      drawing.texts.push_back({layer, text});
+    } else if (group.value == "TEXT" || group.value == "MTEXT") {
+      const Point2 at = vertices.empty() ? Point2::Zero() : vertices.front().point;
+      drawing.texts.push_back({layer, group.value == "MTEXT" ? text_chunks + text : text, at});
+    } else if (group.value == "ARC") {
+      if (vertices.size() == 1) drawing.arcs.push_back(
+            {layer, vertices.front().point, number(path, radius), number(path, start_deg), number(path, end_deg)});
+    } else if (group.value != "VERTEX") {
+      drawing.others.push_back({group.value, layer});
     }
     g = end - 1;
   }

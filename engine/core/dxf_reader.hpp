@@ -1,6 +1,8 @@
 #pragma once
-// Reading ASCII DXF drawings: the polylines (LWPOLYLINE, POLYLINE + VERTEX + SEQEND), LINEs and
-// TEXTs of the ENTITIES section with their layers, and the drawing unit ($INSUNITS). Shared by the
+// Reading ASCII DXF drawings: the polylines (LWPOLYLINE, POLYLINE + VERTEX + SEQEND), LINEs, ARCs and
+// TEXTs (MTEXT read as TEXT) of the ENTITIES section with their layers, the other entities' types and
+// layers (so a reader can refuse what it does not take instead of losing it), the layer table's names,
+// and the drawing unit ($INSUNITS). Shared by the
 // pattern reader (engine/compare) and the hide reader (engine/nest/hide_file.hpp), which each apply
 // their own layer rules. Coordinates stay in drawing units; dxf_millimetres_per_unit converts.
 // Every refusal is an EngineError of one line that names the file.
@@ -31,6 +33,20 @@ struct DxfLine {
 struct DxfText {
   std::string layer;
   std::string text;
+  Point2 at = Point2::Zero();  // insertion point (group 10), drawing units
+};
+
+struct DxfArc {
+  std::string layer;
+  Point2 centre = Point2::Zero();  // drawing units
+  double radius = 0.0;
+  double start_deg = 0.0, end_deg = 0.0;  // counter-clockwise from start to end
+};
+
+// An entity the reader does not take apart (SPLINE, CIRCLE, ELLIPSE, INSERT, ...).
+struct DxfOtherEntity {
+  std::string type;
+  std::string layer;
 };
 
 struct DxfDrawing {
@@ -38,6 +54,9 @@ struct DxfDrawing {
   std::vector<DxfPolyline> polylines;
   std::vector<DxfLine> lines;
   std::vector<DxfText> texts;
+  std::vector<DxfArc> arcs;
+  std::vector<DxfOtherEntity> others;
+  std::vector<std::string> layers;  // the LAYER table's names, in table order
 };
 
 // Reads the file. Throws EngineError when it cannot be read or is not a DXF file.
