@@ -21,6 +21,7 @@
 
 #include "daemon/cli/commands.hpp"
 #include "daemon/config/style_folder.hpp"
+#include "daemon/config/style_forme.hpp"
 #include "engine/core/durable_file.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/lastgen/generate_last.hpp"
@@ -96,7 +97,7 @@ int run_style_pieces(const StyleArguments& arguments) {
     print_style_error("--side must be left or right, not " + arguments.side);
     return 2;
   }
-  const Result<daemon::StyleFolder> folder = daemon::read_style_folder(arguments.style_dir);
+  Result<daemon::StyleFolder> folder = daemon::read_style_folder(arguments.style_dir);
   if (!folder) {
     print_style_error(folder.error());
     return 2;
@@ -110,6 +111,7 @@ int run_style_pieces(const StyleArguments& arguments) {
     }
     const ScanResult reference = segmented(reference_scan, folder->reference_side);
     if (folder->generated_reference) fs::remove(reference_scan);
+    if (const Status lifted = daemon::lift_forme_style(*folder, reference); !lifted) throw EngineError(lifted.error());
     const ScanResult target = segmented(arguments.scan, side_named(arguments.side));
     const StyleResult result = make_style_pieces(folder->style, reference, target);
     nlohmann::json report = {{"style", folder->style.name},
@@ -222,6 +224,7 @@ void add_style_command(CLI::App& app, int& exit_code) {
   transfer->add_option("--side", transfer_arguments->side, "the foot the new last is for (left or right): names the halves of a symmetric last");
   transfer->add_option("--reference-side", transfer_arguments->reference_side, "the foot the reference last is for (left or right)");
   transfer->callback([transfer_arguments, &exit_code] { exit_code = run_style_transfer(*transfer_arguments); });
+  add_style_new_command(*style, exit_code);
 }
 
 }  // namespace lastcut::cli

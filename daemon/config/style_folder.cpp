@@ -53,8 +53,11 @@ Result<StyleFolder> read_style_folder(const std::filesystem::path& folder) {
   StyleFolder result;
   TableReader root(root_table, "", errors);
   root.text("name", result.style.name, true);
-  std::string lines_file;
-  root.text("lines", lines_file, true);
+  std::string lines_file, forme_file;
+  root.text("lines", lines_file);
+  root.text("forme", forme_file);
+  if (lines_file.empty() == forme_file.empty())
+    errors.push_back("give either lines (style lines drawn on the last, OBJ) or forme (drawn on its forme, DXF)");
 
   if (const toml::table* table = root.subtable("reference", true)) {
     TableReader reader(*table, "reference", errors);
@@ -109,7 +112,9 @@ Result<StyleFolder> read_style_folder(const std::filesystem::path& folder) {
         errors.push_back(where(reader.key_path("label"), *label) + ": must be three numbers [x, y, z] in mm");
       else
         for (int k = 0; k < 3; ++k) piece.label_mm(k) = *(*xyz)[static_cast<std::size_t>(k)].value<double>();
-    } else {
+      if (!forme_file.empty())
+        errors.push_back(reader.key_path("label") + ": a style drawn on its forme places each piece by its text on layer PIECES");
+    } else if (forme_file.empty()) {
       errors.push_back(reader.key_path("label") + ": missing (required)");
     }
     reader.text("material", piece.material);
@@ -117,10 +122,13 @@ Result<StyleFolder> read_style_folder(const std::filesystem::path& folder) {
     result.style.pieces.push_back(piece);
   });
   root.reject_unknown();
-  if (result.style.pieces.empty() && errors.empty()) errors.push_back("no [[piece]]: a style needs at least one piece");
+  if (result.style.pieces.empty() && forme_file.empty() && errors.empty()) errors.push_back("no [[piece]]: a style needs at least one piece");
   if (errors.empty()) {
     try {
-      result.style.lines = read_style_lines_obj(resolve(folder, lines_file));
+      if (!forme_file.empty())
+        result.forme = read_forme_drawing(resolve(folder, forme_file));
+      else
+        result.style.lines = read_style_lines_obj(resolve(folder, lines_file));
     } catch (const EngineError& error) {
       errors.push_back(error.what());
     }

@@ -4,7 +4,9 @@
 // a default), and one run reports every mistake of the file.
 //
 //   name = "derby"
-//   lines = "lines.obj"                  # style lines on the reference last (OBJ polylines, mm)
+//   lines = "lines.obj"                  # style lines on the reference last (OBJ polylines, mm), or
+//   # forme = "forme.dxf"                # the lines and piece texts drawn on its forme (`lastcut style new`;
+//                                        # docs/style-authoring.md): then a [[piece]] has no label
 //   [reference]                          # the last the style was drawn on: a scan beside style.toml ...
 //   scan = "reference.stl"
 //   side = "right"
@@ -31,6 +33,7 @@
 #include "engine/core/foot_side.hpp"
 #include "engine/core/status.hpp"
 #include "engine/lastgen/last_params.hpp"
+#include "engine/style/forme_drawing.hpp"
 #include "engine/style/style_definition.hpp"
 
 namespace lastcut::daemon {
@@ -40,6 +43,9 @@ struct StyleFolder {
   std::filesystem::path reference_scan;      // empty when generated
   std::optional<LastParams> generated_reference;
   FootSide reference_side = FootSide::Right;
+  // A style drawn on the forme: its drawing, read but not yet on the last (style.lines empty, pieces
+  // without labels) until lift_forme_style (style_forme.hpp) lifts it with the reference's scan.
+  std::optional<FormeDrawing> forme;
 };
 
 // Reads `folder`/style.toml and the lines file it names. The error is one line: every problem found,

@@ -145,6 +145,13 @@ void DxfDocument::line(const std::string& layer, const Point2& from_mm, const Po
   out.point(11, to_mm);
 }
 
+void DxfDocument::point(const std::string& layer, const Point2& at_mm) {
+  extend(at_mm);
+  Writer out(entities_);
+  entity_start(out, "POINT", layer, "AcDbPoint");
+  out.point(10, at_mm);
+}
+
 void DxfDocument::text(const std::string& layer, const Point2& at_mm, double height_mm, const std::string& text) {
   extend(at_mm);
   Writer out(body());

@@ -36,6 +36,8 @@ class DxfDocument {
   // points_mm #P (closing edge implicit when `closed`).
   void polyline(const std::string& layer, const std::vector<Point2>& points_mm, bool closed);
   void line(const std::string& layer, const Point2& from_mm, const Point2& to_mm);
+  // A POINT (a mark with no extent, shown as the viewer's point style).
+  void point(const std::string& layer, const Point2& at_mm);
   // Single-line TEXT, left baseline at `at_mm`, capital height `height_mm`.
   void text(const std::string& layer, const Point2& at_mm, double height_mm, const std::string& text);
   // A POINT; `angle_deg` (group 50, counter-clockwise from +x) is what DXF-AAMA notches carry.

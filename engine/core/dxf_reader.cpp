@@ -87,9 +87,12 @@ void append_segment(std::vector<Point2>& points, const DxfVertex& a, const Point
 // The groups of one entity (from its code 0 to the next), gathered.
 struct EntityFields {
   std::string layer, text, name;
+  std::string text_chunks;  // MTEXT: the parts of a long text before its last (group 3)
   int flags = 0;
   bool has_angle = false;
-  double angle_deg = 0.0;
+  double angle_deg = 0.0;   // 50: a POINT's direction, an ARC's start
+  double end_deg = 0.0;     // 51: an ARC's end
+  double radius = 0.0;      // 40: an ARC's
   std::vector<DxfVertex> vertices;  // every 10/20 (and 42) in order
   Point2 second = Point2::Zero();   // 11/21
 };
@@ -100,9 +103,12 @@ EntityFields entity_fields(const std::vector<Group>& groups, size_t first, size_
     const Group& field = groups[k];
     if (field.code == 8) f.layer = field.value;
     if (field.code == 1) f.text = field.value;
+    if (field.code == 3) f.text_chunks += field.value;
     if (field.code == 2) f.name = field.value;
     if (field.code == 70) f.flags = integer(name, field.value);
     if (field.code == 50) f.has_angle = true, f.angle_deg = number(name, field.value);
+    if (field.code == 51) f.end_deg = number(name, field.value);
+    if (field.code == 40) f.radius = number(name, field.value);
     if (field.code == 10) f.vertices.push_back({Point2(number(name, field.value), 0.0), 0.0});
     if (field.code == 20 && !f.vertices.empty()) f.vertices.back().point.y() = number(name, field.value);
     if (field.code == 42 && !f.vertices.empty()) f.vertices.back().bulge = number(name, field.value);
@@ -128,12 +134,16 @@ void add_entity(DxfEntities& into, const std::string& type, EntityFields f, bool
     in_polyline = false;
   } else if (type == "LINE") {
     if (f.vertices.size() == 1) into.lines.push_back({f.layer, f.vertices.front().point, f.second});
-  } else if (type == "TEXT") {
-    into.texts.push_back({f.layer, f.text, first_point(f)});
+  } else if (type == "TEXT" || type == "MTEXT") {
+    into.texts.push_back({f.layer, type == "MTEXT" ? f.text_chunks + f.text : f.text, first_point(f)});
+  } else if (type == "ARC") {
+    if (f.vertices.size() == 1) into.arcs.push_back({f.layer, f.vertices.front().point, f.radius, f.angle_deg, f.end_deg});
   } else if (type == "POINT") {
     into.points.push_back({f.layer, first_point(f), f.has_angle, f.angle_deg});
   } else if (type == "INSERT") {
     into.inserts.push_back({f.layer, f.name, first_point(f)});
+  } else if (type != "VERTEX") {
+    into.others.push_back({type, f.layer});
   }
 }
 
@@ -159,8 +169,15 @@ DxfDrawing parse_drawing(const std::vector<Group>& groups, const std::string& na
       in_polyline = false;
       continue;
     }
+    if (group.code == 0 && group.value == "ENDSEC") {
+      section.clear();
+      continue;
+    }
     if (section == "HEADER" && group.code == 9 && group.value == "$INSUNITS" && g + 1 < groups.size())
       drawing.insunits = integer(name, groups[g + 1].value);
+    if (section == "TABLES" && group.code == 0 && group.value == "LAYER")
+      for (size_t k = g + 1; k < groups.size() && groups[k].code != 0; ++k)
+        if (groups[k].code == 2) drawing.layers.push_back(groups[k].value);
     if ((section != "ENTITIES" && section != "BLOCKS") || group.code != 0) continue;
     // An entity: its groups run to the next code 0.
     size_t end = g + 1;

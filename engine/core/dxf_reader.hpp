@@ -1,9 +1,11 @@
 #pragma once
-// Reading ASCII DXF drawings: the polylines (LWPOLYLINE, POLYLINE + VERTEX + SEQEND), LINEs,
-// POINTs, TEXTs and INSERTs of the ENTITIES section with their layers, the same entities inside
-// each BLOCK of the BLOCKS section, and the drawing unit ($INSUNITS). Shared by the pattern reader
-// (engine/compare), the hide reader (engine/nest/hide_file.hpp) and the DXF-AAMA reader
-// (engine/pattern/aama_dxf.hpp), which each apply their own layer rules. Coordinates stay in
+// Reading ASCII DXF drawings: the polylines (LWPOLYLINE, POLYLINE + VERTEX + SEQEND), LINEs, ARCs,
+// POINTs, TEXTs (MTEXT read as TEXT) and INSERTs of the ENTITIES section with their layers, the same
+// entities inside each BLOCK of the BLOCKS section, the other entities' types and layers (so a reader
+// can refuse what it does not take instead of losing it), the layer table's names, and the drawing
+// unit ($INSUNITS). Shared by the pattern reader (engine/compare), the hide reader
+// (engine/nest/hide_file.hpp), the DXF-AAMA reader (engine/pattern/aama_dxf.hpp) and the forme reader
+// (engine/style/forme_drawing.hpp), which each apply their own layer rules. Coordinates stay in
 // drawing units; dxf_millimetres_per_unit converts.
 // Every refusal is an EngineError of one line that names the file.
 #include <filesystem>
@@ -36,6 +38,19 @@ struct DxfText {
   Point2 at = Point2::Zero();  // first alignment point (10/20), drawing units
 };
 
+struct DxfArc {
+  std::string layer;
+  Point2 centre = Point2::Zero();  // drawing units
+  double radius = 0.0;
+  double start_deg = 0.0, end_deg = 0.0;  // counter-clockwise from start to end
+};
+
+// An entity the reader does not take apart (SPLINE, CIRCLE, ELLIPSE, ...).
+struct DxfOtherEntity {
+  std::string type;
+  std::string layer;
+};
+
 struct DxfPoint {
   std::string layer;
   Point2 at = Point2::Zero();  // drawing units
@@ -56,6 +71,8 @@ struct DxfEntities {
   std::vector<DxfText> texts;
   std::vector<DxfPoint> points;
   std::vector<DxfInsert> inserts;
+  std::vector<DxfArc> arcs;
+  std::vector<DxfOtherEntity> others;
 };
 
 struct DxfBlock {
@@ -69,6 +86,7 @@ struct DxfDrawing : DxfEntities {
   int insunits = 0;  // $INSUNITS; 0 when absent
   int sections = 0;  // SECTIONs seen: 0 for a file of group pairs that is no drawing
   std::vector<DxfBlock> blocks;
+  std::vector<std::string> layers;  // the LAYER table's names, in table order
 };
 
 // Reads the file. Throws EngineError when it cannot be read or is not a DXF file.
