@@ -94,12 +94,12 @@ void DxfDocument::insert(const std::string& layer, const std::string& name, cons
   out.point(10, at_mm);
 }
 
-void DxfDocument::point(const std::string& layer, const Point2& at_mm, double angle_deg) {
+void DxfDocument::point(const std::string& layer, const Point2& at_mm, std::optional<double> angle_deg) {
   extend(at_mm);
   Writer out(body());
   entity_start(out, "POINT", layer, "AcDbPoint");
   out.point(10, at_mm);
-  out.number(50, angle_deg);
+  if (angle_deg) out.number(50, *angle_deg);
 }
 
 void DxfDocument::entity_start(Writer& out, const char* type, const std::string& layer, const char* subclass) {
@@ -143,13 +143,6 @@ void DxfDocument::line(const std::string& layer, const Point2& from_mm, const Po
   entity_start(out, "LINE", layer, "AcDbLine");
   out.point(10, from_mm);
   out.point(11, to_mm);
-}
-
-void DxfDocument::point(const std::string& layer, const Point2& at_mm) {
-  extend(at_mm);
-  Writer out(entities_);
-  entity_start(out, "POINT", layer, "AcDbPoint");
-  out.point(10, at_mm);
 }
 
 void DxfDocument::text(const std::string& layer, const Point2& at_mm, double height_mm, const std::string& text) {

@@ -13,6 +13,7 @@
 // block's definition instead of ENTITIES; insert() places a defined block in ENTITIES. Only R12:
 // R2000 would need a BLOCK_RECORD table entry and handles for each block.
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,12 +37,11 @@ class DxfDocument {
   // points_mm #P (closing edge implicit when `closed`).
   void polyline(const std::string& layer, const std::vector<Point2>& points_mm, bool closed);
   void line(const std::string& layer, const Point2& from_mm, const Point2& to_mm);
-  // A POINT (a mark with no extent, shown as the viewer's point style).
-  void point(const std::string& layer, const Point2& at_mm);
   // Single-line TEXT, left baseline at `at_mm`, capital height `height_mm`.
   void text(const std::string& layer, const Point2& at_mm, double height_mm, const std::string& text);
-  // A POINT; `angle_deg` (group 50, counter-clockwise from +x) is what DXF-AAMA notches carry.
-  void point(const std::string& layer, const Point2& at_mm, double angle_deg);
+  // A POINT (a mark with no extent, shown as the viewer's point style); `angle_deg` (group 50,
+  // counter-clockwise from +x) is what DXF-AAMA notches carry.
+  void point(const std::string& layer, const Point2& at_mm, std::optional<double> angle_deg = std::nullopt);
   // Widens $EXTMIN/$EXTMAX beyond the entities (e.g. to the machine's work area).
   void include_in_extents(const Point2& point_mm);
 

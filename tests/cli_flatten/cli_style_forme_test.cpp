@@ -89,8 +89,7 @@ TEST_F(CliStyleForme, StyleNewWritesTheFormeTheScanAndATemplate) {
     EXPECT_NE(std::find(forme.layers.begin(), forme.layers.end(), layer), forme.layers.end()) << layer;
   std::map<std::string, int> polylines, closed, points, texts;
   for (const DxfPolyline& polyline : forme.polylines) ++polylines[polyline.layer], closed[polyline.layer] += polyline.closed;
-  for (const DxfOtherEntity& other : forme.others)
-    if (other.type == "POINT") ++points[other.layer];
+  for (const DxfPoint& point : forme.points) ++points[point.layer];
   for (const DxfText& text : forme.texts) ++texts[text.layer];
   EXPECT_EQ(polylines, (std::map<std::string, int>{{"LATERAL", 1}, {"MEDIAL", 1}, {"FEATHER", 2}, {"TOP", 2}, {"CENTRE", 4}}));
   EXPECT_EQ(closed["LATERAL"] + closed["MEDIAL"], 2);
