@@ -15,7 +15,9 @@ void add_generate_command(CLI::App& app, int& exit_code);  // generate_command.c
 void add_subdivide_command(CLI::App& app, int& exit_code); // subdivide_command.cpp: quad mesh -> Bezier surface
 void add_hide_command(CLI::App& app, int& exit_code);     // hide_command.cpp: `hide load` (a stock hide onto a cutter)
 void add_compare_command(CLI::App& app, int& exit_code);   // compare_command.cpp: mold vs reference pattern
-void add_style_command(CLI::App& app, int& exit_code);     // style_command.cpp: `style pieces` (a style's pieces on a last), `style transfer` (lines onto a last)
+void add_style_command(CLI::App& app, int& exit_code);     // style_command.cpp: `style transfer` (lines onto a last), and the two below
+void add_pieces_command(CLI::App& app, int& exit_code);    // pieces_command.cpp: `pieces` (a style's pieces on a last)
+void add_style_pieces_command(CLI::App& style, int& exit_code);  // pieces_command.cpp: `style pieces`, the same
 void add_style_new_command(CLI::App& style, int& exit_code);  // style_new_command.cpp: `style new` (a reference last's forme to draw a style on)
 
 }  // namespace lastcut::cli

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "daemon/cli/cli_support.hpp"
 #include "daemon/cli/commands.hpp"
 #include "daemon/cli/mold_allowance_options.hpp"
 #include "engine/core/engine_error.hpp"
@@ -33,13 +34,6 @@ struct FlattenArguments {
   std::string side;                 // "", left or right
   double max_hole_mm = SegmentOptions{}.max_hole_fill_diameter_mm;
 };
-
-// One line, whatever the message holds.
-void print_error(std::string reason) {
-  for (char& c : reason)
-    if (c == '\n' || c == '\r') c = ' ';
-  std::fprintf(stderr, "lastcut: error: %s\n", reason.c_str());
-}
 
 LengthUnit length_unit_from_name(const std::string& name) {
   static const std::map<std::string, LengthUnit> units{{"auto", LengthUnit::Auto},

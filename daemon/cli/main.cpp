@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   lastcut::cli::add_compare_command(app, exit_code);
   lastcut::cli::add_hide_command(app, exit_code);
   lastcut::cli::add_style_command(app, exit_code);
+  lastcut::cli::add_pieces_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

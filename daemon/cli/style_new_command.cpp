@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "daemon/cli/cli_support.hpp"
 #include "daemon/cli/commands.hpp"
 #include "engine/core/durable_file.hpp"
 #include "engine/scan/scan_to_molds.hpp"
@@ -25,7 +26,7 @@ struct StyleNewArguments {
 };
 
 int refuse_style_new(const std::string& reason, int code) {
-  std::fprintf(stderr, "lastcut: error: %s\n", reason.c_str());
+  print_error(reason);
   return code;
 }
 
@@ -83,9 +84,7 @@ int run_style_new(const StyleNewArguments& arguments) {
     if (fs::exists(dir / file))
       return refuse_style_new((dir / file).string() + " exists: a style is made in a new folder, its drawing is never overwritten", 2);
   try {
-    ScanOptions options;
-    if (!arguments.side.empty()) options.side = arguments.side == "left" ? FootSide::Left : FootSide::Right;
-    const ScanResult reference = scan_to_molds(arguments.scan, options);
+    const ScanResult reference = segmented(arguments.scan, side_named(arguments.side));
     const FormeLayout layout = forme_layout(reference);
     fs::create_directories(dir);
     const std::string scan_file = "reference" + fs::path(arguments.scan).extension().string();

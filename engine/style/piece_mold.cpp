@@ -38,7 +38,8 @@ bool lies_on(const Eigen::Vector3d& p, const PieceEdgeSource& source, const Piec
   return false;
 }
 
-// What each vertex of the outline `loop` lies on: the nearest of the curves, a line when it is as near.
+// What each vertex of the outline `loop` lies on: the nearest of the curves; a line when it is as near, and
+// the feather line or top edge rather than a centre seam.
 std::vector<PieceEdgeSource> outline_sources(const TriMesh& mesh, const std::vector<int>& loop, const PieceEdgeCurves& curves) {
   std::vector<PieceEdgeSource> source(loop.size());
   for (std::size_t i = 0; i < loop.size(); ++i) {
@@ -50,16 +51,21 @@ std::vector<PieceEdgeSource> outline_sources(const TriMesh& mesh, const std::vec
       if (distance < nearest) nearest = distance, source[i] = candidate;
       if (candidate.kind == PieceEdgeSource::Kind::Line && distance < nearest_line) nearest_line = distance, line = candidate;
     }
-    if (nearest_line <= nearest + kSameDistance_mm) source[i] = line;
+    if (nearest_line <= nearest + kSameDistance_mm) {
+      source[i] = line;
+      continue;
+    }
+    // Where a centre seam ends on the feather line or the top edge, the end is the edge's: an uncut seam
+    // runs inside its piece, and a stretch of it on the outline would be a slit through the margin.
+    if (source[i].kind == PieceEdgeSource::Kind::FrontSeam || source[i].kind == PieceEdgeSource::Kind::BackSeam)
+      for (const auto& [candidate, curve] : curves.curves)
+        if ((candidate.kind == PieceEdgeSource::Kind::Feather || candidate.kind == PieceEdgeSource::Kind::Top) &&
+            distance_to_curve(p, curve) <= nearest + kSameDistance_mm) {
+          source[i] = candidate;
+          break;
+        }
   }
   return source;
-}
-
-// Sewn to another piece: a style line or a cut stretch of a centre seam (an uncut one is inside a piece).
-// The feather line is lasted and the top edge folded: they are sewn to nothing and stay free.
-bool is_sewn(const PieceEdgeSource& source) {
-  return source.kind == PieceEdgeSource::Kind::Line || source.kind == PieceEdgeSource::Kind::FrontSeam ||
-         source.kind == PieceEdgeSource::Kind::BackSeam;
 }
 
 // The piece's flattening with its sewn outline edges held at their 3D length (arap_held_lengths.hpp), so
@@ -79,6 +85,11 @@ void hold_sewn_lengths(const PieceSurface& piece, const MeshTopology& topology, 
                                  (report.stalled_on_flips ? ", stopped where a step would fold a triangle" : "") + ")");
 }
 }  // namespace
+
+bool is_sewn(const PieceEdgeSource& source) {
+  return source.kind == PieceEdgeSource::Kind::Line || source.kind == PieceEdgeSource::Kind::FrontSeam ||
+         source.kind == PieceEdgeSource::Kind::BackSeam;
+}
 
 std::string to_string(const PieceEdgeSource& source, const std::vector<std::string>& line_names) {
   switch (source.kind) {
@@ -160,11 +171,16 @@ PieceMold make_piece_mold(const PieceSurface& piece, const PieceEdgeCurves& curv
     if (k > 0 && source[i] == source[before]) continue;
     const int corner = static_cast<int>(lies_on(piece.mesh.V.row(loop[before]).transpose(), source[i], curves) ? before : i);
     if (!stretch_starts.empty() && stretch_starts.back() == corner) {  // a line stretch of its corner alone
-      stretch_source.back() = source[i];
-      continue;
+      stretch_starts.pop_back();
+      stretch_source.pop_back();
     }
+    if (!stretch_source.empty() && stretch_source.back() == source[i]) continue;  // then the stretch before goes on
     stretch_starts.push_back(corner);
     stretch_source.push_back(source[i]);
+  }
+  if (stretch_source.size() > 1 && stretch_source.back() == stretch_source.front()) {  // the last goes on into the first
+    stretch_starts.erase(stretch_starts.begin());
+    stretch_source.erase(stretch_source.begin());
   }
   // Each stretch's length on the last, from its start to the next stretch's.
   std::vector<double> length_3d(stretch_starts.size(), 0.0);

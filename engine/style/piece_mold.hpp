@@ -29,6 +29,10 @@ struct PieceEdgeSource {
 
 std::string to_string(const PieceEdgeSource& source, const std::vector<std::string>& line_names);
 
+// Sewn to another piece: a style line or a cut stretch of a centre seam (an uncut one is inside a piece).
+// The feather line is lasted and the top edge folded: they are sewn to nothing.
+bool is_sewn(const PieceEdgeSource& source);
+
 // The 3D curves a piece's outline may lie on, in the new last's canonical frame (mm).
 // Each half's outline edges, and each style line as its runs on the upper (runs_on_upper).
 struct PieceEdgeCurves {
