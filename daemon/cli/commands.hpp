@@ -16,5 +16,6 @@ void add_subdivide_command(CLI::App& app, int& exit_code); // subdivide_command.
 void add_hide_command(CLI::App& app, int& exit_code);     // hide_command.cpp: `hide load` (a stock hide onto a cutter)
 void add_compare_command(CLI::App& app, int& exit_code);   // compare_command.cpp: mold vs reference pattern
 void add_style_command(CLI::App& app, int& exit_code);     // style_command.cpp: `style pieces` (a style's pieces on a last), `style transfer` (lines onto a last)
+void add_style_check_command(CLI::App& style, int& exit_code);  // style_check_command.cpp: `style check` (a style tried on its reference last)
 
 }  // namespace lastcut::cli

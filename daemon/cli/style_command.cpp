@@ -256,6 +256,7 @@ void add_style_command(CLI::App& app, int& exit_code) {
   transfer->add_option("--side", transfer_arguments->side, "the foot the new last is for (left or right): names the halves of a symmetric last");
   transfer->add_option("--reference-side", transfer_arguments->reference_side, "the foot the reference last is for (left or right)");
   transfer->callback([transfer_arguments, &exit_code] { exit_code = run_style_transfer(*transfer_arguments); });
+  add_style_check_command(*style, exit_code);
 }
 
 }  // namespace lastcut::cli
