@@ -19,5 +19,6 @@ void add_style_command(CLI::App& app, int& exit_code);     // style_command.cpp:
 void add_pieces_command(CLI::App& app, int& exit_code);    // pieces_command.cpp: `pieces` (a style's pieces on a last)
 void add_style_pieces_command(CLI::App& style, int& exit_code);  // pieces_command.cpp: `style pieces`, the same
 void add_style_new_command(CLI::App& style, int& exit_code);  // style_new_command.cpp: `style new` (a reference last's forme to draw a style on)
+void add_style_check_command(CLI::App& style, int& exit_code);  // style_check_command.cpp: `style check` (a style tried on its reference last)
 
 }  // namespace lastcut::cli

@@ -20,11 +20,9 @@
 #include "daemon/cli/cli_support.hpp"
 #include "daemon/cli/commands.hpp"
 #include "daemon/config/style_folder.hpp"
-#include "daemon/config/style_forme.hpp"
+#include "daemon/cli/style_reference.hpp"
 #include "engine/core/durable_file.hpp"
 #include "engine/core/engine_error.hpp"
-#include "engine/lastgen/generate_last.hpp"
-#include "engine/mesh/write_mesh.hpp"
 #include "engine/mold/mold_dxf.hpp"
 #include "engine/mold/mold_svg.hpp"
 #include "engine/pattern/aama_dxf.hpp"
@@ -97,17 +95,6 @@ nlohmann::json seam_json(const SeamReport& seam) {
           {"length_3d_mm", seam.length_3d_mm}};
 }
 
-// The reference last of a style folder, segmented: its scan, or the generated last it names (made
-// where the output goes, then removed).
-ScanResult segmented_reference(const daemon::StyleFolder& folder, const fs::path& out_dir) {
-  if (!folder.generated_reference) return segmented(folder.reference_scan, folder.reference_side);
-  const fs::path scan = out_dir / ".style-reference.stl";
-  write_stl_binary(scan, generate_last(*folder.generated_reference).mesh);
-  ScanResult reference = segmented(scan, folder.reference_side);
-  fs::remove(scan);
-  return reference;
-}
-
 void write_outputs(const PiecesArguments& arguments, const daemon::StyleFolder& folder, const StyleResult& result) {
   const fs::path out(arguments.out_dir);
   const std::string& style = folder.style.name;
@@ -163,8 +150,7 @@ int run_pieces(const PiecesArguments& arguments) {
   }
   try {
     fs::create_directories(arguments.out_dir);
-    const ScanResult reference = segmented_reference(*folder, arguments.out_dir);
-    if (const Status lifted = daemon::lift_forme_style(*folder, reference); !lifted) throw EngineError(lifted.error());
+    const ScanResult reference = prepare_style_reference(*folder);
     const ScanResult target = segmented(arguments.scan, side_named(arguments.side));
     const StyleResult result = make_style_pieces(folder->style, reference, target);
     write_outputs(arguments, *folder, result);

@@ -98,6 +98,7 @@ void add_style_command(CLI::App& app, int& exit_code) {
   transfer->add_option("--reference-side", transfer_arguments->reference_side, "the foot the reference last is for (left or right)");
   transfer->callback([transfer_arguments, &exit_code] { exit_code = run_style_transfer(*transfer_arguments); });
   add_style_new_command(*style, exit_code);
+  add_style_check_command(*style, exit_code);
 }
 
 }  // namespace lastcut::cli

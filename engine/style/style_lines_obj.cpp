@@ -60,10 +60,11 @@ std::vector<StyleLine> read_style_lines_obj(const std::filesystem::path& path) {
         const std::string index_text = word.substr(0, word.find('/'));  // "l 1/1 2/2" carries texture indices
         const double index = number(index_text, path, line_number);
         const long long count = static_cast<long long>(vertices.size());
-        const long long resolved = index < 0 ? count + static_cast<long long>(index) : static_cast<long long>(index) - 1;
-        if (index != std::floor(index) || index == 0 || resolved < 0 || resolved >= count)
+        // Checked as a number before it becomes an integer: 1e300 fits no long long (undefined behaviour).
+        if (index != std::floor(index) || index == 0 || std::abs(index) > static_cast<double>(count))
           throw EngineError(at(path, line_number) + "vertex index " + index_text + " is not one of the " +
                             std::to_string(count) + " vertices so far");
+        const long long resolved = index < 0 ? count + static_cast<long long>(index) : static_cast<long long>(index) - 1;
         line.points_mm.push_back(vertices[static_cast<std::size_t>(resolved)]);
       }
       if (line.points_mm.size() < 2) throw EngineError(at(path, line_number) + "a line needs at least two points");

@@ -63,6 +63,8 @@ TEST_F(StyleLinesObj, BadFilesAreRefusedInOneLine) {
   EXPECT_EQ(refusal("v 0 0 x\n"), "lines.obj line 1: 'x' is not a number");
   EXPECT_EQ(refusal("v 0 0\n"), "lines.obj line 1: a vertex needs three coordinates");
   EXPECT_EQ(refusal("v 0 0 0\nv 1 0 0\nl 1 3\n"), "lines.obj line 3: vertex index 3 is not one of the 2 vertices so far");
+  // Beyond any integer: refused before it is made one (the style_lines fuzz target's regression-huge-index).
+  EXPECT_EQ(refusal("v 0 0 0\nv 1 0 0\nl 1 -1e300\n"), "lines.obj line 3: vertex index -1e300 is not one of the 2 vertices so far");
   EXPECT_EQ(refusal("v 0 0 0\nl 1\n"), "lines.obj line 2: a line needs at least two points");
   EXPECT_EQ(refusal("v 0 0 0\nv 1 0 0\no a\nl 1 2\no a\nl 2 1\n"), "lines.obj line 6: a second line named a: each line needs its own name");
   EXPECT_EQ(refusal("v 0 0 0\n"), "lines.obj: no lines (l records) in the file");

@@ -115,9 +115,11 @@ TEST_F(StyleSeams, TheDerbysSeamsMatchOnTenLasts) {
     for (const StylePieceResult& piece : result.pieces) {
       // A stretch on a centre seam is a cut seam, never the end of an uncut one at the feather line
       // (that was a 0 mm slit through the lasting margin).
-      for (const PieceMoldEdge& stretch : piece.mold.edges)
-        if (stretch.source.kind == PieceEdgeSource::Kind::FrontSeam || stretch.source.kind == PieceEdgeSource::Kind::BackSeam)
+      for (const PieceMoldEdge& stretch : piece.mold.edges) {
+        if (stretch.source.kind == PieceEdgeSource::Kind::FrontSeam || stretch.source.kind == PieceEdgeSource::Kind::BackSeam) {
           EXPECT_GT(stretch.length_3d_mm, 20) << where << ", " << piece.spec.name;
+        }
+      }
       EXPECT_EQ(piece.mold.mold.marks.size(), piece.notches.size()) << where << ", " << piece.spec.name;
       for (const PieceNotch& notch : piece.notches) ++pieces_with[notch.name];
       for (const PieceMoldEdge& stretch : piece.mold.edges) {
