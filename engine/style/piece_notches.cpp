@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "engine/core/polyline_3d.hpp"
 #include "engine/mold/notch_placement.hpp"
@@ -50,11 +51,16 @@ bool at_corner(const Eigen::Vector3d& p, const TriMesh& mesh, const PieceMoldEdg
 std::vector<SewnCurve> sewn_curves(const PieceEdgeCurves& curves, const std::vector<std::string>& line_names) {
   std::vector<SewnCurve> sewn;
   bool front_seen = false, back_seen = false;
+  std::map<int, int> runs_of_line;
   for (const auto& [source, points] : curves.curves) {
     switch (source.kind) {
-      case PieceEdgeSource::Kind::Line:
-        sewn.push_back({source, line_names.at(static_cast<std::size_t>(source.line)), points});
+      case PieceEdgeSource::Kind::Line: {
+        // A line that leaves the upper and comes back is sewn in parts: NAME, NAME (2), ... (as `style transfer` writes them)
+        const int run = ++runs_of_line[source.line];
+        const std::string& name = line_names.at(static_cast<std::size_t>(source.line));
+        sewn.push_back({source, run == 1 ? name : name + " (" + std::to_string(run) + ")", points});
         break;
+      }
       case PieceEdgeSource::Kind::FrontSeam:
       case PieceEdgeSource::Kind::BackSeam: {
         bool& seen = source.kind == PieceEdgeSource::Kind::FrontSeam ? front_seen : back_seen;

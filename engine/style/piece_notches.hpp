@@ -24,7 +24,7 @@ namespace lastcut {
 // A curve pieces are sewn along, on the new last (canonical frame, mm), in its own direction.
 struct SewnCurve {
   PieceEdgeSource source;  // a Line, FrontSeam or BackSeam
-  std::string name;        // the line's name, "front seam" or "back seam"
+  std::string name;        // the line's name ("NAME (2)" for its second run on the upper), "front seam" or "back seam"
   std::vector<Eigen::Vector3d> points_mm;
 };
 

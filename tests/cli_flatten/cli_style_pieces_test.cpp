@@ -5,6 +5,7 @@
 // refused with one line naming the key and its line.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -15,6 +16,8 @@
 #include "engine/lastgen/generate_last.hpp"
 #include "engine/mesh/write_mesh.hpp"
 #include "engine/mold/mold_dxf.hpp"
+#include "engine/pattern/aama_dxf.hpp"
+#include "tests/support/child_process.hpp"
 #include "tests/support/lastcut_cli.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -52,6 +55,56 @@ TEST(CliStylePieces, ShippedDerbyOnAnotherLast) {
     bool lasting = false;
     for (const auto& edge : piece["edges"]) lasting = lasting || (edge["on"] == "feather line" && edge["allowance_mm"] == 18.0);
     EXPECT_TRUE(lasting) << name;
+  }
+}
+
+// `lastcut pieces` writes what a pattern room exchanges: every piece in one DXF-AAMA file, which our
+// reader and, independently, ezdxf (Debian's python3-ezdxf, under Debian's own interpreter) read and
+// audit clean; the notches, grain line and seam lengths in pieces.json agree with it.
+TEST(CliStylePieces, PiecesCommandWritesDxfAamaAndTheSeams) {
+  const test::TempDir dir("cli-pieces");
+  LastParams params = LastParams::for_eu_size(41, FootSide::Left);
+  params.target_triangles = 30000;
+  write_mesh(dir / "last.stl", generate_last(params).mesh);
+  const test::CommandRun run = test::run_lastcut(
+      "pieces '" + (dir / "last.stl").string() + "' --style '" + kDerby.string() + "' -o '" + (dir / "out").string() + "' --size 41 --side left", dir);
+  ASSERT_EQ(run.exit_code, 0) << run.all();
+  const nlohmann::json report = nlohmann::json::parse(test::read_text(dir / "out" / "pieces.json"));
+  ASSERT_EQ(report["pieces"].size(), 4u);
+  ASSERT_EQ(report["seams"].size(), 4u);
+  for (const auto& seam : report["seams"]) EXPECT_LE(std::abs(seam["difference_mm"].get<double>()), 0.5) << seam.dump();
+
+  const fs::path aama = dir / "out" / "aama" / "derby-41-left.dxf";
+  const std::vector<PatternPiece> patterns = read_aama_dxf(aama);
+  ASSERT_EQ(patterns.size(), 4u);
+  for (std::size_t p = 0; p < patterns.size(); ++p) {
+    const PatternPiece& pattern = patterns[p];
+    const auto& piece = report["pieces"][p];
+    EXPECT_EQ(pattern.name, piece["name"]);
+    EXPECT_EQ(pattern.size, "41");
+    EXPECT_EQ(pattern.style, "derby");
+    EXPECT_EQ(pattern.annotation, "left");
+    EXPECT_EQ(pattern.category, "upper leather");
+    EXPECT_EQ(pattern.notches.size(), piece["notches"].size()) << pattern.name;
+    ASSERT_TRUE(pattern.grain_line_mm) << pattern.name;
+    EXPECT_LT(((*pattern.grain_line_mm)[0] - Point2(piece["grain_line_mm"][0][0], piece["grain_line_mm"][0][1])).norm(), 1e-6);
+    EXPECT_EQ(pattern.internal_lines_mm.size(), 1u) << pattern.name;  // the net line
+    EXPECT_GE(pattern.sew_lines_mm.size(), 1u) << pattern.name;      // every derby piece is sewn to another
+    for (std::size_t n = 0; n < pattern.notches.size(); ++n)
+      EXPECT_LT((pattern.notches[n].at_mm - Point2(piece["notches"][n]["on_cut_line_mm"][0], piece["notches"][n]["on_cut_line_mm"][1])).norm(), 1e-6);
+  }
+  const int status = test::run_to_exit({"/usr/bin/python3", std::string(LASTCUT_SOURCE_DIR) + "/tests/pattern/aama_ezdxf_report.py",
+                                        aama.string(), (dir / "ezdxf.json").string()},
+                                       dir / "ezdxf.log", 120.0);
+  ASSERT_EQ(status, 0) << test::read_text(dir / "ezdxf.log");
+  const nlohmann::json ezdxf = nlohmann::json::parse(test::read_text(dir / "ezdxf.json"));
+  EXPECT_TRUE(ezdxf["audit_errors"].empty()) << ezdxf["audit_errors"].dump();
+  EXPECT_TRUE(ezdxf["audit_fixes"].empty()) << ezdxf["audit_fixes"].dump();
+  ASSERT_EQ(ezdxf["pieces"].size(), 4u);
+  for (std::size_t p = 0; p < patterns.size(); ++p) {
+    EXPECT_EQ(ezdxf["pieces"][p]["closed_cut_lines"], nlohmann::json::array({patterns[p].cut_line_mm.size()}));
+    EXPECT_EQ(ezdxf["pieces"][p]["notch_points"].size(), patterns[p].notches.size());
+    EXPECT_EQ(ezdxf["pieces"][p]["grain_lines"].size(), 1u);
   }
 }
 

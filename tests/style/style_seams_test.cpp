@@ -1,4 +1,4 @@
-// Seams match (issue 34): the shipped derby (config/styles/derby) cut from ten generated lasts, sizes
+// Seams match (issue 34): the shipped derby and loafer (config/styles) cut from ten generated lasts, sizes
 // EU 36 to 47, both feet, two widths, one posed. On every seam the pieces of the two sides must have the
 // same flattened length within 0.5 mm, and every balance notch must lie on both sides of its seam at the
 // same arc length: consecutive notches of a seam are one spacing apart along each piece's net line,
@@ -54,17 +54,23 @@ class StyleSeams : public ::testing::Test {
   static void SetUpTestSuite() {
     static const test::TempDir dir("style-seams");
     dir_ = &dir;
-    const Result<daemon::StyleFolder> folder = daemon::read_style_folder(fs::path(LASTCUT_SOURCE_DIR) / "config" / "styles" / "derby");
-    ASSERT_TRUE(folder) << folder.error();
-    ASSERT_TRUE(folder->generated_reference);
-    style_ = new StyleDefinition(folder->style);
-    reference_ = new ScanResult(segmented(generate_last(*folder->generated_reference).mesh, dir / "reference.stl", FootSide::Right));
+    styles_ = new std::map<std::string, StyleDefinition>;
+    for (const char* name : {"derby", "loafer"}) {  // both drawn on the generated EU 42 right last
+      const Result<daemon::StyleFolder> folder = daemon::read_style_folder(fs::path(LASTCUT_SOURCE_DIR) / "config" / "styles" / name);
+      ASSERT_TRUE(folder) << folder.error();
+      ASSERT_TRUE(folder->generated_reference);
+      (*styles_)[name] = folder->style;
+      if (!reference_)
+        reference_ = new ScanResult(segmented(generate_last(*folder->generated_reference).mesh, dir / "reference.stl", FootSide::Right));
+    }
   }
   static void TearDownTestSuite() {
-    delete style_;
+    delete styles_;
     delete reference_;
+    styles_ = nullptr;  // a second suite (the parameterised one) sets up again
+    reference_ = nullptr;
   }
-  static StyleResult cut(const TestLast& last, int triangles = 20000) {
+  static StyleResult cut(const std::string& style, const TestLast& last, int triangles = 20000) {
     LastParams params = LastParams::for_eu_size(last.eu_size, last.side);
     params.target_triangles = triangles;
     params.ball_width_mm *= last.girth;
@@ -72,10 +78,10 @@ class StyleSeams : public ::testing::Test {
     params.random_pose = last.posed;
     params.seed = 11;
     const ScanResult target = segmented(generate_last(params).mesh, *dir_ / "last.stl", last.side);
-    return make_style_pieces(*style_, *reference_, target);
+    return make_style_pieces(styles_->at(style), *reference_, target);
   }
   static inline const test::TempDir* dir_ = nullptr;
-  static inline StyleDefinition* style_ = nullptr;
+  static inline std::map<std::string, StyleDefinition>* styles_ = nullptr;
   static inline ScanResult* reference_ = nullptr;
 };
 
@@ -91,16 +97,22 @@ double arc_along_stretch(const PieceMold& mold, const PieceMoldEdge& stretch, co
   return NAN;
 }
 
-TEST_F(StyleSeams, TheDerbysSeamsMatchOnTenLasts) {
+// Each shipped style on the ten lasts.
+class StyleSeamsOnTenLasts : public StyleSeams, public ::testing::WithParamInterface<std::string> {};
+
+TEST_P(StyleSeamsOnTenLasts, SeamsMatchAndBalanceNotchesMeet) {
+  const std::string style = GetParam();
   const std::vector<TestLast> lasts = {{36, FootSide::Right}, {37, FootSide::Right}, {38, FootSide::Left},
                                        {39, FootSide::Right, 0.95}, {40, FootSide::Right}, {42, FootSide::Right, 1.0, true},
                                        {43, FootSide::Left, 1.05}, {44, FootSide::Right}, {46, FootSide::Left}, {47, FootSide::Right}};
   double worst_mm = 0;
   std::string worst_where;
   for (const TestLast& last : lasts) {
-    const StyleResult result = cut(last);
-    const std::string where = describe(last);
-    ASSERT_EQ(result.seams.size(), 4u) << where;  // the vamp line, the counter line, the front and back seams' cut parts
+    const StyleResult result = cut(style, last);
+    const std::string where = style + " on " + describe(last);
+    // derby: the vamp line, the counter line, the front and back seams' cut parts; loafer: the apron line,
+    // the vamp line's two runs (feather line to top edge on each side), the counter line, the back seam's cut part
+    ASSERT_EQ(result.seams.size(), style == "derby" ? 4u : 5u) << where;
     std::printf("%-22s", where.c_str());
     for (const SeamReport& seam : result.seams) {
       std::printf("  %s %+.2f", seam.seam.c_str(), seam.difference_mm());
@@ -134,13 +146,14 @@ TEST_F(StyleSeams, TheDerbysSeamsMatchOnTenLasts) {
       }
     }
     for (const auto& [name, count] : pieces_with) {
-      if (name.find(" x ") != std::string::npos)
-        EXPECT_EQ(count, 1) << where << ": junction notch " << name;  // on the vamp or the counter
-      else
+      if (name.find(" x ") == std::string::npos) {
         EXPECT_EQ(count, 2) << where << ": balance notch " << name;
+      }
     }
-    EXPECT_EQ(pieces_with.count("vamp x front seam"), 1u) << where;
-    EXPECT_EQ(pieces_with.count("counter x back seam"), 1u) << where;
+    if (style != "derby") continue;
+    // The derby's junctions are marked on the vamp and the counter, which run straight through them.
+    EXPECT_EQ(pieces_with["vamp x front seam"], 1) << where;
+    EXPECT_EQ(pieces_with["counter x back seam"], 1) << where;
     const auto vamp_line_notches = std::count_if(pieces_with.begin(), pieces_with.end(), [](const auto& entry) {
       return entry.first.rfind("vamp ", 0) == 0 && entry.first.find(" x ") == std::string::npos;
     });
@@ -149,13 +162,16 @@ TEST_F(StyleSeams, TheDerbysSeamsMatchOnTenLasts) {
   std::printf("worst seam mismatch %.2f mm (%s)\n", worst_mm, worst_where.c_str());
 }
 
+INSTANTIATE_TEST_SUITE_P(ShippedStyles, StyleSeamsOnTenLasts, ::testing::Values("derby", "loafer"));
+
 TEST_F(StyleSeams, TheGrainLineLiesInsideItsPieceAndTurnsWithTheStyle) {
   const TestLast last{41, FootSide::Right};
-  const StyleResult along = cut(last);
-  const StyleDefinition saved = *style_;
-  for (StylePiece& piece : style_->pieces) piece.grain_deg = 90;
-  const StyleResult across = cut(last);
-  *style_ = saved;
+  const StyleResult along = cut("derby", last);
+  StyleDefinition& derby = styles_->at("derby");
+  const StyleDefinition saved = derby;
+  for (StylePiece& piece : derby.pieces) piece.grain_deg = 90;
+  const StyleResult across = cut("derby", last);
+  derby = saved;
   ASSERT_EQ(along.pieces.size(), across.pieces.size());
   for (std::size_t p = 0; p < along.pieces.size(); ++p) {
     const StylePieceResult& piece = along.pieces[p];
