@@ -25,8 +25,9 @@ std::vector<SeamReport> seam_reports(const std::vector<SewnCurve>& curves,
   std::vector<SeamReport> reports;
   for (const SewnCurve& curve : curves) {
     SeamReport report{curve.name, {}, {}, 0, 0, 0};
-    for (const auto& [surface, mold] : pieces)
-      for (const PieceMoldEdge& edge : mold->edges) {
+    for (const auto& piece : pieces) {
+      const PieceSurface* surface = piece.first;  // not a structured binding: the lambda below captures it
+      for (const PieceMoldEdge& edge : piece.second->edges) {
         if (!(edge.source == curve.source) || edge.outline_vertices.size() < 2) continue;
         const auto vertex = [&](std::size_t i) { return Eigen::Vector3d(surface->mesh.V.row(edge.outline_vertices[i]).transpose()); };
         const PolylineHit middle = closest_on_polyline(vertex(edge.outline_vertices.size() / 2), curve.points_mm);
@@ -42,6 +43,7 @@ std::vector<SeamReport> seam_reports(const std::vector<SewnCurve>& curves,
           report.other_side_mm += net_length_mm(edge);
         }
       }
+    }
     if (!report.one_side.empty() && !report.other_side.empty()) reports.push_back(std::move(report));
   }
   return reports;
