@@ -119,6 +119,13 @@ Result<StyleFolder> read_style_folder(const std::filesystem::path& folder) {
     }
     reader.text("material", piece.material);
     reader.integer("quantity", piece.quantity, 1, 20);
+    reader.number("grain_deg", piece.grain_deg, -180, 180);
+    double grain_tolerance_deg = -1;  // absent: the material's default
+    reader.number("grain_tolerance_deg", grain_tolerance_deg, 0, 90);
+    if (grain_tolerance_deg >= 0) piece.grain_tolerance_deg = grain_tolerance_deg;
+    int min_quality = -1;
+    reader.integer("min_quality", min_quality, 0, 100);
+    if (min_quality >= 0) piece.min_quality = min_quality;
     result.style.pieces.push_back(piece);
   });
   root.reject_unknown();

@@ -27,6 +27,10 @@
 //   label = [240.0, 0.0, 45.0]           # a point inside the piece on the reference last, its scan's frame
 //   material = "upper leather"
 //   quantity = 1                         # per shoe
+//   grain_deg = 0.0                      # grain line from the heel-to-toe axis (-180..180)
+//   grain_tolerance_deg = 10.0           # on a hide: grain along the backbone within this (0..90);
+//                                        # absent: the material's grain_tolerance_deg
+//   min_quality = 3                      # lowest leather grade (0..100); absent: the material's
 #include <filesystem>
 #include <optional>
 

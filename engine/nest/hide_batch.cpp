@@ -73,8 +73,11 @@ BatchInstance hide_batch(const std::vector<PieceGroup>& groups, const std::vecto
       if (auto region = toe_region(item, spec.toe_fraction, spec.toe_min_quality)) item.quality_regions.push_back(*region);
     }
     // Without a backbone the nester would hold the grain to the hide's x axis, a direction that
-    // means nothing on leather.
-    if (spec.grain_tolerance_deg && every_hide_has_backbone) {
+    // means nothing on leather. A piece with a grain of its own (a pattern or style piece, with its
+    // own tolerance) keeps it; a mold's grain is its heel-to-toe axis, x.
+    if (!every_hide_has_backbone) {
+      item.grain_deg.reset();
+    } else if (spec.grain_tolerance_deg && !item.grain_deg) {
       item.grain_deg = 0.0;
       item.grain_tolerance_deg = *spec.grain_tolerance_deg;
     }

@@ -10,7 +10,9 @@
 //              freely when the step is 0
 //   priority   an older job first: the group's priority is copied onto its items (NestItem::priority)
 //   leather    on hides, spec.min_quality for the whole piece, spec.toe_min_quality for its toe region,
-//              grain along the hide's backbone within spec.grain_tolerance_deg
+//              grain along the hide's backbone within spec.grain_tolerance_deg; a piece that comes
+//              with a grain of its own (a pattern or style piece, pattern_items.hpp) keeps its grain
+//              and tolerance, a piece whose grain is free (a lining) stays free
 //   pairs      on hides, a job's pieces are cut together or not at all, and with PairPolicy::SameHide
 //              all jobs of one order (the left and right lasts of a pair) share one pair group, so
 //              they lie on one hide; with PairPolicy::Any only a job's own pieces stay together

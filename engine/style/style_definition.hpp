@@ -8,6 +8,7 @@
 // that lies under its neighbour the underlay (8 mm) and the other one a butted or raw edge (0), a cut
 // seam is butted (0).
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,10 @@ struct StylePiece {
   std::string material = "upper leather";
   int quantity = 1;  // per shoe
   double grain_deg = 0;  // the grain line, counter-clockwise from the last's heel-to-toe axis (piece_grain.hpp)
+  // What the piece asks of the leather when it is cut (engine/nest/pattern_items.hpp); nullopt: the
+  // material's default in the cutting room's configuration.
+  std::optional<double> grain_tolerance_deg;  // grain line along the hide's backbone within this
+  std::optional<int> min_quality;             // lowest leather grade the piece may lie on
 };
 
 struct StyleDefinition {

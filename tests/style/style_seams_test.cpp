@@ -17,6 +17,7 @@
 #include "engine/lastgen/generate_last.hpp"
 #include "engine/mesh/write_mesh.hpp"
 #include "engine/scan/scan_to_molds.hpp"
+#include "engine/style/style_items.hpp"
 #include "engine/style/style_pieces.hpp"
 #include "tests/support/temp_dir.hpp"
 
@@ -184,6 +185,45 @@ TEST_F(StyleSeams, TheGrainLineLiesInsideItsPieceAndTurnsWithTheStyle) {
     EXPECT_NEAR(one.normalized().dot(other.normalized()), 0, 1e-9) << piece.spec.name;
     EXPECT_GT(one.x() * other.y() - one.y() * other.x(), 0) << piece.spec.name;
   }
+}
+
+// The pieces as nest items (style_items.hpp): the shipped derby's own rules (vamp 10 degrees and grade 3,
+// the others 20 and 2) over the material's, the other foot mirrored, the grain the grain line's, the labels.
+TEST_F(StyleSeams, ItemsCarryTheStylesLeatherRules) {
+  const StyleResult pieces = cut("derby", {42, FootSide::Right});
+  StyleNestSpec spec;
+  spec.style = "derby";
+  spec.size = "42";
+  spec.foot = "right";
+  spec.shoes = 2;
+  spec.other_foot = true;
+  spec.material_rules = [](const std::string& material) {
+    EXPECT_EQ(material, "upper leather");
+    return PieceRules{45.0, 1};
+  };
+  const std::vector<NestItem> items = items_from_style(pieces, spec);
+  ASSERT_EQ(items.size(), 2 * pieces.pieces.size());
+  for (std::size_t p = 0; p < pieces.pieces.size(); ++p) {
+    const StylePieceResult& piece = pieces.pieces[p];
+    const bool vamp = piece.spec.name == "vamp";
+    for (int twin = 0; twin < 2; ++twin) {
+      const NestItem& item = items[2 * p + twin];
+      EXPECT_EQ(item.demand, 2);
+      EXPECT_EQ(item.label, "derby 42 " + piece.spec.name + (twin ? " left" : " right"));
+      EXPECT_EQ(item.min_quality, vamp ? 3 : 2);
+      EXPECT_EQ(item.grain_tolerance_deg, vamp ? 10 : 20);
+      EXPECT_NEAR(signed_area(item.shape), signed_area(piece.mold.mold.outline), 1e-6);
+      EXPECT_EQ(item.marks.size(), piece.notches.size());
+      const Point2 grain = piece.grain.to_mm - piece.grain.from_mm;
+      const double grain_deg = std::atan2(grain.y(), twin ? -grain.x() : grain.x()) * 180 / M_PI;
+      ASSERT_TRUE(item.grain_deg) << piece.spec.name;
+      EXPECT_NEAR(*item.grain_deg, grain_deg, 1e-9) << piece.spec.name;
+    }
+  }
+  StyleDefinition derby = styles_->at("derby");
+  for (StylePiece& piece : derby.pieces) piece.min_quality.reset(), piece.grain_tolerance_deg.reset();
+  EXPECT_EQ(style_piece_rules(derby.pieces[0], spec.material_rules).grain_tolerance_deg, 45);  // the material's
+  EXPECT_EQ(style_piece_rules(derby.pieces[0], {}).grain_tolerance_deg, std::nullopt);          // free
 }
 
 }  // namespace
