@@ -15,7 +15,7 @@
 
 #include "daemon/cli/cli_support.hpp"
 #include "daemon/cli/commands.hpp"
-#include "daemon/cli/style_reference.hpp"
+#include "daemon/config/style_reference.hpp"
 #include "daemon/config/style_folder.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/scan/scan_to_molds.hpp"
@@ -73,7 +73,7 @@ int run_style_check(const CheckArguments& arguments) {
   }
   const fs::path svg = arguments.svg.empty() ? fs::path(arguments.style_dir) / "check.svg" : fs::path(arguments.svg);
   try {
-    const ScanResult reference = prepare_style_reference(*folder);
+    const ScanResult reference = daemon::prepare_style_reference(*folder);
     const StyleResult result = make_style_pieces(folder->style, reference, reference);
     write_style_check_svg(svg, check_sheet(folder->style, reference, result));
     for (const StylePieceResult& piece : result.pieces)

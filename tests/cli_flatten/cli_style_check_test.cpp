@@ -145,7 +145,8 @@ TEST(CliStyleCheck, BrokenStylesAreRefusedWithTheirLine) {
       {"label = [199.83, -40.55, 45.50]\n", "", 2,
        literal("lastcut: error: " + (dir / "loafer" / "style.toml").string() + ": piece[2].label: missing (required)\n")},
       // The apron's piece left out: its region has no label.
-      {"[[piece]]\nname = \"apron\"\nlabel = [215.12, 0.08, 49.84]\nmaterial = \"upper leather\"\nquantity = 1\n", "", 1,
+      {"[[piece]]\nname = \"apron\"\nlabel = [215.12, 0.08, 49.84]\nmaterial = \"upper leather\"\nquantity = 1\n"
+       "grain_tolerance_deg = 10.0   # along the backbone\nmin_quality = 3\n", "", 1,
        R"(lastcut: error: the region at the (medial|lateral) forme \(-?\d+, -?\d+\) mm has no piece: a label is missing or a line does not reach an edge\n)"},
       // A rule for a line the lines file does not have.
       {"[[line]]\nname = \"apron\"", "[[line]]\nname = \"aprn\"", 1,

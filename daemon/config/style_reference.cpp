@@ -1,4 +1,4 @@
-#include "daemon/cli/style_reference.hpp"
+#include "daemon/config/style_reference.hpp"
 
 #include <stdlib.h>
 
@@ -6,13 +6,12 @@
 #include <string>
 #include <system_error>
 
-#include "daemon/cli/cli_support.hpp"
 #include "daemon/config/style_forme.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/lastgen/generate_last.hpp"
 #include "engine/mesh/write_mesh.hpp"
 
-namespace lastcut::cli {
+namespace lastcut::daemon {
 namespace {
 
 namespace fs = std::filesystem;
@@ -22,7 +21,7 @@ namespace fs = std::filesystem;
 class ScratchFolder {
  public:
   ScratchFolder() {
-    std::string pattern = (fs::temp_directory_path() / "lastcut-style-check-XXXXXX").string();
+    std::string pattern = (fs::temp_directory_path() / "lastcut-style-reference-XXXXXX").string();
     if (::mkdtemp(pattern.data()) == nullptr) throw EngineError("cannot make a scratch folder like " + pattern);
     path_ = pattern;
   }
@@ -38,8 +37,14 @@ class ScratchFolder {
   fs::path path_;
 };
 
+ScanResult segmented(const fs::path& scan, FootSide side) {
+  ScanOptions options;
+  options.side = side;
+  return scan_to_molds(scan, options);
+}
+
 // The style's reference last through the scan-to-molds pipeline, its halves named by its side.
-ScanResult segmented_reference(const daemon::StyleFolder& folder) {
+ScanResult segmented_reference(const StyleFolder& folder) {
   if (!folder.generated_reference) return segmented(folder.reference_scan, folder.reference_side);
   const ScratchFolder scratch;
   write_stl_binary(scratch.path() / "reference.stl", generate_last(*folder.generated_reference).mesh);
@@ -48,10 +53,10 @@ ScanResult segmented_reference(const daemon::StyleFolder& folder) {
 
 }  // namespace
 
-ScanResult prepare_style_reference(daemon::StyleFolder& folder) {
+ScanResult prepare_style_reference(StyleFolder& folder) {
   ScanResult reference = segmented_reference(folder);
-  if (const Status lifted = daemon::lift_forme_style(folder, reference); !lifted) throw EngineError(lifted.error());
+  if (const Status lifted = lift_forme_style(folder, reference); !lifted) throw EngineError(lifted.error());
   return reference;
 }
 
-}  // namespace lastcut::cli
+}  // namespace lastcut::daemon
