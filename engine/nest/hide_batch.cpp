@@ -32,7 +32,9 @@ BatchInstance common_batch(const std::vector<PieceGroup>& groups, const BatchSpe
         spec.pairs == PairPolicy::SameHide && !group.order.empty() ? "order " + group.order : "job " + group.owner;
     for (NestItem item : group.items) {
       item.id = next_id++;
-      item.allowed_rotations_deg = rotations;
+      // A piece with a grain of its own (a pattern or style piece) turns freely within its grain
+      // tolerance: its grain line lies at any angle, so the material's steps might never meet it.
+      item.allowed_rotations_deg = item.grain_deg ? std::vector<double>{} : rotations;
       item.priority = group.priority;
       if (hides) item.pair_group = pair_group;
       batch.instance.items.push_back(std::move(item));

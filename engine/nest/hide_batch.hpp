@@ -7,7 +7,8 @@
 //
 // Rules (docs/hides.md):
 //   rotations  every piece may turn in steps of rotation_step_deg (0, step, 2 step, ... < 360), or
-//              freely when the step is 0
+//              freely when the step is 0; a piece with a grain of its own turns freely within its
+//              grain tolerance
 //   priority   an older job first: the group's priority is copied onto its items (NestItem::priority)
 //   leather    on hides, spec.min_quality for the whole piece, spec.toe_min_quality for its toe region,
 //              grain along the hide's backbone within spec.grain_tolerance_deg; a piece that comes

@@ -99,9 +99,13 @@ TEST(PatternItems, HideBatchKeepsThePiecesOwnGrain) {
   mold.shape.points = {{0, 0}, {80, 0}, {80, 30}, {0, 30}};
   items.push_back(mold);
   BatchSpec spec;
-  spec.rotation_step_deg = 0;
+  spec.rotation_step_deg = 90;
   spec.grain_tolerance_deg = 20;
   const BatchInstance batch = hide_batch({{"J1", "", 0, items}}, {hide_with_backbone(90)}, spec, "b");
+  // The vamp turns freely within its tolerance (no step of 90 deg puts a 30 deg grain along the
+  // backbone); the mold in the material's steps.
+  EXPECT_TRUE(batch.instance.items[0].allowed_rotations_deg.empty());
+  EXPECT_EQ(batch.instance.items[1].allowed_rotations_deg, (std::vector<double>{0, 90, 180, 270}));
   EXPECT_NEAR(*batch.instance.items[0].grain_deg, 30, 1e-9);
   EXPECT_EQ(batch.instance.items[0].grain_tolerance_deg, 5);
   EXPECT_EQ(*batch.instance.items[1].grain_deg, 0);
