@@ -26,15 +26,17 @@ void read_paths(TableReader& root, const std::filesystem::path& base, DaemonConf
   const toml::table* table = root.subtable("paths", true);
   if (!table) return;
   TableReader paths(*table, "paths", errors);
-  std::string watch, spool, machines, hides, hide_stock;
+  std::string watch, spool, machines, hides, hide_stock, styles;
   paths.text("watch", watch, true);
   paths.text("spool", spool, true);
   paths.text("machines", machines, true);
   paths.text("hides", hides);
   paths.text("hide_stock", hide_stock);
+  paths.text("styles", styles);
   paths.reject_unknown();
   if (!hides.empty()) config.paths.hides_dir = resolve(base, hides);
   if (!hide_stock.empty()) config.paths.hide_stock_dir = resolve(base, hide_stock);
+  if (!styles.empty()) config.paths.styles_dir = resolve(base, styles);
   if (!watch.empty()) config.paths.watch_dir = resolve(base, watch);
   if (!spool.empty()) config.paths.spool_dir = resolve(base, spool);
   if (!machines.empty()) config.paths.machines_dir = resolve(base, machines);

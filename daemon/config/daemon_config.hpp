@@ -24,6 +24,7 @@ struct PathsConfig {
   std::filesystem::path machines_dir;  // machine profiles (*.toml) for the toolpath module
   std::filesystem::path hides_dir;       // hide files dropped here lie on a cutter's table ("" = no hides)
   std::filesystem::path hide_stock_dir;  // digitized hides kept in stock, for `lastcut hide load` ("" = none)
+  std::filesystem::path styles_dir;      // style folders a job's sidecar names with style = "NAME" ("" = none)
 };
 
 struct WatchConfig {

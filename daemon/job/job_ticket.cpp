@@ -2,7 +2,9 @@
 // once, so both formats accept exactly the same keys.
 #include "daemon/job/job_ticket.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -55,13 +57,19 @@ Status check_mold_keys(const nlohmann::json& json, JobTicket& ticket) {
   return Status::success();
 }
 
+// A folder name under [paths] styles: nothing that could reach outside it.
+bool is_style_name(const std::string& name) {
+  if (name.empty() || name.size() > 64 || name[0] == '.') return false;
+  return std::all_of(name.begin(), name.end(), [](unsigned char c) { return std::isalnum(c) || c == '-' || c == '_' || c == '.'; });
+}
+
 Result<JobTicket> check_ticket(const nlohmann::json& json) {
   JobTicket ticket;
   if (!json.is_object()) return Status::failure("the sidecar must be a table of keys");
   const std::set<std::string> known{"order", "customer", "size", "side", "quantity", "material",
                                     "cutter", "allowance_mm", "priority", "split", "reference_medial",
                                     "reference_lateral", "reference_patch", "lasting_mm", "seam_mm", "top_mm",
-                                    "seam_notch_spacing_mm", "feather_notch_spacing_mm"};
+                                    "seam_notch_spacing_mm", "feather_notch_spacing_mm", "style"};
   for (auto it = json.begin(); it != json.end(); ++it) {
     if (!known.count(it.key())) return Status::failure("unknown key \"" + it.key() + "\"");
   }
@@ -76,7 +84,7 @@ Result<JobTicket> check_ticket(const nlohmann::json& json) {
   for (auto [key, target] : {std::pair{"order", &ticket.order}, std::pair{"customer", &ticket.customer},
                              std::pair{"size", &ticket.size}, std::pair{"side", &ticket.side},
                              std::pair{"material", &ticket.material}, std::pair{"cutter", &ticket.cutter},
-                             std::pair{"split", &ticket.split}}) {
+                             std::pair{"split", &ticket.split}, std::pair{"style", &ticket.style}}) {
     if (std::string error = text(key, *target); !error.empty()) return Status::failure(error);
   }
   if (!ticket.side.empty() && ticket.side != "left" && ticket.side != "right" && ticket.side != "pair") {
@@ -84,6 +92,9 @@ Result<JobTicket> check_ticket(const nlohmann::json& json) {
   }
   if (!ticket.split.empty() && ticket.split != "auto" && ticket.split != "expert") {
     return Status::failure("split \"" + ticket.split + "\" is not one of auto, expert");
+  }
+  if (!ticket.style.empty() && !is_style_name(ticket.style)) {
+    return Status::failure("style \"" + ticket.style + "\" is not a style's folder name (letters, digits, '-', '_', '.'; no path)");
   }
   if (json.contains("quantity")) {
     const auto& node = json.at("quantity");
@@ -167,6 +178,7 @@ nlohmann::json ticket_to_json(const JobTicket& ticket) {
                       {"cutter", ticket.cutter},     {"priority", ticket.priority}};
   if (ticket.allowance_mm) json["allowance_mm"] = *ticket.allowance_mm;
   if (!ticket.split.empty()) json["split"] = ticket.split;
+  if (!ticket.style.empty()) json["style"] = ticket.style;
   for (const auto& [mold, file] : ticket.references) json["reference_" + mold] = file;
   for (auto [key, value] : mold_keys(ticket))
     if (*value) json[key] = **value;
@@ -184,6 +196,7 @@ JobTicket ticket_from_json(const nlohmann::json& json) {
   ticket.cutter = json.value("cutter", "");
   ticket.priority = json.value("priority", 0);
   ticket.split = json.value("split", "");
+  ticket.style = json.value("style", "");
   if (json.contains("allowance_mm")) ticket.allowance_mm = json.at("allowance_mm").get<double>();
   for (const char* mold : {"medial", "lateral", "patch"})
     if (json.contains(std::string("reference_") + mold))

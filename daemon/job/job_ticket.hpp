@@ -5,7 +5,8 @@
 // reference_medial, reference_lateral, reference_patch (reference pattern files, DXF or SVG, relative
 // to the sidecar's folder; see docs/compare.md), and the per-edge allowances lasting_mm, seam_mm,
 // top_mm and balance notch spacings seam_notch_spacing_mm, feather_notch_spacing_mm
-// (docs/mold-allowances.md). Unknown keys are errors.
+// (docs/mold-allowances.md), style (a style folder's name under [paths] styles: the job's pieces are
+// that style's, docs/pieces.md). Unknown keys are errors.
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -30,6 +31,7 @@ struct JobTicket {
   std::optional<double> seam_notch_spacing_mm, feather_notch_spacing_mm;    // 0 = off, or 5..500
   int priority = 0;      // higher is cut first within a batch
   std::string split;     // lengthwise cut: "" or auto (thesis 3.1 plane), expert (heel middle to second toe)
+  std::string style;     // "": the last's two molds; else the pieces of this style (a folder name, no path)
   // Reference pattern per mold name (medial, lateral, patch) as written in the sidecar; the claim
   // copies each into the job folder as reference_copy_name(mold, file).
   std::map<std::string, std::string> references;

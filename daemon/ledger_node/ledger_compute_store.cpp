@@ -89,11 +89,11 @@ class LedgerMoldsClaim : public MoldsClaim {
       return drop("molds made but not published: " + published.error());
     }
     // The ledger computes a requeued job again in either case (LedgerClient::requeue_held).
-    if (molds.verdict == JobMolds::Verdict::HeldForReview || molds.verdict == JobMolds::Verdict::HeldBadMolds) {
+    if (molds.verdict == JobMolds::Verdict::HeldForReview || molds.verdict == JobMolds::Verdict::HeldNotNestable) {
       return finish([&] { return client.mark_held(lease, molds.reason); }, JobStage::Held, molds.reason);
     }
     finish([&] { return client.mark_computed(lease, molds.pieces); }, JobStage::Computed, "",
-           fmt::format("{} molds ready in {:.1f} s", molds.molds, molds.took_s));
+           fmt::format("{} {} ready in {:.1f} s", molds.molds, molds.noun, molds.took_s));
   }
 
  private:

@@ -76,7 +76,7 @@ Status LedgerNode::enter(const ReadyScan& ready) {
     if (!read) return read.status();
     ticket = *read;
   }
-  if (const std::string unknown_target = settle_ticket_targets(ticket, *settings); !unknown_target.empty())
+  if (const std::string unknown_target = settle_ticket_targets(ticket, *settings, ready.scan); !unknown_target.empty())
     return Status::failure(unknown_target);
   const auto hash = sha256_file_hex(ready.scan);
   if (!hash) return Status::failure("the scan cannot be read (it vanished or is not readable)");

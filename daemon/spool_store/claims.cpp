@@ -53,7 +53,7 @@ StationStore::Intake SpoolStore::take_scan(const ReadyScan& ready) {
     else problem = ticket.error();
   }
   // Settled even for a refused scan: its state in failed/ names where it was meant to go.
-  const std::string unknown_target = settle_ticket_targets(state.ticket, *settings);
+  const std::string unknown_target = settle_ticket_targets(state.ticket, *settings, ready.scan);
   if (problem.empty()) problem = unknown_target;
   const auto earlier = hash_to_job_.find(state.sha256);
   const bool duplicate = earlier != hash_to_job_.end();

@@ -29,14 +29,14 @@ class SpoolMoldsClaim : public MoldsClaim {
       fail_job(spool_, state_, "molds made but " + reported.error());
       return;
     }
-    if (molds.verdict == JobMolds::Verdict::HeldBadMolds) {
+    if (molds.verdict == JobMolds::Verdict::HeldNotNestable) {
       // Not Computed: the job has no items.json, so `lastcut requeue` computes it again under the
       // configuration of that moment (a raised limit, a new lastcut).
       hold_job(spool_, state_, molds.reason);
       return;
     }
     if (!set_job_stage(spool_, state_, JobStage::Computed,
-                       fmt::format("{} molds ready in {:.1f} s", molds.molds, molds.took_s),
+                       fmt::format("{} {} ready in {:.1f} s", molds.molds, molds.noun, molds.took_s),
                        "molds made, but the state is not written (computed again at the next start)")) {
       return;
     }

@@ -28,6 +28,7 @@ namespace lastcut::daemon {
 
 // File names inside a job folder.
 inline constexpr const char* kMoldsFolder = "molds";
+inline constexpr const char* kPiecesFolder = "pieces";  // a style job's pieces (engine/style/piece_outputs.hpp)
 inline constexpr const char* kItemsFile = "items.json";  // the job's pieces as nest items (engine/nest/nest_json.hpp)
 inline constexpr const char* kReportFile = "report.json";
 inline constexpr const char* kPreviewFile = "preview.svg";
@@ -38,9 +39,12 @@ inline std::string unexpected_failure_reason(const std::exception& error) {
 }
 
 struct MoldsMade {
-  int piece_count = 0;        // molds made (before quantity)
-  nlohmann::json measures;    // the engine's scan report, as written to molds/report.json
-  std::string quality_hold;   // "" when every half passed the quality gate; else its one-line reason
+  int piece_count = 0;        // molds or pieces made (before quantity)
+  std::string noun = "molds";  // what was made, for the log: "molds" or "pieces"
+  nlohmann::json measures;    // the engine's report, as written to molds/report.json or pieces/pieces.json
+  // "" when the job may be nested; else the one-line reason it is held (no items.json): a half beyond
+  // the quality gate, or a style that cannot be applied to this last
+  std::string hold_reason;
 };
 
 // Computes the molds of the scan into job_dir/molds/ and its nest items into job_dir/items.json:
@@ -52,6 +56,27 @@ struct MoldsMade {
 Result<MoldsMade> compute_molds(const std::filesystem::path& scan, const std::filesystem::path& job_dir,
                                 const JobTicket& ticket, const MoldOptions& mold_options, double max_hole_across_mm,
                                 const MoldQualityLimits& quality);
+
+// A job whose sidecar names a style (style = "NAME", a folder in paths.styles_dir): the style's pieces
+// on the scanned last (engine/style) into job_dir/pieces/ (write_piece_outputs) and as nest items into
+// job_dir/items.json (items_from_style: the ticket's quantity of shoes, the other foot mirrored when the
+// ticket asks for a pair, the style's leather rules or the material's, labels with order, size, piece
+// and foot). A style that cannot be read or applied to this last is a hold (hold_reason), not a
+// failure: the scan is good, and a requeue after the style is mended makes the pieces. A bad scan
+// fails as in compute_molds.
+Result<MoldsMade> compute_style_pieces(const std::filesystem::path& scan, const std::filesystem::path& job_dir,
+                                       const JobTicket& ticket, const DaemonConfig& settings);
+
+// A job that is a DXF-AAMA pattern set (a .dxf in the watch folder, engine/pattern): its pieces as
+// nest items into job_dir/items.json (items_from_pattern: each piece's quantity x the ticket's, the
+// other foot mirrored when the ticket asks for a pair, the material's leather rules). A file the
+// reader refuses fails the job with the reader's line. A piece whose Category names another configured
+// material than the job's is a hold: one job is cut from one material.
+Result<MoldsMade> compute_pattern_items(const std::filesystem::path& pattern, const std::filesystem::path& job_dir,
+                                        const JobTicket& ticket, const DaemonConfig& settings);
+
+// True for a job whose input is a pattern set rather than a scan (.dxf).
+bool is_pattern_set(const std::filesystem::path& input);
 
 struct ReferenceCheck {
   nlohmann::json comparisons = nlohmann::json::object();  // mold name -> compare JSON (engine/compare/compare_report.hpp)

@@ -21,4 +21,16 @@ MoldOptions job_mold_options(const JobTicket& ticket, const JobsConfig& jobs) {
   return options;
 }
 
+ScanOptions job_scan_options(const JobTicket& ticket, const MoldOptions& mold_options, double max_hole_across_mm,
+                             const MoldQualityLimits& quality) {
+  ScanOptions options;
+  options.mold = mold_options;
+  if (ticket.split == "expert") options.segment_options.split_rule = SplitRule::Expert;
+  options.segment_options.max_hole_fill_diameter_mm = max_hole_across_mm;
+  if (ticket.side == "left") options.side = FootSide::Left;
+  if (ticket.side == "right") options.side = FootSide::Right;
+  options.quality = quality;
+  return options;
+}
+
 }  // namespace lastcut::daemon

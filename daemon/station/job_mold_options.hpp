@@ -9,9 +9,15 @@
 #include "daemon/config/daemon_config.hpp"
 #include "daemon/job/job_ticket.hpp"
 #include "engine/mold/mold.hpp"
+#include "engine/scan/scan_to_molds.hpp"
 
 namespace lastcut::daemon {
 
 MoldOptions job_mold_options(const JobTicket& ticket, const JobsConfig& jobs);
+
+// The scan-to-molds options of one job, for its molds or for the last a style's pieces are cut from:
+// the ticket's split rule and side, scan holes up to max_hole_across_mm closed, the quality gate.
+ScanOptions job_scan_options(const JobTicket& ticket, const MoldOptions& mold_options, double max_hole_across_mm,
+                             const MoldQualityLimits& quality);
 
 }  // namespace lastcut::daemon

@@ -15,7 +15,10 @@ JobMolds make_job_molds(const std::filesystem::path& scan, const std::filesystem
   JobMolds molds;
   const auto start = std::chrono::steady_clock::now();
   monitor.begin(worker, task, settings.jobs.compute_timeout_s);
-  const Result<MoldsMade> made = compute_molds(scan, job_dir, ticket, job_mold_options(ticket, settings.jobs),
+  const Result<MoldsMade> made =
+      is_pattern_set(scan)     ? compute_pattern_items(scan, job_dir, ticket, settings)
+      : !ticket.style.empty()  ? compute_style_pieces(scan, job_dir, ticket, settings)
+                               : compute_molds(scan, job_dir, ticket, job_mold_options(ticket, settings.jobs),
                                                settings.jobs.max_hole_across_mm, settings.quality);
   molds.took_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!made) {
@@ -23,10 +26,11 @@ JobMolds make_job_molds(const std::filesystem::path& scan, const std::filesystem
     molds.reason = made.error();
     return molds;
   }
-  if (!made->quality_hold.empty()) {
+  molds.noun = made->noun;
+  if (!made->hold_reason.empty()) {
     monitor.end(worker);
-    molds.verdict = JobMolds::Verdict::HeldBadMolds;
-    molds.reason = made->quality_hold + "; stretch pictures in molds/";
+    molds.verdict = JobMolds::Verdict::HeldNotNestable;
+    molds.reason = made->hold_reason;
     molds.report = {{"molds", made->piece_count},
                     {"pieces", 0},
                     {"measures", made->measures},

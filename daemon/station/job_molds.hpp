@@ -19,19 +19,22 @@ namespace lastcut::daemon {
 struct JobMolds {
   enum class Verdict {
     Failed,         // bad input or a step that could not be done: `reason` says why
-    HeldBadMolds,   // molds made but beyond the quality gate: never nested; a requeue computes them again
+    HeldNotNestable,  // molds beyond the quality gate, or a style that does not apply to the last: never
+                      // nested; a requeue computes them again
     HeldForReview,  // molds made, but a corner lies beyond the tolerance from its reference pattern
     Computed,       // molds made and, where references were named, within tolerance
   };
   Verdict verdict = Verdict::Failed;
-  std::string reason;     // Failed: why; HeldBadMolds: the limits crossed; HeldForReview: the worst corner
-  int molds = 0;          // molds made
+  std::string reason;     // Failed: why; HeldNotNestable: the limits crossed; HeldForReview: the worst corner
+  int molds = 0;          // molds (or a style's or pattern set's pieces) made
+  std::string noun = "molds";  // what they are, for the log: "molds" or "pieces"
   int pieces = 0;         // molds x the ticket's quantity: what batching counts
   double took_s = 0;      // the engine's time for the molds
   nlohmann::json report;  // molds, pieces, measures, timings_s and, when references were named, compare
 };
 
-// Makes the molds of `scan` into job_dir (molds/, items.json; the reference copies are expected in
+// Makes the molds of `scan` (or the pieces of the ticket's style on it, or of a pattern set) into job_dir
+// (molds/ or pieces/, items.json; the reference copies are expected in
 // job_dir), as `worker` busy on `task` in `monitor`; `label` names the job in log lines.
 JobMolds make_job_molds(const std::filesystem::path& scan, const std::filesystem::path& job_dir, const JobTicket& ticket,
                         const DaemonConfig& settings, ProgressMonitor& monitor, const std::string& worker,

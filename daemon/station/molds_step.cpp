@@ -2,6 +2,7 @@
 // in the engine's JSON, so that nesting after a restart needs no recomputation and reads the same
 // form `lastcut nest` reads.
 #include "daemon/station/engine_steps.hpp"
+#include "daemon/station/job_mold_options.hpp"
 #include "daemon/station/piece_label_text.hpp"
 #include "engine/core/durable_file.hpp"
 #include "engine/core/engine_error.hpp"
@@ -46,20 +47,13 @@ Result<MoldsMade> compute_molds(const std::filesystem::path& scan, const std::fi
     // fail the gate: only this computation's molds may be nested.
     std::error_code ignored;  // absent is the usual case; a file that cannot go fails the write below
     std::filesystem::remove(job_dir / kItemsFile, ignored);
-    ScanOptions options;
-    options.mold = mold_options;
-    if (ticket.split == "expert") options.segment_options.split_rule = SplitRule::Expert;
-    options.segment_options.max_hole_fill_diameter_mm = max_hole_across_mm;
-    if (ticket.side == "left") options.side = FootSide::Left;
-    if (ticket.side == "right") options.side = FootSide::Right;
-    options.quality = quality;
-    const ScanResult result = scan_to_molds(scan, options);
+    const ScanResult result = scan_to_molds(scan, job_scan_options(ticket, mold_options, max_hole_across_mm, quality));
     if (result.segments.empty()) return Status::failure("no mold could be made from the scan");
     MoldsMade made;
     made.measures = write_scan_outputs(result, job_dir / kMoldsFolder);
     made.piece_count = static_cast<int>(result.segments.size());
     if (!result.quality.passed()) {
-      made.quality_hold = result.quality.reason();
+      made.hold_reason = result.quality.reason() + "; stretch pictures in molds/";
       return made;
     }
     // A sidecar side that contradicts the scan is among result.warnings (orient_last), in measures.

@@ -1,8 +1,33 @@
 #include "daemon/station/ticket_targets.hpp"
 
+#include <set>
+
+#include "daemon/station/engine_steps.hpp"
+#include "engine/core/engine_error.hpp"
+#include "engine/pattern/aama_dxf.hpp"
+
 namespace lastcut::daemon {
 
-std::string settle_ticket_targets(JobTicket& ticket, const DaemonConfig& config) {
+namespace {
+
+// The one configured material the pieces of a pattern set name in their Category; "" when they name
+// none or several, or the file cannot be read (computing the job says why).
+std::string pattern_set_material(const std::filesystem::path& input, const DaemonConfig& config) {
+  if (input.empty() || !is_pattern_set(input)) return "";
+  std::set<std::string> named;
+  try {
+    for (const PatternPiece& piece : read_aama_dxf(input))
+      if (config.materials.count(piece.category)) named.insert(piece.category);
+  } catch (const EngineError&) {
+    return "";  // refused when the job is computed, with the reader's line in the job's report
+  }
+  return named.size() == 1 ? *named.begin() : "";
+}
+
+}  // namespace
+
+std::string settle_ticket_targets(JobTicket& ticket, const DaemonConfig& config, const std::filesystem::path& input) {
+  if (ticket.material.empty()) ticket.material = pattern_set_material(input, config);
   if (ticket.material.empty()) ticket.material = config.jobs.default_material;
   if (ticket.cutter.empty()) ticket.cutter = config.jobs.default_cutter;
   if (!config.materials.count(ticket.material))

@@ -1,6 +1,7 @@
 #pragma once
 // Where a scan's ticket sends it: the sidecar's material and cutter, or the configuration's
 // defaults when it names none; a hide's likewise. One rule for every intake (the single-station spool and a ledger node).
+#include <filesystem>
 #include <string>
 
 #include "daemon/config/daemon_config.hpp"
@@ -10,7 +11,9 @@ namespace lastcut::daemon {
 
 // Fills an empty ticket.material / ticket.cutter from jobs.default_material / default_cutter, then
 // checks both are configured: "" when they are, else the one line naming the first that is not.
-std::string settle_ticket_targets(JobTicket& ticket, const DaemonConfig& config);
+// A pattern set (`input` a .dxf) whose pieces' Category names one configured material is cut from
+// that material when the sidecar names none.
+std::string settle_ticket_targets(JobTicket& ticket, const DaemonConfig& config, const std::filesystem::path& input = {});
 
 // Where a hide goes (docs/hides.md): material = the hide sidecar's, else the only hide material,
 // else jobs.default_material; cutter = the sidecar's, else the material's, else jobs.default_cutter.

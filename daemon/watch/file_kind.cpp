@@ -42,7 +42,8 @@ FileKind classify_file_name(const std::string& file_name) {
   const std::string name = lower(file_name);
   if (temporary_name(name)) return FileKind::Temporary;
   if (is_sidecar_name(name)) return FileKind::Sidecar;
-  for (const char* extension : {".stl", ".obj", ".ply", ".off"}) {
+  // A DXF is a pattern set (DXF-AAMA) a pattern room sends: a job of its own, like a scan.
+  for (const char* extension : {".stl", ".obj", ".ply", ".off", ".dxf"}) {
     if (ends_with(name, extension)) return FileKind::Scan;
   }
   return FileKind::Unsupported;

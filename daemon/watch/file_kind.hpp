@@ -1,5 +1,5 @@
 #pragma once
-// What a name in the watch folder is: a scan to take, a sidecar that travels with a scan, or
+// What a name in the watch folder is: a scan (or a DXF-AAMA pattern set, .dxf) to take, a sidecar that travels with a scan, or
 // something the daemon leaves alone (hidden or temporary names that uploaders use while writing:
 // .*, *.tmp, *.part, *~; names of other types).
 #include <filesystem>

@@ -63,6 +63,10 @@ std::string scan_incompleteness(const std::filesystem::path& scan) {
     if (head.find("end_header") == std::string::npos) return "the file is cut off (PLY header incomplete)";
     return {};
   }
+  if (extension == ".dxf") {  // a pattern set (DXF-AAMA): every DXF ends with the group "0 / EOF"
+    if (read_tail(in, size, 16).find("EOF") == std::string::npos) return "the file is cut off (a DXF file ends with EOF)";
+    return {};
+  }
   const std::string tail = read_tail(in, size, 1);
   if (tail != "\n") return "the file is cut off (last line unfinished)";
   return {};

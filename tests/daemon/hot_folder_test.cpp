@@ -52,6 +52,7 @@ std::vector<ReadyScan> collect(HotFolder& folder, std::size_t count, double time
 TEST(FileKind, NamesAreClassified) {
   EXPECT_EQ(classify_file_name("last.STL"), FileKind::Scan);
   EXPECT_EQ(classify_file_name("last.obj"), FileKind::Scan);
+  EXPECT_EQ(classify_file_name("derby-set.DXF"), FileKind::Scan);  // a pattern set is a job too
   EXPECT_EQ(classify_file_name("last.job.toml"), FileKind::Sidecar);
   for (const char* name : {".last.stl", "last.stl.tmp", "last.stl.part", "last.stl~", "x.crdownload"}) {
     EXPECT_EQ(classify_file_name(name), FileKind::Temporary) << name;
@@ -72,6 +73,10 @@ TEST(ScanCompleteness, BinaryStlSizeMustMatchItsTriangleCount) {
             "the file is cut off (binary STL announces 5000 triangles, holds 120)");
   EXPECT_NE(scan_incompleteness(folder / "half.obj"), "");
   EXPECT_EQ(scan_incompleteness(folder / "empty.stl"), "the file is empty");
+  write_text(folder / "set.dxf", "  0\nSECTION\n  0\nENDSEC\n  0\nEOF\n");
+  write_text(folder / "half.dxf", "  0\nSECTION\n  0\nENDS");
+  EXPECT_EQ(scan_incompleteness(folder / "set.dxf"), "");
+  EXPECT_EQ(scan_incompleteness(folder / "half.dxf"), "the file is cut off (a DXF file ends with EOF)");
 }
 
 class HotFolderModes : public ::testing::TestWithParam<WatchMode> {};

@@ -1,0 +1,87 @@
+// A pattern set (DXF-AAMA) -> the job's nest items (see engine_steps.hpp, compute_pattern_items).
+#include <algorithm>
+#include <cctype>
+#include <set>
+
+#include "daemon/station/engine_steps.hpp"
+#include "daemon/station/job_piece_rules.hpp"
+#include "daemon/station/piece_label_text.hpp"
+#include "engine/core/durable_file.hpp"
+#include "engine/core/engine_error.hpp"
+#include "engine/nest/nest_json.hpp"
+#include "engine/nest/pattern_items.hpp"
+#include "engine/pattern/aama_dxf.hpp"
+
+namespace lastcut::daemon {
+namespace {
+
+// The foot a piece is for, from its Annotation ("left", "right", "L", "R"; "" when it says neither).
+std::string foot_of(const PatternPiece& piece) {
+  std::string text = piece.annotation;
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (text == "left" || text == "l") return "left";
+  if (text == "right" || text == "r") return "right";
+  return "";
+}
+
+nlohmann::json pieces_json(const std::vector<PatternPiece>& pieces) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const PatternPiece& piece : pieces) {
+    list.push_back({{"name", piece.name},
+                    {"size", piece.size},
+                    {"category", piece.category},
+                    {"quantity", piece.quantity},
+                    {"area_mm2", std::abs(signed_area(Polygon2{piece.cut_line_mm}))},
+                    {"notches", piece.notches.size()},
+                    {"grain_line", piece.grain_line_mm.has_value()}});
+  }
+  return list;
+}
+
+}  // namespace
+
+bool is_pattern_set(const std::filesystem::path& input) {
+  std::string extension = input.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  return extension == ".dxf";
+}
+
+Result<MoldsMade> compute_pattern_items(const std::filesystem::path& pattern, const std::filesystem::path& job_dir,
+                                        const JobTicket& ticket, const DaemonConfig& settings) {
+  try {
+    std::error_code ignored;  // absent is the usual case; a file that cannot go fails the write below
+    std::filesystem::remove(job_dir / kItemsFile, ignored);
+    const std::vector<PatternPiece> pieces = read_aama_dxf(pattern);
+    MoldsMade made;
+    made.noun = "pieces";
+    made.piece_count = static_cast<int>(pieces.size());
+    made.measures = {{"pattern_set", pattern.filename().string()}, {"pieces", pieces_json(pieces)}};
+    const JobMaterial material = job_material(ticket, settings);
+    std::vector<std::pair<std::string, std::string>> piece_materials;
+    for (const PatternPiece& piece : pieces) piece_materials.emplace_back(piece.name, piece.category);
+    made.hold_reason = other_material_hold(piece_materials, material, settings);
+    if (!made.hold_reason.empty()) return made;
+
+    PatternNestSpec spec;
+    spec.sets = ticket.quantity;
+    spec.mirrored_twins = ticket.side == "pair";
+    spec.rules = [&](const PatternPiece&) { return material.rules; };
+    spec.label = [&](const PatternPiece& piece, bool twin) {
+      const std::string foot = foot_of(piece).empty() ? (ticket.side == "pair" ? "" : ticket.side) : foot_of(piece);
+      const std::string size = !ticket.size.empty() ? ticket.size : piece.size;
+      return piece_label_text({ticket.order, pattern.filename().string(), size, twin ? opposite_foot(foot) : foot, piece.name});
+    };
+    const std::vector<NestItem> items = items_from_pattern(pieces, spec);
+    if (Status written = write_file_durably(job_dir / kItemsFile, items_to_json(items).dump() + "\n"); !written)
+      return written.with_context("pieces read but not saved: ");
+    return made;
+  } catch (const EngineError& error) {
+    return Status::failure(error.what());
+  } catch (const std::bad_alloc&) {
+    return Status::failure("the pattern set is too large for this machine's memory");
+  } catch (const std::exception& error) {
+    return Status::failure(unexpected_failure_reason(error));
+  }
+}
+
+}  // namespace lastcut::daemon

@@ -1,0 +1,92 @@
+// A scan with a style -> the style's pieces on that last and the job's nest items (see
+// engine_steps.hpp, compute_style_pieces).
+#include "daemon/config/style_folder.hpp"
+#include "daemon/config/style_reference.hpp"
+#include "daemon/station/engine_steps.hpp"
+#include "daemon/station/job_mold_options.hpp"
+#include "daemon/station/job_piece_rules.hpp"
+#include "daemon/station/piece_label_text.hpp"
+#include "engine/core/durable_file.hpp"
+#include "engine/core/engine_error.hpp"
+#include "engine/nest/nest_json.hpp"
+#include "engine/scan/scan_to_molds.hpp"
+#include "engine/style/piece_outputs.hpp"
+#include "engine/style/style_items.hpp"
+
+namespace lastcut::daemon {
+namespace {
+
+// Why the style the ticket names cannot be made ready (its folder, its reference last); "" when it can.
+std::string style_hold(const JobTicket& ticket, const DaemonConfig& settings, Result<StyleFolder>& folder, ScanResult& reference) {
+  const std::string named = "style \"" + ticket.style + "\"";
+  if (settings.paths.styles_dir.empty()) return named + ": no style folder is configured ([paths] styles)";
+  folder = read_style_folder(settings.paths.styles_dir / ticket.style);
+  if (!folder) return named + ": " + folder.error();
+  try {
+    reference = prepare_style_reference(*folder);
+  } catch (const EngineError& error) {
+    return named + ": its reference last: " + error.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+Result<MoldsMade> compute_style_pieces(const std::filesystem::path& scan, const std::filesystem::path& job_dir,
+                                       const JobTicket& ticket, const DaemonConfig& settings) {
+  try {
+    std::error_code ignored;  // absent is the usual case; a file that cannot go fails the write below
+    std::filesystem::remove(job_dir / kItemsFile, ignored);
+    MoldsMade made;
+    made.noun = "pieces";
+    Result<StyleFolder> folder = Status::failure("not read");
+    ScanResult reference;
+    made.hold_reason = style_hold(ticket, settings, folder, reference);
+    if (!made.hold_reason.empty()) return made;
+    // The scanned last through the same pipeline as a mold job: a bad scan fails the job here.
+    const ScanResult target = scan_to_molds(scan, job_scan_options(ticket, job_mold_options(ticket, settings.jobs),
+                                                                   settings.jobs.max_hole_across_mm, settings.quality));
+    if (!target.quality.passed()) {
+      made.hold_reason = target.quality.reason();
+      return made;
+    }
+    const std::string foot = target.side ? std::string(to_string(*target.side)) : ticket.side == "left" ? "left" : "right";
+    StyleResult pieces;
+    try {
+      pieces = make_style_pieces(folder->style, reference, target);
+    } catch (const EngineError& error) {
+      made.hold_reason = "style \"" + ticket.style + "\" does not fit this last: " + error.what();
+      return made;
+    }
+    made.piece_count = static_cast<int>(pieces.pieces.size());
+    made.measures = write_piece_outputs(folder->style, pieces, {scan.filename().string(), ticket.size, foot}, job_dir / kPiecesFolder);
+    const JobMaterial material = job_material(ticket, settings);
+    std::vector<std::pair<std::string, std::string>> piece_materials;
+    for (const StylePieceResult& piece : pieces.pieces) piece_materials.emplace_back(piece.spec.name, piece.spec.material);
+    made.hold_reason = other_material_hold(piece_materials, material, settings);
+    if (!made.hold_reason.empty()) return made;
+
+    StyleNestSpec spec;
+    spec.style = folder->style.name;
+    spec.size = ticket.size;
+    spec.foot = foot;
+    spec.shoes = ticket.quantity;
+    spec.other_foot = ticket.side == "pair";
+    spec.material_rules = [&](const std::string&) { return material.rules; };
+    spec.label = [&](const PatternPiece& piece, bool twin) {
+      return piece_label_text({ticket.order, scan.filename().string(), ticket.size, twin ? opposite_foot(foot) : foot, piece.name});
+    };
+    const std::vector<NestItem> items = items_from_style(pieces, spec);
+    if (Status written = write_file_durably(job_dir / kItemsFile, items_to_json(items).dump() + "\n"); !written)
+      return written.with_context("pieces made but not saved: ");
+    return made;
+  } catch (const EngineError& error) {
+    return Status::failure(error.what());
+  } catch (const std::bad_alloc&) {
+    return Status::failure("the scan is too large for this machine's memory");
+  } catch (const std::exception& error) {
+    return Status::failure(unexpected_failure_reason(error));
+  }
+}
+
+}  // namespace lastcut::daemon

@@ -1,0 +1,134 @@
+// lastcutd cutting a shoe's pieces (issue 35), one station, the real binaries: two derby orders and
+// a loafer order (each a pair from one scanned last, pieces made with the shipped styles) and a
+// DXF-AAMA pattern set of linings are dropped together; leather hides with poor zones and a backbone
+// are dropped for cutter-1 until every order is cut, the linings go to the roll on cutter-2. Checked
+// on the cut files the simulated grbl tables received, by an independent reading of the G-code
+// (piece_orders.hpp): every piece of every order cut exactly once and labelled, a pair on one hide,
+// no piece on a zone below its grade, every grain within its tolerance of the backbone.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "daemon_rig.hpp"
+#include "engine/nest/nest_json.hpp"
+#include "tests/daemon/piece_orders.hpp"
+
+namespace lastcut::daemon::testing {
+namespace {
+
+constexpr double kHideWidth_mm = 1250, kHideHeight_mm = 850;  // inside the grbl table's 1300 x 900 mm
+
+std::string job_of(const DaemonRig& rig, const std::string& file, std::string* folder = nullptr) {
+  for (const char* where : {"done", "failed", "held", "work"})
+    for (const auto& [id, state] : rig.jobs(where))
+      if (state.value("scan", "") == file) {
+        if (folder) *folder = where;
+        return id;
+      }
+  return "";
+}
+
+// The stage of the batch of hide file `file` ("" while there is none).
+std::string hide_stage(const DaemonRig& rig, const std::string& file) {
+  std::error_code error;
+  for (std::filesystem::directory_iterator it(rig.spool() / "batches", error), end; !error && it != end; it.increment(error)) {
+    const auto batch = nlohmann::json::parse(read_text(it->path() / "batch.json"), nullptr, false);
+    if (!batch.is_discarded() && batch.contains("hide") && batch["hide"].value("file", "") == file) return batch.value("stage", "");
+  }
+  return "";
+}
+
+TEST(DaemonPieces, StylesAndAPatternSetAreCutByMaterialWithTheirRules) {
+  RigOptions options;
+  options.cutters = {"cutter-1", "cutter-2"};
+  options.grbl_cutters = {"cutter-1", "cutter-2"};  // G-code: the piece labels are in the file
+  options.extra_paths = piece_paths_config();
+  options.extra_config = piece_materials_config("cutter-1");
+  DaemonRig rig("pieces-e2e", options);
+  const auto staging = rig.root() / "staging";
+  const std::vector<PieceOrder> orders = write_piece_orders(staging);
+  rig.start_cutters();
+  rig.start_daemon();
+  for (const PieceOrder& order : orders) {
+    write_text(rig.watch() / (std::filesystem::path(order.file).stem().string() + ".job.toml"), order.sidecar);
+    drop(staging / order.file, rig.watch(), order.file);
+  }
+  // The linings are cut from the roll at once; the leather waits for hides: one at a time until no
+  // order waits (each hide has room for about two pairs).
+  std::filesystem::create_directories(rig.root() / "hides");
+  const auto all_done = [&] {
+    int done = 0;
+    for (const PieceOrder& order : orders) {
+      std::string folder;
+      job_of(rig, order.file, &folder);
+      done += folder == "done";
+    }
+    return done == static_cast<int>(orders.size());
+  };
+  // The leather orders wait for a hide (computed) or are cut (done); nothing is on its way.
+  const auto leather_settled = [&] {
+    for (const PieceOrder& order : orders) {
+      if (order.order == "301") continue;
+      std::string folder;
+      const std::string id = job_of(rig, order.file, &folder);
+      if (folder != "done" && (folder != "work" || rig.jobs("work").at(id).value("stage", "") != "computed")) return false;
+    }
+    return true;
+  };
+  ASSERT_TRUE(wait_until(leather_settled, 120)) << read_text(rig.daemon_log());
+  for (int hide = 1; hide <= 4 && !all_done(); ++hide) {
+    const std::string name = "hide-" + std::to_string(hide) + ".dxf";
+    write_zoned_hide(staging / name, kHideWidth_mm, kHideHeight_mm);
+    drop(staging / name, rig.root() / "hides", name);
+    ASSERT_TRUE(wait_until([&] { const std::string stage = hide_stage(rig, name); return (stage == "cut" || stage == "empty") && leather_settled(); }, 120))
+        << name << "\n" << read_text(rig.daemon_log());
+  }
+  ASSERT_TRUE(wait_until(all_done, 60)) << read_text(rig.daemon_log());
+  EXPECT_EQ(rig.stop_daemon(), 0);
+  rig.stop_cutters();
+
+  // What the cut files cut, read independently of the nester.
+  std::vector<std::filesystem::path> items_files;
+  for (const PieceOrder& order : orders) items_files.push_back(rig.spool() / "done" / job_of(rig, order.file) / "items.json");
+  const std::map<std::string, NestItem> items = items_by_label(items_files);
+  CutPieces cut;
+  const std::string on_cutter_1 = rig.received("cutter-1"), on_cutter_2 = rig.received("cutter-2");
+  for (const auto& entry : std::filesystem::directory_iterator(rig.spool() / "batches")) {
+    const auto batch = read_json_file(entry.path() / "batch.json");
+    if (batch.value("stage", "") != "cut") continue;
+    const std::string gcode = read_text(entry.path() / "cut.nc");
+    const bool on_hide = batch.contains("hide");
+    EXPECT_EQ(count_occurrences(on_hide ? on_cutter_1 : on_cutter_2, gcode), 1) << entry.path();
+    check_cut_file(gcode, entry.path().filename().string(),
+                   on_hide ? zoned_hide_zones(kHideWidth_mm, kHideHeight_mm) : std::vector<QualityZone>{}, items, cut);
+  }
+  for (const std::string& problem : cut.problems) ADD_FAILURE() << problem;
+  int pieces = 0;
+  for (const auto& [label, item] : items) {
+    pieces += item.demand;
+    EXPECT_EQ(cut.times_cut[label], item.demand) << label;
+  }
+  // Two derby pairs (4 pieces a foot), a loafer pair (5 a foot), the linings (3 a foot).
+  EXPECT_EQ(pieces, 2 * 8 + 10 + 6);
+  // A pair on one hide; the linings on the roll.
+  for (const PieceOrder& order : orders) {
+    std::set<std::string> hides;
+    for (const auto& [label, item] : items)
+      if (label.rfind("#" + order.order + " ", 0) == 0) hides.insert(cut.hide_of[label]);
+    EXPECT_EQ(hides.size(), 1u) << order.order;
+    EXPECT_EQ(hides.begin()->empty(), order.order == "301") << order.order;
+  }
+  int zone_checks = 0, grain_checks = 0;  // every leather piece against each zone below its grade, and its grain
+  for (const auto& [label, item] : items) {
+    if (label.rfind("#301 ", 0) == 0) continue;
+    for (const QualityZone& zone : zoned_hide_zones(kHideWidth_mm, kHideHeight_mm)) zone_checks += item.demand * (zone.quality < item.min_quality);
+    grain_checks += item.demand * item.grain_deg.has_value();
+  }
+  EXPECT_EQ(cut.zone_checks, zone_checks);
+  EXPECT_EQ(cut.grain_checks, 26);
+  EXPECT_EQ(grain_checks, 26);
+  std::printf("%d pieces cut, %d zone checks, %d grain checks\n", pieces, cut.zone_checks, cut.grain_checks);
+}
+
+}  // namespace
+}  // namespace lastcut::daemon::testing
