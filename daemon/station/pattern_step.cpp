@@ -1,6 +1,8 @@
 // A pattern set (DXF-AAMA) -> the job's nest items (see engine_steps.hpp, compute_pattern_items).
 #include <algorithm>
 #include <cctype>
+#include <fstream>
+#include <sstream>
 #include <set>
 
 #include "daemon/station/engine_steps.hpp"
@@ -51,7 +53,12 @@ Result<MoldsMade> compute_pattern_items(const std::filesystem::path& pattern, co
   try {
     std::error_code ignored;  // absent is the usual case; a file that cannot go fails the write below
     std::filesystem::remove(job_dir / kItemsFile, ignored);
-    const std::vector<PatternPiece> pieces = read_aama_dxf(pattern);
+    // Read by name, not path: the refusal names the file the operator dropped, not the job folder it moved to.
+    std::ifstream in(pattern, std::ios::binary);
+    if (!in) return Status::failure("cannot read pattern file " + pattern.filename().string());
+    std::ostringstream content;
+    content << in.rdbuf();
+    const std::vector<PatternPiece> pieces = read_aama_dxf_text(content.str(), pattern.filename().string());
     MoldsMade made;
     made.noun = "pieces";
     made.piece_count = static_cast<int>(pieces.size());

@@ -20,6 +20,9 @@ namespace {
 std::string style_hold(const JobTicket& ticket, const DaemonConfig& settings, Result<StyleFolder>& folder, ScanResult& reference) {
   const std::string named = "style \"" + ticket.style + "\"";
   if (settings.paths.styles_dir.empty()) return named + ": no style folder is configured ([paths] styles)";
+  std::error_code unreadable;  // a folder that cannot be looked at is as good as absent
+  if (!std::filesystem::is_directory(settings.paths.styles_dir / ticket.style, unreadable))
+    return named + ": no such style in " + settings.paths.styles_dir.string();
   folder = read_style_folder(settings.paths.styles_dir / ticket.style);
   if (!folder) return named + ": " + folder.error();
   try {

@@ -1,0 +1,116 @@
+// Bad pattern sets and bad style sidecars dropped into a running lastcutd (issue 35): each pattern
+// set the reader refuses fails its job with the reader's one line, the file kept in failed/; a style
+// name that is a path is refused at intake; a style the shop does not have, a broken style folder, a
+// style that does not fit the scan, and a pattern set of two configured materials hold their job
+// with one line; the daemon keeps running and cuts a good pattern set dropped after them. Runs under
+// the sanitizers in CI.
+#include <gtest/gtest.h>
+
+#include "daemon_rig.hpp"
+#include "engine/pattern/aama_dxf.hpp"
+#include "tests/pattern/aama_test_files.hpp"
+
+namespace lastcut::daemon::testing {
+namespace {
+
+using lastcut::test::HandDxf;
+using lastcut::test::one_piece_file;
+using lastcut::test::square;
+
+// The state of the job whose input had this name, and its folder.
+std::pair<nlohmann::json, std::string> job_state(const DaemonRig& rig, const std::string& file) {
+  for (const char* folder : {"done", "failed", "held", "work"})
+    for (const auto& [id, state] : rig.jobs(folder))
+      if (state.value("scan", "") == file) return {state, folder};
+  return {nullptr, ""};
+}
+
+PatternPiece square_piece(const std::string& name, const std::string& category) {
+  PatternPiece piece;
+  piece.name = name;
+  piece.category = category;
+  piece.cut_line_mm = square(120.0);
+  return piece;
+}
+
+TEST(DaemonPieces, BadPatternSetsAndStylesAreRefusedOrHeldWithOneLine) {
+  const auto styles = scratch_folder("pieces-refused-styles");
+  std::filesystem::copy(std::filesystem::path(LASTCUT_SOURCE_DIR) / "config" / "styles" / "derby", styles / "derby");
+  std::filesystem::copy(std::filesystem::path(LASTCUT_SOURCE_DIR) / "config" / "styles" / "derby", styles / "broken");
+  write_text(styles / "broken" / "style.toml", read_text(styles / "broken" / "style.toml") + "colour = \"red\"\n");
+  std::filesystem::copy(std::filesystem::path(LASTCUT_SOURCE_DIR) / "config" / "styles" / "derby", styles / "far");
+  std::string far = read_text(styles / "far" / "style.toml");  // the vamp's label 60 mm above the last
+  far.replace(far.find("label = [239.45, 4.98, 38.27]"), 29, "label = [239.45, 4.98, 98.27]");
+  write_text(styles / "far" / "style.toml", far);
+
+  RigOptions options;
+  options.extra_paths = "styles = \"" + styles.string() + "\"\n";
+  options.extra_config = "[materials.lining]\nwidth_mm = 800\nlength_mm = 1200\nspacing_mm = 2\n";
+  DaemonRig rig("pieces-refused", options);
+  const auto staging = rig.root() / "staging";
+  std::filesystem::create_directories(staging);
+  rig.start_cutters();
+  rig.start_daemon();
+
+  const auto closed = [](HandDxf& d) { d.polyline("1", square(100.0), true); };
+  const std::map<std::string, std::string> patterns = {
+      {"open.dxf", one_piece_file(4, [](HandDxf& d) { d.polyline("1", square(100.0), false); })},
+      {"no-blocks.dxf", HandDxf().header(4).section("ENTITIES").polyline("1", square(100.0), true).end_section().eof().str()},
+      {"furlong.dxf", one_piece_file(0, [&](HandDxf& d) { closed(d); d.text("1", "Units: FURLONG"); })},
+      {"two.dxf", one_piece_file(4, [&](HandDxf& d) { closed(d); d.text("1", "Quantity: two"); })},
+  };
+  for (const auto& [name, text] : patterns) {
+    write_text(staging / name, text);
+    drop(staging / name, rig.watch(), name);
+  }
+  write_aama_dxf(staging / "mixed.dxf", {square_piece("vamp", "calf"), square_piece("lining", "lining")});
+  drop(staging / "mixed.dxf", rig.watch(), "mixed.dxf");
+  const std::map<std::string, std::string> styled = {
+      {"path.stl", "style = \"../derby\"\n"}, {"oxford.stl", "style = \"oxford\"\n"},
+      {"broken.stl", "style = \"broken\"\n"}, {"far.stl", "style = \"far\"\nside = \"right\"\n"}};
+  for (const auto& [name, sidecar] : styled) {
+    write_variant(small_last(40, "right", 7), staging / name, name);
+    write_text(rig.watch() / (std::filesystem::path(name).stem().string() + ".job.toml"), sidecar);
+    drop(staging / name, rig.watch(), name);
+  }
+  const auto settled = [&](const std::string& file) {
+    const std::string folder = job_state(rig, file).second;
+    return folder == "failed" || folder == "held" || folder == "done";
+  };
+  ASSERT_TRUE(wait_until([&] {
+    for (const auto& entry : patterns) if (!settled(entry.first)) return false;
+    for (const auto& entry : styled) if (!settled(entry.first)) return false;
+    return settled("mixed.dxf");
+  }, 120)) << read_text(rig.daemon_log());
+
+  const std::map<std::string, std::pair<std::string, std::string>> expected = {
+      {"open.dxf", {"failed", "open.dxf: piece \"vamp\": its cut line on layer 1 is open"}},
+      {"no-blocks.dxf", {"failed", "no-blocks.dxf: no piece blocks (DXF-AAMA places each piece as a BLOCK with an INSERT)"}},
+      {"furlong.dxf", {"failed", "furlong.dxf: unknown units \"Units: FURLONG\" (METRIC, MM, CM, ENGLISH or INCH)"}},
+      {"two.dxf", {"failed", "two.dxf: piece \"vamp\": quantity 'two' is not a positive count"}},
+      {"mixed.dxf", {"held", "pieces \"lining\" are of material lining, the job is cut from calf: one job is cut from one material "
+                             "(give those pieces a file of their own, or name one material in the sidecar)"}},
+      {"path.stl", {"failed", "sidecar path.job.toml: style \"../derby\" is not a style's folder name (letters, digits, '-', '_', '.'; no path)"}},
+      {"oxford.stl", {"held", "style \"oxford\": no such style in " + styles.string()}},
+      {"broken.stl", {"held", "style \"broken\": "}},
+      {"far.stl", {"held", "style \"far\" does not fit this last: the label of piece vamp is not on the reference last's upper"}},
+  };
+  for (const auto& [file, outcome] : expected) {
+    const auto [state, folder] = job_state(rig, file);
+    EXPECT_EQ(folder, outcome.first) << file;
+    const std::string reason = state.value("reason", "");
+    EXPECT_EQ(reason.find('\n'), std::string::npos) << reason;
+    EXPECT_EQ(reason.rfind(outcome.second, 0), 0u) << file << ": " << reason;
+    EXPECT_TRUE(std::filesystem::exists(rig.spool() / folder / state.value("id", "") / file)) << file << " is kept";
+  }
+  EXPECT_NE(job_state(rig, "broken.stl").first.value("reason", "").find("colour"), std::string::npos);
+
+  // Still running: a good pattern set is cut.
+  write_aama_dxf(staging / "good.dxf", {square_piece("vamp", "calf")});
+  drop(staging / "good.dxf", rig.watch(), "good.dxf");
+  EXPECT_TRUE(wait_until([&] { return job_state(rig, "good.dxf").second == "done"; }, 60)) << read_text(rig.daemon_log());
+  EXPECT_EQ(rig.stop_daemon(), 0);
+}
+
+}  // namespace
+}  // namespace lastcut::daemon::testing
