@@ -1,0 +1,104 @@
+// A shoe's pieces on the ledger (issue 35), the real binaries: two lastcutd nodes on a PostgreSQL
+// ledger and a mosquitto broker started by the test - station-a (compute + station, cutter-1: a
+// simulated grbl table for the leather hides, the hides folder beside it) and station-b (compute +
+// station, cutter-2: the lining roll). The orders of tests/daemon/piece_orders.hpp are dropped on both
+// nodes: two derby pairs and a loafer pair (the shipped styles) and a DXF-AAMA pattern set of linings.
+// Hides with poor zones and a backbone are dropped for cutter-1 until every order is cut. Checked on
+// the cut files the simulators received, by the independent reading of the G-code: every piece of every
+// order cut exactly once and labelled, a pair on one hide, no piece on a zone below its grade, every
+// grain within its tolerance of the backbone.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "tests/daemon/daemon_rig.hpp"
+#include "tests/daemon/piece_orders.hpp"
+#include "tests/ledger/ledger_shop.hpp"
+
+namespace lastcut::daemon::testing {
+namespace {
+
+constexpr double kHideWidth_mm = 1250, kHideHeight_mm = 850;  // inside the grbl table's 1300 x 900 mm
+
+ShopOptions shop_options() {
+  ShopOptions options;
+  options.nodes = {{"station-a", {"compute", "station"}}, {"station-b", {"compute", "station"}}};
+  options.cutters = {{"cutter-1", "grbl", "station-a"}, {"cutter-2", "grbl", "station-b"}};
+  options.batch_window_s = 0.5;
+  options.max_pieces = 0;
+  options.extra_paths = piece_paths_config();
+  options.extra_config = piece_materials_config("cutter-1");
+  return options;
+}
+
+TEST(LedgerPieces, StylesAndAPatternSetAreCutByMaterialOnTwoStations) {
+  LedgerShop shop("ledger-pieces", shop_options());
+  ASSERT_EQ(shop.start_services(), "");
+  for (const char* cutter : {"cutter-1", "cutter-2"}) ASSERT_EQ(shop.start_cutter(cutter), "");
+  for (const char* node : {"station-a", "station-b"}) ASSERT_EQ(shop.start_node(node), "");
+  const auto staging = shop.root() / "staging";
+  const std::vector<PieceOrder> orders = write_piece_orders(staging);
+  for (std::size_t k = 0; k < orders.size(); ++k) {  // the derbies at station-a, the loafer and the linings at station-b
+    const auto watch = shop.watch(k < 2 ? "station-a" : "station-b");
+    write_text(watch / (std::filesystem::path(orders[k].file).stem().string() + ".job.toml"), orders[k].sidecar);
+    drop(staging / orders[k].file, watch, orders[k].file);
+  }
+  const auto state_of = [&](const PieceOrder& order) { return shop.value("SELECT state FROM jobs WHERE scan_name = '" + order.file + "'"); };
+  const auto leather_settled = [&] {
+    for (const PieceOrder& order : orders)
+      if (order.order != "301" && state_of(order) != "computed" && state_of(order) != "done") return false;
+    return true;
+  };
+  const auto all_done = [&] {
+    for (const PieceOrder& order : orders)
+      if (state_of(order) != "done") return false;
+    return true;
+  };
+  ASSERT_TRUE(wait_until(leather_settled, 180)) << shop.log_tails();
+  for (int hide = 1; hide <= 4 && !all_done(); ++hide) {
+    const std::string name = "hide-" + std::to_string(hide);
+    write_zoned_hide(staging / (name + ".dxf"), kHideWidth_mm, kHideHeight_mm);
+    drop(staging / (name + ".dxf"), shop.node_dir("station-a") / "hides", name + ".dxf");
+    ASSERT_TRUE(wait_until([&] {
+      const std::string state = shop.value("SELECT b.state FROM batches b JOIN hides h ON h.id = b.hide_id WHERE h.name = '" + name +
+                                           "' ORDER BY b.id DESC LIMIT 1");
+      return state == "cut" && leather_settled();
+    }, 120)) << name << shop.log_tails();
+  }
+  ASSERT_TRUE(wait_until(all_done, 90)) << shop.log_tails();
+  for (const char* node : {"station-a", "station-b"}) EXPECT_EQ(shop.stop_node(node), 0);
+  for (const char* cutter : {"cutter-1", "cutter-2"}) shop.stop_cutter(cutter);
+
+  std::vector<std::filesystem::path> items_files;
+  for (const PieceOrder& order : orders)
+    items_files.push_back(shop.shared_dir() / "jobs" / shop.value("SELECT scan_sha256 FROM jobs WHERE scan_name = '" + order.file + "'") / "items.json");
+  const std::map<std::string, NestItem> items = items_by_label(items_files);
+  CutPieces cut;
+  const std::string on_cutter_1 = shop.received("cutter-1"), on_cutter_2 = shop.received("cutter-2");
+  for (const auto& row : shop.rows("SELECT id, cut_file, hide_id IS NOT NULL FROM batches WHERE state = 'cut'")) {
+    const std::string gcode = read_text(shop.shared_dir() / row[1]);
+    const bool on_hide = row[2] == "t";
+    EXPECT_EQ(count_occurrences(on_hide ? on_cutter_1 : on_cutter_2, gcode), 1) << "batch " << row[0];
+    check_cut_file(gcode, "batch " + row[0], on_hide ? zoned_hide_zones(kHideWidth_mm, kHideHeight_mm) : std::vector<QualityZone>{},
+                   items, cut);
+  }
+  for (const std::string& problem : cut.problems) ADD_FAILURE() << problem;
+  int pieces = 0;
+  for (const auto& [label, item] : items) {
+    pieces += item.demand;
+    EXPECT_EQ(cut.times_cut[label], item.demand) << label;
+  }
+  EXPECT_EQ(pieces, 2 * 8 + 10 + 6);
+  for (const PieceOrder& order : orders) {
+    std::set<std::string> hides;
+    for (const auto& [label, item] : items)
+      if (label.rfind("#" + order.order + " ", 0) == 0) hides.insert(cut.hide_of[label]);
+    EXPECT_EQ(hides.size(), 1u) << order.order;
+    EXPECT_EQ(hides.begin()->empty(), order.order == "301") << order.order;
+  }
+  EXPECT_EQ(cut.grain_checks, 26);
+  std::printf("%d pieces cut, %d zone checks, %d grain checks\n", pieces, cut.zone_checks, cut.grain_checks);
+}
+
+}  // namespace
+}  // namespace lastcut::daemon::testing
