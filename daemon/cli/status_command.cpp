@@ -30,8 +30,9 @@ void print_overview(const StoreOverview& overview) {
   for (const std::string& line : overview.station_lines) std::printf("  %s\n", line.c_str());
   for (const std::string& line : overview.cutter_lines) std::printf("  %s\n", line.c_str());
   for (const auto& [material, count] : overview.waiting_for_hide) {
-    std::printf("  %lld job(s) of %s waiting for a hide (drop a hide file in the hides folder, or lastcut hide load)\n",
-                count, material.c_str());
+    const auto pieces = overview.pieces_waiting_for_hide.find(material);
+    std::printf("  %lld job(s) of %s waiting for a hide, %lld pieces (drop a hide file in the hides folder, or lastcut hide load)\n",
+                count, material.c_str(), pieces == overview.pieces_waiting_for_hide.end() ? 0LL : pieces->second);
   }
   for (const std::string& line : overview.batch_lines) std::printf("  %s\n", line.c_str());
   print_jobs("in work:", overview.in_work);

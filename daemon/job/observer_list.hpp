@@ -19,6 +19,9 @@ class ObserverList : public StatusObserver {
   void cutter_changed(const CutterStatus& status) override {
     for (StatusObserver* observer : observers_) observer->cutter_changed(status);
   }
+  void nesting_done(const NestingStatus& status) override {
+    for (StatusObserver* observer : observers_) observer->nesting_done(status);
+  }
 
  private:
   std::vector<StatusObserver*> observers_;

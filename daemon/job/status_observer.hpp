@@ -7,6 +7,8 @@
 #include <cstddef>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "daemon/job/job_event.hpp"
 
 namespace lastcut::daemon {
@@ -24,6 +26,23 @@ struct CutterStatus {
   std::size_t bytes_sent = 0, bytes_total = 0;
 };
 
+// One nesting done: a strip batch of a material, or the waiting pieces on a hide. What the cutting
+// room follows per material and per hide: pieces placed, pieces left waiting, the yield.
+struct NestingStatus {
+  std::string material;
+  std::string hide;       // the hide's id; "" for a strip batch
+  std::string batch;      // the batch id
+  std::string cutter;
+  int pieces_placed = 0;
+  int pieces_waiting = 0;  // a hide: the pieces of the jobs that wait for the next hide
+  int jobs_placed = 0, jobs_waiting = 0;
+  double utilisation = 0;  // placed piece area / the material used (a hide's usable area), 0..1
+};
+
+// {"material","hide","batch","cutter","pieces_placed","pieces_waiting","jobs_placed","jobs_waiting","utilisation"}:
+// the same on MQTT and on the operator page.
+nlohmann::json to_json(const NestingStatus& status);
+
 class StatusObserver {
  public:
   virtual ~StatusObserver() = default;
@@ -31,6 +50,9 @@ class StatusObserver {
   virtual void job_changed(const JobEvent& event) = 0;
   // A cutter changed state or reported progress (at most every ~100 ms while sending).
   virtual void cutter_changed(const CutterStatus& status) = 0;
+  // A batch or a hide was nested (its layout and cut file written). Observers that show no
+  // materials may ignore it.
+  virtual void nesting_done(const NestingStatus& /*status*/) {}
 };
 
 }  // namespace lastcut::daemon

@@ -183,7 +183,11 @@ struct LedgerOverview {
     int pieces = 0;
   };
   std::vector<std::pair<std::string, long long>> jobs_per_state;  // by state name; states without jobs absent
-  std::vector<std::pair<std::string, long long>> computed_per_material;  // computed jobs not yet in a batch
+  struct Waiting {  // computed jobs of one material not yet in a batch
+    std::string material;
+    long long jobs = 0, pieces = 0;
+  };
+  std::vector<Waiting> computed_per_material;
   std::vector<Node> nodes;
   std::vector<Cutter> cutters;
   std::vector<QueuedBatch> queued_batches;  // oldest first, at most 100

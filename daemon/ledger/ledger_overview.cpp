@@ -13,8 +13,8 @@ Result<LedgerOverview> LedgerClient::overview() {
       out.jobs_per_state.emplace_back(r[0].as<std::string>(), r[1].as<long long>());
     }
     for (const pqxx::row& r :
-         tx.exec("SELECT material, count(*) FROM jobs WHERE state = 'computed' GROUP BY material ORDER BY material")) {
-      out.computed_per_material.emplace_back(r[0].as<std::string>(), r[1].as<long long>());
+         tx.exec("SELECT material, count(*), coalesce(sum(pieces), 0) FROM jobs WHERE state = 'computed' GROUP BY material ORDER BY material")) {
+      out.computed_per_material.push_back({r[0].as<std::string>(), r[1].as<long long>(), r[2].as<long long>()});
     }
     for (const pqxx::row& r : tx.exec(
              "SELECT name, array_to_string(roles, ','), extract(epoch FROM now() - heartbeat_at)::float8"

@@ -28,6 +28,7 @@ bool SpoolStore::is_hide_material(const std::string& material) const {
 
 void SpoolStore::add_to_hide_pool(const JobState& state) {
   auto& pool = hide_waiting_[state.ticket.material];
+  hide_waiting_pieces_[state.id] = state.piece_count;
   if (std::find(pool.begin(), pool.end(), state.id) == pool.end()) pool.push_back(state.id);
   std::sort(pool.begin(), pool.end());  // ids sort by claim time: oldest first
 }
@@ -116,7 +117,9 @@ void SpoolStore::nest_due_hides(Clock::time_point now) {
     std::vector<std::string>& pool = hide_waiting_[batch->material];
     std::erase_if(pool, [&](const std::string& id) {
       const auto state = spool_->read_state(JobFolder::Work, id);
-      return !state || state->stage != JobStage::Computed || !state->stage_problem.empty();
+      const bool gone = !state || state->stage != JobStage::Computed || !state->stage_problem.empty();
+      if (gone) hide_waiting_pieces_.erase(id);
+      return gone;
     });
     const double waited_s = std::chrono::duration<double>(now - loaded->since).count();
     if (pool.empty() || !hide_is_due(pool.size(), computing_material(batch->material), waited_s, window_s)) {

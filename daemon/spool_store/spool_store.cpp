@@ -79,9 +79,14 @@ void SpoolStore::write_status_file() {
     cutters[name] = {{"condition", links_.cutter_condition(name)}, {"queued_batches", store->queued()}};
   }
   const std::size_t waiting = strip_batcher_.waiting();
-  nlohmann::json waiting_for_hide = nlohmann::json::object();
-  for (const auto& [material, ids] : hide_waiting_)
-    if (!ids.empty()) waiting_for_hide[material] = ids.size();
+  nlohmann::json waiting_for_hide = nlohmann::json::object(), pieces_waiting_for_hide = nlohmann::json::object();
+  for (const auto& [material, ids] : hide_waiting_) {
+    if (ids.empty()) continue;
+    waiting_for_hide[material] = ids.size();
+    long long pieces = 0;
+    for (const std::string& id : ids) pieces += hide_waiting_pieces_.contains(id) ? hide_waiting_pieces_.at(id) : 0;
+    pieces_waiting_for_hide[material] = pieces;
+  }
   const nlohmann::json status{{"pid", static_cast<long>(::getpid())},
                               {"updated_at", utc_now_iso()},
                               {"watch_folder", config()->paths.watch_dir.string()},
@@ -89,6 +94,7 @@ void SpoolStore::write_status_file() {
                               {"to_compute", compute_store_->waiting()},
                               {"waiting_for_batch", waiting},
                               {"waiting_for_hide", waiting_for_hide},
+                              {"pieces_waiting_for_hide", pieces_waiting_for_hide},
                               {"cutters", cutters}};
   // Not fsync'ed on purpose: it is rewritten every 2 s and worthless after a crash.
   const Status written =

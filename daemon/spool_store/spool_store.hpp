@@ -90,6 +90,7 @@ class SpoolStore : public StationStore {
   std::map<std::string, std::string> hash_to_job_;    // sha256 -> first job id with those bytes
   StripBatcher strip_batcher_;                        // computed jobs waiting for a strip batch
   std::map<std::string, std::vector<std::string>> hide_waiting_;  // hide material -> jobs waiting, oldest first
+  std::map<std::string, int> hide_waiting_pieces_;                // job id -> its pieces (for status.json)
   struct LoadedHide {
     std::string batch_id;
     Clock::time_point since;

@@ -29,6 +29,21 @@ void take_outcome(const Result<Made>& made, NestResult& result) {
   result.utilisation = made->utilisation;
 }
 
+// What the cutting room follows per material and hide, once the store has the nesting.
+NestingStatus nesting_status(const NestWork& work, const NestResult& result) {
+  NestingStatus status;
+  status.material = work.material;
+  status.hide = work.hide_name;
+  status.batch = work.batch_dir.filename().string();
+  status.cutter = work.cutter;
+  status.pieces_placed = result.pieces;
+  status.pieces_waiting = result.pieces_waiting;
+  status.jobs_placed = static_cast<int>(result.placed.size());
+  status.jobs_waiting = static_cast<int>(result.waiting.size());
+  status.utilisation = result.utilisation;
+  return status;
+}
+
 }  // namespace
 
 ComputePool::ComputePool(ComputeStore& store, ProgressMonitor& monitor,
@@ -92,7 +107,9 @@ bool ComputePool::turn(const std::string& worker) {
     (*molds)->finish(compute_molds((*molds)->work(), worker));
   } else {
     NestClaim& nest = *std::get<std::unique_ptr<NestClaim>>(**claimed);
-    nest.finish(compute_nest(nest.work(), worker));
+    const NestResult result = compute_nest(nest.work(), worker);
+    nest.finish(result);
+    if (observer_ && result.made && !result.cut_file.empty()) observer_->nesting_done(nesting_status(nest.work(), result));
   }
   return true;
 }
@@ -143,7 +160,7 @@ NestResult ComputePool::compute_nest(const NestWork& work, const std::string& wo
     const Result<HideMade> made = build_hide(inputs, work.batch_dir, work.hide_file, material->second, cutter->second,
                                              settings->paths.machines_dir, settings->batch.nest_time_s);
     take_outcome(made, result);
-    if (made) result.waiting = made->waiting;
+    if (made) result.waiting = made->waiting, result.pieces_waiting = made->pieces_waiting;
   }
   monitor_.end(worker);
   result.took_s = seconds_since(start);

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "daemon/config/daemon_config.hpp"
+#include "daemon/job/status_observer.hpp"
 #include "daemon/station/compute_store.hpp"
 #include "daemon/station/progress_monitor.hpp"
 
@@ -38,6 +39,8 @@ class ComputePool {
   ComputePool(const ComputePool&) = delete;
   ComputePool& operator=(const ComputePool&) = delete;
 
+  // Who hears of every nesting done (NestingStatus); call before start. Null: nobody.
+  void observe(StatusObserver* observer) { observer_ = observer; }
   // Starts `workers` threads, named compute-1, compute-2, ...
   void start(int workers);
   // New work may be in the store: idle workers ask now rather than after idle_wait_s.
@@ -69,6 +72,7 @@ class ComputePool {
   std::condition_variable wake_;
   unsigned wakes_ = 0;  // counts wake() calls: a waiter returns when it changed
   std::string trouble_;
+  StatusObserver* observer_ = nullptr;
 };
 
 }  // namespace lastcut::daemon

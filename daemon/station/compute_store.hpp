@@ -56,6 +56,7 @@ struct NestResult {
   std::string cut_file;                          // file name in batch_dir; "" when nothing is cut
   int pieces = 0;                                // pieces placed
   double utilisation = 0;                        // 0..1 (of a hide's usable area)
+  int pieces_waiting = 0;                        // a hide only: the pieces of the jobs in `waiting`
   double took_s = 0;                             // nesting and cut file
 };
 

@@ -23,6 +23,7 @@
 #include "daemon/job/job_ticket.hpp"
 #include "engine/core/status.hpp"
 #include "engine/mold/mold.hpp"
+#include "engine/nest/nest_problem.hpp"
 
 namespace lastcut::daemon {
 
@@ -40,6 +41,7 @@ inline std::string unexpected_failure_reason(const std::exception& error) {
 
 struct MoldsMade {
   int piece_count = 0;        // molds or pieces made (before quantity)
+  int pieces_to_cut = 0;      // the items' demands together: what batching and status count
   std::string noun = "molds";  // what was made, for the log: "molds" or "pieces"
   nlohmann::json measures;    // the engine's report, as written to molds/report.json or pieces/pieces.json
   // "" when the job may be nested; else the one-line reason it is held (no items.json): a half beyond
@@ -77,6 +79,13 @@ Result<MoldsMade> compute_pattern_items(const std::filesystem::path& pattern, co
 
 // True for a job whose input is a pattern set rather than a scan (.dxf).
 bool is_pattern_set(const std::filesystem::path& input);
+
+// The pieces a job's items ask for: every item's demand (quantity, and the other foot of a pair).
+inline int pieces_to_cut(const std::vector<NestItem>& items) {
+  int pieces = 0;
+  for (const NestItem& item : items) pieces += item.demand;
+  return pieces;
+}
 
 struct ReferenceCheck {
   nlohmann::json comparisons = nlohmann::json::object();  // mold name -> compare JSON (engine/compare/compare_report.hpp)

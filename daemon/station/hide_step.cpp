@@ -54,6 +54,7 @@ Result<HideMade> build_hide(const std::vector<HideJobInput>& jobs, const std::fi
     BatchSpec spec;
     spec.rotation_step_deg = material.rotation_step_deg;
     spec.pairs = material.pairs_same_hide ? PairPolicy::SameHide : PairPolicy::Any;
+    spec.side_by_side = material.pieces_side_by_side;
     spec.gap_mm = material.spacing_mm;
     spec.margin_mm = material.spacing_mm;
     spec.min_quality = material.min_quality;
@@ -79,6 +80,7 @@ Result<HideMade> build_hide(const std::vector<HideJobInput>& jobs, const std::fi
           if (batch.instance.items[i].id == u.item && batch.group_of_item[i] == static_cast<int>(g))
             reason = "did not fit on hide " + hide.hide_id + " (" + u.reason + ")";
       made.waiting[groups[g].owner] = reason;
+      for (const NestItem& item : groups[g].items) made.pieces_waiting += item.demand;
       waiting.push_back({{"job", groups[g].owner}, {"order", groups[g].order}, {"reason", reason}});
     }
     made.piece_count = static_cast<int>(layout.placements.size());
@@ -86,6 +88,7 @@ Result<HideMade> build_hide(const std::vector<HideJobInput>& jobs, const std::fi
     report["pieces_placed"] = made.piece_count;
     report["jobs_placed"] = made.placed;
     report["jobs_waiting"] = waiting;
+    report["pieces_waiting"] = made.pieces_waiting;
     report["utilisation_of_usable_area"] = layout.utilisation;
     if (made.placed.empty()) {
       made.report = report;

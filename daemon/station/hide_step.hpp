@@ -33,6 +33,7 @@ struct HideMade {
   std::string cut_file;                          // file name in batch_dir; empty when nothing was placed
   double utilisation = 0;                        // placed piece area / usable hide area, 0..1
   int piece_count = 0;
+  int pieces_waiting = 0;                        // the pieces of the jobs in `waiting`
   nlohmann::json report;                         // what hide-report.json holds
 };
 

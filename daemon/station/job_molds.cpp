@@ -44,7 +44,7 @@ JobMolds make_job_molds(const std::filesystem::path& scan, const std::filesystem
     return molds;
   }
   molds.molds = made->piece_count;
-  molds.pieces = made->piece_count * ticket.quantity;
+  molds.pieces = made->pieces_to_cut;
   molds.report = {{"molds", molds.molds},
                   {"pieces", molds.pieces},
                   {"measures", made->measures},

@@ -28,7 +28,7 @@ struct JobMolds {
   std::string reason;     // Failed: why; HeldNotNestable: the limits crossed; HeldForReview: the worst corner
   int molds = 0;          // molds (or a style's or pattern set's pieces) made
   std::string noun = "molds";  // what they are, for the log: "molds" or "pieces"
-  int pieces = 0;         // molds x the ticket's quantity: what batching counts
+  int pieces = 0;         // the pieces to cut (every item x its demand): what batching counts
   double took_s = 0;      // the engine's time for the molds
   nlohmann::json report;  // molds, pieces, measures, timings_s and, when references were named, compare
 };

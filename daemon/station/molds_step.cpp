@@ -58,6 +58,7 @@ Result<MoldsMade> compute_molds(const std::filesystem::path& scan, const std::fi
     }
     // A sidecar side that contradicts the scan is among result.warnings (orient_last), in measures.
     const std::vector<NestItem> items = job_items(result, ticket, scan.filename().string());
+    made.pieces_to_cut = pieces_to_cut(items);
     if (Status written = write_file_durably(job_dir / kItemsFile, items_to_json(items).dump() + "\n"); !written)
       return written.with_context("molds made but not saved: ");
     return made;

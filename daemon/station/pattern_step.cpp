@@ -79,6 +79,7 @@ Result<MoldsMade> compute_pattern_items(const std::filesystem::path& pattern, co
       return piece_label_text({ticket.order, pattern.filename().string(), size, twin ? opposite_foot(foot) : foot, piece.name});
     };
     const std::vector<NestItem> items = items_from_pattern(pieces, spec);
+    made.pieces_to_cut = pieces_to_cut(items);
     if (Status written = write_file_durably(job_dir / kItemsFile, items_to_json(items).dump() + "\n"); !written)
       return written.with_context("pieces read but not saved: ");
     return made;

@@ -58,6 +58,7 @@ Status Station::start() {
   if (ComputeStore* compute = store_->compute_store()) {
     compute_pool_ = std::make_unique<ComputePool>(*compute, monitor_, [this] { return config_.get(); },
                                                   store_->compute_timing());
+    compute_pool_->observe(observer_);
     compute_pool_->start(settings->jobs.compute_workers);
   }
   spdlog::info("watching {} ({}); {}; {} compute worker(s); {} cutter(s); duplicates: {}",

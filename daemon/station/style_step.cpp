@@ -80,6 +80,7 @@ Result<MoldsMade> compute_style_pieces(const std::filesystem::path& scan, const 
       return piece_label_text({ticket.order, scan.filename().string(), ticket.size, twin ? opposite_foot(foot) : foot, piece.name});
     };
     const std::vector<NestItem> items = items_from_style(pieces, spec);
+    made.pieces_to_cut = pieces_to_cut(items);
     if (Status written = write_file_durably(job_dir / kItemsFile, items_to_json(items).dump() + "\n"); !written)
       return written.with_context("pieces made but not saved: ");
     return made;

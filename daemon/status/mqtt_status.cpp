@@ -167,6 +167,16 @@ void MqttStatus::job_changed(const JobEvent& event) {
   wake_.notify_all();
 }
 
+void MqttStatus::nesting_done(const NestingStatus& status) {
+  const std::string payload = nesting_payload(status, config_.station, utc_now_iso()).dump();
+  {
+    std::lock_guard lock(mutex_);
+    set_retained(topics_.material_nesting(status.material), payload);
+    if (!status.hide.empty()) set_retained(topics_.hide_nesting(status.hide), payload);
+  }
+  wake_.notify_all();
+}
+
 void MqttStatus::cutter_changed(const CutterStatus& status) {
   const std::string now = utc_now_iso();
   {

@@ -50,6 +50,7 @@ class MqttStatus final : public StatusObserver {
 
   void job_changed(const JobEvent& event) override;
   void cutter_changed(const CutterStatus& status) override;
+  void nesting_done(const NestingStatus& status) override;
 
  private:
   struct Message {

@@ -30,4 +30,11 @@ nlohmann::json job_event_payload(const JobEvent& event, const std::string& stati
           {"at", event.at}};
 }
 
+nlohmann::json nesting_payload(const NestingStatus& status, const std::string& station, const std::string& at) {
+  nlohmann::json payload = to_json(status);
+  payload["station"] = station;
+  payload["at"] = at;
+  return payload;
+}
+
 }  // namespace lastcut::daemon

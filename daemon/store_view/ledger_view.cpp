@@ -78,10 +78,13 @@ class LedgerView : public StoreView {
     }
     // Computed jobs of a hide material are waiting for a hide to be laid on a cutter's table.
     status["waiting_for_hide"] = nlohmann::json::object();
-    for (const auto& [material, count] : overview_rows->computed_per_material) {
-      if (std::find(hide_materials_.begin(), hide_materials_.end(), material) == hide_materials_.end()) continue;
-      status["waiting_for_hide"][material] = count;
-      overview.waiting_for_hide[material] = count;
+    status["pieces_waiting_for_hide"] = nlohmann::json::object();
+    for (const auto& waiting : overview_rows->computed_per_material) {
+      if (std::find(hide_materials_.begin(), hide_materials_.end(), waiting.material) == hide_materials_.end()) continue;
+      status["waiting_for_hide"][waiting.material] = waiting.jobs;
+      status["pieces_waiting_for_hide"][waiting.material] = waiting.pieces;
+      overview.waiting_for_hide[waiting.material] = waiting.jobs;
+      overview.pieces_waiting_for_hide[waiting.material] = waiting.pieces;
     }
     status["queued_batches"] = nlohmann::json::array();
     for (const auto& batch : overview_rows->queued_batches) {

@@ -125,6 +125,9 @@ class SpoolView : public StoreView {
     if (daemon_status.contains("waiting_for_hide")) {
       for (const auto& [material, count] : daemon_status["waiting_for_hide"].items())
         overview.waiting_for_hide[material] = count.get<long long>();
+      const nlohmann::json pieces_waiting = daemon_status.value("pieces_waiting_for_hide", nlohmann::json::object());
+      for (const auto& [material, count] : pieces_waiting.items())
+        overview.pieces_waiting_for_hide[material] = count.get<long long>();
     }
     for (const auto& batch : status["active_batches"]) {
       if (batch.value("stage", "") == "queued")

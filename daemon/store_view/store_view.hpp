@@ -76,6 +76,7 @@ struct StoreOverview {
   std::vector<std::string> station_lines;  // the daemon or the nodes: running, pid, heartbeat
   std::vector<std::string> cutter_lines;   // each cutter's condition and queued batches
   std::map<std::string, long long> waiting_for_hide;  // hide material -> computed jobs waiting for a hide
+  std::map<std::string, long long> pieces_waiting_for_hide;  // hide material -> those jobs' pieces
   std::vector<std::string> batch_lines;    // batches in progress or held (spool), hides (ledger)
   std::vector<JobLine> in_work, held, recent;
   std::vector<QueuedBatch> queued_batches;  // oldest first

@@ -27,6 +27,8 @@ void LiveEvents::cutter_changed(const CutterStatus& status) {
   publish("cutter", data);
 }
 
+void LiveEvents::nesting_done(const NestingStatus& status) { publish("nesting", to_json(status)); }
+
 void LiveEvents::publish(const std::string& kind, const nlohmann::json& data) {
   // When it was published (Unix ms), so a page can tell how late it arrived (docs/operator-page.md).
   nlohmann::json stamped = data;

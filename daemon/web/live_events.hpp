@@ -29,6 +29,7 @@ class LiveEvents : public StatusObserver {
 
   void job_changed(const JobEvent& event) override;
   void cutter_changed(const CutterStatus& status) override;
+  void nesting_done(const NestingStatus& status) override;
 
   // What a watcher gets: the events numbered after the one it saw, each a complete SSE frame
   // ("id: N\nevent: job\ndata: {...}\n\n"); `resync` when some of them already left the ring.

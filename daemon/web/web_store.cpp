@@ -99,6 +99,7 @@ Result<nlohmann::json> WebStore::overview() {
                         {"hides", hides},
                         {"cut_last_24h", cut},
                         {"waiting_for_hide", read->waiting_for_hide},
+                        {"pieces_waiting_for_hide", read->pieces_waiting_for_hide},
                         {"incoming", incoming_files(config_->paths.watch_dir)},
                         {"jobs", jobs},
                         {"can_act", !config_->web || !config_->web->tokens.empty()}};

@@ -64,6 +64,7 @@ BatchInstance hide_batch(const std::vector<PieceGroup>& groups, const std::vecto
     throw EngineError("batch " + name + ": the grain tolerance must be 0..90 deg");
   BatchInstance batch = common_batch(groups, spec, name, true);
   batch.instance.bins = hides;
+  if (!spec.side_by_side) batch.instance.pair_distance_mm = kAnywhereOnOneHide_mm;
   bool every_hide_has_backbone = true;
   for (size_t b = 0; b < hides.size(); ++b) {
     batch.instance.bins[b].id = static_cast<int>(b);

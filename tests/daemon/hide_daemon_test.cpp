@@ -142,7 +142,7 @@ TEST(DaemonHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
   const auto status_log = rig.root() / "status.txt";
   EXPECT_EQ(run_command({binary("lastcut").string(), "status", "--config", rig.config_file().string()}, status_log), 0);
   const std::string status = read_text(status_log);
-  EXPECT_NE(status.find("1 job(s) of leather waiting for a hide"), std::string::npos) << status;
+  EXPECT_NE(status.find("1 job(s) of leather waiting for a hide, 4 pieces"), std::string::npos) << status;  // a mirrored pair: 2 x 2 halves
   EXPECT_NE(status.find("waiting for a hide of leather: did not fit on hide"), std::string::npos) << status;
 
   EXPECT_EQ(rig.stop_daemon(), 0);

@@ -153,7 +153,7 @@ TEST_F(LedgerHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
                         status_log),
             0);
   const std::string status = read_text(status_log);
-  EXPECT_NE(status.find("1 job(s) of leather waiting for a hide"), std::string::npos) << status;
+  EXPECT_NE(status.find("1 job(s) of leather waiting for a hide, 4 pieces"), std::string::npos) << status;  // a mirrored pair: 2 x 2 halves
   EXPECT_NE(status.find("waiting for a hide of leather: did not fit on hide"), std::string::npos) << status;
   EXPECT_NE(status.find("hide CALF-0001"), std::string::npos) << status;
 

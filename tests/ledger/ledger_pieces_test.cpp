@@ -14,6 +14,7 @@
 #include "tests/daemon/daemon_rig.hpp"
 #include "tests/daemon/piece_orders.hpp"
 #include "tests/ledger/ledger_shop.hpp"
+#include "tests/support/mosquitto_broker.hpp"
 
 namespace lastcut::daemon::testing {
 namespace {
@@ -34,6 +35,8 @@ ShopOptions shop_options() {
 TEST(LedgerPieces, StylesAndAPatternSetAreCutByMaterialOnTwoStations) {
   LedgerShop shop("ledger-pieces", shop_options());
   ASSERT_EQ(shop.start_services(), "");
+  lastcut::test::MqttSubscriber watcher(shop.broker().port(), "lastcut/+/+/nesting");
+  ASSERT_TRUE(watcher.wait_subscribed(10));
   for (const char* cutter : {"cutter-1", "cutter-2"}) ASSERT_EQ(shop.start_cutter(cutter), "");
   for (const char* node : {"station-a", "station-b"}) ASSERT_EQ(shop.start_node(node), "");
   const auto staging = shop.root() / "staging";
@@ -97,6 +100,22 @@ TEST(LedgerPieces, StylesAndAPatternSetAreCutByMaterialOnTwoStations) {
     EXPECT_EQ(hides.begin()->empty(), order.order == "301") << order.order;
   }
   EXPECT_EQ(cut.grain_checks, 26);
+
+  // MQTT per material and per hide: the last nesting of each (retained), its pieces placed and waiting.
+  const auto nesting = [&](const std::string& topic) {
+    const auto message = watcher.last(topic);
+    return message ? nlohmann::json::parse(message->payload, nullptr, false) : nlohmann::json();
+  };
+  EXPECT_EQ(nesting("lastcut/material/lining/nesting").value("pieces_placed", -1), 6);
+  EXPECT_EQ(nesting("lastcut/material/leather/nesting").value("pieces_waiting", -1), 0) << "the last hide left nothing waiting";
+  int on_hides = 0;
+  for (const auto& row : shop.rows("SELECT name FROM hides")) {
+    const auto hide = nesting("lastcut/hide/" + row[0] + "/nesting");
+    EXPECT_EQ(hide.value("material", ""), "leather") << row[0];
+    EXPECT_GT(hide.value("utilisation", 0.0), 0.0) << row[0];
+    on_hides += hide.value("pieces_placed", 0);
+  }
+  EXPECT_EQ(on_hides, pieces - 6);
   std::printf("%d pieces cut, %d zone checks, %d grain checks\n", pieces, cut.zone_checks, cut.grain_checks);
 }
 

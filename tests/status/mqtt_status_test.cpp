@@ -119,6 +119,16 @@ TEST(StatusMqtt, JobEventsInOrderAndTheCutterStateRetained) {
   ASSERT_TRUE(watcher.wait_until(
       [&] { return last_json(watcher, "lastcut/cutter/cutter-1/state").value("state", "") == "idle"; }, 10));
   expect_current_retained(broker, rig, state["batch"].get<std::string>());
+  // The material's last nesting, retained: the strip batch of the calf roll with its pieces.
+  ASSERT_TRUE(watcher.wait_until([&] { return last_json(watcher, "lastcut/material/calf/nesting").is_object(); }, 10));
+  const auto nesting = last_json(watcher, "lastcut/material/calf/nesting");
+  EXPECT_EQ(nesting.value("batch", ""), state["batch"].get<std::string>());
+  EXPECT_EQ(nesting.value("pieces_placed", 0), state.value("pieces", -1));
+  EXPECT_EQ(nesting.value("hide", "?"), "");
+  EXPECT_GT(nesting.value("utilisation", 0.0), 0.0);
+  MqttSubscriber late(broker.port(), "lastcut/material/#");  // subscribed after: gets the retained message
+  ASSERT_TRUE(late.wait_until([&] { return late.last("lastcut/material/calf/nesting").has_value(); }, 10));
+  EXPECT_TRUE(late.last("lastcut/material/calf/nesting")->retained);
 
   // A clean stop says offline itself.
   EXPECT_EQ(rig.stop_daemon(), 0);

@@ -328,8 +328,9 @@ function draw() {
   $('headline').textContent = overview.headline;
   $('stations').replaceChildren(...overview.stations.concat(overview.cutters).map((line) => el('li', line)));
   const hideLines = overview.batches.slice();
+  const waitingPieces = overview.pieces_waiting_for_hide || {};
   for (const [material, count] of Object.entries(overview.waiting_for_hide))
-    hideLines.push(`${count} job(s) of ${material} wait for a hide`);
+    hideLines.push(`${count} job(s) of ${material} wait for a hide` + (material in waitingPieces ? `, ${waitingPieces[material]} pieces` : ''));
   $('hide-lines').replaceChildren(...hideLines.map((line) => el('li', line)));
   // Nested and waiting: the last moment a batch can be taken back (its jobs are held, to requeue).
   const queued = overview.queued_batches || [];
