@@ -30,8 +30,9 @@ TEST_PACKAGES=(
   # independent interpreters and tools the tests run against our output
   hp2xx mbpoll socat systemd procps python3 openssl
   # DXF-AAMA pattern files (tests/pattern): ezdxf reads and audits them, LibreCAD renders them to
-  # PDF (dxf2pdf, headless) and poppler's pdftoppm turns the page into a picture
-  python3-ezdxf librecad poppler-utils
+  # PDF (dxf2pdf, headless) and poppler's pdftoppm turns the page into a picture; Valentina, the
+  # pattern-making program, exports a hand-written pattern as DXF-AAMA for lastcut to cut
+  python3-ezdxf librecad poppler-utils valentina
   # the real grbl 1.1h firmware simulator (tests/peers) and the load it is tested under
   make gcc
   # fuzzing the parsers (clang's libFuzzer, tests/fuzz)

@@ -1,12 +1,15 @@
 // `lastcut nest INPUT... --time-limit S [--seed N] [--threads N] [--gap MM] [--margin MM]
 //  -o LAYOUT.json [--svg PICTURE.svg]`: nests pieces on a strip or on hides and writes a
 // self-contained layout (engine/nest/nest_json.hpp) that `lastcut toolpath` reads.
-// INPUT is a nest instance (JSON), or mold DXFs / folders written by `lastcut flatten` together
-// with --roll-width MM or --hides HIDE... (hide files, docs/hides.md). nest() checks every layout with the independent layout checker before it is written.
+// INPUT is a nest instance (JSON), or mold DXFs / folders written by `lastcut flatten` and DXF-AAMA
+// pattern sets (nest_inputs.hpp tells them apart) together with --roll-width MM or --hides HIDE...
+// (hide files, docs/hides.md). nest() checks every layout with the independent layout checker
+// before it is written.
 #include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <exception>
 #include <filesystem>
 #include <string>
@@ -14,15 +17,16 @@
 #include <vector>
 
 #include "daemon/cli/commands.hpp"
+#include "daemon/cli/nest_inputs.hpp"
 #include "daemon/cli/thread_team.hpp"
 #include "engine/core/engine_error.hpp"
-#include "engine/mold/mold_dxf.hpp"
 #include "engine/nest/hide_batch.hpp"
 #include "engine/nest/hide_file.hpp"
 #include "engine/nest/layout_svg.hpp"
 #include "engine/nest/mold_items.hpp"
 #include "engine/nest/nest_json.hpp"
 #include "engine/nest/nester.hpp"
+#include "engine/nest/pattern_items.hpp"
 
 namespace lastcut::cli {
 namespace {
@@ -37,37 +41,51 @@ struct NestArguments {
   std::vector<std::string> hides_paths;  // molds on these hide files (DXF, JSON) instead of a roll
   int copies = 1;
   int min_quality = 0;
+  std::optional<double> grain_tolerance_deg;  // pattern pieces with a grain line; nullopt: grain free
   int rotation_step_deg = 0;  // free
   bool mirrored_twins = false;
   std::string output_path, svg_path;
 };
 
-// A mold DXF's label says which half it is ("medial"); the folder `lastcut flatten` wrote it to says
-// whose last it is ("m-42-left"). The cutting room needs both on the piece.
-Mold read_labelled_mold(const std::filesystem::path& file) {
-  Mold mold = read_mold_dxf(file);
-  const std::string folder = std::filesystem::absolute(file).parent_path().filename().string();
-  if (!folder.empty() && mold.name.find(folder) == std::string::npos)
-    mold.name = mold.name.empty() ? folder : folder + " " + mold.name;
-  return mold;
+std::vector<NestItem> mold_items(const std::vector<Mold>& molds, const NestArguments& a) {
+  MoldNestSpec spec;
+  spec.copies = a.copies;
+  spec.mirrored_twins = a.mirrored_twins;
+  return items_from_molds(molds, spec);
 }
 
-std::vector<Mold> read_molds(const std::vector<std::string>& inputs) {
-  std::vector<Mold> molds;
-  for (const std::string& input : inputs) {
-    const std::filesystem::path path(input);
-    if (std::filesystem::is_directory(path)) {
-      std::vector<std::filesystem::path> files;
-      for (const auto& entry : std::filesystem::directory_iterator(path))
-        if (entry.path().extension() == ".dxf") files.push_back(entry.path());
-      std::sort(files.begin(), files.end());
-      if (files.empty()) throw EngineError("folder " + input + " holds no mold DXF files");
-      for (const auto& file : files) molds.push_back(read_labelled_mold(file));
-    } else {
-      molds.push_back(read_labelled_mold(path));
-    }
+std::vector<NestItem> pattern_items(const std::vector<PatternPiece>& pieces, int sets, const NestArguments& a) {
+  PatternNestSpec spec;
+  spec.sets = sets;
+  spec.mirrored_twins = a.mirrored_twins;
+  // A piece with a grain line keeps it within the tolerance (pieces without one stay free).
+  const PieceRules rules{a.grain_tolerance_deg, a.min_quality};
+  spec.rules = [rules](const PatternPiece&) { return rules; };
+  return items_from_pattern(pieces, spec);
+}
+
+// The pieces as hide_batch's jobs: the molds are one job, as before (a pair stays a pair), and each
+// set of the pattern is one (--copies N sets: N jobs), so a set's pieces come from one hide whose
+// colour and grain match, while different sets may go on different hides.
+std::vector<PieceGroup> piece_groups(const NestInputs& read, const NestArguments& a, const std::string& name) {
+  std::vector<PieceGroup> groups;
+  if (!read.molds.empty()) groups.push_back({name, "", 0, mold_items(read.molds, a)});
+  for (int set = 1; !read.pattern_pieces.empty() && set <= a.copies; ++set)
+    groups.push_back({name + " set " + std::to_string(set), "", 0, pattern_items(read.pattern_pieces, 1, a)});
+  return groups;
+}
+
+// The items on a roll, ids 0.. (molds first): --copies pairs of molds, or sets of the pattern (each
+// piece's demand is its Quantity x sets).
+std::vector<NestItem> roll_items(const NestInputs& read, const NestArguments& a) {
+  std::vector<NestItem> items;
+  if (!read.molds.empty()) items = mold_items(read.molds, a);
+  if (read.pattern_pieces.empty()) return items;
+  for (NestItem& item : pattern_items(read.pattern_pieces, a.copies, a)) {
+    item.id = static_cast<int>(items.size());
+    items.push_back(std::move(item));
   }
-  return molds;
+  return items;
 }
 
 struct HideOrInstance {
@@ -91,36 +109,38 @@ HideOrInstance read_hides(const std::string& path) {
 BatchInstance load_instance(const NestArguments& a) {
   const bool single_json = a.inputs.size() == 1 && std::filesystem::path(a.inputs[0]).extension() == ".json";
   if (single_json) {
-    if (a.roll_width_mm > 0) throw EngineError("--roll-width is for mold DXFs; a JSON instance carries its own strip or hides");
+    if (a.roll_width_mm > 0) throw EngineError("--roll-width is for mold DXFs and pattern sets; a JSON instance carries its own strip or hides");
     return {read_nest_instance(a.inputs[0]), {}};
   }
   if (a.roll_width_mm <= 0 && a.hides_paths.empty())
-    throw EngineError("nesting molds needs --roll-width MM (the usable width of the roll) or --hides HIDE...");
+    throw EngineError("nesting molds or pattern sets needs --roll-width MM (the usable width of the roll) or --hides HIDE...");
   if (a.roll_width_mm > 0 && !a.hides_paths.empty()) throw EngineError("choose a roll (--roll-width) or hides (--hides), not both");
-  MoldNestSpec spec;
-  spec.roll_width_mm = a.roll_width_mm > 0 ? a.roll_width_mm : 1;
-  spec.copies = a.copies;
-  spec.mirrored_twins = a.mirrored_twins;
   // Named after the one input, or after the layout file when there are several (a batch, not one last).
   const std::filesystem::path name_from = a.inputs.size() == 1 ? a.inputs[0] : a.output_path;
-  if (a.hides_paths.empty()) return {instance_from_molds(read_molds(a.inputs), spec, name_from.stem().string()), {}};
-  // Hides: the same engine entry as lastcutd (hide_batch.hpp); the molds of this command are one
-  // job, so they go on one hide together (a pair stays a pair).
+  const std::string name = name_from.stem().string();
+  const NestInputs read = read_nest_inputs(a.inputs);
+  if (a.hides_paths.empty()) {
+    NestInstance instance;
+    instance.name = name;
+    instance.strip_height = a.roll_width_mm;
+    instance.items = roll_items(read, a);
+    return {instance, {}};
+  }
+  // Hides: the same engine entry as lastcutd (hide_batch.hpp), whole jobs on one hide (piece_groups).
   std::vector<Bin> hides;
   double gap_mm = 0, margin_mm = 0;
   for (const std::string& path : a.hides_paths) {
-    const HideOrInstance read = read_hides(path);
-    hides.insert(hides.end(), read.bins.begin(), read.bins.end());
-    gap_mm = std::max(gap_mm, read.gap_mm);
-    margin_mm = std::max(margin_mm, read.margin_mm);
+    const HideOrInstance hide = read_hides(path);
+    hides.insert(hides.end(), hide.bins.begin(), hide.bins.end());
+    gap_mm = std::max(gap_mm, hide.gap_mm);
+    margin_mm = std::max(margin_mm, hide.margin_mm);
   }
-  PieceGroup group{name_from.stem().string(), "", 0, items_from_molds(read_molds(a.inputs), spec)};
-  for (NestItem& item : group.items) item.min_quality = a.min_quality;
   BatchSpec batch_spec;
+  batch_spec.min_quality = a.min_quality;
   batch_spec.rotation_step_deg = a.rotation_step_deg;
   batch_spec.gap_mm = gap_mm;
   batch_spec.margin_mm = margin_mm;
-  return hide_batch({group}, hides, batch_spec, name_from.stem().string());
+  return hide_batch(piece_groups(read, a, name), hides, batch_spec, name);
 }
 
 int run_nest(const NestArguments& a) {
@@ -136,7 +156,7 @@ int run_nest(const NestArguments& a) {
     // The engine has no threads of its own: a team started once runs the workers of every sweep.
     ThreadTeam team(static_cast<size_t>(options.threads - 1));
     options.run_parallel = team.runner();
-    // A mold batch on hides goes through the batch entry (whole jobs, one hide per pair); every
+    // Pieces on hides go through the batch entry (whole jobs, one hide per pair or set); every
     // other instance straight to the nester.
     const Layout layout = batch.group_of_item.empty() ? nest(instance, options) : nest_batch(batch, options);
     NestInstance written = instance;  // the layout records the gap and margin it was made with
@@ -166,20 +186,25 @@ int run_nest(const NestArguments& a) {
 void add_nest_command(CLI::App& app, int& exit_code) {
   auto arguments = std::make_shared<NestArguments>();
   auto* command = app.add_subcommand("nest", "nest pieces on a strip or on hides and write a layout (exit 3: some pieces did not fit)");
-  command->add_option("input", arguments->inputs, "nest instance (JSON), or mold DXF files / folders from `lastcut flatten`")->required();
+  command->add_option("input", arguments->inputs,
+                      "nest instance (JSON), or mold DXF files / folders from `lastcut flatten` and DXF-AAMA pattern sets")
+      ->required();
   command->add_option("--time-limit", arguments->time_limit_s, "seconds to improve the layout")->check(CLI::NonNegativeNumber)->required();
   command->add_option("--seed", arguments->seed, "random seed (same seed and threads: same layout for the same rounds)");
   command->add_option("--threads", arguments->threads, "worker threads (default: all cores)")->check(CLI::NonNegativeNumber);
   command->add_option("--gap", arguments->gap_mm, "minimum distance between pieces, mm (kerf + clearance)")->check(CLI::NonNegativeNumber);
   command->add_option("--margin", arguments->margin_mm, "minimum distance from the material edge and defects, mm")->check(CLI::NonNegativeNumber);
-  command->add_option("--roll-width", arguments->roll_width_mm, "usable roll width for mold DXFs, mm")->check(CLI::PositiveNumber);
+  command->add_option("--roll-width", arguments->roll_width_mm, "usable roll width for mold DXFs and pattern sets, mm")->check(CLI::PositiveNumber);
   command->add_option("--hides", arguments->hides_paths,
-                      "nest mold DXFs on these hide files (DXF or JSON, docs/hides.md) or the hides of an instance file");
+                      "nest mold DXFs and pattern sets on these hide files (DXF or JSON, docs/hides.md) or the hides of an instance file");
   command->add_option("--rotation-step", arguments->rotation_step_deg, "with --hides: rotations in steps of this, deg (360: none; default: free)")
       ->check(CLI::Range(1, 360));
-  command->add_option("--min-quality", arguments->min_quality, "lowest leather quality the molds may lie on (with --hides)");
-  command->add_option("--copies", arguments->copies, "copies of every mold (mold DXFs only)")->check(CLI::PositiveNumber);
-  command->add_flag("--mirrored-twins", arguments->mirrored_twins, "add every mold mirrored, for the other foot (mold DXFs only)");
+  command->add_option("--min-quality", arguments->min_quality, "lowest leather quality the pieces may lie on (with --hides)");
+  command->add_option("--grain-tolerance", arguments->grain_tolerance_deg,
+                      "pattern pieces with a grain line keep it within this of the backbone (hides) or the roll's length, deg")
+      ->check(CLI::Range(0.0, 90.0));
+  command->add_option("--copies", arguments->copies, "copies of every mold, or sets of a pattern (not for JSON)")->check(CLI::PositiveNumber);
+  command->add_flag("--mirrored-twins", arguments->mirrored_twins, "add every mold or pattern piece mirrored, for the other foot (not for JSON)");
   command->add_option("-o,--output", arguments->output_path, "layout JSON to write")->required();
   command->add_option("--svg", arguments->svg_path, "SVG picture of the layout to write");
   command->callback([arguments, &exit_code] { exit_code = run_nest(*arguments); });

@@ -2,8 +2,9 @@
 tests/pattern/aama_independent_readers_test.cpp: runs ezdxf's audit and prints, as JSON, what ezdxf
 finds in each block an INSERT places: closed and open polylines on layer 1 with their vertex counts,
 POINTs on layer 4 with their angle, LINEs on layer 7, polylines on layers 8 and 14, the layer-1
-texts, and the cut line's bounding box where the INSERT puts it. The C++ test compares that with
-the pieces it wrote.
+texts, the cut line's bounding box where the INSERT puts it, and the area each closed layer-1
+polyline encloses (shoelace formula over ezdxf's vertices, in the block's units). The C++ tests
+compare that with the pieces they wrote or read.
 
 The audit's errors are reported, and its fixes but one kind: ezdxf 0.18 (bookworm) "fixes" the
 SEQEND of every POLYLINE inside a block of an R12 file by deleting it for an invalid owner handle
@@ -26,8 +27,12 @@ def polyline_points(entity):
     return [(v.dxf.location.x, v.dxf.location.y) for v in entity.vertices]
 
 
+def shoelace(points):
+    return 0.5 * sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1]))
+
+
 def block_report(block, at):
-    report = {"closed_cut_lines": [], "open_cut_lines": 0, "notch_points": [], "notch_lines": 0,
+    report = {"closed_cut_lines": [], "cut_areas": [], "open_cut_lines": 0, "notch_points": [], "notch_lines": 0,
               "grain_lines": [], "internal_lines": [], "sew_lines": [], "texts": [], "cut_box": None}
     for entity in block:
         kind, layer = entity.dxftype(), entity.dxf.layer
@@ -36,6 +41,7 @@ def block_report(block, at):
             if layer == "1":
                 if entity.is_closed:
                     report["closed_cut_lines"].append(len(points))
+                    report["cut_areas"].append(abs(shoelace(points)))
                     xs = [x + at.x for x, _ in points]
                     ys = [y + at.y for _, y in points]
                     report["cut_box"] = [min(xs), min(ys), max(xs), max(ys)]
