@@ -47,7 +47,21 @@ struct Arguments {
   int triangles = 20000;
   std::vector<std::string> methods = {"search", "greedy"};
   fs::path svg_dir;
+  std::vector<std::string> relax;  // diagnostics: rules dropped to measure what each costs
 };
+
+// Drops the named rules from the instance (after hide_batch made it): near (a pair's pieces need not lie
+// near each other, only on one hide), grain (free rotation), grade (any leather), pairs (each piece on
+// any hide). Not the instance: a diagnostic of what holds the yield back.
+void relax_rules(lastcut::BatchInstance& batch, const std::vector<std::string>& relax) {
+  const auto dropped = [&](const char* rule) { return std::find(relax.begin(), relax.end(), rule) != relax.end(); };
+  if (dropped("near")) batch.instance.pair_distance_mm = 1e7;  // farther than any two points of a hide
+  for (lastcut::NestItem& item : batch.instance.items) {
+    if (dropped("grain")) item.grain_deg.reset(), item.grain_tolerance_deg = 0;
+    if (dropped("grade")) item.min_quality = 0, item.quality_regions.clear();
+    if (dropped("pairs")) item.pair_group = "piece " + std::to_string(item.id);
+  }
+}
 
 std::string grain_text(const std::map<double, double>& worst) {
   std::string text;
@@ -110,6 +124,8 @@ int main(int argc, char** argv) {
   app.add_option("--methods", args.methods, "search, greedy (comma-separated)")
       ->delimiter(',')->check(CLI::IsMember({"search", "greedy"}))->capture_default_str();
   app.add_option("--svg-dir", args.svg_dir, "write a picture of each layout here");
+  app.add_option("--relax", args.relax, "diagnostics, comma-separated: drop rules (near, grain, grade, pairs) to measure their cost")
+      ->delimiter(',')->check(CLI::IsMember({"near", "grain", "grade", "pairs"}));
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -128,8 +144,10 @@ int main(int argc, char** argv) {
     spec.margin_mm = args.margin_mm;
     // The pieces carry their own grain and grade (the style's); the batch adds no rule of its own.
     const auto hides = lastcut::bench::baldacci_hides(args.hides, args.mm_per_unit);
-    const lastcut::BatchInstance batch = lastcut::hide_batch(groups, hides, spec, "piece-yield");
+    lastcut::BatchInstance batch = lastcut::hide_batch(groups, hides, spec, "piece-yield");
+    relax_rules(batch, args.relax);
     print_instance(args, orders, batch, pieces_s);
+    for (const std::string& rule : args.relax) std::printf("RELAXED (a diagnostic, not the issue's rules): %s\n", rule.c_str());
 
     std::printf("\n## %zu pairs on %s, %g s, %d threads, seed %llu\n\n", orders.size(), args.hides.filename().c_str(),
                 args.time_limit_s, args.threads, static_cast<unsigned long long>(args.seed));
