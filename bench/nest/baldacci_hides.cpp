@@ -12,7 +12,7 @@ namespace lastcut::bench {
 
 double principal_axis_deg(const Polygon2& outline) {
   // Green's theorem over the edges (shoelace-style sums): area, first and second moments about the
-  // origin, then moved to the centroid. Signed sums, so either orientation gives the same axis.
+  // origin, then moved to the centroid.
   double area2 = 0, mx = 0, my = 0, ixx = 0, iyy = 0, ixy = 0;
   const std::size_t n = outline.points.size();
   for (std::size_t i = 0; i < n; ++i) {
@@ -29,7 +29,11 @@ double principal_axis_deg(const Polygon2& outline) {
   const double area = area2 / 2;
   if (!(std::abs(area) > 0)) throw EngineError("a hide outline without area has no principal axis");
   const double cx = mx / (6 * area), cy = my / (6 * area);
-  const double sxx = ixx / 12 - area * cx * cx, syy = iyy / 12 - area * cy * cy, sxy = ixy / 24 - area * cx * cy;
+  // The signed sums carry the orientation: a clockwise ring gives every moment negated, which would
+  // turn the axis by 90 deg, so they are taken with the area's sign.
+  const double sign = area > 0 ? 1 : -1;
+  const double sxx = sign * (ixx / 12 - area * cx * cx), syy = sign * (iyy / 12 - area * cy * cy),
+               sxy = sign * (ixy / 24 - area * cx * cy);
   double deg = 0.5 * std::atan2(2 * sxy, sxx - syy) * 180 / std::numbers::pi;
   if (deg <= -90) deg += 180;
   return deg;

@@ -95,6 +95,13 @@ void print_instance(const Arguments& args, const std::vector<lastcut::bench::Pai
               "outline's principal axis; gap %g mm, margin %g mm\n",
               args.hides.filename().c_str(), batch.instance.bins.size(), args.mm_per_unit, least * 1e-6, most * 1e-6,
               usable * 1e-6, args.gap_mm, args.margin_mm);
+  std::string backbones;  // where the grain runs on each hide: the principal axis, not a measured backbone
+  char angle[16];
+  for (const lastcut::Bin& hide : batch.instance.bins) {
+    std::snprintf(angle, sizeof angle, "%s%.1f", backbones.empty() ? "" : ", ", hide.backbone_deg.value_or(0.0));
+    backbones += angle;
+  }
+  std::printf("backbones, deg from the hides' x axis: %s\n", backbones.c_str());
   std::printf("area bound: %d hides (largest first); utilisation at most %.2f %% (the pieces over the least usable "
               "area of any hides that cover them)\n",
               bound.fewest_hides, 100 * bound.best_utilisation);
