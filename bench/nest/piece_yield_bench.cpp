@@ -8,6 +8,7 @@
 // pieces is printed on its own and is not in the nest times. Figures: docs/benchmarks-nest.md.
 //   piece_yield_bench                                  20 pairs (derby, loafer in turn), Test3's hides, 60 s, 2 threads
 //   piece_yield_bench --pairs 1 --time-limit 5 --threads 1    the smoke test
+//   piece_yield_bench --relax near                     a diagnostic: the same without one rule (near, grain, grade, pairs)
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
