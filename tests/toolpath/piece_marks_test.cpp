@@ -87,7 +87,9 @@ TEST(ToolpathDrawnLines, LeftOutWithoutAPenEvenOutsideTheTable) {
 TEST(ToolpathDrawnLines, TurnedAndMirroredWithTheirPiece) {
   NestInstance instance;
   instance.strip_height = 600;
-  NestItem item{5, Polygon2{{{0, 0}, {100, 0}, {100, 60}, {0, 60}}}};
+  NestItem item;
+  item.id = 5;
+  item.shape = Polygon2{{{0, 0}, {100, 0}, {100, 60}, {0, 60}}};
   item.drawn_lines_mm = {{{10, 10}, {90, 10}, {90, 50}}};
   instance.items = {item};
   Layout layout;
