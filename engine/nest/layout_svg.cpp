@@ -131,6 +131,13 @@ std::string layout_svg(const Layout& layout, const NestInstance& instance) {
         svg << "<line x1=\"" << a.x() << "\" y1=\"" << a.y() << "\" x2=\"" << b.x() << "\" y2=\"" << b.y()
             << "\" stroke=\"#7d3c98\" stroke-width=\"" << stroke << "\"/>\n";
       }
+      // Drawn lines thin and dashed: the pen draws them, nothing cuts them.
+      for (const std::vector<Point2>& drawn : item.drawn_lines_mm) {
+        Polygon2 placed;
+        for (const Point2& q : drawn) placed.points.push_back(place_point(q, p));
+        svg << "<polyline points=\"" << points(placed, 0, 0) << "\" fill=\"none\" stroke=\"#1b4f72\" stroke-width=\"" << stroke / 2
+            << "\" stroke-dasharray=\"" << 3 * stroke << ',' << 2 * stroke << "\"/>\n";
+      }
     }
     svg << "</g>\n";
     // Labels upright, outside the flipped group.

@@ -89,6 +89,20 @@ ItemMark mark(const json& j, const std::string& where) {
   return m;
 }
 
+// "drawn_lines": [[[x, y], ...], ...]; each line needs two points to be drawn at all.
+std::vector<std::vector<Point2>> drawn_lines(const json& j, const std::string& where) {
+  if (!j.is_array()) fail(where, "\"drawn_lines\" must be a list of lines");
+  std::vector<std::vector<Point2>> lines;
+  for (const json& line : j) {
+    const std::string at = where + " drawn line " + std::to_string(lines.size());
+    if (!line.is_array()) fail(at, "a drawn line must be a list of [x, y] points");
+    if (line.size() < 2) fail(at, "has " + std::to_string(line.size()) + " points, at least 2 are needed");
+    lines.emplace_back();
+    for (const json& p : line) lines.back().push_back(point(p, at));
+  }
+  return lines;
+}
+
 NestItem item(const json& j, const std::string& source) {
   const std::string where0 = source + " item";
   NestItem it;
@@ -120,6 +134,7 @@ NestItem item(const json& j, const std::string& source) {
     if (!j["marks"].is_array()) fail(where, "\"marks\" must be a list");
     for (const json& m : j["marks"]) it.marks.push_back(mark(m, where + " mark"));
   }
+  if (j.contains("drawn_lines")) it.drawn_lines_mm = drawn_lines(j["drawn_lines"], where);
   if (j.contains("quality_regions")) {
     if (!j["quality_regions"].is_array()) fail(where, "\"quality_regions\" must be a list");
     for (const json& r : j["quality_regions"]) {
@@ -195,6 +210,14 @@ json item_json(const NestItem& it) {
   for (const ItemMark& m : it.marks)
     marks.push_back({{"name", m.name}, {"from", {m.from_mm.x(), m.from_mm.y()}}, {"to", {m.to_mm.x(), m.to_mm.y()}}});
   j["marks"] = marks;
+  if (!it.drawn_lines_mm.empty()) {
+    json lines = json::array();
+    for (const std::vector<Point2>& line : it.drawn_lines_mm) {
+      lines.push_back(json::array());
+      for (const Point2& p : line) lines.back().push_back({p.x(), p.y()});
+    }
+    j["drawn_lines"] = lines;
+  }
   if (!it.quality_regions.empty()) {
     json regions = json::array();
     for (const QualityRegion& r : it.quality_regions) regions.push_back({{"min_quality", r.min_quality}, {"shape", ring_json(r.shape)}});

@@ -8,14 +8,15 @@
 //            {"outer": [[x,y]..], "inner": [[[x,y]..]..]}}, "zones": [{"quality", "shape"}]}],
 //            "items": [... "min_quality" ...]}
 // plus lastcut's own optional fields: items "allow_mirror", "grain_deg", "grain_tolerance_deg",
-// "label", "marks": [{"name", "from": [x,y], "to": [x,y]}]; instance "gap_mm", "margin_mm".
+// "label", "marks": [{"name", "from": [x,y], "to": [x,y]}], "drawn_lines": [[[x,y], [x,y]..]..]
+// (pen lines, >= 2 points each); instance "gap_mm", "margin_mm".
 // A shape may also be a bare [[x,y]..] list. A repeated closing point is dropped.
 //
 // Layouts (read by `lastcut toolpath` and the daemon):
 //   {"instance", "strip_length" (strip only), "utilisation",
 //    "placements": [{"item", "bin" (hides only), "copy" (only when > 0), "rotation_deg", "mirrored", "x", "y"}],
 //    "unplaced": [{"item", "count", "reason"}],
-//    "items": [{"id", "shape", "label", "marks", "demand", "allowed_rotations_deg", "allow_mirror",
+//    "items": [{"id", "shape", "label", "marks", "drawn_lines" (when any), "demand", "allowed_rotations_deg", "allow_mirror",
 //               "grain_deg", "grain_tolerance_deg", "min_quality"}],
 //    "strip_height" (strip) | "bins": [{"id", "outer", "holes", "zones", "stock", "cost"}],
 //    "gap_mm", "margin_mm"}

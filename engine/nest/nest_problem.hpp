@@ -41,6 +41,10 @@ struct NestItem {
                                               // (the daemon: older jobs)
   std::string label;                          // short text drawn by the pen (order, size, L/R)
   std::vector<ItemMark> marks;
+  // Lines the pen draws on the piece and nothing ever cuts (a pattern's internal lines, its sew
+  // lines): polylines of >= 2 points each, in the item's own frame (mm). Mirrored and turned with
+  // the piece like its marks; a machine without a pen leaves them out.
+  std::vector<std::vector<Point2>> drawn_lines_mm;
 };
 
 // A region of a hide with leather of the given quality (lower = worse).

@@ -15,6 +15,14 @@ void check_piece(const PatternPiece& piece, const PatternNestSpec& spec) {
   Polygon2 outline{piece.cut_line_mm};
   if (piece.cut_line_mm.size() < 3 || !(std::abs(signed_area(outline)) > 0))
     throw EngineError(name + ": its cut line encloses no area");
+  auto check_lines = [&](const std::vector<std::vector<Point2>>& lines, const char* kind) {
+    for (size_t k = 0; k < lines.size(); ++k)
+      if (lines[k].size() < 2)
+        throw EngineError(name + ": " + kind + " " + std::to_string(k + 1) + " has " + std::to_string(lines[k].size()) +
+                          " point(s), a drawn line needs at least 2");
+  };
+  check_lines(piece.internal_lines_mm, "internal line");
+  if (spec.draw_sew_lines) check_lines(piece.sew_lines_mm, "sew line");
   if (spec.rules) {
     const PieceRules rules = spec.rules(piece);
     if (rules.grain_tolerance_deg && !(*rules.grain_tolerance_deg >= 0 && *rules.grain_tolerance_deg <= 90))
@@ -28,6 +36,20 @@ std::optional<double> grain_of(const PatternPiece& piece, double sign) {
   const Point2 along = (*piece.grain_line_mm)[1] - (*piece.grain_line_mm)[0];
   if (!(along.norm() > 0)) return std::nullopt;
   return std::atan2(along.y(), sign * along.x()) * 180.0 / std::numbers::pi;
+}
+
+// The lines the pen draws on the item, mirrored (x -> -x) for a twin like its outline.
+std::vector<std::vector<Point2>> drawn_lines_of(const PatternPiece& piece, const PatternNestSpec& spec, double sign) {
+  std::vector<std::vector<Point2>> lines;
+  auto add = [&](const std::vector<std::vector<Point2>>& from) {
+    for (const std::vector<Point2>& line : from) {
+      lines.emplace_back();
+      for (const Point2& p : line) lines.back().emplace_back(sign * p.x(), p.y());
+    }
+  };
+  add(piece.internal_lines_mm);
+  if (spec.draw_sew_lines) add(piece.sew_lines_mm);
+  return lines;
 }
 
 }  // namespace
@@ -56,6 +78,7 @@ std::vector<NestItem> items_from_pattern(const std::vector<PatternPiece>& pieces
         const Point2 inward(sign * notch.inward.x(), notch.inward.y());
         item.marks.push_back({"notch", at, at + spec.notch_depth_mm * inward.normalized()});
       }
+      item.drawn_lines_mm = drawn_lines_of(piece, spec, sign);
       item.min_quality = rules.min_quality;
       if (rules.grain_tolerance_deg) {
         item.grain_deg = grain_of(piece, sign);

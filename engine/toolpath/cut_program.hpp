@@ -13,7 +13,7 @@ namespace lastcut {
 enum class ToolRole {
   Cut,   // the knife following a piece's outline
   Mark,  // notches and landmarks (a pen, a notch knife or the cutting knife)
-  Pen,   // the label of a piece, single-stroke lettering
+  Pen,   // the label of a piece (single-stroke lettering) and the lines drawn on it
 };
 
 std::string to_string(ToolRole role);

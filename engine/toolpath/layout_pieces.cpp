@@ -35,6 +35,10 @@ std::vector<PlacedPiece> placed_pieces(const Layout& layout, const NestInstance&
     for (const ItemMark& mark : item.marks) {
       piece.marks.push_back(PlacedMark{mark.name, place_point(mark.from_mm, placement), place_point(mark.to_mm, placement)});
     }
+    for (const std::vector<Point2>& line : item.drawn_lines_mm) {
+      piece.drawn_lines_mm.emplace_back();
+      for (const Point2& point : line) piece.drawn_lines_mm.back().push_back(place_point(point, placement));
+    }
     pieces.push_back(std::move(piece));
   }
   return pieces;

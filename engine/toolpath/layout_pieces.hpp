@@ -1,6 +1,6 @@
 #pragma once
-// From a nesting layout to the pieces the toolpath planner cuts: every placement's shape and marks
-// moved to where the layout puts them (placed_shape / place_point of engine/nest/layout.hpp).
+// From a nesting layout to the pieces the toolpath planner cuts: every placement's shape, marks and
+// drawn lines moved to where the layout puts them (placed_shape / place_point of engine/nest/layout.hpp).
 // A layout on hides may use several hides (and copies of one hide); each is a separate sheet on
 // the table, so pieces are taken from one sheet at a time.
 #include <filesystem>

@@ -221,6 +221,11 @@ MachineProfile parse_machine_profile(const std::string& toml_text, const std::st
   if (profile.label.min_height_mm > profile.label.height_mm) label.fail("min_height_mm", "must not exceed height_mm");
   if (profile.label.enabled && !profile.pen) label.fail("enabled", "needs a [tools.pen]");
   label.reject_unknown_keys();
+
+  KeyReader notch = root.child("notch");
+  profile.notch.shape = notch.choice("shape", "slit", {"slit", "v"}) == "v" ? NotchShape::V : NotchShape::Slit;
+  profile.notch.v_width_mm = notch.number("v_width_mm", profile.notch.v_width_mm, 0.5, 10.0);
+  notch.reject_unknown_keys();
   root.reject_unknown_keys();
 
   if (!profile.gcode.rotary_axis.empty() && profile.cut.kind != ToolKind::TangentialKnife) {

@@ -61,6 +61,17 @@ struct LabelOptions {
   double min_height_mm = 2.5;  // smallest letter height tried before giving up on a small piece
 };
 
+// How the mark tool cuts a notch ([notch]; which marks are notches: mark_stroke.hpp).
+enum class NotchShape {
+  Slit,  // one stroke from the outline straight in to the notch's inner end
+  V,     // one stroke: outline point - half the width, inner end, outline point + half the width
+};
+
+struct NotchOptions {
+  NotchShape shape = NotchShape::Slit;
+  double v_width_mm = 2.0;  // V: the opening at the outline, measured across the notch
+};
+
 struct MachineProfile {
   std::string name;
   CutFileFormat native_format = CutFileFormat::Gcode;
@@ -76,6 +87,7 @@ struct MachineProfile {
   HpglOptions hpgl;
   GcodeOptions gcode;
   LabelOptions label;
+  NotchOptions notch;
 
   // The settings of the tool that performs `role` (mark falls back to cut). Throws EngineError
   // for Pen when the profile has no pen.

@@ -20,6 +20,7 @@ struct PlacedPiece {
   std::string label;                // the item's label ("42 L medial"), may be empty
   Polygon2 outline;                 // counter-clockwise, simple, >= 3 points, mm
   std::vector<PlacedMark> marks;
+  std::vector<std::vector<Point2>> drawn_lines_mm;  // pen lines on the piece, never cut; >= 2 points each
 };
 
 }  // namespace lastcut

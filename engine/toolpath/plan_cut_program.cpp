@@ -1,11 +1,13 @@
 #include "engine/toolpath/plan_cut_program.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <sstream>
 
 #include "engine/core/engine_error.hpp"
 #include "engine/toolpath/drag_knife.hpp"
+#include "engine/toolpath/mark_stroke.hpp"
 #include "engine/toolpath/piece_contour.hpp"
 #include "engine/toolpath/piece_label.hpp"
 #include "engine/toolpath/planar_geometry.hpp"
@@ -47,7 +49,13 @@ PlacedPiece checked_piece(const PlacedPiece& piece, size_t index, const MachineP
   for (const PlacedMark& mark : piece.marks) {
     check_point(mark.from_mm, piece, index, profile);
     check_point(mark.to_mm, piece, index, profile);
+    // A V's ends lie beside the mark, half its width off the outline point.
+    for (const Point2& point : mark_stroke(mark, profile.notch)) check_point(point, piece, index, profile);
   }
+  // Without a pen the drawn lines are left out, so they cannot be outside anything.
+  if (profile.pen)
+    for (const std::vector<Point2>& line : piece.drawn_lines_mm)
+      for (const Point2& point : line) check_point(point, piece, index, profile);
   PlacedPiece clean = piece;
   clean.outline.points = without_repeated_points(piece.outline.points, 1e-6, true);
   if (clean.outline.points.size() < 3 || std::abs(signed_area(clean.outline)) < 1e-6) {
@@ -67,6 +75,33 @@ Point2 tour_stop(const Polygon2& outline) {
   return outline.points[contour_start_vertex(outline, low, 179.0)];
 }
 
+// The lines one after the other, each time the one with an end nearest the tool, from that end:
+// short travel without a tour, for the few lines of one piece.
+void add_nearest_first(std::vector<std::vector<Point2>> lines, ToolRole tool, int order_index, Point2& tool_mm,
+                       CutProgram& program) {
+  std::vector<bool> done(lines.size(), false);
+  for (size_t step = 0; step < lines.size(); ++step) {
+    size_t best = 0;
+    double best_mm = INFINITY;
+    bool reversed = false;
+    for (size_t m = 0; m < lines.size(); ++m) {
+      if (done[m]) continue;
+      const double from_mm = (lines[m].front() - tool_mm).norm();
+      const double to_mm = (lines[m].back() - tool_mm).norm();
+      if (std::min(from_mm, to_mm) < best_mm) {
+        best_mm = std::min(from_mm, to_mm);
+        best = m;
+        reversed = to_mm < from_mm;
+      }
+    }
+    done[best] = true;
+    std::vector<Point2> line = std::move(lines[best]);
+    if (reversed) std::reverse(line.begin(), line.end());
+    tool_mm = line.back();
+    program.strokes.push_back(Stroke{tool, std::move(line), {}, order_index, false});
+  }
+}
+
 void add_piece_strokes(const PlacedPiece& piece, int order_index, const MachineProfile& profile, Point2& tool_mm,
                        CutProgram& program) {
   ProgramPiece info{piece.item_id, piece.label, "", {}};
@@ -80,29 +115,17 @@ void add_piece_strokes(const PlacedPiece& piece, int order_index, const MachineP
       }
     }
   }
-  std::vector<bool> done(piece.marks.size(), false);
-  for (size_t step = 0; step < piece.marks.size(); ++step) {
-    size_t best = 0;
-    double best_mm = INFINITY;
-    bool reversed = false;
-    for (size_t m = 0; m < piece.marks.size(); ++m) {
-      if (done[m]) continue;
-      const double from_mm = (piece.marks[m].from_mm - tool_mm).norm();
-      const double to_mm = (piece.marks[m].to_mm - tool_mm).norm();
-      if (std::min(from_mm, to_mm) < best_mm) {
-        best_mm = std::min(from_mm, to_mm);
-        best = m;
-        reversed = to_mm < from_mm;
-      }
-    }
-    done[best] = true;
-    const PlacedMark& mark = piece.marks[best];
-    if ((mark.to_mm - mark.from_mm).norm() < 1e-6) continue;
-    std::vector<Point2> line = reversed ? std::vector<Point2>{mark.to_mm, mark.from_mm}
-                                        : std::vector<Point2>{mark.from_mm, mark.to_mm};
-    tool_mm = line.back();
-    program.strokes.push_back(Stroke{ToolRole::Mark, std::move(line), {}, order_index, false});
+  // Drawn lines right after the label: the same tool, no change between them.
+  if (profile.pen) {
+    std::vector<std::vector<Point2>> drawn;
+    for (const std::vector<Point2>& line : piece.drawn_lines_mm)
+      if (polyline_length(line) >= 1e-6) drawn.push_back(line);
+    add_nearest_first(std::move(drawn), ToolRole::Pen, order_index, tool_mm, program);
   }
+  std::vector<std::vector<Point2>> marks;
+  for (const PlacedMark& mark : piece.marks)
+    if (std::vector<Point2> stroke = mark_stroke(mark, profile.notch); !stroke.empty()) marks.push_back(std::move(stroke));
+  add_nearest_first(std::move(marks), ToolRole::Mark, order_index, tool_mm, program);
   const int start = contour_start_vertex(piece.outline, tool_mm, kStartCornerMin_deg);
   const size_t n = piece.outline.points.size();
   for (size_t k = 0; k < n; ++k) info.outline_mm.points.push_back(piece.outline.points[(start + k) % n]);
@@ -164,7 +187,11 @@ CutProgram plan_cut_program(const std::vector<PlacedPiece>& pieces, const Machin
       label = place_text(piece_marking(widest_order, piece.label), piece.outline, profile.label.height_mm,
                          profile.label.min_height_mm);
     }
-    entries.push_back(label ? label->center_mm : piece.marks.empty() ? exits.back() : piece.marks.front().from_mm);
+    const bool draws_lines = profile.pen && !piece.drawn_lines_mm.empty();
+    entries.push_back(label          ? label->center_mm
+                      : draws_lines ? piece.drawn_lines_mm.front().front()
+                      : piece.marks.empty() ? exits.back()
+                                            : piece.marks.front().from_mm);
   }
   std::vector<int> sequence(clean.size());
   std::iota(sequence.begin(), sequence.end(), 0);

@@ -1,4 +1,4 @@
-// The cutting-room picture: labels fit their pieces, pieces left over are named.
+// The cutting-room picture: labels fit their pieces, pieces left over are named, drawn lines dashed.
 #include <gtest/gtest.h>
 
 #include "engine/nest/layout_svg.hpp"
@@ -28,6 +28,23 @@ TEST(LayoutSvg, LongLabelsBreakIntoTwoLinesOnNarrowPiecesAndLeftoversAreNamed) {
   EXPECT_NE(svg.find(">medial</text>"), std::string::npos) << svg;
   EXPECT_NE(svg.find(">#1 38R</text>"), std::string::npos) << svg;  // fits: one line
   EXPECT_NE(svg.find("NOT PLACED: m-44-right lateral (item 2) x1: too long"), std::string::npos) << svg;
+}
+
+TEST(LayoutSvg, DrawnLinesAreThinDashedLinesTurnedWithTheirPiece) {
+  NestInstance instance;
+  instance.name = "lines";
+  instance.strip_height = 200;
+  instance.items.push_back(test::item(0, test::rectangle(100, 50), 1, {90}));
+  instance.items.back().drawn_lines_mm = {{{10, 20}, {90, 20}, {90, 40}}};
+  Layout layout;
+  layout.instance = instance.name;
+  layout.strip_length = 200;
+  layout.placements.push_back({0, -1, 0, 90, false, 100, 5});
+  const std::string svg = layout_svg(layout, instance);
+  // (x, y) turned by 90 deg is (-y, x), then moved by (100, 5).
+  const size_t line = svg.find("<polyline points=\"80,15 80,95 60,95 \"");
+  ASSERT_NE(line, std::string::npos) << svg;
+  EXPECT_NE(svg.substr(line, svg.find('>', line) - line).find("stroke-dasharray"), std::string::npos) << svg;
 }
 
 }  // namespace

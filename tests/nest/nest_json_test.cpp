@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include "engine/core/engine_error.hpp"
 #include "engine/nest/layout_check.hpp"
@@ -124,6 +125,42 @@ TEST(NestJson, HideFieldsSurviveTheLayoutFile) {
   EXPECT_DOUBLE_EQ(embedded.pair_distance_mm, 250);
   expect_refused(R"({"strip_height": 10, "items": [{"id": 0, "pair_group": 7, "shape": [[0,0],[1,0],[0,1]]}]})", "pair_group");
   expect_refused(R"({"strip_height": 10, "items": [{"id": 0, "quality_regions": [{"shape": [[0,0],[1,0],[0,1]]}], "shape": [[0,0],[1,0],[0,1]]}]})", "min_quality");
+}
+
+TEST(NestJson, DrawnLinesSurviveTheLayoutFileAndBadOnesAreRefused) {
+  NestInstance instance = test::small_hide();
+  instance.items[0].drawn_lines_mm = {{{1, 2}, {3, 4}, {5, 2.5}}, {{0, 0}, {1, 1}}};
+  Layout layout;
+  layout.instance = instance.name;
+  const nlohmann::json json = layout_to_json(layout, instance);
+  EXPECT_FALSE(json["items"][1].contains("drawn_lines")) << "an item without lines writes no key";
+  const NestInstance embedded = instance_from_layout_json(nlohmann::json::parse(json.dump()));
+  EXPECT_EQ(embedded.items[0].drawn_lines_mm, instance.items[0].drawn_lines_mm);
+  EXPECT_TRUE(embedded.items[1].drawn_lines_mm.empty());
+  const std::string item = R"({"strip_height": 10, "items": [{"id": 3, "shape": [[0,0],[1,0],[0,1]], "drawn_lines": )";
+  auto refusal = [&](const std::string& lines) {
+    try {
+      instance_from_json(nlohmann::json::parse(item + lines + "}]}"), "bad.json");
+    } catch (const EngineError& error) {
+      return std::string(error.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(refusal("7"), "bad.json item 3: \"drawn_lines\" must be a list of lines");
+  EXPECT_EQ(refusal("[[[0,0],[1,1]], {}]"), "bad.json item 3 drawn line 1: a drawn line must be a list of [x, y] points");
+  EXPECT_EQ(refusal("[[[0,0]]]"), "bad.json item 3 drawn line 0: has 1 points, at least 2 are needed");
+  EXPECT_EQ(refusal("[[]]"), "bad.json item 3 drawn line 0: has 0 points, at least 2 are needed");
+  EXPECT_EQ(refusal("[[[0,0],[1]]]"), "bad.json item 3 drawn line 0: a point must be [x, y]");
+  EXPECT_EQ(refusal("[[[0,0],[1,\"a\"]]]"), "bad.json item 3 drawn line 0: expected a number, found string");
+  // JSON has no NaN or infinity; an instance built in code and read back through its JSON does.
+  nlohmann::json infinite = instance_to_json(instance);
+  infinite["items"][0]["drawn_lines"][0][1][0] = std::numeric_limits<double>::infinity();
+  try {
+    instance_from_json(infinite, "bad.json");
+    ADD_FAILURE() << "accepted an infinite coordinate";
+  } catch (const EngineError& error) {
+    EXPECT_EQ(std::string(error.what()), "bad.json item 0 drawn line 0: number is not finite");
+  }
 }
 
 TEST(NestJson, RefusesBadInstances) {

@@ -1,7 +1,8 @@
 // Pattern pieces as nest items (engine/nest/pattern_items.hpp): demand, mirrored twins, notches,
-// grain and leather rules, the refusals; and the hide batch keeping a piece's own grain, so a
-// vamp's grain line (not its x axis) is what lies along the backbone. The grain of a placed piece
-// is checked on the layout by the independent checker (layout_check.hpp).
+// internal and sew lines as drawn lines, grain and leather rules, the refusals; and the hide batch
+// keeping a piece's own grain, so a vamp's grain line (not its x axis) is what lies along the
+// backbone. The grain of a placed piece is checked on the layout by the independent checker
+// (layout_check.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -58,6 +59,25 @@ TEST(PatternItems, DemandTwinsNotchesAndGrain) {
   EXPECT_NEAR(items[1].marks[0].from_mm.x(), -30, 1e-12);
 }
 
+TEST(PatternItems, InternalLinesAreDrawnLinesSewLinesWhenAsked) {
+  PatternPiece piece = vamp_piece();
+  piece.internal_lines_mm = {{{5, 5}, {95, 5}, {95, 35}, {5, 5}}};  // closed: first point repeated
+  piece.sew_lines_mm = {{{2, 2}, {98, 2}}};
+  PatternNestSpec spec;
+  spec.mirrored_twins = true;
+  std::vector<NestItem> items = items_from_pattern({piece}, spec);
+  ASSERT_EQ(items.size(), 2u);
+  EXPECT_EQ(items[0].drawn_lines_mm, piece.internal_lines_mm) << "the sew lines only when asked";
+  ASSERT_EQ(items[1].drawn_lines_mm.size(), 1u);
+  const std::vector<Point2> mirrored = {{-5, 5}, {-95, 5}, {-95, 35}, {-5, 5}};
+  EXPECT_EQ(items[1].drawn_lines_mm[0], mirrored) << "the twin's lines mirrored with its outline";
+  spec.draw_sew_lines = true;
+  items = items_from_pattern({piece}, spec);
+  ASSERT_EQ(items[0].drawn_lines_mm.size(), 2u);
+  EXPECT_EQ(items[0].drawn_lines_mm[1], piece.sew_lines_mm[0]);
+  EXPECT_EQ(items[1].drawn_lines_mm[1], (std::vector<Point2>{{-2, 2}, {-98, 2}}));
+}
+
 TEST(PatternItems, GrainFreeWithoutRuleOrLine) {
   PatternPiece lining = vamp_piece();
   lining.name = "lining";
@@ -82,6 +102,15 @@ TEST(PatternItems, Refusals) {
   PatternNestSpec wide;
   wide.rules = [](const PatternPiece&) { return PieceRules{95.0, 0}; };
   EXPECT_EQ(refusal({vamp_piece()}, wide), "piece \"vamp\": a grain tolerance must be 0..90 deg");
+  PatternPiece dot = vamp_piece();
+  dot.internal_lines_mm = {{{5, 5}, {6, 6}}, {{7, 7}}};
+  EXPECT_EQ(refusal({dot}, {}), "piece \"vamp\": internal line 2 has 1 point(s), a drawn line needs at least 2");
+  dot.internal_lines_mm.clear();
+  dot.sew_lines_mm = {{}};
+  EXPECT_EQ(refusal({dot}, {}), "") << "sew lines not drawn are not looked at";
+  PatternNestSpec sewn;
+  sewn.draw_sew_lines = true;
+  EXPECT_EQ(refusal({dot}, sewn), "piece \"vamp\": sew line 1 has 0 point(s), a drawn line needs at least 2");
 }
 
 Bin hide_with_backbone(double backbone_deg) {

@@ -102,6 +102,19 @@ TEST(ToolpathMachineProfileFile, MistakesAreErrorsNamingTheKey) {
   EXPECT_NE(message_for("kind = \"drag_knife\"", "kind = \"laser\"").find("must be one of"), std::string::npos);
   EXPECT_NE(message_for("work_area_x_mm = 1400.0", "work_area_x_mm = nan").find("must be a number"), std::string::npos);
   EXPECT_NE(message_for("[machine]", "[machine").find("test.toml: line"), std::string::npos);
+  // [notch]: the shape and its width, each refused with its key; without the table, today's slit.
+  EXPECT_EQ(message_for("shape = \"slit\"", "shape = \"u\""), "test.toml: 'notch.shape' must be one of \"slit\", \"v\"");
+  EXPECT_EQ(message_for("v_width_mm = 2.0", "v_width_mm = 0.4"), "test.toml: 'notch.v_width_mm' must be between 0.5 and 10");
+  EXPECT_EQ(message_for("v_width_mm = 2.0", "v_width_mm = 10.5"), "test.toml: 'notch.v_width_mm' must be between 0.5 and 10");
+  EXPECT_EQ(message_for("v_width_mm = 2.0", "v_width_mm = \"2\""), "test.toml: 'notch.v_width_mm' must be a number");
+  EXPECT_EQ(message_for("v_width_mm = 2.0", "v_wdth_mm = 2.0"), "test.toml: unknown key 'notch.v_wdth_mm'");
+  EXPECT_EQ(message_for("v_width_mm = 2.0", "depth_mm = 2.0"), "test.toml: unknown key 'notch.depth_mm'");
+  const std::string no_notch = good.substr(0, good.find("[notch]"));
+  EXPECT_EQ(error_of([&] { parse_machine_profile("notch = 3\n" + no_notch, "test.toml"); }),
+            "test.toml: 'notch' must be a table [notch]");
+  const MachineProfile slit = parse_machine_profile(no_notch, "test.toml");
+  EXPECT_EQ(slit.notch.shape, NotchShape::Slit);
+  EXPECT_EQ(slit.notch.v_width_mm, 2.0);
   const std::string missing = error_of([] { load_machine_profile("no-such-machine", {"/nonexistent"}); });
   EXPECT_NE(missing.find("'no-such-machine' not found"), std::string::npos) << missing;
 }
