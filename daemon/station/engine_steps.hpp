@@ -21,6 +21,7 @@
 
 #include "daemon/config/daemon_config.hpp"
 #include "daemon/job/job_ticket.hpp"
+#include "engine/core/engine_error.hpp"
 #include "engine/core/status.hpp"
 #include "engine/mold/mold.hpp"
 #include "engine/nest/nest_problem.hpp"
@@ -85,6 +86,29 @@ inline int pieces_to_cut(const std::vector<NestItem>& items) {
   int pieces = 0;
   for (const NestItem& item : items) pieces += item.demand;
   return pieces;
+}
+
+// The end of every job step: the items saved durably as job_dir/items.json (the only file that makes a
+// job nestable) and counted into made.pieces_to_cut. `made_what` ("molds", "pieces") names them in the failure.
+Result<MoldsMade> save_job_items(const std::filesystem::path& job_dir, const std::vector<NestItem>& items, MoldsMade made,
+                                 const std::string& made_what);
+
+// A job step into job_dir run so that nothing escapes it: an EngineError is its one line, running out
+// of memory says `too_large`, anything else is unexpected_failure_reason. A stale items.json (from a
+// computation before a requeue) goes first: only this computation's items may be nested.
+template <typename Step>
+Result<MoldsMade> guarded_job_step(const std::filesystem::path& job_dir, Step&& step, const std::string& too_large) {
+  try {
+    std::error_code ignored;  // absent is the usual case; a file that cannot go fails the step's own write
+    std::filesystem::remove(job_dir / kItemsFile, ignored);
+    return step();
+  } catch (const EngineError& error) {
+    return Status::failure(error.what());
+  } catch (const std::bad_alloc&) {
+    return Status::failure(too_large);
+  } catch (const std::exception& error) {
+    return Status::failure(unexpected_failure_reason(error));
+  }
 }
 
 struct ReferenceCheck {

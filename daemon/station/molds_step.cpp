@@ -42,11 +42,7 @@ std::vector<NestItem> job_items(const ScanResult& result, const JobTicket& ticke
 Result<MoldsMade> compute_molds(const std::filesystem::path& scan, const std::filesystem::path& job_dir,
                                 const JobTicket& ticket, const MoldOptions& mold_options, double max_hole_across_mm,
                                 const MoldQualityLimits& quality) {
-  try {
-    // A stale items.json (from a computation before a requeue) must not outlive molds that now
-    // fail the gate: only this computation's molds may be nested.
-    std::error_code ignored;  // absent is the usual case; a file that cannot go fails the write below
-    std::filesystem::remove(job_dir / kItemsFile, ignored);
+  return guarded_job_step(job_dir, [&]() -> Result<MoldsMade> {
     const ScanResult result = scan_to_molds(scan, job_scan_options(ticket, mold_options, max_hole_across_mm, quality));
     if (result.segments.empty()) return Status::failure("no mold could be made from the scan");
     MoldsMade made;
@@ -57,18 +53,8 @@ Result<MoldsMade> compute_molds(const std::filesystem::path& scan, const std::fi
       return made;
     }
     // A sidecar side that contradicts the scan is among result.warnings (orient_last), in measures.
-    const std::vector<NestItem> items = job_items(result, ticket, scan.filename().string());
-    made.pieces_to_cut = pieces_to_cut(items);
-    if (Status written = write_file_durably(job_dir / kItemsFile, items_to_json(items).dump() + "\n"); !written)
-      return written.with_context("molds made but not saved: ");
-    return made;
-  } catch (const EngineError& error) {
-    return Status::failure(error.what());
-  } catch (const std::bad_alloc&) {
-    return Status::failure("the scan is too large for this machine's memory");
-  } catch (const std::exception& error) {
-    return Status::failure(unexpected_failure_reason(error));
-  }
+    return save_job_items(job_dir, job_items(result, ticket, scan.filename().string()), made, "molds");
+  }, "the scan is too large for this machine's memory");
 }
 
 }  // namespace lastcut::daemon

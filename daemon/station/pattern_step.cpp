@@ -50,9 +50,7 @@ bool is_pattern_set(const std::filesystem::path& input) {
 
 Result<MoldsMade> compute_pattern_items(const std::filesystem::path& pattern, const std::filesystem::path& job_dir,
                                         const JobTicket& ticket, const DaemonConfig& settings) {
-  try {
-    std::error_code ignored;  // absent is the usual case; a file that cannot go fails the write below
-    std::filesystem::remove(job_dir / kItemsFile, ignored);
+  return guarded_job_step(job_dir, [&]() -> Result<MoldsMade> {
     // Read by name, not path: the refusal names the file the operator dropped, not the job folder it moved to.
     std::ifstream in(pattern, std::ios::binary);
     if (!in) return Status::failure("cannot read pattern file " + pattern.filename().string());
@@ -78,18 +76,8 @@ Result<MoldsMade> compute_pattern_items(const std::filesystem::path& pattern, co
       const std::string size = !ticket.size.empty() ? ticket.size : piece.size;
       return piece_label_text({ticket.order, pattern.filename().string(), size, twin ? opposite_foot(foot) : foot, piece.name});
     };
-    const std::vector<NestItem> items = items_from_pattern(pieces, spec);
-    made.pieces_to_cut = pieces_to_cut(items);
-    if (Status written = write_file_durably(job_dir / kItemsFile, items_to_json(items).dump() + "\n"); !written)
-      return written.with_context("pieces read but not saved: ");
-    return made;
-  } catch (const EngineError& error) {
-    return Status::failure(error.what());
-  } catch (const std::bad_alloc&) {
-    return Status::failure("the pattern set is too large for this machine's memory");
-  } catch (const std::exception& error) {
-    return Status::failure(unexpected_failure_reason(error));
-  }
+    return save_job_items(job_dir, items_from_pattern(pieces, spec), made, "pieces");
+  }, "the pattern set is too large for this machine's memory");
 }
 
 }  // namespace lastcut::daemon

@@ -37,9 +37,7 @@ std::string style_hold(const JobTicket& ticket, const DaemonConfig& settings, Re
 
 Result<MoldsMade> compute_style_pieces(const std::filesystem::path& scan, const std::filesystem::path& job_dir,
                                        const JobTicket& ticket, const DaemonConfig& settings) {
-  try {
-    std::error_code ignored;  // absent is the usual case; a file that cannot go fails the write below
-    std::filesystem::remove(job_dir / kItemsFile, ignored);
+  return guarded_job_step(job_dir, [&]() -> Result<MoldsMade> {
     MoldsMade made;
     made.noun = "pieces";
     Result<StyleFolder> folder = Status::failure("not read");
@@ -79,18 +77,8 @@ Result<MoldsMade> compute_style_pieces(const std::filesystem::path& scan, const 
     spec.label = [&](const PatternPiece& piece, bool twin) {
       return piece_label_text({ticket.order, scan.filename().string(), ticket.size, twin ? opposite_foot(foot) : foot, piece.name});
     };
-    const std::vector<NestItem> items = items_from_style(pieces, spec);
-    made.pieces_to_cut = pieces_to_cut(items);
-    if (Status written = write_file_durably(job_dir / kItemsFile, items_to_json(items).dump() + "\n"); !written)
-      return written.with_context("pieces made but not saved: ");
-    return made;
-  } catch (const EngineError& error) {
-    return Status::failure(error.what());
-  } catch (const std::bad_alloc&) {
-    return Status::failure("the scan is too large for this machine's memory");
-  } catch (const std::exception& error) {
-    return Status::failure(unexpected_failure_reason(error));
-  }
+    return save_job_items(job_dir, items_from_style(pieces, spec), made, "pieces");
+  }, "the scan is too large for this machine's memory");
 }
 
 }  // namespace lastcut::daemon

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <set>
 
 #include <polyclipping/clipper.hpp>
 
@@ -155,6 +157,37 @@ void check_cut_file(const std::string& gcode, const std::string& batch, const st
       cut.problems.push_back(batch + ": \"" + piece.label + "\" has its grain " + std::to_string(off_deg) +
                              " deg off the backbone (tolerance " + std::to_string(item->second.grain_tolerance_deg) + ")");
   }
+}
+
+int expect_every_order_cut_once(const std::vector<PieceOrder>& orders, const std::map<std::string, NestItem>& items,
+                                CutPieces& cut) {
+  for (const std::string& problem : cut.problems) ADD_FAILURE() << problem;
+  int pieces = 0;
+  for (const auto& [label, item] : items) {
+    pieces += item.demand;
+    EXPECT_EQ(cut.times_cut[label], item.demand) << label;
+  }
+  // Two derby pairs (4 pieces a foot), a loafer pair (5 a foot), the linings (3 a foot).
+  EXPECT_EQ(pieces, 2 * 8 + 10 + 6);
+  for (const PieceOrder& order : orders) {
+    std::set<std::string> hides;
+    for (const auto& [label, item] : items)
+      if (label.rfind("#" + order.order + " ", 0) == 0) hides.insert(cut.hide_of[label]);
+    EXPECT_EQ(hides.size(), 1u) << order.order;
+    EXPECT_EQ(hides.begin()->empty(), order.order == "301") << order.order;
+  }
+  int zone_checks = 0, grain_checks = 0;
+  for (const auto& [label, item] : items) {
+    if (label.rfind("#301 ", 0) == 0) continue;
+    for (const QualityZone& zone : zoned_hide_zones(kPieceHideWidth_mm, kPieceHideHeight_mm))
+      zone_checks += item.demand * (zone.quality < item.min_quality);
+    grain_checks += item.demand * item.grain_deg.has_value();
+  }
+  EXPECT_EQ(cut.zone_checks, zone_checks);
+  EXPECT_EQ(cut.grain_checks, grain_checks);
+  EXPECT_EQ(grain_checks, 26);  // every leather piece has a grain line
+  std::printf("%d pieces cut, %d zone checks, %d grain checks\n", pieces, cut.zone_checks, cut.grain_checks);
+  return pieces;
 }
 
 }  // namespace lastcut::daemon::testing

@@ -47,6 +47,15 @@ struct CutPieces {
 void check_cut_file(const std::string& gcode, const std::string& batch, const std::vector<QualityZone>& zones,
                     const std::map<std::string, NestItem>& items, CutPieces& cut);
 
+// The zones of the hides the tests drop (kPieceHideWidth_mm x kPieceHideHeight_mm, inside the grbl table).
+inline constexpr double kPieceHideWidth_mm = 1250, kPieceHideHeight_mm = 850;
+
+// What both stores' tests expect of the cut files, as gtest failures: no problem found, every item cut
+// exactly its demand, 32 pieces in all, each order on one hide (the linings, order 301, on the roll),
+// every leather piece checked against each zone below its grade and for its grain. Returns the pieces.
+int expect_every_order_cut_once(const std::vector<PieceOrder>& orders, const std::map<std::string, NestItem>& items,
+                                CutPieces& cut);
+
 // Every job's items, by label, from items.json files.
 std::map<std::string, NestItem> items_by_label(const std::vector<std::filesystem::path>& items_files);
 

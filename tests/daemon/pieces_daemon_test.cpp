@@ -7,16 +7,12 @@
 // no piece on a zone below its grade, every grain within its tolerance of the backbone.
 #include <gtest/gtest.h>
 
-#include <set>
-
 #include "daemon_rig.hpp"
 #include "engine/nest/nest_json.hpp"
 #include "tests/daemon/piece_orders.hpp"
 
 namespace lastcut::daemon::testing {
 namespace {
-
-constexpr double kHideWidth_mm = 1250, kHideHeight_mm = 850;  // inside the grbl table's 1300 x 900 mm
 
 std::string job_of(const DaemonRig& rig, const std::string& file, std::string* folder = nullptr) {
   for (const char* where : {"done", "failed", "held", "work"})
@@ -78,7 +74,7 @@ TEST(DaemonPieces, StylesAndAPatternSetAreCutByMaterialWithTheirRules) {
   ASSERT_TRUE(wait_until(leather_settled, 120)) << read_text(rig.daemon_log());
   for (int hide = 1; hide <= 4 && !all_done(); ++hide) {
     const std::string name = "hide-" + std::to_string(hide) + ".dxf";
-    write_zoned_hide(staging / name, kHideWidth_mm, kHideHeight_mm);
+    write_zoned_hide(staging / name, kPieceHideWidth_mm, kPieceHideHeight_mm);
     drop(staging / name, rig.root() / "hides", name);
     ASSERT_TRUE(wait_until([&] { const std::string stage = hide_stage(rig, name); return (stage == "cut" || stage == "empty") && leather_settled(); }, 120))
         << name << "\n" << read_text(rig.daemon_log());
@@ -100,34 +96,9 @@ TEST(DaemonPieces, StylesAndAPatternSetAreCutByMaterialWithTheirRules) {
     const bool on_hide = batch.contains("hide");
     EXPECT_EQ(count_occurrences(on_hide ? on_cutter_1 : on_cutter_2, gcode), 1) << entry.path();
     check_cut_file(gcode, entry.path().filename().string(),
-                   on_hide ? zoned_hide_zones(kHideWidth_mm, kHideHeight_mm) : std::vector<QualityZone>{}, items, cut);
+                   on_hide ? zoned_hide_zones(kPieceHideWidth_mm, kPieceHideHeight_mm) : std::vector<QualityZone>{}, items, cut);
   }
-  for (const std::string& problem : cut.problems) ADD_FAILURE() << problem;
-  int pieces = 0;
-  for (const auto& [label, item] : items) {
-    pieces += item.demand;
-    EXPECT_EQ(cut.times_cut[label], item.demand) << label;
-  }
-  // Two derby pairs (4 pieces a foot), a loafer pair (5 a foot), the linings (3 a foot).
-  EXPECT_EQ(pieces, 2 * 8 + 10 + 6);
-  // A pair on one hide; the linings on the roll.
-  for (const PieceOrder& order : orders) {
-    std::set<std::string> hides;
-    for (const auto& [label, item] : items)
-      if (label.rfind("#" + order.order + " ", 0) == 0) hides.insert(cut.hide_of[label]);
-    EXPECT_EQ(hides.size(), 1u) << order.order;
-    EXPECT_EQ(hides.begin()->empty(), order.order == "301") << order.order;
-  }
-  int zone_checks = 0, grain_checks = 0;  // every leather piece against each zone below its grade, and its grain
-  for (const auto& [label, item] : items) {
-    if (label.rfind("#301 ", 0) == 0) continue;
-    for (const QualityZone& zone : zoned_hide_zones(kHideWidth_mm, kHideHeight_mm)) zone_checks += item.demand * (zone.quality < item.min_quality);
-    grain_checks += item.demand * item.grain_deg.has_value();
-  }
-  EXPECT_EQ(cut.zone_checks, zone_checks);
-  EXPECT_EQ(cut.grain_checks, 26);
-  EXPECT_EQ(grain_checks, 26);
-  std::printf("%d pieces cut, %d zone checks, %d grain checks\n", pieces, cut.zone_checks, cut.grain_checks);
+  expect_every_order_cut_once(orders, items, cut);
 }
 
 }  // namespace
