@@ -74,8 +74,8 @@ WebRoute parse_web_route(std::string_view method, std::string_view path) {
     if (parts.size() == 3) return with_method({WebRouteKind::Job, id}, method, "GET");
     if (parts.size() == 4 && is(3, "requeue")) return with_method({WebRouteKind::Requeue, id}, method, "POST");
     if (parts.size() == 5 && is(3, "files")) return with_method({WebRouteKind::JobFile, id, std::string(parts[4])}, method, "GET");
-    if (parts.size() == 6 && is(3, "files") && is(4, "molds"))
-      return with_method({WebRouteKind::JobFile, id, "molds/" + std::string(parts[5])}, method, "GET");
+    if (parts.size() == 6 && is(3, "files") && (is(4, "molds") || is(4, "pieces")))
+      return with_method({WebRouteKind::JobFile, id, std::string(parts[4]) + "/" + std::string(parts[5])}, method, "GET");
   }
   if (is(1, "batches") && parts.size() == 4 && is(3, "cancel"))
     return with_method({WebRouteKind::CancelBatch, std::string(parts[2])}, method, "POST");

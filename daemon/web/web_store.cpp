@@ -32,11 +32,11 @@ nlohmann::json incoming_files(const std::filesystem::path& watch_dir) {
   return names;
 }
 
-// The files of a job folder the page may show: its own top-level files and its molds/.
+// The files of a job folder the page may show: its own top-level files, its molds/ and a style job's pieces/.
 nlohmann::json job_files(const std::filesystem::path& dir) {
   nlohmann::json files = nlohmann::json::array();
   std::error_code error;
-  for (const char* sub : {"", "molds"}) {
+  for (const char* sub : {"", "molds", "pieces"}) {
     std::vector<std::string> names;
     for (std::filesystem::directory_iterator it(dir / sub, error), end; !error && it != end; it.increment(error)) {
       const std::string name = it->path().filename().string();

@@ -21,6 +21,11 @@ TEST(WebRoute, KnownPagesAndTheirParts) {
   EXPECT_EQ(mold.kind, WebRouteKind::JobFile);
   EXPECT_EQ(mold.job_id, "42");
   EXPECT_EQ(mold.name, "molds/medial.svg");
+  const WebRoute piece = parse_web_route("GET", "/api/jobs/42/files/pieces/medial-quarter.svg");  // a style job's
+  EXPECT_EQ(piece.kind, WebRouteKind::JobFile);
+  EXPECT_EQ(piece.name, "pieces/medial-quarter.svg");
+  EXPECT_EQ(parse_web_route("GET", "/api/jobs/1/files/pieces/..").kind, WebRouteKind::Refused);
+  EXPECT_EQ(parse_web_route("GET", "/api/jobs/1/files/aama/x.dxf").kind, WebRouteKind::NotFound);  // only molds/ and pieces/
   EXPECT_EQ(parse_web_route("GET", "/api/jobs/42/files/report.json").name, "report.json");
   EXPECT_EQ(parse_web_route("POST", "/api/jobs/42/requeue").kind, WebRouteKind::Requeue);
   const WebRoute map = parse_web_route("GET", "/api/batches/B20261128-091500-001/files/cut-map.json");
