@@ -9,6 +9,7 @@
 #include "engine/core/svg_document.hpp"
 #include "engine/mold/clipper_paths.hpp"
 #include "engine/style/forme_boundary.hpp"
+#include "engine/style/style_transfer.hpp"
 
 namespace lastcut {
 namespace {
@@ -20,9 +21,6 @@ constexpr double kNameSize_mm = 5;
 // ColorBrewer "Set3": light colours that stay apart and keep black lines and text readable.
 constexpr std::array<const char*, 10> kPieceColours = {"#8dd3c7", "#ffffb3", "#bebada", "#fb8072", "#80b1d3",
                                                        "#fdb462", "#b3de69", "#fccde5", "#d9d9d9", "#bc80bd"};
-// A transferred line's samples lie about 1 mm apart; a longer step on one half is where it left the upper
-// and came back, which is not drawn.
-constexpr double kLineGap_mm = 3;
 
 struct EdgeLook {
   EdgeKind kind;
@@ -113,7 +111,7 @@ std::string line_stretches(const SheetPlacement& sheet, const std::string& name,
   };
   for (const TransferredPoint& point : line.points) {
     const std::size_t h = point.half == "lateral" ? 1 : 0;
-    if (!stretch.empty() && (h != stretch_half || (point.forme_uv_mm - stretch.back()).norm() > kLineGap_mm)) flush();
+    if (!stretch.empty() && (h != stretch_half || (point.forme_uv_mm - stretch.back()).norm() > kRunGap_mm)) flush();  // left the upper and came back: not drawn
     stretch_half = h;
     stretch.push_back(point.forme_uv_mm);
   }
