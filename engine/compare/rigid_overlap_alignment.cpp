@@ -51,23 +51,6 @@ double intersection_area(const ClipperLib::Path& a, const ClipperLib::Path& b) {
   return std::abs(area) / (kClipperUnitsPerMm * kClipperUnitsPerMm);
 }
 
-// Unit vector of the principal axis of the outline's area (second moments about the centroid).
-Point2 principal_axis(const Polygon2& polygon, const Point2& centroid) {
-  double xx = 0.0, xy = 0.0, yy = 0.0;
-  const auto& p = polygon.points;
-  for (size_t i = 0; i < p.size(); ++i) {
-    const Point2 a = p[i] - centroid, b = p[(i + 1) % p.size()] - centroid;
-    const double cross = a.x() * b.y() - b.x() * a.y();
-    xx += cross * (a.x() * a.x() + a.x() * b.x() + b.x() * b.x());
-    yy += cross * (a.y() * a.y() + a.y() * b.y() + b.y() * b.y());
-    xy += cross * (2 * a.x() * a.y() + a.x() * b.y() + b.x() * a.y() + 2 * b.x() * b.y());
-  }
-  xy *= 0.5;  // the common factor 1/12 does not change the axis; a clockwise ring gives all three negated
-  if (signed_area(polygon) < 0.0) xx = -xx, xy = -xy, yy = -yy;
-  const double angle = 0.5 * std::atan2(2.0 * xy, xx - yy);
-  return {std::cos(angle), std::sin(angle)};
-}
-
 double radius_of_gyration(const Polygon2& polygon, const Point2& centroid) {
   double sum = 0.0;
   for (const auto& p : polygon.points) sum += (p - centroid).squaredNorm();
@@ -180,13 +163,13 @@ OverlapAlignment align_for_overlap(const Polygon2& reference, const Polygon2& mo
         throw EngineError("an outline has coordinates beyond 1 km; check its units");
 
   OverlapSearch search(reference, mold);
-  const Point2 mold_axis = principal_axis(mold, area_centroid(mold));
+  const Point2 mold_axis = principal_axis(mold);
   std::vector<SearchPoint> starts;
   for (bool mirrored : {false, true}) {
     if (mirrored && !options.allow_mirror) continue;
     // The reference's axis after the mirror, before any rotation.
     const PlaneMotion mirror{mirrored, 0.0, Point2::Zero()};
-    const Point2 axis = mirror.apply(principal_axis(reference, area_centroid(reference)));
+    const Point2 axis = mirror.apply(principal_axis(reference));
     const double base = std::atan2(mold_axis.y(), mold_axis.x()) - std::atan2(axis.y(), axis.x());
     for (int quarter = 0; quarter < 4; ++quarter) {
       SearchPoint start;

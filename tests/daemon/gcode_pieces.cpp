@@ -5,6 +5,8 @@
 #include <regex>
 #include <sstream>
 
+#include "engine/core/polygon_centroid.hpp"
+
 namespace lastcut::daemon::testing {
 namespace {
 
@@ -89,29 +91,10 @@ Polygon2 cut_outline(const CutPiece& piece) {
 }
 
 double principal_axis_deg(const Polygon2& ring) {
-  // Second moments of the polygon's area about its centroid (Green's theorem over the edges).
-  const std::vector<Point2>& p = ring.points;
-  double area = 0, cx = 0, cy = 0, xx = 0, yy = 0, xy = 0;
-  for (std::size_t k = 0; k < p.size(); ++k) {
-    const Point2& a = p[k];
-    const Point2& b = p[(k + 1) % p.size()];
-    const double cross = a.x() * b.y() - b.x() * a.y();
-    area += cross / 2;
-    cx += (a.x() + b.x()) * cross / 6;
-    cy += (a.y() + b.y()) * cross / 6;
-    xx += (a.x() * a.x() + a.x() * b.x() + b.x() * b.x()) * cross / 12;
-    yy += (a.y() * a.y() + a.y() * b.y() + b.y() * b.y()) * cross / 12;
-    xy += (a.x() * b.y() + 2 * a.x() * a.y() + 2 * b.x() * b.y() + b.x() * a.y()) * cross / 24;
-  }
-  if (area < 0) {  // clockwise: every integral has the wrong sign
-    area = -area, cx = -cx, cy = -cy, xx = -xx, yy = -yy, xy = -xy;
-  }
-  cx /= area;
-  cy /= area;
-  const double sxx = xx - area * cx * cx, syy = yy - area * cy * cy, sxy = xy - area * cx * cy;
-  double deg = 0.5 * std::atan2(2 * sxy, sxx - syy) * 180 / std::numbers::pi;
+  const Point2 axis = principal_axis(ring);
+  double deg = std::atan2(axis.y(), axis.x()) * 180 / std::numbers::pi;
   if (deg < 0) deg += 180;
-  return deg;
+  return deg >= 180 ? deg - 180 : deg;
 }
 
 }  // namespace lastcut::daemon::testing
