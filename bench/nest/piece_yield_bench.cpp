@@ -8,7 +8,9 @@
 // pieces is printed on its own and is not in the nest times. Figures: docs/benchmarks-nest.md.
 //   piece_yield_bench                                  20 pairs (derby, loafer in turn), Test3's hides, 60 s, 2 threads
 //   piece_yield_bench --pairs 1 --time-limit 5 --threads 1    the smoke test
-//   piece_yield_bench --relax near                     a diagnostic: the same without one rule (near, grain, grade, pairs)
+//   piece_yield_bench --relax pairs                    a diagnostic: the same without one rule (grain, grade, pairs)
+//   piece_yield_bench --side-by-side                   a pair's pieces next to each other (BatchSpec::side_by_side), not
+//                                                      anywhere on their hide: the rule before issue 35 changed it
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -49,14 +51,13 @@ struct Arguments {
   std::vector<std::string> methods = {"search", "greedy"};
   fs::path svg_dir;
   std::vector<std::string> relax;  // diagnostics: rules dropped to measure what each costs
+  bool side_by_side = false;       // BatchSpec::side_by_side
 };
 
-// Drops the named rules from the instance (after hide_batch made it): near (a pair's pieces need not lie
-// near each other, only on one hide), grain (free rotation), grade (any leather), pairs (each piece on
-// any hide). Not the issue's instance: a diagnostic of what holds the yield back.
+// Drops the named rules from the instance (after hide_batch made it): grain (free rotation), grade (any
+// leather), pairs (each piece on any hide). Not the issue's instance: a diagnostic of what holds the yield back.
 void relax_rules(lastcut::BatchInstance& batch, const std::vector<std::string>& relax) {
   const auto dropped = [&](const char* rule) { return std::find(relax.begin(), relax.end(), rule) != relax.end(); };
-  if (dropped("near")) batch.instance.pair_distance_mm = 1e7;  // farther than any two points of a hide
   for (lastcut::NestItem& item : batch.instance.items) {
     if (dropped("grain")) item.grain_deg.reset(), item.grain_tolerance_deg = 0;
     if (dropped("grade")) item.min_quality = 0, item.quality_regions.clear();
@@ -132,8 +133,9 @@ int main(int argc, char** argv) {
   app.add_option("--methods", args.methods, "search, greedy (comma-separated)")
       ->delimiter(',')->check(CLI::IsMember({"search", "greedy"}))->capture_default_str();
   app.add_option("--svg-dir", args.svg_dir, "write a picture of each layout here");
-  app.add_option("--relax", args.relax, "diagnostics, comma-separated: drop rules (near, grain, grade, pairs) to measure their cost")
-      ->delimiter(',')->check(CLI::IsMember({"near", "grain", "grade", "pairs"}));
+  app.add_option("--relax", args.relax, "diagnostics, comma-separated: drop rules (grain, grade, pairs) to measure their cost")
+      ->delimiter(',')->check(CLI::IsMember({"grain", "grade", "pairs"}));
+  app.add_flag("--side-by-side", args.side_by_side, "a pair's pieces next to each other on their hide (the rule before issue 35)");
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -150,12 +152,14 @@ int main(int argc, char** argv) {
     spec.pairs = lastcut::PairPolicy::SameHide;
     spec.gap_mm = args.gap_mm;
     spec.margin_mm = args.margin_mm;
+    spec.side_by_side = args.side_by_side;
     // The pieces carry their own grain and grade (the style's); the batch adds no rule of its own.
     const auto hides = lastcut::bench::baldacci_hides(args.hides, args.mm_per_unit);
     lastcut::BatchInstance batch = lastcut::hide_batch(groups, hides, spec, "piece-yield");
     relax_rules(batch, args.relax);
     print_instance(args, orders, batch, pieces_s);
     for (const std::string& rule : args.relax) std::printf("RELAXED (a diagnostic, not the issue's rules): %s\n", rule.c_str());
+    if (args.side_by_side) std::printf("pairs side by side (--side-by-side: the rule before issue 35)\n");
 
     std::printf("\n## %zu pairs on %s, %g s, %d threads, seed %llu\n\n", orders.size(), args.hides.filename().c_str(),
                 args.time_limit_s, args.threads, static_cast<unsigned long long>(args.seed));
