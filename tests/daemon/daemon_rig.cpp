@@ -112,6 +112,13 @@ std::map<std::string, nlohmann::json> DaemonRig::jobs(const std::string& folder)
   return result;
 }
 
+DaemonRig::FoundJob DaemonRig::find_job(const std::string& input) const {
+  for (const char* folder : {"done", "failed", "held", "work"})
+    for (const auto& [id, state] : jobs(folder))
+      if (state.value("scan", "") == input) return {id, folder, state};
+  return {};
+}
+
 bool DaemonRig::settled(int expected) const {
   return count_entries(watch()) == 0 && count_entries(spool() / "work") == 0 &&
          count_entries(spool() / "done") + count_entries(spool() / "failed") + count_entries(spool() / "held") ==

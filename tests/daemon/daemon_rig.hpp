@@ -62,6 +62,12 @@ class DaemonRig {
   std::string cut_file_name(const std::string& cutter) const { return is_grbl(cutter) ? "cut.nc" : "cut.plt"; }
   // Jobs per spool folder: id -> state.json.
   std::map<std::string, nlohmann::json> jobs(const std::string& folder) const;
+  // The job whose input (scan or pattern set) had this name, in any spool folder; an empty id when none.
+  struct FoundJob {
+    std::string id, folder;  // folder: done, failed, held or work
+    nlohmann::json state;
+  };
+  FoundJob find_job(const std::string& input) const;
   // True when the watch folder and work/ are empty and `expected` jobs have finished.
   bool settled(int expected) const;
 

@@ -15,15 +15,9 @@ namespace {
 
 // Job id of the job whose scan had this name, in any folder.
 std::string job_of(const DaemonRig& rig, const std::string& scan, std::string* folder_out = nullptr) {
-  for (const char* folder : {"done", "failed", "held", "work"}) {
-    for (const auto& [id, state] : rig.jobs(folder)) {
-      if (state.value("scan", "") == scan) {
-        if (folder_out) *folder_out = folder;
-        return id;
-      }
-    }
-  }
-  return {};
+  const DaemonRig::FoundJob job = rig.find_job(scan);
+  if (folder_out) *folder_out = job.folder;
+  return job.id;
 }
 
 TEST(DaemonEndToEnd, TenScansReachTheRightCutterExactlyOnce) {

@@ -22,14 +22,6 @@
 namespace lastcut::daemon::testing {
 namespace {
 
-// The job whose scan had this name, in any folder, with its folder.
-std::pair<std::string, std::string> find_job(const DaemonRig& rig, const std::string& scan) {
-  for (const char* folder : {"done", "failed", "held", "work"})
-    for (const auto& [id, state] : rig.jobs(folder))
-      if (state.value("scan", "") == scan) return {id, folder};
-  return {};
-}
-
 // The hide batch holding hide file `file`: batch.json, or null while it is not there.
 nlohmann::json hide_batch(const DaemonRig& rig, const std::string& file) {
   std::error_code error;
@@ -93,7 +85,7 @@ TEST(DaemonHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
   // 1. One single foot, and the hide for it on cutter-2, whose cut hangs: SIGKILL while sending.
   drop_last("single-a.stl", 39, "left", "");
   ASSERT_TRUE(wait_until([&] { return all_computed(rig, {"single-a.stl"}); }, 60)) << read_text(rig.daemon_log());
-  const std::string single_a = find_job(rig, "single-a.stl").first;
+  const std::string single_a = rig.find_job("single-a.stl").id;
   // Room for the two halves side by side (3 mm spacing), plus 70 mm for the hole.
   const auto [length_a, width_a] = piece_box_mm(items_of(rig, single_a));
   write_hide_dxf(staging / "hide-k.dxf", length_a + 90, 2 * width_a + 30, false);
@@ -104,7 +96,7 @@ TEST(DaemonHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
   const std::string log_before = read_text(rig.daemon_log());
   rig.start_daemon();
   ASSERT_TRUE(wait_until([&] { return stage_of(rig, "hide-k.dxf") == "held"; }, 30)) << read_text(rig.daemon_log());
-  EXPECT_TRUE(wait_until([&] { return find_job(rig, "single-a.stl").second == "held"; }, 10));
+  EXPECT_TRUE(wait_until([&] { return rig.find_job("single-a.stl").folder == "held"; }, 10));
   EXPECT_NE(hide_batch(rig, "hide-k.dxf").value("reason", "").find("pieces may be partly cut"), std::string::npos);
 
   // 2. Order 100 as a left and a right last, and a hide with room for its four halves (2 x 2).
@@ -112,8 +104,8 @@ TEST(DaemonHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
   drop_last("o100-right.stl", 40, "right", "order = \"100\"\n");
   ASSERT_TRUE(wait_until([&] { return all_computed(rig, {"o100-left.stl", "o100-right.stl"}); }, 120))
       << read_text(rig.daemon_log());
-  const auto [length_1, width_1] = piece_box_mm(items_of(rig, find_job(rig, "o100-left.stl").first));
-  const auto [length_1r, width_1r] = piece_box_mm(items_of(rig, find_job(rig, "o100-right.stl").first));
+  const auto [length_1, width_1] = piece_box_mm(items_of(rig, rig.find_job("o100-left.stl").id));
+  const auto [length_1r, width_1r] = piece_box_mm(items_of(rig, rig.find_job("o100-right.stl").id));
   write_hide_dxf(staging / "hide-1.dxf", 2 * std::max(length_1, length_1r) + 110,
                  2 * std::max(width_1, width_1r) + 30, true);
   drop_hide(staging / "hide-1.dxf", "id = \"CALF-0001\"\nmaterial = \"leather\"\n");
@@ -127,9 +119,9 @@ TEST(DaemonHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
   drop_last("single-b.stl", 38, "right", "");
   ASSERT_TRUE(wait_until([&] { return all_computed(rig, {"o200-pair.stl", "single-b.stl"}); }, 120))
       << read_text(rig.daemon_log());
-  const auto [length_b, width_b] = piece_box_mm(items_of(rig, find_job(rig, "single-b.stl").first));
+  const auto [length_b, width_b] = piece_box_mm(items_of(rig, rig.find_job("single-b.stl").id));
   const double w2 = length_b + 45, h2 = 2 * width_b + 24;
-  ASSERT_LT(w2 * h2, pieces_area_mm2(items_of(rig, find_job(rig, "o200-pair.stl").first)));
+  ASSERT_LT(w2 * h2, pieces_area_mm2(items_of(rig, rig.find_job("o200-pair.stl").id)));
   write_hide_json(staging / "hide-2.json", w2, h2);
   drop_hide(staging / "hide-2.json", "");  // no sidecar: the only hide material, its cutter
   ASSERT_TRUE(wait_until([&] { const auto s = stage_of(rig, "hide-2.json"); return s == "cut" || s == "empty"; }, 60))
@@ -195,7 +187,7 @@ TEST(DaemonHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
   const auto work = rig.jobs("work");
   int waiting = 0;
   for (const std::string scan : {"o100-left.stl", "o100-right.stl", "o200-pair.stl", "single-b.stl"}) {
-    const auto [id, folder] = find_job(rig, scan);
+    const auto [id, folder, state] = rig.find_job(scan);
     if (folder == "done") {
       EXPECT_EQ(done.at(id).value("stage", ""), "cut") << scan;
       EXPECT_EQ(done.at(id).value("batch", ""), batch_of_job[id]) << scan;
@@ -210,12 +202,12 @@ TEST(DaemonHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
     }
   }
   // Order 100 cut on one hide, single-b on the JSON hide, order 200 waits.
-  EXPECT_EQ(find_job(rig, "o100-left.stl").second, "done");
-  EXPECT_EQ(find_job(rig, "o100-right.stl").second, "done");
-  EXPECT_EQ(batch_of_job[find_job(rig, "o100-left.stl").first], hide_batch(rig, "hide-1.dxf").value("id", ""));
-  EXPECT_EQ(batch_of_job[find_job(rig, "o100-right.stl").first], hide_batch(rig, "hide-1.dxf").value("id", ""));
-  EXPECT_EQ(batch_of_job[find_job(rig, "single-b.stl").first], hide_batch(rig, "hide-2.json").value("id", ""));
-  EXPECT_EQ(find_job(rig, "o200-pair.stl").second, "work");
+  EXPECT_EQ(rig.find_job("o100-left.stl").folder, "done");
+  EXPECT_EQ(rig.find_job("o100-right.stl").folder, "done");
+  EXPECT_EQ(batch_of_job[rig.find_job("o100-left.stl").id], hide_batch(rig, "hide-1.dxf").value("id", ""));
+  EXPECT_EQ(batch_of_job[rig.find_job("o100-right.stl").id], hide_batch(rig, "hide-1.dxf").value("id", ""));
+  EXPECT_EQ(batch_of_job[rig.find_job("single-b.stl").id], hide_batch(rig, "hide-2.json").value("id", ""));
+  EXPECT_EQ(rig.find_job("o200-pair.stl").folder, "work");
   EXPECT_EQ(waiting, 1);
   EXPECT_NE(log_after.find("waiting for a hide of leather: did not fit on hide"), std::string::npos);
 }

@@ -14,16 +14,6 @@
 namespace lastcut::daemon::testing {
 namespace {
 
-std::string job_of(const DaemonRig& rig, const std::string& file, std::string* folder = nullptr) {
-  for (const char* where : {"done", "failed", "held", "work"})
-    for (const auto& [id, state] : rig.jobs(where))
-      if (state.value("scan", "") == file) {
-        if (folder) *folder = where;
-        return id;
-      }
-  return "";
-}
-
 // The stage of the batch of hide file `file` ("" while there is none).
 std::string hide_stage(const DaemonRig& rig, const std::string& file) {
   std::error_code error;
@@ -54,20 +44,15 @@ TEST(DaemonPieces, StylesAndAPatternSetAreCutByMaterialWithTheirRules) {
   std::filesystem::create_directories(rig.root() / "hides");
   const auto all_done = [&] {
     int done = 0;
-    for (const PieceOrder& order : orders) {
-      std::string folder;
-      job_of(rig, order.file, &folder);
-      done += folder == "done";
-    }
+    for (const PieceOrder& order : orders) done += rig.find_job(order.file).folder == "done";
     return done == static_cast<int>(orders.size());
   };
   // The leather orders wait for a hide (computed) or are cut (done); nothing is on its way.
   const auto leather_settled = [&] {
     for (const PieceOrder& order : orders) {
       if (order.order == "301") continue;
-      std::string folder;
-      const std::string id = job_of(rig, order.file, &folder);
-      if (folder != "done" && (folder != "work" || rig.jobs("work").at(id).value("stage", "") != "computed")) return false;
+      const DaemonRig::FoundJob job = rig.find_job(order.file);
+      if (job.folder != "done" && (job.folder != "work" || job.state.value("stage", "") != "computed")) return false;
     }
     return true;
   };
@@ -85,7 +70,7 @@ TEST(DaemonPieces, StylesAndAPatternSetAreCutByMaterialWithTheirRules) {
 
   // What the cut files cut, read independently of the nester.
   std::vector<std::filesystem::path> items_files;
-  for (const PieceOrder& order : orders) items_files.push_back(rig.spool() / "done" / job_of(rig, order.file) / "items.json");
+  for (const PieceOrder& order : orders) items_files.push_back(rig.spool() / "done" / rig.find_job(order.file).id / "items.json");
   const std::map<std::string, NestItem> items = items_by_label(items_files);
   CutPieces cut;
   const std::string on_cutter_1 = rig.received("cutter-1"), on_cutter_2 = rig.received("cutter-2");

@@ -17,14 +17,6 @@ using lastcut::test::HandDxf;
 using lastcut::test::one_piece_file;
 using lastcut::test::square;
 
-// The state of the job whose input had this name, and its folder.
-std::pair<nlohmann::json, std::string> job_state(const DaemonRig& rig, const std::string& file) {
-  for (const char* folder : {"done", "failed", "held", "work"})
-    for (const auto& [id, state] : rig.jobs(folder))
-      if (state.value("scan", "") == file) return {state, folder};
-  return {nullptr, ""};
-}
-
 PatternPiece square_piece(const std::string& name, const std::string& category) {
   PatternPiece piece;
   piece.name = name;
@@ -74,7 +66,7 @@ TEST(DaemonPieces, BadPatternSetsAndStylesAreRefusedOrHeldWithOneLine) {
     drop(staging / name, rig.watch(), name);
   }
   const auto settled = [&](const std::string& file) {
-    const std::string folder = job_state(rig, file).second;
+    const std::string folder = rig.find_job(file).folder;
     return folder == "failed" || folder == "held" || folder == "done";
   };
   ASSERT_TRUE(wait_until([&] {
@@ -96,19 +88,21 @@ TEST(DaemonPieces, BadPatternSetsAndStylesAreRefusedOrHeldWithOneLine) {
       {"far.stl", {"held", "style \"far\" does not fit this last: the label of piece vamp is not on the reference last's upper"}},
   };
   for (const auto& [file, outcome] : expected) {
-    const auto [state, folder] = job_state(rig, file);
+    const DaemonRig::FoundJob job = rig.find_job(file);
+    const nlohmann::json& state = job.state;
+    const std::string& folder = job.folder;
     EXPECT_EQ(folder, outcome.first) << file;
     const std::string reason = state.value("reason", "");
     EXPECT_EQ(reason.find('\n'), std::string::npos) << reason;
     EXPECT_EQ(reason.rfind(outcome.second, 0), 0u) << file << ": " << reason;
     EXPECT_TRUE(std::filesystem::exists(rig.spool() / folder / state.value("id", "") / file)) << file << " is kept";
   }
-  EXPECT_NE(job_state(rig, "broken.stl").first.value("reason", "").find("colour"), std::string::npos);
+  EXPECT_NE(rig.find_job("broken.stl").state.value("reason", "").find("colour"), std::string::npos);
 
   // Still running: a good pattern set is cut.
   write_aama_dxf(staging / "good.dxf", {square_piece("vamp", "calf")});
   drop(staging / "good.dxf", rig.watch(), "good.dxf");
-  EXPECT_TRUE(wait_until([&] { return job_state(rig, "good.dxf").second == "done"; }, 60)) << read_text(rig.daemon_log());
+  EXPECT_TRUE(wait_until([&] { return rig.find_job("good.dxf").folder == "done"; }, 60)) << read_text(rig.daemon_log());
   EXPECT_EQ(rig.stop_daemon(), 0);
 }
 

@@ -15,13 +15,9 @@ namespace lastcut::daemon::testing {
 namespace {
 
 std::string job_of(const DaemonRig& rig, const std::string& scan, std::string* folder_out) {
-  for (const char* folder : {"done", "failed", "held", "work"})
-    for (const auto& [id, state] : rig.jobs(folder))
-      if (state.value("scan", "") == scan) {
-        *folder_out = folder;
-        return id;
-      }
-  return {};
+  const DaemonRig::FoundJob job = rig.find_job(scan);
+  if (folder_out) *folder_out = job.folder;
+  return job.id;
 }
 
 // The outline as a plain pattern: one closed LWPOLYLINE in mm, no notch marks (as pattern CAD or
