@@ -72,7 +72,8 @@ Result<MoldsMade> compute_pattern_items(const std::filesystem::path& pattern, co
     spec.mirrored_twins = ticket.side == "pair";
     spec.rules = [&](const PatternPiece&) { return material.rules; };
     spec.label = [&](const PatternPiece& piece, bool twin) {
-      const std::string foot = foot_of(piece).empty() ? (ticket.side == "pair" ? "" : ticket.side) : foot_of(piece);
+      std::string foot = foot_of(piece);  // the piece's own Annotation, else the sidecar's one foot
+      if (foot.empty() && ticket.side != "pair") foot = ticket.side;
       const std::string size = !ticket.size.empty() ? ticket.size : piece.size;
       return piece_label_text({ticket.order, pattern.filename().string(), size, twin ? opposite_foot(foot) : foot, piece.name});
     };
