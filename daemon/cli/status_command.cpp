@@ -22,6 +22,7 @@ void print_jobs(const char* heading, const std::vector<JobLine>& jobs) {
   for (const JobLine& job : jobs) {
     std::printf("  %-20s %-9s %-8s %-10s %-24s %s\n", job.id.c_str(), job.state.c_str(), job.where.c_str(),
                 job.order.empty() ? "-" : job.order.c_str(), job.scan.c_str(), job.reason.c_str());
+    if (!job.parts.empty()) std::printf("  %-20s parts: %s\n", "", job.parts.c_str());
   }
 }
 

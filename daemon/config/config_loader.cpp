@@ -121,7 +121,6 @@ void read_materials(TableReader& root, DaemonConfig& config, std::vector<std::st
       reader.number("length_mm", material.length_mm, 10, 100000, true);
     } else {
       std::string pairs = "same_hide";
-      reader.text("cutter", material.cutter);
       reader.text("pairs", pairs);
       reader.integer("min_quality", material.min_quality, 0, 1000);
       reader.integer("toe_min_quality", material.toe_min_quality, 0, 1000);
@@ -131,6 +130,7 @@ void read_materials(TableReader& root, DaemonConfig& config, std::vector<std::st
       if (pairs != "same_hide" && pairs != "any") errors.push_back(path + ".pairs: \"" + pairs + "\" is not same_hide or any");
       material.pairs_same_hide = pairs == "same_hide";
     }
+    reader.text("cutter", material.cutter);
     reader.number("spacing_mm", material.spacing_mm, 0, 100);
     reader.integer("rotation_step_deg", material.rotation_step_deg, 1, 360);
     reader.reject_unknown();
@@ -324,11 +324,10 @@ void cross_check(DaemonConfig& config, std::vector<std::string>& errors) {
     errors.push_back("jobs.default_cutter: \"" + config.jobs.default_cutter + "\" is not a [cutters.*] table");
   }
   for (const auto& [name, material] : config.materials) {
-    if (material.kind != MaterialKind::Hide) continue;
-    if (config.paths.hides_dir.empty())
-      errors.push_back("materials." + name + ": kind = \"hide\" needs paths.hides (the folder hide files are dropped in)");
     if (!material.cutter.empty() && !config.cutters.count(material.cutter))
       errors.push_back("materials." + name + ".cutter: \"" + material.cutter + "\" is not a [cutters.*] table");
+    if (material.kind == MaterialKind::Hide && config.paths.hides_dir.empty())
+      errors.push_back("materials." + name + ": kind = \"hide\" needs paths.hides (the folder hide files are dropped in)");
   }
   if (!config.paths.hides_dir.empty() &&
       (config.paths.hides_dir == config.paths.watch_dir || config.paths.hides_dir == config.paths.spool_dir)) {

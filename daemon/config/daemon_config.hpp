@@ -69,8 +69,10 @@ struct MaterialConfig {
   double length_mm = 0;  // strip only
   double spacing_mm = 2;
   int rotation_step_deg = 90;  // allowed rotations: multiples of this (360: none)
+  // Where a hide of this material goes when its sidecar names no cutter, and where the part of a job of
+  // several materials that is of this material is cut ("" = jobs.default_cutter).
+  std::string cutter;
   // Hides only.
-  std::string cutter;           // where a hide goes when its sidecar names no cutter ("" = jobs.default_cutter)
   bool pairs_same_hide = true;  // pairs = "same_hide": an order's jobs on one hide; "any": each job alone
   bool pieces_side_by_side = false;  // a pair's (or job's) pieces next to each other on their hide, not anywhere on it
   int min_quality = 0;          // lowest leather grade a piece may lie on (zones below are avoided)

@@ -50,13 +50,33 @@ void JobState::advance(JobStage new_stage, const std::string& note) {
   history.push_back(entry);
 }
 
+bool JobState::next_part() {
+  if (part + 1 >= static_cast<int>(parts.size())) return false;
+  const JobPart& next = parts[++part];
+  ticket.material = next.material;
+  ticket.cutter = next.cutter;
+  piece_count = next.pieces;
+  batch_id.clear();
+  return true;
+}
+
+void JobState::take_parts(const std::vector<JobPart>& computed) {
+  if (computed != parts) part = 0;
+  parts = computed;
+  if (parts.empty()) return;
+  if (part < 0 || part >= static_cast<int>(parts.size())) part = 0;
+  ticket.material = parts[part].material;
+  ticket.cutter = parts[part].cutter;
+  piece_count = parts[part].pieces;
+}
+
 std::string JobState::label() const {
   std::string text = ticket.order.empty() ? "scan " + scan_name : "order " + ticket.order + " (" + scan_name + ")";
   return text + " [job " + id + "]";
 }
 
 nlohmann::json to_json(const JobState& state) {
-  return nlohmann::json{{"id", state.id},
+  nlohmann::json json{{"id", state.id},
                         {"scan", state.scan_name},
                         {"sidecar", state.sidecar_name},
                         {"sha256", state.sha256},
@@ -70,6 +90,8 @@ nlohmann::json to_json(const JobState& state) {
                         {"claimed_at", state.claimed_at},
                         {"updated_at", state.updated_at},
                         {"history", state.history}};
+  if (!state.parts.empty()) json["parts"] = parts_to_json(state.parts), json["part"] = state.part;
+  return json;
 }
 
 JobState job_state_from_json(const nlohmann::json& json) {
@@ -88,6 +110,8 @@ JobState job_state_from_json(const nlohmann::json& json) {
   state.claimed_at = json.value("claimed_at", "");
   state.updated_at = json.value("updated_at", "");
   if (json.contains("history") && json.at("history").is_array()) state.history = json.at("history");
+  if (json.contains("parts")) state.parts = parts_from_json(json.at("parts"));
+  state.part = json.value("part", 0);
   return state;
 }
 

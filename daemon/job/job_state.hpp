@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "daemon/job/job_parts.hpp"
 #include "daemon/job/job_ticket.hpp"
 #include "daemon/job/stages.hpp"
 
@@ -26,13 +27,22 @@ struct JobState {
   std::string stage_problem; // not stored: set when state.json's stage was missing or unknown
   int attempts = 0;          // computations started (a crash or hang counts)
   int piece_count = 0;       // molds made x quantity (set once computed)
-  JobTicket ticket;          // material and cutter already resolved to configured names
+  JobTicket ticket;          // material and cutter already resolved to configured names (a part's: the current part's)
+  std::vector<JobPart> parts;  // a job of several materials, cut one after another (job_parts.hpp); else empty
+  int part = 0;                // the part being nested or cut now
   std::string batch_id;
   std::string duplicate_of;  // job id whose scan had the same bytes
   std::string claimed_at;    // ISO 8601 UTC
   std::string updated_at;
   nlohmann::json history = nlohmann::json::array();  // [{at, stage, note}]
 
+  // A job of several materials whose current part is cut and another follows: the next part becomes
+  // current (its material, cutter and pieces; no batch) and true is returned. False after the last.
+  bool next_part();
+  // A job computed again (a requeue) with `computed` as its parts: a job that was cut in part keeps its
+  // place when the parts are the same, else starts again at the first part. The current part's targets
+  // become the job's. Nothing changes for a job of one material but its parts emptied.
+  void take_parts(const std::vector<JobPart>& computed);
   // Moves to `new_stage`, stamping the time and appending to the history.
   void advance(JobStage new_stage, const std::string& note = "");
   // "order 4711 (scan last.stl, job 20261121-235000-001)": how log lines name a job.

@@ -171,9 +171,24 @@ Status LedgerClient::mark_cut(const Lease& lease) {
                           if (Status sending = batch_in(tx, lease.object_id, "sending"); !sending) return sending;
                           tx.exec_params("UPDATE batches SET state = 'cut', updated_at = now() WHERE id = $1",
                                          lease.object_id);
+                          const std::vector<long long> cut = jobs_of(tx, lease.object_id);
+                          for (long long id : cut) add_event(tx, id, node_, "cut");
+                          // A job of several materials whose next part follows: computed again with it
+                          // (migrations/006_parts.sql). SET reads the row as it was: part is the old one.
+                          for (const pqxx::row& r : tx.exec_params(
+                                   "UPDATE jobs SET state = 'computed', batch_id = NULL, part = part + 1,"
+                                   " material = parts -> (part + 1) ->> 'material', cutter = parts -> (part + 1) ->> 'cutter',"
+                                   " pieces = (parts -> (part + 1) ->> 'pieces')::integer, updated_at = now()"
+                                   " WHERE batch_id = $1 AND part + 1 < jsonb_array_length(parts)"
+                                   " RETURNING id, part + 1, jsonb_array_length(parts), pieces, material, cutter",
+                                   lease.object_id)) {
+                            add_event(tx, r[0].as<long long>(), node_, "computed",
+                                      "next part " + r[1].as<std::string>() + " of " + r[2].as<std::string>() + ": " +
+                                          r[3].as<std::string>() + " pieces of " + r[4].as<std::string>() + " for " +
+                                          r[5].as<std::string>());
+                          }
                           tx.exec_params("UPDATE jobs SET state = 'done', updated_at = now() WHERE batch_id = $1",
                                          lease.object_id);
-                          for (long long id : jobs_of(tx, lease.object_id)) add_event(tx, id, node_, "cut");
                           release_lease(tx, lease);
                           return true;
                         })

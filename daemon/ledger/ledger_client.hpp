@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "daemon/job/job_parts.hpp"
 #include "daemon/ledger/schema.hpp"
 #include "engine/core/status.hpp"
 
@@ -141,6 +142,8 @@ struct JobRow {
   std::string scan_name, state, cutter, material, origin, reason, holder;  // holder: "" when unclaimed
   long long batch_id = 0;                                                  // 0: none
   int attempts = 0;
+  std::vector<daemon::JobPart> parts;  // a job of several materials (daemon/job/job_parts.hpp)
+  int part = 0;                         // the one nested or cut now
 };
 
 // One job for the operator's page: where its results are and what happened to it.
@@ -229,7 +232,9 @@ class LedgerClient {
   // Extends a lease by lease_s from now; "lease lost ..." when another node holds it now.
   Status renew(const Lease& lease, double lease_s);
   // The job's molds are in the shared folder: `computed`, with its pieces (molds x quantity) for batching.
-  Status mark_computed(const Lease& lease, int pieces = 1);
+  // A job of several materials (daemon/job/job_parts.hpp) gets its parts, and the first part's
+  // material, cutter and pieces instead.
+  Status mark_computed(const Lease& lease, int pieces = 1, const std::vector<daemon::JobPart>& parts = {});
   Status mark_failed(const Lease& lease, const std::string& reason);
   // Computed, but held for an operator's review (a mold off its reference pattern).
   Status mark_held(const Lease& lease, const std::string& reason);

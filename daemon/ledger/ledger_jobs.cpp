@@ -216,13 +216,20 @@ Status LedgerClient::renew(const Lease& lease, double lease_s) {
       .status();
 }
 
-Status LedgerClient::mark_computed(const Lease& lease, int pieces) {
+Status LedgerClient::mark_computed(const Lease& lease, int pieces, const std::vector<daemon::JobPart>& parts) {
   return transact<bool>("marking job " + std::to_string(lease.object_id) + " computed",
                         [&](pqxx::work& tx) -> Result<bool> {
                           if (Status held = check_lease(tx, node_, lease); !held) return held;
+                          // A job cut in part and computed again (a requeue) keeps its place when its parts
+                          // are the same (SET reads the row as it was), as on a spool (JobState::take_parts).
                           tx.exec_params(
-                              "UPDATE jobs SET state = 'computed', pieces = $2, updated_at = now() WHERE id = $1",
-                              lease.object_id, pieces);
+                              "UPDATE jobs SET state = 'computed', pieces = $2, parts = $3::jsonb,"
+                              " part = CASE WHEN parts = $3::jsonb THEN part ELSE 0 END, updated_at = now() WHERE id = $1",
+                              lease.object_id, pieces, daemon::parts_to_json(parts).dump());
+                          tx.exec_params("UPDATE jobs SET material = parts -> part ->> 'material', cutter = parts -> part ->> 'cutter',"
+                                         " pieces = (parts -> part ->> 'pieces')::integer"
+                                         " WHERE id = $1 AND jsonb_array_length(parts) > 0",
+                                         lease.object_id);
                           release_lease(tx, lease);
                           add_event(tx, lease.object_id, node_, "computed");
                           return true;
@@ -275,7 +282,7 @@ Result<std::vector<JobRow>> LedgerClient::recent_jobs(int limit, const std::stri
   return transact<Rows>("listing jobs", [&](pqxx::work& tx) -> Result<Rows> {
     const pqxx::result found = tx.exec_params(
         "SELECT j.id, j.scan_name, j.state, j.cutter, j.material, j.origin, coalesce(j.reason, ''),"
-        " coalesce(l.holder, ''), coalesce(j.batch_id, 0), j.attempts"
+        " coalesce(l.holder, ''), coalesce(j.batch_id, 0), j.attempts, j.parts::text, j.part"
         " FROM jobs j LEFT JOIN leases l ON l.kind = 'job' AND l.object_id = j.id"
         " WHERE $2 = '' OR j.state = $2 ORDER BY j.id DESC LIMIT $1",
         limit, state);
@@ -283,7 +290,9 @@ Result<std::vector<JobRow>> LedgerClient::recent_jobs(int limit, const std::stri
     for (const pqxx::row& r : found) {
       rows.push_back({r[0].as<long long>(), r[1].as<std::string>(), r[2].as<std::string>(), r[3].as<std::string>(),
                       r[4].as<std::string>(), r[5].as<std::string>(), r[6].as<std::string>(), r[7].as<std::string>(),
-                      r[8].as<long long>(), r[9].as<int>()});
+                      r[8].as<long long>(), r[9].as<int>(),
+                      daemon::parts_from_json(nlohmann::json::parse(r[10].as<std::string>(), nullptr, false)),
+                      r[11].as<int>()});
     }
     return rows;
   });

@@ -92,8 +92,9 @@ class LedgerMoldsClaim : public MoldsClaim {
     if (molds.verdict == JobMolds::Verdict::HeldForReview || molds.verdict == JobMolds::Verdict::HeldNotNestable) {
       return finish([&] { return client.mark_held(lease, molds.reason); }, JobStage::Held, molds.reason);
     }
-    finish([&] { return client.mark_computed(lease, molds.pieces); }, JobStage::Computed, "",
-           fmt::format("{} {} ready in {:.1f} s", molds.molds, molds.noun, molds.took_s));
+    std::string ready = fmt::format("{} {} ready in {:.1f} s", molds.molds, molds.noun, molds.took_s);
+    if (!molds.parts.empty()) ready += "; cut in parts: " + describe_parts(molds.parts);
+    finish([&] { return client.mark_computed(lease, molds.pieces, molds.parts); }, JobStage::Computed, "", ready);
   }
 
  private:

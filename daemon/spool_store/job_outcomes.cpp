@@ -52,6 +52,28 @@ JobFolder folder_of(JobStage stage) {
   }
 }
 
+// A part of a job of several materials was cut in `batch`: noted in the job's report (parts_cut, with
+// the batch whose folder keeps its layout and cut file); when another part follows, the job becomes
+// computed with it and true is returned. After the last part: false, and the job ends as a whole job does.
+bool cut_part(const Spool& spool, JobState& state, const BatchState& batch) {
+  nlohmann::json report = read_report(spool.job_dir(JobFolder::Work, state.id) / kReportFile);
+  nlohmann::json cut = report.contains("parts_cut") && report["parts_cut"].is_array() ? report["parts_cut"]
+                                                                                     : nlohmann::json::array();
+  cut.push_back({{"material", batch.material}, {"batch", batch.id}, {"cutter", batch.cutter},
+                 {"pieces", state.piece_count}, {"cut_file", batch.cut_file}, {"at", utc_now_iso()}});
+  std::string noted;
+  if (Status reported = update_job_report(spool, JobFolder::Work, state.id, {{"parts_cut", cut}}); !reported)
+    noted = " (" + reported.error() + ")";
+  const std::string done = fmt::format("{} pieces of {} cut on {} (batch {})", state.piece_count, batch.material,
+                                       batch.cutter, batch.id);
+  if (!state.next_part()) return false;
+  set_job_stage(spool, state, JobStage::Computed,
+                fmt::format("{}; next part {} of {}: {} pieces of {} for {}{}", done, state.part + 1, state.parts.size(),
+                            state.piece_count, state.ticket.material, state.ticket.cutter, noted),
+                "part cut, but the next part is not written (the next start tries again)");
+  return true;
+}
+
 }  // namespace
 
 bool set_job_stage(const Spool& spool, JobState& state, JobStage stage, const std::string& note,
@@ -152,12 +174,17 @@ void report_batch_problem(const Spool& spool, const BatchState& batch, const std
   }
 }
 
-void complete_batch_jobs(const Spool& spool, const BatchState& batch) {
+std::vector<std::string> complete_batch_jobs(const Spool& spool, const BatchState& batch) {
   const auto batch_dir = spool.batch_dir(batch.id);
+  std::vector<std::string> next_parts;
   for (const std::string& id : batch.job_ids) {
     auto state = spool.read_state(JobFolder::Work, id);
     if (!state) continue;  // already finished before a restart, or requeued elsewhere
     if (state->batch_id != batch.id) continue;
+    if (!state->parts.empty() && cut_part(spool, *state, batch)) {
+      next_parts.push_back(id);
+      continue;
+    }
     const auto job_dir = spool.job_dir(JobFolder::Work, id);
     for (const std::string& name : {std::string(kLayoutFile), std::string(kPreviewFile), batch.cut_file}) {
       std::error_code exists_error;
@@ -184,6 +211,7 @@ void complete_batch_jobs(const Spool& spool, const BatchState& batch) {
     }
     set_job_stage(spool, *state, JobStage::Cut, note, "cut, but could not be moved to done/");
   }
+  return next_parts;
 }
 
 void hold_batch_jobs(const Spool& spool, const BatchState& batch, const std::string& reason) {

@@ -51,8 +51,10 @@ void report_job_problem(const Spool& spool, JobFolder folder, const JobState& st
 // The same for a batch: one log line, and the problem in the report of each of its jobs in work/.
 void report_batch_problem(const Spool& spool, const BatchState& batch, const std::string& problem);
 // The batch was cut: its layout, preview and cut file are copied into each job's folder, the
-// report completed, and every job still in work/ moves to done/.
-void complete_batch_jobs(const Spool& spool, const BatchState& batch);
+// report completed, and every job still in work/ moves to done/, except a job of several materials
+// whose next part waits (daemon/job/job_parts.hpp): it becomes computed again with that part's
+// material and cutter. Returns those jobs' ids, for the batcher.
+std::vector<std::string> complete_batch_jobs(const Spool& spool, const BatchState& batch);
 // The batch may have been partly cut: every job of it still in work/ moves to held/.
 void hold_batch_jobs(const Spool& spool, const BatchState& batch, const std::string& reason);
 

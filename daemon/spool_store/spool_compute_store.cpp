@@ -35,8 +35,11 @@ class SpoolMoldsClaim : public MoldsClaim {
       hold_job(spool_, state_, molds.reason);
       return;
     }
-    if (!set_job_stage(spool_, state_, JobStage::Computed,
-                       fmt::format("{} {} ready in {:.1f} s", molds.molds, molds.noun, molds.took_s),
+    std::string ready = fmt::format("{} {} ready in {:.1f} s", molds.molds, molds.noun, molds.took_s);
+    // Cut one material after another (daemon/job/job_parts.hpp): the current part's targets now.
+    state_.take_parts(molds.parts);
+    if (!molds.parts.empty()) ready += "; cut in parts: " + describe_parts(molds.parts);
+    if (!set_job_stage(spool_, state_, JobStage::Computed, ready,
                        "molds made, but the state is not written (computed again at the next start)")) {
       return;
     }

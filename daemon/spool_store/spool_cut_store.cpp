@@ -82,7 +82,7 @@ CutEnd SpoolCutStore::record_end(const CutOrder& order, CutEnd end, const std::s
     case CutEnd::Cut:
       // Cut, even if batch.json cannot say so: the jobs must reach done/, never be cut again.
       set_batch_stage(spool_, *batch, BatchStage::Cut, "the cutter reported the job finished", BatchLine::ByCaller);
-      complete_batch_jobs(spool_, *batch);
+      for (const std::string& id : complete_batch_jobs(spool_, *batch)) computed_(id);
       return CutEnd::Cut;
     case CutEnd::NotSent:
       if (set_batch_stage(spool_, *batch, BatchStage::Queued, "cutter refused before cutting: " + reason,

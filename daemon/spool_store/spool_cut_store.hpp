@@ -6,6 +6,7 @@
 // crash holds it at recovery), then done/ or held/ together with the move out of work/. Queued
 // batches stay in the spool when the daemon stops; recovery queues them again at the next start.
 #include <deque>
+#include <functional>
 #include <mutex>
 #include <string>
 
@@ -16,7 +17,9 @@ namespace lastcut::daemon {
 
 class SpoolCutStore : public CutStore {
  public:
-  SpoolCutStore(std::string cutter, const Spool& spool) : cutter_(std::move(cutter)), spool_(spool) {}
+  // `computed` hears of a job whose part was cut and whose next part now waits to be nested.
+  SpoolCutStore(std::string cutter, const Spool& spool, std::function<void(const std::string&)> computed)
+      : cutter_(std::move(cutter)), spool_(spool), computed_(std::move(computed)) {}
 
   // Main thread: a batch nested for this cutter (batch.json `queued`).
   void enqueue(const std::string& batch_id);
@@ -34,6 +37,7 @@ class SpoolCutStore : public CutStore {
 
   std::string cutter_;
   const Spool& spool_;
+  std::function<void(const std::string&)> computed_;
   mutable std::mutex mutex_;
   std::deque<std::string> queue_;
 };

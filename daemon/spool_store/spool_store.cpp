@@ -22,14 +22,16 @@ Status SpoolStore::open(const StationLinks& links) {
     }
     if (observer) observer->job_changed(job_event_of(state));
   });
-  for (const auto& [name, section] : settings->cutters) cutters_[name] = std::make_unique<SpoolCutStore>(name, *spool_);
+  // Jobs computed, and jobs whose next part waits, are handed to the batcher on the main thread (tick).
+  const auto computed = [this](const std::string& job_id) {
+    std::lock_guard lock(computed_mutex_);
+    computed_.push_back(job_id);
+  };
+  for (const auto& [name, section] : settings->cutters)
+    cutters_[name] = std::make_unique<SpoolCutStore>(name, *spool_, computed);
   compute_store_ = std::make_unique<SpoolComputeStore>(
       *spool_, [this] { return config(); },
-      SpoolComputeStore::Listeners{[this](const std::string& job_id) {
-                                     std::lock_guard lock(computed_mutex_);
-                                     computed_.push_back(job_id);
-                                   },
-                                   [this](const BatchState& batch) { enqueue_batch(batch); }});
+      SpoolComputeStore::Listeners{computed, [this](const BatchState& batch) { enqueue_batch(batch); }});
   index_hashes();
   recover();
   return Status::success();

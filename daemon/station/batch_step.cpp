@@ -16,10 +16,10 @@
 namespace lastcut::daemon {
 namespace {
 
-// The pieces of one job (its items.json). Throws EngineError.
+// The pieces of one job (its items of this material). Throws EngineError.
 PieceGroup job_pieces(const BatchJobInput& job) {
   return {job.job_id, "", 0,
-          items_from_json(read_json_file(job.job_dir / kItemsFile), std::string(kItemsFile) + " of job " + job.job_id)};
+          items_from_json(read_json_file(job.items_file), job.items_file.filename().string() + " of job " + job.job_id)};
 }
 
 // What the program carries, named in the cut file itself so the machine's own log shows it.

@@ -146,7 +146,7 @@ NestResult ComputePool::compute_nest(const NestWork& work, const std::string& wo
   monitor_.begin(worker, "nesting " + work.label, settings->jobs.compute_timeout_s);
   if (work.hide_file.empty()) {
     std::vector<BatchJobInput> inputs;
-    for (const NestJob& job : work.jobs) inputs.push_back({job.job_id, job.job_dir});
+    for (const NestJob& job : work.jobs) inputs.push_back({job.job_id, job_items_path(job.job_dir, work.material)});
     const Result<BatchMade> made = build_batch(inputs, material->second, cutter->second, settings->paths.machines_dir,
                                                settings->batch.nest_time_s, work.batch_dir);
     take_outcome(made, result);
@@ -154,7 +154,7 @@ NestResult ComputePool::compute_nest(const NestWork& work, const std::string& wo
     std::vector<HideJobInput> inputs;
     for (std::size_t i = 0; i < work.jobs.size(); ++i) {
       const NestJob& job = work.jobs[i];
-      inputs.push_back({job.job_id, job.job_dir, job.ticket.order,
+      inputs.push_back({job.job_id, job_items_path(job.job_dir, work.material), job.ticket.order,
                         hide_job_priority(job.ticket.priority, i, work.jobs.size())});
     }
     const Result<HideMade> made = build_hide(inputs, work.batch_dir, work.hide_file, material->second, cutter->second,

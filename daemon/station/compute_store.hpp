@@ -33,7 +33,7 @@ struct MoldsWork {
 // One job of a batch or a hide, oldest first.
 struct NestJob {
   std::string job_id;
-  std::filesystem::path job_dir;  // holds items.json
+  std::filesystem::path job_dir;  // holds items.json (or a part's items file, job_items_path)
   JobTicket ticket;
 };
 

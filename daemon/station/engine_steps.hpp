@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "daemon/config/daemon_config.hpp"
+#include "daemon/job/job_parts.hpp"
 #include "daemon/job/job_ticket.hpp"
 #include "engine/core/engine_error.hpp"
 #include "engine/core/status.hpp"
@@ -48,6 +49,9 @@ struct MoldsMade {
   // "" when the job may be nested; else the one-line reason it is held (no items.json): a half beyond
   // the quality gate, or a style that cannot be applied to this last
   std::string hold_reason;
+  // A job whose pieces are of several materials: its parts in cutting order (daemon/job/job_parts.hpp),
+  // each part's items in job_items_path(job_dir, material); empty for a job of one material.
+  std::vector<JobPart> parts;
 };
 
 // Computes the molds of the scan into job_dir/molds/ and its nest items into job_dir/items.json:
@@ -64,7 +68,8 @@ Result<MoldsMade> compute_molds(const std::filesystem::path& scan, const std::fi
 // on the scanned last (engine/style) into job_dir/pieces/ (write_piece_outputs) and as nest items into
 // job_dir/items.json (items_from_style: the ticket's quantity of shoes, the other foot mirrored when the
 // ticket asks for a pair, the style's leather rules or the material's, labels with order, size, piece
-// and foot). A style that cannot be read or applied to this last is a hold (hold_reason), not a
+// and foot); pieces of several configured materials go to one items file per part
+// (save_job_items_by_material). A style that cannot be read or applied to this last is a hold (hold_reason), not a
 // failure: the scan is good, and a requeue after the style is mended makes the pieces. A bad scan
 // fails as in compute_molds.
 Result<MoldsMade> compute_style_pieces(const std::filesystem::path& scan, const std::filesystem::path& job_dir,
@@ -73,8 +78,8 @@ Result<MoldsMade> compute_style_pieces(const std::filesystem::path& scan, const 
 // A job that is a DXF-AAMA pattern set (a .dxf in the watch folder, engine/pattern): its pieces as
 // nest items into job_dir/items.json (items_from_pattern: each piece's quantity x the ticket's, the
 // other foot mirrored when the ticket asks for a pair, the material's leather rules). A file the
-// reader refuses fails the job with the reader's line. A piece whose Category names another configured
-// material than the job's is a hold: one job is cut from one material.
+// reader refuses fails the job with the reader's line. A piece whose Category names a configured
+// material is cut from it: pieces of several materials make a job of parts (save_job_items_by_material).
 Result<MoldsMade> compute_pattern_items(const std::filesystem::path& pattern, const std::filesystem::path& job_dir,
                                         const JobTicket& ticket, const DaemonConfig& settings);
 
@@ -93,14 +98,29 @@ inline int pieces_to_cut(const std::vector<NestItem>& items) {
 Result<MoldsMade> save_job_items(const std::filesystem::path& job_dir, const std::vector<NestItem>& items, MoldsMade made,
                                  const std::string& made_what);
 
+// The same for the items of a style or pattern set job, whose pieces may be of several materials
+// (item_materials[i]: the material item i is cut from, piece_material): one material, job_dir/items.json
+// as save_job_items; several, one file per material (job_items_path) and made.parts (job_parts).
+Result<MoldsMade> save_job_items_by_material(const std::filesystem::path& job_dir, const std::vector<NestItem>& items,
+                                             const std::vector<std::string>& item_materials, const JobTicket& ticket,
+                                             const DaemonConfig& settings, MoldsMade made, const std::string& made_what);
+
+// Where a job's items for `material` are: items-<material>.json for a part of a job of several
+// materials (the name's characters other than letters, digits, '-' and '_' as '_'), else items.json.
+std::filesystem::path job_items_path(const std::filesystem::path& job_dir, const std::string& material);
+
 // A job step into job_dir run so that nothing escapes it: an EngineError is its one line, running out
 // of memory says `too_large`, anything else is unexpected_failure_reason. A stale items.json (from a
-// computation before a requeue) goes first: only this computation's items may be nested.
+// computation before a requeue; a part's items-<material>.json too) goes first: only this computation's
+// items may be nested.
+// Removes items.json and every part's items file from job_dir (absent is the usual case; a file that
+// cannot go fails the step's own write).
+void remove_job_items(const std::filesystem::path& job_dir);
+
 template <typename Step>
 Result<MoldsMade> guarded_job_step(const std::filesystem::path& job_dir, Step&& step, const std::string& too_large) {
   try {
-    std::error_code ignored;  // absent is the usual case; a file that cannot go fails the step's own write
-    std::filesystem::remove(job_dir / kItemsFile, ignored);
+    remove_job_items(job_dir);
     return step();
   } catch (const EngineError& error) {
     return Status::failure(error.what());
@@ -125,7 +145,7 @@ Result<ReferenceCheck> check_against_references(const std::filesystem::path& job
 
 struct BatchJobInput {
   std::string job_id;
-  std::filesystem::path job_dir;  // holds items.json
+  std::filesystem::path items_file;  // the job's items of this material (job_items_path)
 };
 
 struct BatchMade {

@@ -32,8 +32,8 @@ Result<HideMade> build_hide(const std::vector<HideJobInput>& jobs, const std::fi
     for (const HideJobInput& job : jobs) {
       try {
         PieceGroup group{job.job_id, job.order, job.priority,
-                         items_from_json(read_json_file(job.job_dir / kItemsFile),
-                                         std::string(kItemsFile) + " of job " + job.job_id)};
+                         items_from_json(read_json_file(job.items_file),
+                                         job.items_file.filename().string() + " of job " + job.job_id)};
         groups.push_back(std::move(group));
       } catch (const EngineError& error) {
         made.rejected[job.job_id] = error.what();

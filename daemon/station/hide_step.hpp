@@ -21,7 +21,7 @@ inline constexpr const char* kOffcutFile = "offcut.dxf";
 
 struct HideJobInput {
   std::string job_id;
-  std::filesystem::path job_dir;  // holds items.json
+  std::filesystem::path items_file;  // the job's items of this material (job_items_path)
   std::string order;              // pairs: the jobs of one order go on one hide (material pairs = same_hide)
   int priority = 0;               // higher first: the oldest waiting job gets the highest
 };

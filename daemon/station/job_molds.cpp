@@ -50,6 +50,8 @@ JobMolds make_job_molds(const std::filesystem::path& scan, const std::filesystem
                   {"measures", made->measures},
                   {"timings_s", {{"molds", molds.took_s}}}};
   if (!checked->comparisons.empty()) molds.report["compare"] = checked->comparisons;
+  molds.parts = made->parts;
+  if (!molds.parts.empty()) molds.report["parts"] = parts_to_json(molds.parts);
   // What the engine noticed but got past (a side contradicting the sidecar, a scan hole closed)
   // must reach the operator's log, not only report.json.
   if (const auto warnings = made->measures.find("warnings"); warnings != made->measures.end()) {

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "daemon/config/daemon_config.hpp"
+#include "daemon/job/job_parts.hpp"
 #include "daemon/job/job_ticket.hpp"
 #include "daemon/station/progress_monitor.hpp"
 
@@ -29,6 +30,7 @@ struct JobMolds {
   int molds = 0;          // molds (or a style's or pattern set's pieces) made
   std::string noun = "molds";  // what they are, for the log: "molds" or "pieces"
   int pieces = 0;         // the pieces to cut (every item x its demand): what batching counts
+  std::vector<JobPart> parts;  // a job of several materials: its parts in cutting order (job_parts.hpp)
   double took_s = 0;      // the engine's time for the molds
   nlohmann::json report;  // molds, pieces, measures, timings_s and, when references were named, compare
 };

@@ -1,13 +1,14 @@
-// A job's material and its leather rules; see job_piece_rules.hpp.
+// A job's materials, their leather rules and the parts of a job of several; see job_piece_rules.hpp.
 #include "daemon/station/job_piece_rules.hpp"
 
+#include <algorithm>
 #include <map>
 
 namespace lastcut::daemon {
 
-JobMaterial job_material(const JobTicket& ticket, const DaemonConfig& settings) {
+JobMaterial material_named(const std::string& name, const DaemonConfig& settings) {
   JobMaterial material;
-  material.name = ticket.material.empty() ? settings.jobs.default_material : ticket.material;
+  material.name = name;
   if (const auto found = settings.materials.find(material.name); found != settings.materials.end()) {
     if (found->second.grain_tolerance_deg > 0) material.rules.grain_tolerance_deg = found->second.grain_tolerance_deg;
     material.rules.min_quality = found->second.min_quality;
@@ -15,18 +16,37 @@ JobMaterial job_material(const JobTicket& ticket, const DaemonConfig& settings) 
   return material;
 }
 
-std::string other_material_hold(const std::vector<std::pair<std::string, std::string>>& piece_materials,
-                                const JobMaterial& material, const DaemonConfig& settings) {
-  std::map<std::string, std::string> pieces_of;  // other configured material -> its pieces, quoted
-  for (const auto& [piece, piece_material] : piece_materials) {
-    if (piece_material == material.name || !settings.materials.count(piece_material)) continue;
-    std::string& names = pieces_of[piece_material];
-    names += (names.empty() ? "\"" : ", \"") + piece + "\"";
+JobMaterial job_material(const JobTicket& ticket, const DaemonConfig& settings) {
+  return material_named(ticket.material.empty() ? settings.jobs.default_material : ticket.material, settings);
+}
+
+std::string piece_material(const std::string& named, const JobMaterial& job, const DaemonConfig& settings) {
+  return settings.materials.count(named) ? named : job.name;
+}
+
+std::vector<JobPart> job_parts(const std::vector<std::string>& item_materials, const std::vector<int>& item_demands,
+                               const JobTicket& ticket, const DaemonConfig& settings) {
+  std::map<std::string, int> pieces_of;
+  for (std::size_t i = 0; i < item_materials.size() && i < item_demands.size(); ++i)
+    pieces_of[item_materials[i]] += item_demands[i];
+  if (pieces_of.size() < 2) return {};
+  const JobMaterial own = job_material(ticket, settings);
+  std::vector<JobPart> parts;
+  for (const auto& [material, pieces] : pieces_of) {
+    const auto section = settings.materials.find(material);
+    const std::string& configured = section != settings.materials.end() ? section->second.cutter : std::string();
+    const std::string cutter = material == own.name && !ticket.cutter.empty() ? ticket.cutter
+                               : !configured.empty()                         ? configured
+                                                                             : settings.jobs.default_cutter;
+    parts.push_back({material, cutter, pieces});
   }
-  if (pieces_of.empty()) return "";
-  const auto& [other, names] = *pieces_of.begin();
-  return "pieces " + names + " are of material " + other + ", the job is cut from " + material.name +
-         ": one job is cut from one material (give those pieces a file of their own, or name one material in the sidecar)";
+  const auto on_hide = [&](const JobPart& part) {
+    const auto section = settings.materials.find(part.material);
+    return section != settings.materials.end() && section->second.kind == MaterialKind::Hide;
+  };
+  // Stable: within strips and within hides, name order stays.
+  std::stable_partition(parts.begin(), parts.end(), [&](const JobPart& part) { return !on_hide(part); });
+  return parts;
 }
 
 }  // namespace lastcut::daemon

@@ -62,22 +62,23 @@ Result<MoldsMade> compute_pattern_items(const std::filesystem::path& pattern, co
     made.piece_count = static_cast<int>(pieces.size());
     made.measures = {{"pattern_set", pattern.filename().string()}, {"pieces", pieces_json(pieces)}};
     const JobMaterial material = job_material(ticket, settings);
-    std::vector<std::pair<std::string, std::string>> piece_materials;
-    for (const PatternPiece& piece : pieces) piece_materials.emplace_back(piece.name, piece.category);
-    made.hold_reason = other_material_hold(piece_materials, material, settings);
-    if (!made.hold_reason.empty()) return made;
-
     PatternNestSpec spec;
     spec.sets = ticket.quantity;
     spec.mirrored_twins = ticket.side == "pair";
-    spec.rules = [&](const PatternPiece&) { return material.rules; };
+    spec.rules = [&](const PatternPiece& piece) {
+      return material_named(piece_material(piece.category, material, settings), settings).rules;
+    };
     spec.label = [&](const PatternPiece& piece, bool twin) {
       std::string foot = foot_of(piece);  // the piece's own Annotation, else the sidecar's one foot
       if (foot.empty() && ticket.side != "pair") foot = ticket.side;
       const std::string size = !ticket.size.empty() ? ticket.size : piece.size;
       return piece_label_text({ticket.order, pattern.filename().string(), size, twin ? opposite_foot(foot) : foot, piece.name});
     };
-    return save_job_items(job_dir, items_from_pattern(pieces, spec), made, "pieces");
+    std::vector<std::string> item_materials;  // items_from_pattern: each piece, then its twin
+    for (const PatternPiece& piece : pieces)
+      item_materials.insert(item_materials.end(), spec.mirrored_twins ? 2 : 1, piece_material(piece.category, material, settings));
+    return save_job_items_by_material(job_dir, items_from_pattern(pieces, spec), item_materials, ticket, settings, made,
+                                      "pieces");
   }, "the pattern set is too large for this machine's memory");
 }
 

@@ -62,22 +62,22 @@ Result<MoldsMade> compute_style_pieces(const std::filesystem::path& scan, const 
     made.piece_count = static_cast<int>(pieces.pieces.size());
     made.measures = write_piece_outputs(folder->style, pieces, {scan.filename().string(), ticket.size, foot}, job_dir / kPiecesFolder);
     const JobMaterial material = job_material(ticket, settings);
-    std::vector<std::pair<std::string, std::string>> piece_materials;
-    for (const StylePieceResult& piece : pieces.pieces) piece_materials.emplace_back(piece.spec.name, piece.spec.material);
-    made.hold_reason = other_material_hold(piece_materials, material, settings);
-    if (!made.hold_reason.empty()) return made;
-
+    const auto material_of = [&](const std::string& named) { return piece_material(named, material, settings); };
     StyleNestSpec spec;
     spec.style = folder->style.name;
     spec.size = ticket.size;
     spec.foot = foot;
     spec.shoes = ticket.quantity;
     spec.other_foot = ticket.side == "pair";
-    spec.material_rules = [&](const std::string&) { return material.rules; };
+    spec.material_rules = [&](const std::string& named) { return material_named(material_of(named), settings).rules; };
     spec.label = [&](const PatternPiece& piece, bool twin) {
       return piece_label_text({ticket.order, scan.filename().string(), ticket.size, twin ? opposite_foot(foot) : foot, piece.name});
     };
-    return save_job_items(job_dir, items_from_style(pieces, spec), made, "pieces");
+    std::vector<std::string> item_materials;  // items_from_style: each piece, then its twin
+    for (const StylePieceResult& piece : pieces.pieces)
+      item_materials.insert(item_materials.end(), spec.other_foot ? 2 : 1, material_of(piece.spec.material));
+    return save_job_items_by_material(job_dir, items_from_style(pieces, spec), item_materials, ticket, settings, made,
+                                      "pieces");
   }, "the scan is too large for this machine's memory");
 }
 

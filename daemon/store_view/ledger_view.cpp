@@ -29,12 +29,12 @@ std::string hide_line(const ledger::HideRow& hide) {
 nlohmann::json job_json(const ledger::JobRow& job) {
   return {{"id", job.job_id},         {"state", job.state},   {"scan", job.scan_name},   {"cutter", job.cutter},
           {"material", job.material}, {"origin", job.origin}, {"reason", job.reason},    {"holder", job.holder},
-          {"batch", job.batch_id},    {"attempts", job.attempts}};
+          {"batch", job.batch_id},    {"attempts", job.attempts}, {"parts", parts_progress(job.parts, job.part, job.state == "done")}};
 }
 
 JobLine job_line(const ledger::JobRow& job) {
   return {std::to_string(job.job_id), job.state, job.holder.empty() ? "" : "on " + job.holder, "", job.scan_name,
-          job.reason};
+          job.reason, parts_progress(job.parts, job.part, job.state == "done")};
 }
 
 class LedgerView : public StoreView {

@@ -20,12 +20,13 @@ namespace {
 nlohmann::json job_summary(const JobState& state, JobFolder folder) {
   return {{"id", state.id},         {"folder", folder_name(folder)}, {"stage", to_string(state.stage)},
           {"order", state.ticket.order}, {"scan", state.scan_name},         {"cutter", state.ticket.cutter},
-          {"material", state.ticket.material}, {"reason", state.reason},  {"updated_at", state.updated_at}};
+          {"material", state.ticket.material}, {"reason", state.reason},  {"updated_at", state.updated_at},
+          {"parts", parts_progress(state.parts, state.part, state.stage == JobStage::Cut)}};
 }
 
 JobLine job_line(const nlohmann::json& job) {
   return {job.value("id", ""),    job.value("stage", ""), job.value("folder", ""),
-          job.value("order", ""), job.value("scan", ""),  job.value("reason", "")};
+          job.value("order", ""), job.value("scan", ""),  job.value("reason", ""), job.value("parts", "")};
 }
 
 // The time `hours` ago as utc_now_iso() writes times (ISO 8601 UTC): such texts sort as times do.
@@ -167,8 +168,14 @@ class SpoolView : public StoreView {
     if (*folder == JobFolder::Done && state->stage != JobStage::Skipped && !again) {
       return Status::failure("job " + id + " was already cut; add --again to cut it once more");
     }
+    if (*folder == JobFolder::Done && !state->parts.empty()) {  // cut once more: every part again
+      const std::vector<JobPart> parts = state->parts;
+      state->part = 0;
+      state->take_parts(parts);
+    }
     std::error_code error;
-    const bool has_molds = std::filesystem::exists(spool_.job_dir(*folder, id) / kItemsFile, error);
+    const bool has_molds =
+        std::filesystem::exists(job_items_path(spool_.job_dir(*folder, id), state->ticket.material), error);
     const bool recompute = *folder == JobFolder::Failed || !has_molds;
     state->batch_id.clear();
     state->reason.clear();

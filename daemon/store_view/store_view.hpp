@@ -34,6 +34,7 @@ struct JobLine {
   std::string order;   // the ticket's order, "" when none
   std::string scan;    // the scan's file name
   std::string reason;  // why held, failed, waiting; "" otherwise
+  std::string parts;   // a job of several materials: which pieces wait for which material (parts_progress)
 };
 
 // A nested batch waiting for its cutter: the one kind an operator may cancel.

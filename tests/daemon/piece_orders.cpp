@@ -20,8 +20,9 @@ namespace {
 
 std::vector<Point2> box(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
 
-// Linings, cut from the roll: a lining vamp and a quarter lining, grain along the piece.
-std::vector<PatternPiece> lining_set() {
+// An upper's tongue of leather and its linings, from the roll: one pattern set of two materials, cut in
+// two parts (the linings on the roll, then the tongues on a hide); grain along each piece.
+std::vector<PatternPiece> tongue_and_linings() {
   PatternPiece vamp;
   vamp.name = "lining vamp";
   vamp.size = "41";
@@ -37,7 +38,14 @@ std::vector<PatternPiece> lining_set() {
   quarter.cut_line_mm = {{0, 0}, {220, 0}, {230, 60}, {180, 110}, {0, 100}};
   quarter.notches = {{{100, 0}, Point2(0, 1)}};
   quarter.grain_line_mm = std::array<Point2, 2>{Point2(20, 50), Point2(180, 50)};
-  return {vamp, quarter};
+  PatternPiece tongue = vamp;
+  tongue.name = "tongue";
+  tongue.category = "leather";
+  tongue.quantity = 1;
+  tongue.cut_line_mm = {{0, 0}, {60, -5}, {70, 150}, {40, 170}, {0, 150}};
+  tongue.notches = {{{35, -3}, Point2(0, 1)}};
+  tongue.grain_line_mm = std::array<Point2, 2>{Point2(35, 20), Point2(35, 140)};
+  return {vamp, quarter, tongue};
 }
 
 ClipperLib::Path to_path(const std::vector<Point2>& points) {
@@ -69,6 +77,9 @@ Polygon2 shrunk(const Polygon2& ring) {
   return result;
 }
 
+// The pieces tongue_and_linings() cuts from the lining roll.
+bool is_lining(const std::string& label) { return label.find("lining") != std::string::npos; }
+
 double axis_gap_deg(double a_deg, double b_deg) {
   double gap = std::fmod(std::abs(a_deg - b_deg), 180.0);
   return std::min(gap, 180 - gap);
@@ -82,12 +93,13 @@ std::vector<PieceOrder> write_piece_orders(const std::filesystem::path& staging)
       {"derby-201.stl", "order = \"201\"\nstyle = \"derby\"\nside = \"pair\"\nsize = \"40\"\nmaterial = \"leather\"\n", "201"},
       {"derby-202.stl", "order = \"202\"\nstyle = \"derby\"\nside = \"pair\"\nsize = \"44\"\nmaterial = \"leather\"\n", "202"},
       {"loafer-203.stl", "order = \"203\"\nstyle = \"loafer\"\nside = \"pair\"\nsize = \"38\"\nmaterial = \"leather\"\n", "203"},
-      // The material from the pieces' Category; the roll lies on cutter-2.
-      {"linings-301.dxf", "order = \"301\"\nside = \"pair\"\ncutter = \"cutter-2\"\n", "301"}};
+      // The materials from the pieces' Category: the tongues of leather (hides, cutter-1), the linings of
+      // the lining roll (on cutter-2, the material's cutter).
+      {"tongue-301.dxf", "order = \"301\"\nside = \"pair\"\n", "301"}};
   write_variant(small_last(40, "right", 7), staging / orders[0].file, orders[0].file);
   write_variant(small_last(44, "left", 7), staging / orders[1].file, orders[1].file);
   write_variant(small_last(38, "right", 7), staging / orders[2].file, orders[2].file);
-  write_aama_dxf(staging / orders[3].file, lining_set());
+  write_aama_dxf(staging / orders[3].file, tongue_and_linings());
   return orders;
 }
 
@@ -100,7 +112,7 @@ std::string piece_materials_config(const std::string& hide_cutter) {
   // the pieces' rules must win.
   return "[materials.leather]\nkind = \"hide\"\ncutter = \"" + hide_cutter + "\"\npairs = \"same_hide\"\n"
          "min_quality = 1\ngrain_tolerance_deg = 45\nspacing_mm = 3\nrotation_step_deg = 90\n"
-         "[materials.lining]\nwidth_mm = 800\nlength_mm = 1200\nspacing_mm = 2\nrotation_step_deg = 90\n";
+         "[materials.lining]\ncutter = \"cutter-2\"\nwidth_mm = 800\nlength_mm = 1200\nspacing_mm = 2\nrotation_step_deg = 90\n";
 }
 
 std::vector<QualityZone> zoned_hide_zones(double w_mm, double h_mm) {
@@ -114,6 +126,15 @@ void write_zoned_hide(const std::filesystem::path& file, double w_mm, double h_m
     dxf.polyline("ZONE_" + std::to_string(zone.quality), zone.shape.points, true);
   dxf.polyline("BACKBONE", {{10, h_mm / 2}, {w_mm - 10, h_mm / 2}}, false);
   write_text(file, dxf.str());
+}
+
+std::vector<std::filesystem::path> job_items_files(const std::filesystem::path& job_dir) {
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(job_dir)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.path().extension() == ".json" && (name == "items.json" || name.rfind("items-", 0) == 0)) files.push_back(entry.path());
+  }
+  return files;
 }
 
 std::map<std::string, NestItem> items_by_label(const std::vector<std::filesystem::path>& items_files) {
@@ -167,25 +188,32 @@ int expect_every_order_cut_once(const std::vector<PieceOrder>& orders, const std
     pieces += item.demand;
     EXPECT_EQ(cut.times_cut[label], item.demand) << label;
   }
-  // Two derby pairs (4 pieces a foot), a loafer pair (5 a foot), the linings (3 a foot).
-  EXPECT_EQ(pieces, 2 * 8 + 10 + 6);
+  // Two derby pairs (4 pieces a foot), a loafer pair (5 a foot), the tongue and its linings (1 + 3 a foot).
+  EXPECT_EQ(pieces, 2 * 8 + 10 + 2 + 6);
+  // Each order's leather on one hide (a pair from one hide), its linings on the roll.
   for (const PieceOrder& order : orders) {
-    std::set<std::string> hides;
-    for (const auto& [label, item] : items)
-      if (label.rfind("#" + order.order + " ", 0) == 0) hides.insert(cut.hide_of[label]);
+    std::set<std::string> hides, rolls;
+    for (const auto& [label, item] : items) {
+      if (label.rfind("#" + order.order + " ", 0) != 0) continue;
+      (is_lining(label) ? rolls : hides).insert(cut.hide_of[label]);
+    }
     EXPECT_EQ(hides.size(), 1u) << order.order;
-    EXPECT_EQ(hides.begin()->empty(), order.order == "301") << order.order;
+    EXPECT_FALSE(hides.empty() || hides.begin()->empty()) << order.order << ": its leather is not on a hide";
+    EXPECT_EQ(rolls.size(), order.order == "301" ? 1u : 0u) << order.order;
+    if (!rolls.empty()) {
+      EXPECT_EQ(*rolls.begin(), "") << order.order << ": its linings are not on the roll";
+    }
   }
   int zone_checks = 0, grain_checks = 0;
   for (const auto& [label, item] : items) {
-    if (label.rfind("#301 ", 0) == 0) continue;
+    if (is_lining(label)) continue;
     for (const QualityZone& zone : zoned_hide_zones(kPieceHideWidth_mm, kPieceHideHeight_mm))
       zone_checks += item.demand * (zone.quality < item.min_quality);
     grain_checks += item.demand * item.grain_deg.has_value();
   }
   EXPECT_EQ(cut.zone_checks, zone_checks);
   EXPECT_EQ(cut.grain_checks, grain_checks);
-  EXPECT_EQ(grain_checks, 26);  // every leather piece has a grain line
+  EXPECT_EQ(grain_checks, 28);  // every leather piece has a grain line
   std::printf("%d pieces cut, %d zone checks, %d grain checks\n", pieces, cut.zone_checks, cut.grain_checks);
   return pieces;
 }

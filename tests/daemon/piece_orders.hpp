@@ -1,8 +1,8 @@
 #pragma once
 // Issue 35's cutting room for the end-to-end tests of both stores (tests/daemon/pieces_daemon_test.cpp,
 // tests/ledger/ledger_pieces_test.cpp): two derby orders and a loafer order, each a pair from one
-// scanned last (the shipped styles, config/styles), and a DXF-AAMA pattern set of linings whose
-// Category names the lining roll; hide files with two poor zones and a backbone along x. The checks
+// scanned last (the shipped styles, config/styles), and a DXF-AAMA pattern set of a tongue of leather
+// and its linings, whose Categories name the hides' leather and the lining roll (a job cut in two parts); hide files with two poor zones and a backbone along x. The checks
 // read the cut files themselves (gcode_pieces.hpp), never the nester's layout: every piece of every
 // order cut exactly once, each by its label, a pair's pieces on one hide, every piece off the zones
 // below its grade (the vamps: off both), every grained piece's grain within its tolerance of the
@@ -25,8 +25,8 @@ struct PieceOrder {
 // Writes the four orders' files into `staging` (scans made once per build tree). Returns them in drop order.
 std::vector<PieceOrder> write_piece_orders(const std::filesystem::path& staging);
 
-// The [paths] lines and the materials: leather hides (on `hide_cutter`) and the lining roll (the
-// pattern set's sidecar sends it to cutter-2).
+// The [paths] lines and the materials: leather hides (on `hide_cutter`) and the lining roll (its
+// material's cutter: cutter-2).
 std::string piece_paths_config();
 std::string piece_materials_config(const std::string& hide_cutter);
 
@@ -51,11 +51,13 @@ void check_cut_file(const std::string& gcode, const std::string& batch, const st
 inline constexpr double kPieceHideWidth_mm = 1250, kPieceHideHeight_mm = 850;
 
 // What both stores' tests expect of the cut files, as gtest failures: no problem found, every item cut
-// exactly its demand, 32 pieces in all, each order on one hide (the linings, order 301, on the roll),
+// exactly its demand, 34 pieces in all, each order's leather on one hide (the linings, order 301, on the roll),
 // every leather piece checked against each zone below its grade and for its grain. Returns the pieces.
 int expect_every_order_cut_once(const std::vector<PieceOrder>& orders, const std::map<std::string, NestItem>& items,
                                 CutPieces& cut);
 
+// A job folder's items files: items.json, or a job of several materials' items-<material>.json.
+std::vector<std::filesystem::path> job_items_files(const std::filesystem::path& job_dir);
 // Every job's items, by label, from items.json files.
 std::map<std::string, NestItem> items_by_label(const std::vector<std::filesystem::path>& items_files);
 

@@ -1,7 +1,8 @@
 // lastcutd cutting a shoe's pieces (issue 35), one station, the real binaries: two derby orders and
 // a loafer order (each a pair from one scanned last, pieces made with the shipped styles) and a
-// DXF-AAMA pattern set of linings are dropped together; leather hides with poor zones and a backbone
-// are dropped for cutter-1 until every order is cut, the linings go to the roll on cutter-2. Checked
+// DXF-AAMA pattern set of a tongue and its linings are dropped together; leather hides with poor zones
+// and a backbone are dropped for cutter-1 until every order is cut, the linings go to the roll on
+// cutter-2 (order 301 is one job of two materials, cut in two parts). Checked
 // on the cut files the simulated grbl tables received, by an independent reading of the G-code
 // (piece_orders.hpp): every piece of every order cut exactly once and labelled, a pair on one hide,
 // no piece on a zone below its grade, every grain within its tolerance of the backbone.
@@ -39,7 +40,7 @@ TEST(DaemonPieces, StylesAndAPatternSetAreCutByMaterialWithTheirRules) {
     write_text(rig.watch() / (std::filesystem::path(order.file).stem().string() + ".job.toml"), order.sidecar);
     drop(staging / order.file, rig.watch(), order.file);
   }
-  // The linings are cut from the roll at once; the leather waits for hides: one at a time until no
+  // The linings are cut from the roll at once (301's first part); the leather waits for hides: one at a time until no
   // order waits (each hide has room for about two pairs).
   std::filesystem::create_directories(rig.root() / "hides");
   const auto all_done = [&] {
@@ -47,16 +48,24 @@ TEST(DaemonPieces, StylesAndAPatternSetAreCutByMaterialWithTheirRules) {
     for (const PieceOrder& order : orders) done += rig.find_job(order.file).folder == "done";
     return done == static_cast<int>(orders.size());
   };
-  // The leather orders wait for a hide (computed) or are cut (done); nothing is on its way.
+  // Every order waits for a hide (computed, its part of leather current) or is cut (done); nothing is on
+  // its way. Order 301 gets there once its linings are cut.
   const auto leather_settled = [&] {
     for (const PieceOrder& order : orders) {
-      if (order.order == "301") continue;
       const DaemonRig::FoundJob job = rig.find_job(order.file);
-      if (job.folder != "done" && (job.folder != "work" || job.state.value("stage", "") != "computed")) return false;
+      if (job.folder == "done") continue;
+      if (job.folder != "work" || job.state.value("stage", "") != "computed" ||
+          job.state["ticket"].value("material", "") != "leather")
+        return false;
     }
     return true;
   };
   ASSERT_TRUE(wait_until(leather_settled, 120)) << read_text(rig.daemon_log());
+  // `lastcut status` says which of 301's pieces wait for which material.
+  const auto status_log = rig.root() / "status.txt";
+  EXPECT_EQ(run_command({binary("lastcut").string(), "status", "--config", rig.config_file().string()}, status_log), 0);
+  EXPECT_NE(read_text(status_log).find("parts: 6 pieces of lining cut; 2 pieces of leather now"), std::string::npos)
+      << read_text(status_log);
   for (int hide = 1; hide <= 4 && !all_done(); ++hide) {
     const std::string name = "hide-" + std::to_string(hide) + ".dxf";
     write_zoned_hide(staging / name, kPieceHideWidth_mm, kPieceHideHeight_mm);
@@ -70,7 +79,8 @@ TEST(DaemonPieces, StylesAndAPatternSetAreCutByMaterialWithTheirRules) {
 
   // What the cut files cut, read independently of the nester.
   std::vector<std::filesystem::path> items_files;
-  for (const PieceOrder& order : orders) items_files.push_back(rig.spool() / "done" / rig.find_job(order.file).id / "items.json");
+  for (const PieceOrder& order : orders)
+    for (const auto& file : job_items_files(rig.spool() / "done" / rig.find_job(order.file).id)) items_files.push_back(file);
   const std::map<std::string, NestItem> items = items_by_label(items_files);
   CutPieces cut;
   const std::string on_cutter_1 = rig.received("cutter-1"), on_cutter_2 = rig.received("cutter-2");

@@ -1,9 +1,9 @@
 // Bad pattern sets and bad style sidecars dropped into a running lastcutd (issue 35): each pattern
 // set the reader refuses fails its job with the reader's one line, the file kept in failed/; a style
-// name that is a path is refused at intake; a style the shop does not have, a broken style folder, a
-// style that does not fit the scan, and a pattern set of two configured materials hold their job
-// with one line; the daemon keeps running and cuts a good pattern set dropped after them. Runs under
-// the sanitizers in CI.
+// name that is a path is refused at intake; a style the shop does not have, a broken style folder and
+// a style that does not fit the scan hold their job with one line; the daemon keeps running, cuts a
+// pattern set of two configured materials dropped among them in two parts, one per material, and a good
+// pattern set dropped after them. Runs under the sanitizers in CI.
 #include <gtest/gtest.h>
 
 #include "daemon_rig.hpp"
@@ -80,8 +80,6 @@ TEST(DaemonPieces, BadPatternSetsAndStylesAreRefusedOrHeldWithOneLine) {
       {"no-blocks.dxf", {"failed", "no-blocks.dxf: no piece blocks (DXF-AAMA places each piece as a BLOCK with an INSERT)"}},
       {"furlong.dxf", {"failed", "furlong.dxf: unknown units \"Units: FURLONG\" (METRIC, MM, CM, ENGLISH or INCH)"}},
       {"two.dxf", {"failed", "two.dxf: piece \"vamp\": quantity 'two' is not a positive count"}},
-      {"mixed.dxf", {"held", "pieces \"lining\" are of material lining, the job is cut from calf: one job is cut from one material "
-                             "(give those pieces a file of their own, or name one material in the sidecar)"}},
       {"path.stl", {"failed", "sidecar path.job.toml: style \"../derby\" is not a style's folder name (letters, digits, '-', '_', '.'; no path)"}},
       {"oxford.stl", {"held", "style \"oxford\": no such style in " + styles.string()}},
       {"broken.stl", {"held", "style \"broken\": "}},
@@ -98,6 +96,25 @@ TEST(DaemonPieces, BadPatternSetsAndStylesAreRefusedOrHeldWithOneLine) {
     EXPECT_TRUE(std::filesystem::exists(rig.spool() / folder / state.value("id", "") / file)) << file << " is kept";
   }
   EXPECT_NE(rig.find_job("broken.stl").state.value("reason", "").find("colour"), std::string::npos);
+
+  // Two materials, two parts: the calf vamp and the lining, each nested and cut on its own material;
+  // the job is done once both are cut.
+  const DaemonRig::FoundJob mixed = rig.find_job("mixed.dxf");
+  ASSERT_EQ(mixed.folder, "done") << read_text(rig.daemon_log());
+  ASSERT_EQ(mixed.state["parts"].size(), 2u) << mixed.state.dump();
+  EXPECT_EQ(mixed.state["parts"][0].value("material", ""), "calf");
+  EXPECT_EQ(mixed.state["parts"][1].value("material", ""), "lining");
+  const auto report = nlohmann::json::parse(read_text(rig.spool() / "done" / mixed.id / "report.json"));
+  ASSERT_EQ(report["parts_cut"].size(), 2u) << report.dump();
+  EXPECT_EQ(report["parts_cut"][0].value("material", ""), "calf");
+  EXPECT_EQ(report["parts_cut"][1].value("material", ""), "lining");
+  EXPECT_NE(report["parts_cut"][0].value("batch", ""), report["parts_cut"][1].value("batch", ""));
+  for (const auto& part : report["parts_cut"]) {
+    const auto batch = nlohmann::json::parse(read_text(rig.spool() / "batches" / part.value("batch", "") / "batch.json"));
+    EXPECT_EQ(batch.value("material", ""), part.value("material", ""));
+    EXPECT_EQ(batch.value("stage", ""), "cut");
+    EXPECT_EQ(batch.value("pieces", 0), 1);
+  }
 
   // Still running: a good pattern set is cut.
   write_aama_dxf(staging / "good.dxf", {square_piece("vamp", "calf")});

@@ -2,7 +2,8 @@
 // ledger and a mosquitto broker started by the test - station-a (compute + station, cutter-1: a
 // simulated grbl table for the leather hides, the hides folder beside it) and station-b (compute +
 // station, cutter-2: the lining roll). The orders of tests/daemon/piece_orders.hpp are dropped on both
-// nodes: two derby pairs and a loafer pair (the shipped styles) and a DXF-AAMA pattern set of linings.
+// nodes: two derby pairs and a loafer pair (the shipped styles) and a DXF-AAMA pattern set of a tongue of
+// leather and its linings (one job of two materials, cut in two parts).
 // Hides with poor zones and a backbone are dropped for cutter-1 until every order is cut. Checked on
 // the cut files the simulators received, by the independent reading of the G-code: every piece of every
 // order cut exactly once and labelled, a pair on one hide, no piece on a zone below its grade, every
@@ -44,9 +45,13 @@ TEST(LedgerPieces, StylesAndAPatternSetAreCutByMaterialOnTwoStations) {
     drop(staging / orders[k].file, watch, orders[k].file);
   }
   const auto state_of = [&](const PieceOrder& order) { return shop.value("SELECT state FROM jobs WHERE scan_name = '" + order.file + "'"); };
+  // Every order waits for a hide (computed, its part of leather current) or is cut; order 301 gets there
+  // once its linings are cut on station-b.
   const auto leather_settled = [&] {
-    for (const PieceOrder& order : orders)
-      if (order.order != "301" && state_of(order) != "computed" && state_of(order) != "done") return false;
+    for (const PieceOrder& order : orders) {
+      const auto row = shop.rows("SELECT state, material FROM jobs WHERE scan_name = '" + order.file + "'");
+      if (row.size() != 1 || !(row[0][0] == "done" || (row[0][0] == "computed" && row[0][1] == "leather"))) return false;
+    }
     return true;
   };
   const auto all_done = [&] {
@@ -70,8 +75,10 @@ TEST(LedgerPieces, StylesAndAPatternSetAreCutByMaterialOnTwoStations) {
   for (const char* cutter : {"cutter-1", "cutter-2"}) shop.stop_cutter(cutter);
 
   std::vector<std::filesystem::path> items_files;
-  for (const PieceOrder& order : orders)
-    items_files.push_back(shop.shared_dir() / "jobs" / shop.value("SELECT scan_sha256 FROM jobs WHERE scan_name = '" + order.file + "'") / "items.json");
+  for (const PieceOrder& order : orders) {
+    const auto job_dir = shop.shared_dir() / "jobs" / shop.value("SELECT scan_sha256 FROM jobs WHERE scan_name = '" + order.file + "'");
+    for (const auto& file : job_items_files(job_dir)) items_files.push_back(file);
+  }
   const std::map<std::string, NestItem> items = items_by_label(items_files);
   CutPieces cut;
   const std::string on_cutter_1 = shop.received("cutter-1"), on_cutter_2 = shop.received("cutter-2");
@@ -99,6 +106,13 @@ TEST(LedgerPieces, StylesAndAPatternSetAreCutByMaterialOnTwoStations) {
     on_hides += hide.value("pieces_placed", 0);
   }
   EXPECT_EQ(on_hides, pieces - 6);
+
+  // Order 301, one job of two materials: its linings cut on station-b's roll, then its tongues on a hide.
+  const std::string job_301 = "(SELECT id FROM jobs WHERE scan_name = 'tongue-301.dxf')";
+  EXPECT_EQ(shop.value("SELECT part || ' ' || jsonb_array_length(parts) FROM jobs WHERE id = " + job_301), "1 2");
+  EXPECT_EQ(shop.value("SELECT count(*) FROM job_events WHERE event = 'cut' AND job_id = " + job_301), "2");
+  EXPECT_EQ(shop.value("SELECT detail FROM job_events WHERE event = 'computed' AND detail <> '' AND job_id = " + job_301),
+            "next part 2 of 2: 2 pieces of leather for cutter-1");
 }
 
 }  // namespace

@@ -1,0 +1,41 @@
+#pragma once
+// The parts of a job whose pieces are of several configured materials (issue 35, per-material
+// batches; docs/cutting-pieces.md): the job is cut one material after another, each part nested and
+// cut as a whole job of that material would be (a strip batch on its roll or sheet, or a hide), and
+// the job is done when its last part is cut. While a part is nested and cut, the job's material,
+// cutter and pieces are the part's; the store keeps the list and which part is current (the spool in
+// state.json, the ledger in jobs.parts and jobs.part). A job of one material has no parts.
+//
+// Why one after another and not at once: the job keeps one stage and one batch at a time, the life
+// cycle every feature of both stores is written against. The parts' order (see order_parts) puts the
+// rolls and sheets first, which are cut without waiting, so that the leather, which waits for a hide,
+// is what the job waits for last.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace lastcut::daemon {
+
+struct JobPart {
+  std::string material;  // a configured material's name
+  std::string cutter;    // the cutter its batches go to
+  int pieces = 0;        // the pieces to cut of this material (items x demand)
+  bool operator==(const JobPart&) const = default;
+};
+
+nlohmann::json parts_to_json(const std::vector<JobPart>& parts);
+// Entries that are not objects with a material are left out (a damaged file: the part is not cut,
+// and the job ends after the parts it can read).
+std::vector<JobPart> parts_from_json(const nlohmann::json& json);
+
+// "4 pieces of lining on cutter-2, then 2 pieces of leather on cutter-1": the parts as the log and
+// the report say them.
+std::string describe_parts(const std::vector<JobPart>& parts);
+
+// Which pieces wait for which material, for `lastcut status` and the operator page: "6 pieces of lining
+// cut; 2 pieces of leather now; 4 pieces of felt next" (`current` is the part being nested or cut;
+// `all_cut` for a job that is done). "" for a job of one material.
+std::string parts_progress(const std::vector<JobPart>& parts, int current, bool all_cut);
+
+}  // namespace lastcut::daemon
