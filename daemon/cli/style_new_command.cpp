@@ -47,6 +47,7 @@ std::string style_template(const std::string& name, const std::string& scan_file
          "# PIECES inside the piece. Then: lastcut style pieces THIS_FOLDER SCAN -o OUT\n"
          "name = " + toml_string(name) + "\n"
          "forme = \"forme.dxf\"\n"
+         "# thickness_mm = 1.2        # the leather's: pieces flattened from its mid-surface (0 or absent: off)\n"
          "\n"
          "[reference]                # the last forme.dxf was made from: keep it here, unchanged\n"
          "scan = " + toml_string(scan_file) + "\n"

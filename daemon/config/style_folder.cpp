@@ -4,6 +4,7 @@
 
 #include "daemon/config/table_reader.hpp"
 #include "engine/core/engine_error.hpp"
+#include "engine/style/piece_thickness.hpp"
 
 namespace lastcut::daemon {
 namespace {
@@ -58,6 +59,7 @@ Result<StyleFolder> read_style_folder(const std::filesystem::path& folder) {
   root.text("forme", forme_file);
   if (lines_file.empty() == forme_file.empty())
     errors.push_back("give either lines (style lines drawn on the last, OBJ) or forme (drawn on its forme, DXF)");
+  root.number("thickness_mm", result.style.thickness_mm, 0, kMaxPieceThickness_mm);
 
   if (const toml::table* table = root.subtable("reference", true)) {
     TableReader reader(*table, "reference", errors);
@@ -126,6 +128,9 @@ Result<StyleFolder> read_style_folder(const std::filesystem::path& folder) {
     int min_quality = -1;
     reader.integer("min_quality", min_quality, 0, 100);
     if (min_quality >= 0) piece.min_quality = min_quality;
+    double thickness_mm = -1;  // absent: the style's
+    reader.number("thickness_mm", thickness_mm, 0, kMaxPieceThickness_mm);
+    if (thickness_mm >= 0) piece.thickness_mm = thickness_mm;
     result.style.pieces.push_back(piece);
   });
   root.reject_unknown();

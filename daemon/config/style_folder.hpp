@@ -7,6 +7,8 @@
 //   lines = "lines.obj"                  # style lines on the reference last (OBJ polylines, mm), or
 //   # forme = "forme.dxf"                # the lines and piece texts drawn on its forme (`lastcut style new`;
 //                                        # docs/style-authoring.md): then a [[piece]] has no label
+//   thickness_mm = 0.0                   # the pieces' material (0..10 mm): each is flattened from its
+//                                        # mid-surface, half of it off the last (piece_thickness.hpp); 0: off
 //   [reference]                          # the last the style was drawn on: a scan beside style.toml ...
 //   scan = "reference.stl"
 //   side = "right"
@@ -31,6 +33,7 @@
 //   grain_tolerance_deg = 10.0           # on a hide: grain along the backbone within this (0..90);
 //                                        # absent: the material's grain_tolerance_deg
 //   min_quality = 3                      # lowest leather grade (0..100); absent: the material's
+//   thickness_mm = 1.2                   # this piece's material (0..10 mm); absent: the style's thickness_mm
 #include <filesystem>
 #include <optional>
 

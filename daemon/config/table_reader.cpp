@@ -45,7 +45,7 @@ void TableReader::number(const std::string& key, double& value, double min_value
     return;
   }
   const double v = *found->value<double>();
-  if (v < min_value || v > max_value) {
+  if (!(v >= min_value && v <= max_value)) {  // TOML has nan, which no comparison is true for
     std::ostringstream out;
     out << where(key_path(key), *found) << ": " << v << " is outside " << min_value << " .. " << max_value;
     errors_.push_back(out.str());

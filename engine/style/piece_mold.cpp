@@ -11,6 +11,7 @@
 #include "engine/mold/outline_geometry.hpp"
 #include "engine/mold/outline_simplify.hpp"
 #include "engine/style/forme_boundary.hpp"
+#include "engine/style/piece_thickness.hpp"
 
 namespace lastcut {
 namespace {
@@ -70,7 +71,7 @@ std::vector<PieceEdgeSource> outline_sources(const TriMesh& mesh, const std::vec
 
 // The piece's flattening with its sewn outline edges held at their 3D length (arap_held_lengths.hpp), so
 // the two pieces of every seam have the seam's length. Its steps never fold a triangle.
-void hold_sewn_lengths(const PieceSurface& piece, const MeshTopology& topology, const std::vector<int>& loop,
+void hold_sewn_lengths(const TriMesh& surface, const MeshTopology& topology, const std::vector<int>& loop,
                        const std::vector<PieceEdgeSource>& source, PieceMold& result) {
   std::vector<std::array<int, 2>> held;
   for (std::size_t i = 0; i < loop.size(); ++i) {
@@ -78,7 +79,7 @@ void hold_sewn_lengths(const PieceSurface& piece, const MeshTopology& topology, 
     if (is_sewn(source[i]) && is_sewn(source[next])) held.push_back({loop[i], loop[next]});
   }
   if (held.empty()) return;
-  const HeldLengthReport report = hold_edge_lengths(piece.mesh, topology, held, result.UV);
+  const HeldLengthReport report = hold_edge_lengths(surface, topology, held, result.UV);
   result.flatten.notes.push_back("sewn edges held at their 3D length (" + std::to_string(held.size()) + " edges, " +
                                  std::to_string(report.iterations) + " iterations" +
                                  (report.shortened_steps > 0 ? ", " + std::to_string(report.shortened_steps) + " steps shortened against folds" : "") +
@@ -138,10 +139,14 @@ PieceMold make_piece_mold(const PieceSurface& piece, const PieceEdgeCurves& curv
   std::vector<int> loop = topology.boundary_loops.front();
   std::vector<PieceEdgeSource> source = outline_sources(piece.mesh, loop, curves);
 
-  result.flatten = flatten(piece.mesh, topology, options.flatten);
+  // The lengths the leather must have: the last's, or its mid-surface's for a piece with a thickness.
+  TriMesh offset;
+  if (options.surface_offset_mm > 0) offset = offset_along_normals(piece.mesh, options.surface_offset_mm);
+  const TriMesh& surface = options.surface_offset_mm > 0 ? offset : piece.mesh;
+  result.flatten = flatten(surface, topology, options.flatten);
   result.UV = result.flatten.UV;
-  if (options.hold_sewn_lengths) hold_sewn_lengths(piece, topology, loop, source, result);
-  result.measures = measure_distortion(piece.mesh, result.UV, topology);
+  if (options.hold_sewn_lengths) hold_sewn_lengths(surface, topology, loop, source, result);
+  result.measures = measure_distortion(surface, result.UV, topology);
 
   // The outline in the flattening, counter-clockwise.
   Polygon2 net;
@@ -182,14 +187,14 @@ PieceMold make_piece_mold(const PieceSurface& piece, const PieceEdgeCurves& curv
     stretch_starts.erase(stretch_starts.begin());
     stretch_source.erase(stretch_source.begin());
   }
-  // Each stretch's length on the last, from its start to the next stretch's.
+  // Each stretch's length on the surface flattened, from its start to the next stretch's.
   std::vector<double> length_3d(stretch_starts.size(), 0.0);
   for (std::size_t s = 0; s < stretch_starts.size(); ++s) {
     const std::size_t from = static_cast<std::size_t>(stretch_starts[s]);
     const std::size_t to = static_cast<std::size_t>(stretch_starts[(s + 1) % stretch_starts.size()]);
     std::size_t i = from;
     do {  // a single stretch (from == to) goes once round
-      length_3d[s] += (piece.mesh.V.row(loop[(i + 1) % n]) - piece.mesh.V.row(loop[i])).norm();
+      length_3d[s] += (surface.V.row(loop[(i + 1) % n]) - surface.V.row(loop[i])).norm();
       i = (i + 1) % n;
     } while (i != to);
   }

@@ -48,7 +48,7 @@ struct PieceMoldEdge {
   PieceEdgeSource source;
   double allowance_mm = 0;
   std::vector<Point2> net_points;  // the stretch of the net outline, mm
-  double length_3d_mm = 0;         // the same stretch on the last (sewn stretches are held to it in 2D)
+  double length_3d_mm = 0;         // the same stretch on the surface flattened (sewn stretches are held to it in 2D)
   std::vector<int> outline_vertices;  // the stretch's vertices of the piece's mesh, corner to corner, CCW in UV
 };
 
@@ -69,9 +69,13 @@ struct PieceMoldOptions {
   // Hold the sewn stretches (style lines, cut centre seams) at their 3D length after flattening
   // (arap_held_lengths.hpp), so both pieces of a seam have its length; off: plain ARAP, as the halves.
   bool hold_sewn_lengths = true;
+  // Flatten the surface moved this far off the last (mm, piece_thickness.hpp: half the material's
+  // thickness, its mid-surface); 0: the last's surface. The stretches are told on the surface as cut.
+  double surface_offset_mm = 0;
 };
 
-// Throws EngineError (one line, naming the piece) when the piece is not a disk or its flattening overlaps.
+// Throws EngineError (one line, naming the piece) when the piece is not a disk, its offset surface folds or
+// its flattening overlaps.
 PieceMold make_piece_mold(const PieceSurface& piece, const PieceEdgeCurves& curves, const AllowanceRule& allowance_of,
                           const PieceMoldOptions& options = {});
 

@@ -42,6 +42,7 @@ nlohmann::json piece_json(const std::vector<std::string>& line_names, const Styl
   return {{"name", piece.spec.name},
           {"material", piece.spec.material},
           {"quantity_per_shoe", piece.spec.quantity},
+          {"thickness_mm", piece.thickness_mm},
           {"file", piece_file_stem(piece.spec.name) + ".dxf"},
           {"area_3d_mm2", piece.surface.area_mm2},
           {"D_angle", m.D_angle},

@@ -16,7 +16,7 @@ struct SeamReport {
   std::string seam;                          // the line's name, "front seam", "back seam"
   std::vector<std::string> one_side, other_side;  // the pieces
   double one_side_mm = 0, other_side_mm = 0;      // their net stretches' flattened lengths along it
-  double length_3d_mm = 0;                        // the same stretches of one side on the last
+  double length_3d_mm = 0;                        // the same stretches of one side in 3D (mid-surface of a thick piece)
   double difference_mm() const { return one_side_mm - other_side_mm; }
 };
 

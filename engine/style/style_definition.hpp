@@ -44,6 +44,9 @@ struct StylePiece {
   // material's default in the cutting room's configuration.
   std::optional<double> grain_tolerance_deg;  // grain line along the hide's backbone within this
   std::optional<int> min_quality;             // lowest leather grade the piece may lie on
+  // The material's thickness (mm): the piece is flattened from its mid-surface, half of it off the last
+  // (piece_thickness.hpp). nullopt: the style's thickness_mm.
+  std::optional<double> thickness_mm;
 };
 
 struct StyleDefinition {
@@ -54,6 +57,7 @@ struct StyleDefinition {
   std::vector<StylePiece> pieces;
   StyleAllowances allowances;
   double balance_notch_spacing_mm = 50;  // along every seam (piece_notches.hpp)
+  double thickness_mm = 0;  // of every piece that gives none; 0: flattened from the last's own surface
 };
 
 }  // namespace lastcut

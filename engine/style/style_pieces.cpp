@@ -4,6 +4,7 @@
 
 #include "engine/core/engine_error.hpp"
 #include "engine/style/piece_surface.hpp"
+#include "engine/style/piece_thickness.hpp"
 #include "engine/style/style_transfer.hpp"
 #include "engine/style/upper_regions.hpp"
 
@@ -89,11 +90,14 @@ StyleResult make_style_pieces(const StyleDefinition& style, const ScanResult& re
   for (std::size_t p = 0; p < regions.size(); ++p) {
     StylePieceResult piece;
     piece.spec = style.pieces[p];
+    piece.thickness_mm = piece.spec.thickness_mm.value_or(style.thickness_mm);
+    PieceMoldOptions options = mold_options;
+    options.surface_offset_mm = mid_surface_offset_mm(piece.thickness_mm);
     try {
       piece.surface = cut_piece_surface(halves, regions[p]);
       piece.mold = make_piece_mold(
           piece.surface, curves, [&](const PieceEdgeSource& source) { return style_allowance(style, piece.spec.name, source); },
-          mold_options);
+          options);
     } catch (const EngineError& error) {
       const std::string reason = error.what();
       if (reason.find("piece " + piece.spec.name) != std::string::npos) throw;

@@ -1,9 +1,10 @@
 #pragma once
 // A style's pieces on a scanned last, start to end (issue 34, points 2 and 3): the style's lines and
 // labels are transferred from the reference last (style_transfer.hpp), the new last's upper is split
-// into the pieces (upper_regions.hpp), each piece's surface is cut out (piece_surface.hpp), flattened
-// and grown by its allowances (piece_mold.hpp), and given its notches (piece_notches.hpp) and grain
-// line (piece_grain.hpp); the seams' lengths on both sides are reported (seam_report.hpp).
+// into the pieces (upper_regions.hpp), each piece's surface is cut out (piece_surface.hpp), moved off
+// the last by half its thickness (piece_thickness.hpp), flattened and grown by its allowances
+// (piece_mold.hpp), and given its notches (piece_notches.hpp) and grain line (piece_grain.hpp); the
+// seams' lengths on both sides are reported (seam_report.hpp).
 #include <string>
 #include <vector>
 
@@ -18,7 +19,8 @@ namespace lastcut {
 
 struct StylePieceResult {
   StylePiece spec;
-  PieceSurface surface;  // 3D, the new last's canonical frame
+  PieceSurface surface;  // 3D, the new last's canonical frame, on the last (not moved by the thickness)
+  double thickness_mm = 0;  // its material's: flattened from its mid-surface, half of it off the last
   PieceMold mold;        // its marks are the notches below, as cut
   std::vector<PieceNotch> notches;
   GrainLine grain;
@@ -33,9 +35,10 @@ struct StyleResult {
 };
 
 // reference, target: scan_to_molds of the reference last and of the new one, both segmented with
-// named halves. Throws EngineError (one line) when the style does not fit: a line rule or seam cut
-// naming no line, a seam cut's line that does not cross its seam, a label off the upper, a region
-// without a label or with two, a piece that is not one patch.
+// named halves; mold_options.surface_offset_mm is set per piece from its thickness. Throws EngineError
+// (one line) when the style does not fit: a line rule or seam cut naming no line, a seam cut's line
+// that does not cross its seam, a label off the upper, a region without a label or with two, a piece
+// that is not one patch or whose mid-surface folds.
 StyleResult make_style_pieces(const StyleDefinition& style, const ScanResult& reference, const ScanResult& target,
                               const PieceMoldOptions& mold_options = {});
 
