@@ -5,8 +5,10 @@
 // reference)), so every line, seam cut, label and piece is tried exactly as drawn (refused with the
 // engine's line, exit 1). On success it prints one line per piece (material, quantity, 3D area, its edges
 // and their allowances) and draws every piece's region on the reference's two flattened halves
-// (engine/style/style_check_svg.hpp), by default DIR/check.svg.
+// (engine/style/style_check_svg.hpp), by default DIR/check.svg; the pieces of each further layer (the
+// linings) in a picture of their own beside it, check-<layer>.svg.
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -40,15 +42,26 @@ const SegmentResult& half_named(const ScanResult& scan, const std::string& name)
   throw EngineError("the reference last has no " + name + " half");
 }
 
-// The pieces, their labels and the style's lines on the reference's halves, as the picture draws them.
-StyleCheckSheet check_sheet(const StyleDefinition& style, const ScanResult& reference, const StyleResult& result) {
+// The pieces of one layer ("": the outer pieces), their labels and the lines that part them on the
+// reference's halves, as the picture draws them.
+StyleCheckSheet check_sheet(const StyleDefinition& style, const ScanResult& reference, const StyleResult& result,
+                            const std::string& layer) {
+  std::vector<StylePieceResult> pieces;
+  for (const StylePieceResult& piece : result.pieces)
+    if (piece.spec.layer == layer) pieces.push_back(piece);
+  std::vector<std::string> layer_lines;
+  for (const StyleLayer& named : style.layers)
+    if (named.name == layer) layer_lines = named.lines;
   StyleCheckSheet sheet;
-  sheet.title = "style " + style.name + " on its reference last: " + std::to_string(result.pieces.size()) + " pieces";
+  sheet.title = "style " + style.name + (layer.empty() ? "" : ", layer " + layer + ",") + " on its reference last: " +
+                std::to_string(pieces.size()) + " pieces";
   sheet.halves = {&half_named(reference, "medial"), &half_named(reference, "lateral")};
-  sheet.pieces = piece_formes(sheet.halves, result.pieces);
+  sheet.pieces = piece_formes(sheet.halves, pieces);
   const StyleTransfer onto_itself(reference, reference);
-  for (const StylePieceResult& piece : result.pieces) sheet.labels.push_back(onto_itself.transfer_point(piece.spec.label_mm));
-  for (const StyleLine& line : style.lines) sheet.lines.emplace_back(line.name, onto_itself.transfer_curve(line.points_mm));
+  for (const StylePieceResult& piece : pieces) sheet.labels.push_back(onto_itself.transfer_point(piece.spec.label_mm));
+  for (const StyleLine& line : style.lines)
+    if (layer.empty() || std::find(layer_lines.begin(), layer_lines.end(), line.name) != layer_lines.end())
+      sheet.lines.emplace_back(line.name, onto_itself.transfer_curve(line.points_mm));
   return sheet;
 }
 
@@ -75,13 +88,21 @@ int run_style_check(const CheckArguments& arguments) {
   try {
     const ScanResult reference = daemon::prepare_style_reference(*folder);
     const StyleResult result = make_style_pieces(folder->style, reference, reference);
-    write_style_check_svg(svg, check_sheet(folder->style, reference, result));
+    write_style_check_svg(svg, check_sheet(folder->style, reference, result, ""));
+    std::vector<fs::path> drawn = {svg};
+    for (const StyleLayer& layer : folder->style.layers) {
+      drawn.push_back(fs::path(svg).replace_filename(svg.stem().string() + "-" + layer.name + svg.extension().string()));
+      write_style_check_svg(drawn.back(), check_sheet(folder->style, reference, result, layer.name));
+    }
     for (const StylePieceResult& piece : result.pieces)
       std::printf("%-16s %-14s x%d  %7.0f mm2  edges (mm): %s\n", piece.spec.name.c_str(), piece.spec.material.c_str(),
                   piece.spec.quantity, piece.surface.area_mm2, edges_text(folder->style, piece).c_str());
     for (const std::string& note : result.notes) std::printf("note: %s\n", note.c_str());
-    std::printf("style %s is OK: %zu pieces cover its reference last's upper (%.0f of %.0f mm2); drawn in %s\n",
-                folder->style.name.c_str(), result.pieces.size(), result.pieces_area_mm2, result.upper_area_mm2, svg.c_str());
+    std::string drawn_in;
+    for (const fs::path& file : drawn) drawn_in += (drawn_in.empty() ? "" : ", ") + file.string();
+    std::printf("style %s is OK: %zu pieces, the outer ones cover its reference last's upper (%.0f of %.0f mm2); drawn in %s\n",
+                folder->style.name.c_str(), result.pieces.size(), result.pieces_area_mm2, result.upper_area_mm2,
+                drawn_in.c_str());
     return 0;
   } catch (const std::exception& error) {  // EngineError among them: one line either way
     print_error(error.what());

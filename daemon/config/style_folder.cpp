@@ -1,5 +1,7 @@
 #include "daemon/config/style_folder.hpp"
 
+#include <algorithm>
+
 #include <toml++/toml.h>
 
 #include "daemon/config/table_reader.hpp"
@@ -103,7 +105,19 @@ Result<StyleFolder> read_style_folder(const std::filesystem::path& folder) {
     else if (seam == "back") cut.seam = EdgeKind::BackSeam;
     else errors.push_back(reader.key_path("seam") + ": must be \"front\" or \"back\"");
     reader.text("from_line", cut.from_line);
+    reader.text("layer", cut.layer);
     result.style.seam_cuts.push_back(cut);
+  });
+  each_table(root, "layer", errors, [&](TableReader& reader) {
+    StyleLayer layer;
+    reader.text("name", layer.name, true);
+    const toml::node* lines = reader.node("lines");
+    const toml::array* names = lines ? lines->as_array() : nullptr;
+    if (!names || !std::all_of(names->begin(), names->end(), [](const toml::node& n) { return n.is_string(); }))
+      errors.push_back(reader.key_path("lines") + ": must be a list of the style's line names, [\"vamp\"] ([] when no line parts it)");
+    else
+      for (const toml::node& name : *names) layer.lines.push_back(*name.value<std::string>());
+    result.style.layers.push_back(layer);
   });
   each_table(root, "piece", errors, [&](TableReader& reader) {
     StylePiece piece;
@@ -120,6 +134,7 @@ Result<StyleFolder> read_style_folder(const std::filesystem::path& folder) {
       errors.push_back(reader.key_path("label") + ": missing (required)");
     }
     reader.text("material", piece.material);
+    reader.text("layer", piece.layer);
     reader.integer("quantity", piece.quantity, 1, 20);
     reader.number("grain_deg", piece.grain_deg, -180, 180);
     double grain_tolerance_deg = -1;  // absent: the material's default
@@ -134,6 +149,15 @@ Result<StyleFolder> read_style_folder(const std::filesystem::path& folder) {
     result.style.pieces.push_back(piece);
   });
   root.reject_unknown();
+  // Every layer a piece or seam cut names is a [[layer]] (the outer pieces name none).
+  const auto has_layer = [&](const std::string& name) {
+    return name.empty() || std::any_of(result.style.layers.begin(), result.style.layers.end(),
+                                       [&](const StyleLayer& layer) { return layer.name == name; });
+  };
+  for (const StylePiece& piece : result.style.pieces)
+    if (!has_layer(piece.layer)) errors.push_back("piece \"" + piece.name + "\": layer \"" + piece.layer + "\" is not a [[layer]]");
+  for (const StyleSeamCut& cut : result.style.seam_cuts)
+    if (!has_layer(cut.layer)) errors.push_back("seam_cut: layer \"" + cut.layer + "\" is not a [[layer]]");
   if (result.style.pieces.empty() && forme_file.empty() && errors.empty()) errors.push_back("no [[piece]]: a style needs at least one piece");
   if (errors.empty()) {
     try {

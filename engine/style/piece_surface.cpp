@@ -7,6 +7,7 @@
 #include "engine/core/engine_error.hpp"
 #include "engine/mesh/short_edge_collapse.hpp"
 #include "engine/mold/clipper_paths.hpp"
+#include "engine/style/seam_welds.hpp"
 
 namespace lastcut {
 namespace {
@@ -202,10 +203,14 @@ class WeldedVertices {
 
 }  // namespace
 
-PieceSurface cut_piece_surface(const std::array<const SegmentResult*, 2>& halves, const PieceRegion& piece) {
+PieceSurface cut_piece_surface(const std::array<const SegmentResult*, 2>& halves, const PieceRegion& piece,
+                               const std::vector<SeamCut>& seam_cuts) {
   PieceSurface surface;
   surface.name = piece.name;
   WeldedVertices vertices;
+  const SeamWelds welds(halves, piece, seam_cuts);
+  // A point on its half's outline may be one with the other half's only where the piece is sewn across the seam.
+  const auto weldable = [&](const Eigen::Vector3d& p, bool on_outline) { return on_outline && welds.weldable(p); };
   std::vector<std::array<int, 3>> faces;
   for (std::size_t part_index_size = 0; part_index_size < piece.parts.size(); ++part_index_size) {
     const HalfRegion& part = piece.parts[part_index_size];
@@ -268,8 +273,9 @@ PieceSurface cut_piece_surface(const std::array<const SegmentResult*, 2>& halves
         if (keep[static_cast<std::size_t>(f)]) {
           std::array<int, 3> face;
           for (int k = 0; k < 3; ++k)
-            face[static_cast<std::size_t>(k)] = vertices.add(xyz[static_cast<std::size_t>(k)], part_index,
-                                                             on_half_outline[static_cast<std::size_t>(half.mesh3d.F(f, k))]);
+            face[static_cast<std::size_t>(k)] =
+                vertices.add(xyz[static_cast<std::size_t>(k)], part_index,
+                             weldable(xyz[static_cast<std::size_t>(k)], on_half_outline[static_cast<std::size_t>(half.mesh3d.F(f, k))]));
           faces.push_back(face);
         }
         continue;
@@ -304,7 +310,8 @@ PieceSurface cut_piece_surface(const std::array<const SegmentResult*, 2>& halves
                          (half.topology.face_across(f, k) < 0 && distance_to_segment(p, a, uv[static_cast<std::size_t>((k + 1) % 3)]) < kOnOutline_mm) ||
                          (on_half_outline[static_cast<std::size_t>(half.mesh3d.F(f, k))] && (p - a).norm() < kOnOutline_mm);
           }
-          ids.push_back(vertices.add(w0 * xyz[0] + w1 * xyz[1] + (1 - w0 - w1) * xyz[2], part_index, on_outline));
+          const Eigen::Vector3d lifted = w0 * xyz[0] + w1 * xyz[1] + (1 - w0 - w1) * xyz[2];
+          ids.push_back(vertices.add(lifted, part_index, weldable(lifted, on_outline)));
         }
         for (const auto& t : ear_clip(polygon)) {
           std::array<int, 3> face{ids[static_cast<std::size_t>(t[0])], ids[static_cast<std::size_t>(t[1])], ids[static_cast<std::size_t>(t[2])]};

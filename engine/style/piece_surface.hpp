@@ -33,7 +33,10 @@ struct PieceSurface {
   int clipped_triangles = 0;  // triangles of the halves cut by the piece's outline
 };
 
-// halves: the new last's medial and lateral halves (the ones piece_regions was given).
-PieceSurface cut_piece_surface(const std::array<const SegmentResult*, 2>& halves, const PieceRegion& piece);
+// halves: the new last's medial and lateral halves (the ones piece_regions was given); seam_cuts: the
+// cut stretches of the seams (the ones piece_regions was given): the piece's parts on the two halves are
+// one only where it is sewn across a seam (seam_welds.hpp).
+PieceSurface cut_piece_surface(const std::array<const SegmentResult*, 2>& halves, const PieceRegion& piece,
+                               const std::vector<SeamCut>& seam_cuts = {});
 
 }  // namespace lastcut

@@ -7,6 +7,12 @@
 // margin (18 mm, folded under the insole), the top edge is folded (5 mm), a style line gives the piece
 // that lies under its neighbour the underlay (8 mm) and the other one a butted or raw edge (0), a cut
 // seam is butted (0).
+//
+// Layers: the outer pieces (vamp, quarters, counter) tile the upper and are cut along every style line.
+// A second layer over the same upper, the linings, is cut along fewer lines (a StyleLayer names them):
+// a derby's linings part where the vamp meets the quarters, while one quarter lining runs round the heel
+// under the counter. Each layer tiles the whole upper on its own, with its own seam cuts; its pieces
+// are flattened, notched and allowed for exactly as the outer ones.
 #include <Eigen/Core>
 #include <optional>
 #include <string>
@@ -32,12 +38,20 @@ struct StyleLineRule {
 struct StyleSeamCut {
   EdgeKind seam = EdgeKind::BackSeam;  // FrontSeam or BackSeam
   std::string from_line;               // cut from where this line crosses the seam up to the top edge; empty: all of it
+  std::string layer;                   // the layer whose pieces it parts; "": the outer pieces
+};
+
+// A layer of pieces under the outer ones (the linings).
+struct StyleLayer {
+  std::string name;                // e.g. "lining"; a piece and a seam cut name it in their `layer`
+  std::vector<std::string> lines;  // the style lines that part this layer's pieces; the others run over them
 };
 
 struct StylePiece {
   std::string name;
   Eigen::Vector3d label_mm = Eigen::Vector3d::Zero();  // a point inside the piece on the reference last (its scan's frame)
   std::string material = "upper leather";
+  std::string layer;  // "": the outer pieces; else a StyleLayer's name
   int quantity = 1;  // per shoe
   double grain_deg = 0;  // the grain line, counter-clockwise from the last's heel-to-toe axis (piece_grain.hpp)
   // What the piece asks of the leather when it is cut (engine/nest/pattern_items.hpp); nullopt: the
@@ -54,6 +68,7 @@ struct StyleDefinition {
   std::vector<StyleLine> lines;  // on the reference last, in its scan's frame (mm)
   std::vector<StyleLineRule> line_rules;
   std::vector<StyleSeamCut> seam_cuts;
+  std::vector<StyleLayer> layers;  // beside the outer pieces: each tiles the upper again (the linings)
   std::vector<StylePiece> pieces;
   StyleAllowances allowances;
   double balance_notch_spacing_mm = 50;  // along every seam (piece_notches.hpp)

@@ -29,8 +29,8 @@ struct StylePieceResult {
 struct StyleResult {
   std::vector<StylePieceResult> pieces;  // in the style's order
   double upper_area_mm2 = 0;             // the new last's two halves
-  double pieces_area_mm2 = 0;            // the pieces' 3D surfaces, together
-  std::vector<SeamReport> seams;         // every sewn curve: its length on the pieces of both sides
+  double pieces_area_mm2 = 0;            // the outer pieces' 3D surfaces, together (each layer covers the upper again)
+  std::vector<SeamReport> seams;         // every sewn curve: its length on the pieces of both sides ("vamp (lining)": a layer's)
   std::vector<std::string> notes;        // one line each: points of lines off the upper, ...
 };
 

@@ -200,6 +200,7 @@ TransferredCurve StyleTransfer::transfer_curve(const std::vector<Eigen::Vector3d
 }
 
 std::vector<std::vector<Eigen::Vector3d>> runs_on_upper(const TransferredCurve& curve) {
+  if (curve.points.empty()) return {};  // a line that does not part this layer's pieces (style_pieces.cpp)
   std::vector<std::vector<Eigen::Vector3d>> runs(1);
   for (std::size_t i = 0; i < curve.points.size(); ++i) {
     const Eigen::Vector3d& p = curve.points[i].position_mm;

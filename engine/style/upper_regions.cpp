@@ -164,6 +164,7 @@ std::vector<PieceRegion> piece_regions(const std::array<const SegmentResult*, 2>
 
   // Regions that meet across a seam are one piece.
   UnionFind joined(regions.size());
+  std::vector<std::pair<int, PieceRegion::SeamJoin>> joins;  // (a region, the sample that joined it to the other half)
   std::array<FormeBoundary, 2> boundaries = {
       forme_boundary(halves[0]->mesh3d, halves[0]->topology, halves[0]->landmarks),
       forme_boundary(halves[1]->mesh3d, halves[1]->topology, halves[1]->landmarks)};
@@ -187,7 +188,10 @@ std::vector<PieceRegion> piece_regions(const std::array<const SegmentResult*, 2>
         if (distance_to_runs(runs[h], p) < kNearCrossing_mm) break;
         region[h] = region_at(regions, first[h], count[h], inset(outlines[h], p, b - a));
       }
-      if (region[0] >= 0 && region[1] >= 0) joined.join(region[0], region[1]);
+      if (region[0] >= 0 && region[1] >= 0) {
+        joined.join(region[0], region[1]);
+        joins.push_back({region[0], {seam, share}});
+      }
     }
   }
 
@@ -210,6 +214,8 @@ std::vector<PieceRegion> piece_regions(const std::array<const SegmentResult*, 2>
     if (owner < 0) throw EngineError("the region at the " + where(regions[r]) + " has no piece: a label is missing or a line does not reach an edge");
     pieces[static_cast<std::size_t>(owner)].parts.push_back(regions[r]);
   }
+  for (const auto& [region, join] : joins)
+    pieces[static_cast<std::size_t>(piece_of_group[static_cast<std::size_t>(joined.find(region))])].joins.push_back(join);
   return pieces;
 }
 

@@ -34,6 +34,12 @@ struct HalfRegion {
 struct PieceRegion {
   std::string name;
   std::vector<HalfRegion> parts;  // one per half it lies on, or more where a half is split between its parts
+  // The seam samples at which its parts on the two halves were found to meet: where it is sewn across.
+  struct SeamJoin {
+    EdgeKind seam = EdgeKind::BackSeam;
+    double share = 0;  // of the seam's length from its first landmark (forme_boundary.hpp)
+  };
+  std::vector<SeamJoin> joins;
 };
 
 // A stretch of a centre seam the pieces are cut apart along (a derby's lacing opening, the quarters'

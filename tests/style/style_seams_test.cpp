@@ -57,7 +57,7 @@ class StyleSeams : public ::testing::Test {
     static const test::TempDir dir("style-seams");
     dir_ = &dir;
     styles_ = new std::map<std::string, StyleDefinition>;
-    for (const char* name : {"derby", "loafer"}) {  // both drawn on the generated EU 42 right last
+    for (const char* name : {"derby", "loafer", "derby-lined"}) {  // all drawn on the generated EU 42 right last
       const Result<daemon::StyleFolder> folder = daemon::read_style_folder(fs::path(LASTCUT_SOURCE_DIR) / "config" / "styles" / name);
       ASSERT_TRUE(folder) << folder.error();
       ASSERT_TRUE(folder->generated_reference);
@@ -261,6 +261,56 @@ TEST_F(StyleSeams, ItemsCarryTheStylesLeatherRules) {
   for (StylePiece& piece : derby.pieces) piece.min_quality.reset(), piece.grain_tolerance_deg.reset();
   EXPECT_EQ(style_piece_rules(derby.pieces[0], spec.material_rules).grain_tolerance_deg, 45);  // the material's
   EXPECT_EQ(style_piece_rules(derby.pieces[0], {}).grain_tolerance_deg, std::nullopt);          // free
+}
+
+// The lined derby (config/styles/derby-lined): the derby's outer pieces and a layer of linings parted only
+// by the vamp line (style_definition.hpp, layers). Checked against the plain derby on the same last, and
+// against the upper itself: the outer pieces come out exactly as the derby's; the linings cover the upper
+// again, the vamp lining exactly where the vamp lies and the quarter lining where the two quarters and the
+// counter lie, as one piece round the heel (its parts on both halves sewn below the counter line only:
+// open at the lacing and above the counter, so one outline); the lining's own seam along the vamp line
+// matches on both sides.
+TEST_F(StyleSeams, TheLinedDerbysLiningsCoverTheUpperAgainAsOnePieceRoundTheHeel) {
+  const TestLast last{44, FootSide::Left};
+  const StyleResult plain = cut("derby", last);
+  const StyleResult lined = cut("derby-lined", last);
+  ASSERT_EQ(lined.pieces.size(), plain.pieces.size() + 2);
+  std::map<std::string, const StylePieceResult*> piece;
+  for (const StylePieceResult& p : lined.pieces) piece[p.spec.name] = &p;
+  for (const StylePieceResult& outer : plain.pieces) {
+    const StylePieceResult& same = *piece.at(outer.spec.name);
+    EXPECT_EQ(same.spec.layer, "");
+    EXPECT_EQ(same.surface.mesh.F.rows(), outer.surface.mesh.F.rows()) << outer.spec.name;
+    EXPECT_NEAR(signed_area(same.mold.mold.outline), signed_area(outer.mold.mold.outline), 1e-9) << outer.spec.name;
+  }
+  const double area_tolerance = 1e-3;  // of the area: what the style lines' strips and the welds leave out
+  const StylePieceResult& vamp_lining = *piece.at("vamp lining");
+  const StylePieceResult& quarter_lining = *piece.at("quarter lining");
+  EXPECT_EQ(vamp_lining.spec.material, "lining");
+  EXPECT_EQ(quarter_lining.spec.layer, "lining");
+  EXPECT_NEAR(vamp_lining.surface.area_mm2, piece.at("vamp")->surface.area_mm2, area_tolerance * vamp_lining.surface.area_mm2);
+  const double behind_vamp_mm2 = piece.at("medial quarter")->surface.area_mm2 + piece.at("lateral quarter")->surface.area_mm2 +
+                                 piece.at("counter")->surface.area_mm2;
+  EXPECT_NEAR(quarter_lining.surface.area_mm2, behind_vamp_mm2, area_tolerance * behind_vamp_mm2);
+  EXPECT_NEAR(vamp_lining.surface.area_mm2 + quarter_lining.surface.area_mm2, lined.upper_area_mm2,
+              area_tolerance * lined.upper_area_mm2);
+  EXPECT_NEAR(lined.pieces_area_mm2, plain.pieces_area_mm2, 1e-6) << "the outer pieces tile the upper, the linings again";
+  // Round the heel: its outline runs along both sides of the lacing (the front seam twice) and of the
+  // back seam above the counter, and its flattening keeps the surface's area (ARAP, thesis 2.3).
+  std::map<PieceEdgeSource::Kind, int> stretches;
+  for (const PieceMoldEdge& edge : quarter_lining.mold.edges) ++stretches[edge.source.kind];
+  EXPECT_EQ(stretches[PieceEdgeSource::Kind::FrontSeam], 2);
+  EXPECT_GE(stretches[PieceEdgeSource::Kind::BackSeam], 1);
+  EXPECT_EQ(stretches[PieceEdgeSource::Kind::Feather], 1);
+  EXPECT_NEAR(std::abs(signed_area(quarter_lining.mold.mold.net)), quarter_lining.surface.area_mm2, 0.02 * quarter_lining.surface.area_mm2);
+  const auto lining_vamp_seam = std::find_if(lined.seams.begin(), lined.seams.end(), [](const SeamReport& s) { return s.seam == "vamp (lining)"; });
+  ASSERT_NE(lining_vamp_seam, lined.seams.end());
+  EXPECT_EQ(lining_vamp_seam->one_side.size() + lining_vamp_seam->other_side.size(), 2u);
+  EXPECT_LE(std::abs(lining_vamp_seam->difference_mm()), kSeamMismatch_mm);
+  std::printf("lined derby on EU 44 left: vamp lining %.0f mm2 (vamp %.0f), quarter lining %.0f mm2 (quarters and counter %.0f), "
+              "upper %.0f mm2; lining vamp seam %+.2f mm\n",
+              vamp_lining.surface.area_mm2, piece.at("vamp")->surface.area_mm2, quarter_lining.surface.area_mm2, behind_vamp_mm2,
+              lined.upper_area_mm2, lining_vamp_seam->difference_mm());
 }
 
 }  // namespace
