@@ -91,7 +91,8 @@ std::vector<PieceOrder> write_piece_orders(const std::filesystem::path& staging)
   std::filesystem::create_directories(staging);
   std::vector<PieceOrder> orders = {
       {"derby-201.stl", "order = \"201\"\nstyle = \"derby\"\nside = \"pair\"\nsize = \"40\"\nmaterial = \"leather\"\n", "201"},
-      {"derby-202.stl", "order = \"202\"\nstyle = \"derby\"\nside = \"pair\"\nsize = \"44\"\nmaterial = \"leather\"\n", "202"},
+      // The lined derby: its linings are of material lining, cut from the roll before its leather (two parts).
+      {"derby-202.stl", "order = \"202\"\nstyle = \"derby-lined\"\nside = \"pair\"\nsize = \"44\"\nmaterial = \"leather\"\n", "202"},
       {"loafer-203.stl", "order = \"203\"\nstyle = \"loafer\"\nside = \"pair\"\nsize = \"38\"\nmaterial = \"leather\"\n", "203"},
       // The materials from the pieces' Category: the tongues of leather (hides, cutter-1), the linings of
       // the lining roll (on cutter-2, the material's cutter).
@@ -188,8 +189,9 @@ int expect_every_order_cut_once(const std::vector<PieceOrder>& orders, const std
     pieces += item.demand;
     EXPECT_EQ(cut.times_cut[label], item.demand) << label;
   }
-  // Two derby pairs (4 pieces a foot), a loafer pair (5 a foot), the tongue and its linings (1 + 3 a foot).
-  EXPECT_EQ(pieces, 2 * 8 + 10 + 2 + 6);
+  // A derby pair (4 pieces a foot), a lined derby pair (4 + 2 linings a foot), a loafer pair (5 a foot),
+  // the tongue and its linings (1 + 3 a foot).
+  EXPECT_EQ(pieces, 8 + 12 + 10 + 2 + 6);
   // Each order's leather on one hide (a pair from one hide), its linings on the roll.
   for (const PieceOrder& order : orders) {
     std::set<std::string> hides, rolls;
@@ -199,7 +201,7 @@ int expect_every_order_cut_once(const std::vector<PieceOrder>& orders, const std
     }
     EXPECT_EQ(hides.size(), 1u) << order.order;
     EXPECT_FALSE(hides.empty() || hides.begin()->empty()) << order.order << ": its leather is not on a hide";
-    EXPECT_EQ(rolls.size(), order.order == "301" ? 1u : 0u) << order.order;
+    EXPECT_EQ(rolls.size(), order.order == "301" || order.order == "202" ? 1u : 0u) << order.order;
     if (!rolls.empty()) {
       EXPECT_EQ(*rolls.begin(), "") << order.order << ": its linings are not on the roll";
     }

@@ -1,7 +1,8 @@
 #pragma once
 // Issue 35's cutting room for the end-to-end tests of both stores (tests/daemon/pieces_daemon_test.cpp,
-// tests/ledger/ledger_pieces_test.cpp): two derby orders and a loafer order, each a pair from one
-// scanned last (the shipped styles, config/styles), and a DXF-AAMA pattern set of a tongue of leather
+// tests/ledger/ledger_pieces_test.cpp): a derby order, a lined derby order (its linings of the lining
+// roll: a job of two parts) and a loafer order, each a pair from one scanned last (the shipped styles,
+// config/styles), and a DXF-AAMA pattern set of a tongue of leather
 // and its linings, whose Categories name the hides' leather and the lining roll (a job cut in two parts); hide files with two poor zones and a backbone along x. The checks
 // read the cut files themselves (gcode_pieces.hpp), never the nester's layout: every piece of every
 // order cut exactly once, each by its label, a pair's pieces on one hide, every piece off the zones
@@ -51,7 +52,7 @@ void check_cut_file(const std::string& gcode, const std::string& batch, const st
 inline constexpr double kPieceHideWidth_mm = 1250, kPieceHideHeight_mm = 850;
 
 // What both stores' tests expect of the cut files, as gtest failures: no problem found, every item cut
-// exactly its demand, 34 pieces in all, each order's leather on one hide (the linings, order 301, on the roll),
+// exactly its demand, 38 pieces in all, each order's leather on one hide (the linings of 202 and 301 on the roll),
 // every leather piece checked against each zone below its grade and for its grain. Returns the pieces.
 int expect_every_order_cut_once(const std::vector<PieceOrder>& orders, const std::map<std::string, NestItem>& items,
                                 CutPieces& cut);

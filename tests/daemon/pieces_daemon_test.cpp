@@ -1,5 +1,5 @@
-// lastcutd cutting a shoe's pieces (issue 35), one station, the real binaries: two derby orders and
-// a loafer order (each a pair from one scanned last, pieces made with the shipped styles) and a
+// lastcutd cutting a shoe's pieces (issue 35), one station, the real binaries: a derby order, a lined
+// derby order (its linings cut from the roll before its leather) and a loafer order (each a pair from one scanned last, pieces made with the shipped styles) and a
 // DXF-AAMA pattern set of a tongue and its linings are dropped together; leather hides with poor zones
 // and a backbone are dropped for cutter-1 until every order is cut, the linings go to the roll on
 // cutter-2 (order 301 is one job of two materials, cut in two parts). Checked
