@@ -84,6 +84,7 @@ void read_jobs(TableReader& root, DaemonConfig& config, std::vector<std::string>
   for (auto [key, value] : {std::pair{"default_seam_notch_spacing_mm", config.jobs.default_seam_notch_spacing_mm},
                             std::pair{"default_feather_notch_spacing_mm", config.jobs.default_feather_notch_spacing_mm}})
     if (value > 0 && value < 5) errors.push_back(std::string("jobs.") + key + ": must be 0 (off) or from 5 to 500");
+  jobs.boolean("draw_sew_lines", config.jobs.draw_sew_lines);
   jobs.integer("compute_workers", config.jobs.compute_workers, 1, 64);
   jobs.number("stop_grace_s", config.jobs.stop_grace_s, 0, 3600);
   jobs.reject_unknown();

@@ -48,6 +48,9 @@ struct JobsConfig {
   // any non-zero per-edge default makes molds per-edge (docs/mold-allowances.md).
   double default_lasting_mm = 0, default_seam_mm = 0, default_top_mm = 0;
   double default_seam_notch_spacing_mm = 0, default_feather_notch_spacing_mm = 0;
+  // The pen also draws the pieces' sew lines (DXF-AAMA layer 14; a style piece's seams), besides their
+  // internal lines (layer 8): the closing room stitches along them. False: internal lines only.
+  bool draw_sew_lines = true;
   int compute_workers = 1;          // scans computed at the same time
   double stop_grace_s = 60;         // on SIGTERM, a cut in progress may finish this long, then it is held
 };

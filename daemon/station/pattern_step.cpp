@@ -65,6 +65,7 @@ Result<MoldsMade> compute_pattern_items(const std::filesystem::path& pattern, co
     PatternNestSpec spec;
     spec.sets = ticket.quantity;
     spec.mirrored_twins = ticket.side == "pair";
+    spec.draw_sew_lines = settings.jobs.draw_sew_lines;
     spec.rules = [&](const PatternPiece& piece) {
       return material_named(piece_material(piece.category, material, settings), settings).rules;
     };

@@ -69,6 +69,7 @@ Result<MoldsMade> compute_style_pieces(const std::filesystem::path& scan, const 
     spec.foot = foot;
     spec.shoes = ticket.quantity;
     spec.other_foot = ticket.side == "pair";
+    spec.draw_sew_lines = settings.jobs.draw_sew_lines;
     spec.material_rules = [&](const std::string& named) { return material_named(material_of(named), settings).rules; };
     spec.label = [&](const PatternPiece& piece, bool twin) {
       return piece_label_text({ticket.order, scan.filename().string(), ticket.size, twin ? opposite_foot(foot) : foot, piece.name});

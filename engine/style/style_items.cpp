@@ -26,6 +26,7 @@ std::vector<NestItem> items_from_style(const StyleResult& pieces, const StyleNes
   pattern_spec.sets = spec.shoes;
   pattern_spec.mirrored_twins = spec.other_foot;
   pattern_spec.rotations_deg = spec.rotations_deg;
+  pattern_spec.draw_sew_lines = spec.draw_sew_lines;
   pattern_spec.rules = [&](const PatternPiece& piece) { return rules_by_name.at(piece.name); };
   pattern_spec.label = spec.label ? spec.label : [&](const PatternPiece& piece, bool twin) {
     std::string text = spec.style + " " + spec.size + " " + piece.name;

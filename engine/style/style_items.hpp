@@ -19,6 +19,7 @@ struct StyleNestSpec {
   int shoes = 1;               // how many shoes of this foot (a piece's demand is its quantity x shoes)
   bool other_foot = false;     // also the other foot's pieces, mirrored (a pair from one scan)
   std::vector<double> rotations_deg;  // empty = free rotation
+  bool draw_sew_lines = false;        // PatternNestSpec::draw_sew_lines: the seams' lines drawn too
   // The rules of a material where the style gives a piece none (grain free, any grade when empty).
   std::function<PieceRules(const std::string& material)> material_rules;
   // The text on a piece; `twin` is the mirrored copy. Empty: "STYLE SIZE PIECE FOOT".

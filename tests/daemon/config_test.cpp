@@ -70,6 +70,27 @@ TEST(DaemonConfig, WrongTypesAndRangesAreRefused) {
   EXPECT_NE(result.error.find("line 16"), std::string::npos) << result.error;
 }
 
+// A strip material may name the cutter its part of a job of several materials goes to (a configured
+// one); the pen draws sew lines unless [jobs] draw_sew_lines says no.
+TEST(DaemonConfig, AStripMaterialsCutterAndTheSewLinesAreRead) {
+  const auto shipped = load_daemon_config(kSource / "config/lastcut.toml");
+  ASSERT_TRUE(shipped.config) << shipped.error;
+  EXPECT_TRUE(shipped.config->jobs.draw_sew_lines);
+  EXPECT_TRUE(shipped.config->materials.count("lining"));
+  std::string text = minimal();
+  text.replace(text.find("width_mm = 500"), 14, "width_mm = 500\ncutter = \"a\"");
+  text.replace(text.find("default_cutter = \"a\""), 20, "default_cutter = \"a\"\ndraw_sew_lines = false");
+  auto result = load_text(text);
+  ASSERT_TRUE(result.config) << result.error;
+  EXPECT_EQ(result.config->materials.at("calf").cutter, "a");
+  EXPECT_FALSE(result.config->jobs.draw_sew_lines);
+  const std::string material_cutter = "width_mm = 500\ncutter = \"a\"";
+  text.replace(text.find(material_cutter), material_cutter.size(), "width_mm = 500\ncutter = \"b\"");
+  result = load_text(text);
+  ASSERT_FALSE(result.config);
+  EXPECT_NE(result.error.find("materials.calf.cutter: \"b\" is not a [cutters.*] table"), std::string::npos) << result.error;
+}
+
 TEST(DaemonConfig, TheHoleLimitIsReadAndRangeChecked) {
   EXPECT_EQ(load_daemon_config(kSource / "config/lastcut.toml").config->jobs.max_hole_across_mm, 30.0);
   std::string text = minimal();
