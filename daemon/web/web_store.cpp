@@ -15,7 +15,7 @@ constexpr auto kOverviewMaxAge = std::chrono::milliseconds(500);
 
 nlohmann::json job_json(const JobLine& job, const char* list) {
   return {{"id", job.id},       {"state", job.state}, {"where", job.where}, {"order", job.order},
-          {"scan", job.scan},   {"reason", job.reason}, {"list", list}};
+          {"scan", job.scan},   {"reason", job.reason}, {"list", list}, {"parts", job.parts}};
 }
 
 // Scans waiting in the watch folder, not yet taken by the station (names only).

@@ -216,6 +216,8 @@ function drawQueue() {
         link.href = '#job/' + encodeURIComponent(item.job.id);
         line.append(link);
         if (item.job.reason && (key === 'held' || key === 'failed')) line.append(el('div', item.job.reason, 'reason'));
+        // A job of several materials: which pieces wait for which material.
+        if (item.job.parts) line.append(el('div', 'parts: ' + item.job.parts, 'parts'));
         if (key === 'held' || key === 'failed') {
           const again = el('button', 'Requeue', 'requeue');
           again.addEventListener('click', () => act('POST', `/api/jobs/${encodeURIComponent(item.job.id)}/requeue`));
@@ -363,6 +365,7 @@ async function showJob(id) {
   // A done job's "reason" is its last note (where it was cut); only a held or failed one is a problem.
   $('job-reason').textContent = stage === 'held' || stage === 'failed' ? reason : '';
   $('job-line').textContent += stage === 'held' || stage === 'failed' ? '' : ` - ${reason}`;
+  if (line.parts) $('job-line').textContent += ` (parts: ${line.parts})`;
   const requeue = $('job-requeue');
   requeue.hidden = !(stage === 'held' || stage === 'failed');
   requeue.onclick = () => act('POST', `/api/jobs/${encodeURIComponent(id)}/requeue`).then(() => showJob(id));
