@@ -2,6 +2,12 @@
 #include "daemon/job/job_parts.hpp"
 
 namespace lastcut::daemon {
+namespace {
+
+// "4 pieces of lining": how a part is named in every line about it.
+std::string part_pieces(const JobPart& part) { return std::to_string(part.pieces) + " pieces of " + part.material; }
+
+}  // namespace
 
 nlohmann::json parts_to_json(const std::vector<JobPart>& parts) {
   nlohmann::json list = nlohmann::json::array();
@@ -28,7 +34,7 @@ std::string describe_parts(const std::vector<JobPart>& parts) {
   std::string text;
   for (const JobPart& part : parts) {
     if (!text.empty()) text += ", then ";
-    text += std::to_string(part.pieces) + " pieces of " + part.material + " on " + part.cutter;
+    text += part_pieces(part) + " on " + part.cutter;
   }
   return text;
 }
@@ -38,7 +44,7 @@ std::string parts_progress(const std::vector<JobPart>& parts, int current, bool 
   for (int i = 0; i < static_cast<int>(parts.size()); ++i) {
     const char* where = all_cut || i < current ? "cut" : i == current ? "now" : "next";
     if (!text.empty()) text += "; ";
-    text += std::to_string(parts[i].pieces) + " pieces of " + parts[i].material + " " + where;
+    text += part_pieces(parts[static_cast<std::size_t>(i)]) + " " + where;
   }
   return text;
 }

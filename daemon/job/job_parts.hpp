@@ -7,9 +7,9 @@
 // state.json, the ledger in jobs.parts and jobs.part). A job of one material has no parts.
 //
 // Why one after another and not at once: the job keeps one stage and one batch at a time, the life
-// cycle every feature of both stores is written against. The parts' order (see order_parts) puts the
-// rolls and sheets first, which are cut without waiting, so that the leather, which waits for a hide,
-// is what the job waits for last.
+// cycle every feature of both stores is written against. The parts' order (job_parts in
+// daemon/station/job_piece_rules.hpp) puts the rolls and sheets first, which are cut without waiting,
+// so that the leather, which waits for a hide, is what the job waits for last.
 #include <string>
 #include <vector>
 

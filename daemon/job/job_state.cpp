@@ -52,10 +52,8 @@ void JobState::advance(JobStage new_stage, const std::string& note) {
 
 bool JobState::next_part() {
   if (part + 1 >= static_cast<int>(parts.size())) return false;
-  const JobPart& next = parts[++part];
-  ticket.material = next.material;
-  ticket.cutter = next.cutter;
-  piece_count = next.pieces;
+  ++part;
+  take_current_part();
   batch_id.clear();
   return true;
 }
@@ -65,9 +63,14 @@ void JobState::take_parts(const std::vector<JobPart>& computed) {
   parts = computed;
   if (parts.empty()) return;
   if (part < 0 || part >= static_cast<int>(parts.size())) part = 0;
-  ticket.material = parts[part].material;
-  ticket.cutter = parts[part].cutter;
-  piece_count = parts[part].pieces;
+  take_current_part();
+}
+
+void JobState::take_current_part() {
+  const JobPart& current = parts[static_cast<std::size_t>(part)];
+  ticket.material = current.material;
+  ticket.cutter = current.cutter;
+  piece_count = current.pieces;
 }
 
 std::string JobState::label() const {

@@ -43,6 +43,8 @@ struct JobState {
   // place when the parts are the same, else starts again at the first part. The current part's targets
   // become the job's. Nothing changes for a job of one material but its parts emptied.
   void take_parts(const std::vector<JobPart>& computed);
+  // The current part's material, cutter and pieces become the job's (parts[part] must exist).
+  void take_current_part();
   // Moves to `new_stage`, stamping the time and appending to the history.
   void advance(JobStage new_stage, const std::string& note = "");
   // "order 4711 (scan last.stl, job 20261121-235000-001)": how log lines name a job.
