@@ -21,13 +21,38 @@ struct JobPart {
   std::string material;  // a configured material's name
   std::string cutter;    // the cutter its batches go to
   int pieces = 0;        // the pieces to cut of this material (items x demand)
+  // A part split over hides (split_part): the copies of each item of the material's items file this
+  // part cuts, one entry per item of the file. Empty: every item with its own demand.
+  std::vector<int> copies;
   bool operator==(const JobPart&) const = default;
+};
+
+// A hide took some of the current part's pieces (a ticket with split_over_hides): the copies of each
+// item of the part's items file placed on the hide and left for the next one.
+struct PartSplit {
+  std::vector<int> placed, rest;  // one entry per item of the items file
+  bool operator==(const PartSplit&) const = default;
 };
 
 nlohmann::json parts_to_json(const std::vector<JobPart>& parts);
 // Entries that are not objects with a material are left out (a damaged file: the part is not cut,
 // and the job ends after the parts it can read).
 std::vector<JobPart> parts_from_json(const nlohmann::json& json);
+
+// The parts once the current part is split: it becomes the placed pieces and the rest follows it as
+// the next part, of the same material and cutter. A job of one material (no parts) gets two parts of
+// `whole`'s material and cutter. The part index stays.
+std::vector<JobPart> split_part(std::vector<JobPart> parts, int current, const JobPart& whole, const PartSplit& split);
+
+// The pieces `copies` counts (the sum).
+int count_copies(const std::vector<int>& copies);
+
+// The current part's copies (JobPart::copies); empty for a job of one material or a part not split.
+std::vector<int> part_copies(const std::vector<JobPart>& parts, int current);
+
+// "4 of 10 pieces of leather on hide H-7; 6 wait for the next hide": a split as the log and the
+// job's events say it.
+std::string describe_split(const PartSplit& split, const std::string& material, const std::string& hide);
 
 // "4 pieces of lining on cutter-2, then 2 pieces of leather on cutter-1": the parts as the log and
 // the report say them.

@@ -69,7 +69,8 @@ Result<JobTicket> check_ticket(const nlohmann::json& json) {
   const std::set<std::string> known{"order", "customer", "size", "side", "quantity", "material",
                                     "cutter", "allowance_mm", "priority", "split", "reference_medial",
                                     "reference_lateral", "reference_patch", "lasting_mm", "seam_mm", "top_mm",
-                                    "seam_notch_spacing_mm", "feather_notch_spacing_mm", "style"};
+                                    "seam_notch_spacing_mm", "feather_notch_spacing_mm", "style",
+                                    "split_over_hides"};
   for (auto it = json.begin(); it != json.end(); ++it) {
     if (!known.count(it.key())) return Status::failure("unknown key \"" + it.key() + "\"");
   }
@@ -107,6 +108,11 @@ Result<JobTicket> check_ticket(const nlohmann::json& json) {
     const auto& node = json.at("priority");
     if (!node.is_number_integer()) return Status::failure("priority must be a whole number");
     ticket.priority = node.get<int>();
+  }
+  if (json.contains("split_over_hides")) {
+    const auto& node = json.at("split_over_hides");
+    if (!node.is_boolean()) return Status::failure("split_over_hides must be true or false");
+    ticket.split_over_hides = node.get<bool>();
   }
   for (const char* mold : {"medial", "lateral", "patch"}) {
     const std::string key = std::string("reference_") + mold;
@@ -179,6 +185,7 @@ nlohmann::json ticket_to_json(const JobTicket& ticket) {
   if (ticket.allowance_mm) json["allowance_mm"] = *ticket.allowance_mm;
   if (!ticket.split.empty()) json["split"] = ticket.split;
   if (!ticket.style.empty()) json["style"] = ticket.style;
+  if (ticket.split_over_hides) json["split_over_hides"] = true;
   for (const auto& [mold, file] : ticket.references) json["reference_" + mold] = file;
   for (auto [key, value] : mold_keys(ticket))
     if (*value) json[key] = **value;
@@ -197,6 +204,7 @@ JobTicket ticket_from_json(const nlohmann::json& json) {
   ticket.priority = json.value("priority", 0);
   ticket.split = json.value("split", "");
   ticket.style = json.value("style", "");
+  ticket.split_over_hides = json.value("split_over_hides", false);
   if (json.contains("allowance_mm")) ticket.allowance_mm = json.at("allowance_mm").get<double>();
   for (const char* mold : {"medial", "lateral", "patch"})
     if (json.contains(std::string("reference_") + mold))

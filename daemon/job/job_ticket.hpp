@@ -6,7 +6,8 @@
 // to the sidecar's folder; see docs/compare.md), and the per-edge allowances lasting_mm, seam_mm,
 // top_mm and balance notch spacings seam_notch_spacing_mm, feather_notch_spacing_mm
 // (docs/mold-allowances.md), style (a style folder's name under [paths] styles: the job's pieces are
-// that style's, docs/pieces.md). Unknown keys are errors.
+// that style's, docs/pieces.md), split_over_hides (true: the job's pieces may be cut over several hides,
+// docs/hides.md). Unknown keys are errors.
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -32,6 +33,9 @@ struct JobTicket {
   int priority = 0;      // higher is cut first within a batch
   std::string split;     // lengthwise cut: "" or auto (thesis 3.1 plane), expert (heel middle to second toe)
   std::string style;     // "": the last's two molds; else the pieces of this style (a folder name, no path)
+  // On hides the pieces of a job (and of its order's pair) are cut together or wait for the next hide
+  // together; true lets a hide take those of them that fit and the rest wait for the next hide.
+  bool split_over_hides = false;
   // Reference pattern per mold name (medial, lateral, patch) as written in the sidecar; the claim
   // copies each into the job folder as reference_copy_name(mold, file).
   std::map<std::string, std::string> references;

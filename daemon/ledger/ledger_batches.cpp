@@ -31,13 +31,15 @@ std::vector<long long> jobs_of(pqxx::work& tx, long long batch_id) {
 // The batch's jobs, their scans and tickets into `claim`, ascending (the hide's too, for a hide batch).
 void fill_jobs(pqxx::work& tx, BatchClaim& claim) {
   for (const pqxx::row& r : tx.exec_params(
-           "SELECT id, scan_sha256, scan_name, ticket, coalesce(duplicate_of, 0) FROM jobs WHERE batch_id = $1"
-           " ORDER BY id",
+           "SELECT id, scan_sha256, scan_name, ticket, coalesce(duplicate_of, 0), parts::text, part FROM jobs"
+           " WHERE batch_id = $1 ORDER BY id",
            claim.batch_id)) {
     claim.job_ids.push_back(r[0].as<long long>());
     claim.job_folders.push_back(job_folder_name(r[1].as<std::string>(), r[0].as<long long>(), r[4].as<long long>()));
     claim.job_names.push_back(r[2].as<std::string>());
     claim.job_tickets.push_back(r[3].as<std::string>());
+    claim.job_parts.push_back(daemon::parts_from_json(nlohmann::json::parse(r[5].as<std::string>(), nullptr, false)));
+    claim.job_part.push_back(r[6].as<int>());
   }
   const pqxx::result hide = tx.exec_params(
       "SELECT h.id, h.name, h.hide_file FROM batches b JOIN hides h ON h.id = b.hide_id WHERE b.id = $1",
@@ -105,6 +107,14 @@ Status LedgerClient::mark_nested(const Lease& lease, const NestedBatch& nested) 
                               add_event(tx, job_id, node_, event, reason);
                             }
                           };
+                          // A job the hide took in part cuts that part now; the rest is its next part.
+                          for (const NestedBatch::Split& split : nested.split) {
+                            tx.exec_params(
+                                "UPDATE jobs SET parts = $3::jsonb, pieces = ($3::jsonb -> part ->> 'pieces')::integer,"
+                                " updated_at = now() WHERE id = $1 AND batch_id = $2",
+                                split.job_id, lease.object_id, daemon::parts_to_json(split.parts).dump());
+                            add_event(tx, split.job_id, node_, "split", split.note);
+                          }
                           leave(nested.rejected, "failed", "failed");
                           leave(nested.waiting, "computed", "waiting");
                           leave(nested.held, "held", "held");

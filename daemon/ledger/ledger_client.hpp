@@ -85,6 +85,8 @@ struct BatchClaim {
   std::vector<std::string> job_folders;  // job_folder_name() of each job_ids entry
   std::vector<std::string> job_names;    // the scan's file name of each job_ids entry
   std::vector<std::string> job_tickets;  // the ticket (JSON text) of each job_ids entry
+  std::vector<std::vector<daemon::JobPart>> job_parts;  // the parts of each job_ids entry (jobs.parts)
+  std::vector<int> job_part;                            // and which of them is being cut (jobs.part)
   std::string cut_file;            // set once nested: the cut file's path inside the shared folder
   // A hide batch (make_hide_batch): the hide it is nested on; 0 and "" for a strip batch.
   long long hide_id = 0;
@@ -120,6 +122,14 @@ struct NestedBatch {
                                                             // job id -> why; an operator requeues them
   double utilisation = 0;  // placed piece area / the material's area (a hide: its usable area), 0..1
   std::string reason;  // when nothing is to be cut: why (kept with the dissolved batch and its hide)
+  // Jobs the hide took in part (split_over_hides): their parts from now on (split_part), the current
+  // one being what the hide took; the event's words.
+  struct Split {
+    long long job_id = 0;
+    std::vector<daemon::JobPart> parts;
+    std::string note;
+  };
+  std::vector<Split> split;
 };
 
 // A job held because its station vanished while sending its batch (for the status events).

@@ -1,5 +1,6 @@
 #include "daemon/ledger_node/ledger_compute_store.hpp"
 
+#include <algorithm>
 #include <unordered_map>
 #include <utility>
 
@@ -124,6 +125,7 @@ class LedgerNestClaim : public NestClaim {
       for (const auto& [job_id, reason] : result.rejected) nested.rejected.emplace_back(std::stoll(job_id), reason);
       for (const auto& [job_id, reason] : result.waiting)
         nested.waiting.emplace_back(std::stoll(job_id), "waiting for a hide of " + claim_.material + ": " + reason);
+      for (const auto& [job_id, parted] : result.split) nested.split.push_back(split_job(std::stoll(job_id), parted));
       nested.pieces = result.pieces;
       nested.utilisation = result.utilisation;
       if (on_hide && result.placed.empty()) nested.reason = "no waiting job fitted on hide " + claim_.hide_name;
@@ -170,6 +172,16 @@ class LedgerNestClaim : public NestClaim {
   }
 
  private:
+  // A job the hide took in part: its parts from now on (the ledger row's, split) and the event's words.
+  ledger::NestedBatch::Split split_job(long long job_id, const PartSplit& parted) const {
+    const auto index = static_cast<std::size_t>(
+        std::find(claim_.job_ids.begin(), claim_.job_ids.end(), job_id) - claim_.job_ids.begin());
+    const int part = claim_.job_part.at(index);
+    const JobPart whole{claim_.material, claim_.cutter, 0, {}};
+    return {job_id, split_part(claim_.job_parts.at(index), part, whole, parted),
+            describe_split(parted, claim_.material, claim_.hide_name)};
+  }
+
   // How the nesting ended for each claimed job, in claim order; `kept`: the jobs batched.
   LedgerJobChanges job_outcome_changes(const ledger::NestedBatch& nested, std::size_t& kept) const {
     struct Outcome {
@@ -187,7 +199,10 @@ class LedgerNestClaim : public NestClaim {
       if (found == outcome_of.end()) {
         if (nested.cut_file.empty()) continue;  // nothing is cut: the reason is logged for the batch
         ++kept;
-        changes.push_back({job_id, claim_.job_names[i], claim_.job_tickets[i], claim_.batch_id, JobStage::Batched, "", ""});
+        std::string note;  // a job the hide took in part says so
+        for (const ledger::NestedBatch::Split& split : nested.split)
+          if (split.job_id == job_id) note = split.note;
+        changes.push_back({job_id, claim_.job_names[i], claim_.job_tickets[i], claim_.batch_id, JobStage::Batched, "", note});
         continue;
       }
       const auto& [stage, reason] = found->second;
@@ -300,7 +315,7 @@ std::unique_ptr<NestClaim> LedgerComputeStore::open_batch(ledger::LedgerClient& 
     const Result<JobTicket> ticket = ticket_from_ledger(claim.job_tickets[i]);
     // job_ids ascend with entry into the ledger: oldest first.
     work.jobs.push_back({std::to_string(claim.job_ids[i]), shared_.job_dir(claim.job_folders[i]),
-                         ticket ? *ticket : JobTicket{}});
+                         ticket ? *ticket : JobTicket{}, part_copies(claim.job_parts[i], claim.job_part[i])});
   }
   auto scratch = shared_.scratch_for(shared_.batch_dir(claim.batch_id), ledger_.node);
   Status opened = scratch.status();

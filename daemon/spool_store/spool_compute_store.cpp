@@ -74,6 +74,7 @@ class SpoolNestClaim : public NestClaim {
       if (const auto rejected = result.rejected.find(id); result.made && rejected != result.rejected.end()) {
         fail_job(spool_, state, rejected->second);
       } else if (std::find(result.placed.begin(), result.placed.end(), id) != result.placed.end()) {
+        if (const auto parted = result.split.find(id); parted != result.split.end()) split_job(state, parted->second);
         if (Status reported = update_job_report(spool_, JobFolder::Work, id,
                                                 {{"timings_s", {{"nesting_and_cut_file", result.took_s}}}});
             !reported) {
@@ -123,6 +124,19 @@ class SpoolNestClaim : public NestClaim {
   }
 
  private:
+  // The hide took some of the job's pieces (split_over_hides): they are its current part now, and the
+  // rest its next part, which waits for another hide once this one is cut (complete_batch_jobs).
+  void split_job(JobState& state, const PartSplit& parted) {
+    const JobPart whole{state.ticket.material, state.ticket.cutter, state.piece_count, {}};
+    state.parts = split_part(state.parts, state.part, whole, parted);
+    state.take_current_part();
+    const std::string note = describe_split(parted, batch_.material, batch_.hide_id);
+    // Unwritten, the job's state says its whole part is on this hide: held, so that an operator sees it
+    // before anything of it is taken for cut (its pieces on the hide are cut with the others).
+    if (!set_job_stage(spool_, state, JobStage::Batched, note, "split over hides, but the state is not written"))
+      hold_job(spool_, state, note + ", but its state could not be written: requeue it to cut every piece again");
+  }
+
   const Spool& spool_;
   BatchState batch_;
   std::map<std::string, JobState> states_;
@@ -209,7 +223,7 @@ std::unique_ptr<NestClaim> SpoolComputeStore::claim_batch(const std::string& bat
   for (const std::string& id : batch->job_ids) {
     auto state = spool_.read_state(JobFolder::Work, id);
     if (!state || state->batch_id != batch_id) continue;
-    work.jobs.push_back({id, spool_.job_dir(JobFolder::Work, id), state->ticket});
+    work.jobs.push_back({id, spool_.job_dir(JobFolder::Work, id), state->ticket, part_copies(state->parts, state->part)});
     states.emplace(id, std::move(*state));
   }
   return std::make_unique<SpoolNestClaim>(spool_, std::move(*batch), std::move(states), std::move(work), listeners_);

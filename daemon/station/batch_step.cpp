@@ -19,7 +19,7 @@ namespace {
 // The pieces of one job (its items of this material). Throws EngineError.
 PieceGroup job_pieces(const BatchJobInput& job) {
   return {job.job_id, "", 0,
-          items_from_json(read_json_file(job.items_file), job.items_file.filename().string() + " of job " + job.job_id)};
+          read_part_items(job.items_file, job.copies, job.items_file.filename().string() + " of job " + job.job_id).items};
 }
 
 // What the program carries, named in the cut file itself so the machine's own log shows it.

@@ -146,7 +146,8 @@ NestResult ComputePool::compute_nest(const NestWork& work, const std::string& wo
   monitor_.begin(worker, "nesting " + work.label, settings->jobs.compute_timeout_s);
   if (work.hide_file.empty()) {
     std::vector<BatchJobInput> inputs;
-    for (const NestJob& job : work.jobs) inputs.push_back({job.job_id, job_items_path(job.job_dir, work.material)});
+    for (const NestJob& job : work.jobs)
+      inputs.push_back({job.job_id, job_items_path(job.job_dir, work.material), job.copies});
     const Result<BatchMade> made = build_batch(inputs, material->second, cutter->second, settings->paths.machines_dir,
                                                settings->batch.nest_time_s, work.batch_dir);
     take_outcome(made, result);
@@ -155,12 +156,13 @@ NestResult ComputePool::compute_nest(const NestWork& work, const std::string& wo
     for (std::size_t i = 0; i < work.jobs.size(); ++i) {
       const NestJob& job = work.jobs[i];
       inputs.push_back({job.job_id, job_items_path(job.job_dir, work.material), job.ticket.order,
-                        hide_job_priority(job.ticket.priority, i, work.jobs.size())});
+                        hide_job_priority(job.ticket.priority, i, work.jobs.size()), job.copies,
+                        job.ticket.split_over_hides});
     }
     const Result<HideMade> made = build_hide(inputs, work.batch_dir, work.hide_file, material->second, cutter->second,
                                              settings->paths.machines_dir, settings->batch.nest_time_s);
     take_outcome(made, result);
-    if (made) result.waiting = made->waiting, result.pieces_waiting = made->pieces_waiting;
+    if (made) result.waiting = made->waiting, result.pieces_waiting = made->pieces_waiting, result.split = made->split;
   }
   monitor_.end(worker);
   result.took_s = seconds_since(start);

@@ -16,6 +16,7 @@
 #include <variant>
 #include <vector>
 
+#include "daemon/job/job_parts.hpp"
 #include "daemon/job/job_ticket.hpp"
 #include "daemon/station/job_molds.hpp"
 #include "engine/core/status.hpp"
@@ -35,6 +36,7 @@ struct NestJob {
   std::string job_id;
   std::filesystem::path job_dir;  // holds items.json (or a part's items file, job_items_path)
   JobTicket ticket;
+  std::vector<int> copies;  // the current part's copies of each item, when split over hides (JobPart::copies)
 };
 
 // A strip batch or a hide to nest.
@@ -56,7 +58,10 @@ struct NestResult {
   std::string cut_file;                          // file name in batch_dir; "" when nothing is cut
   int pieces = 0;                                // pieces placed
   double utilisation = 0;                        // 0..1 (of a hide's usable area)
-  int pieces_waiting = 0;                        // a hide only: the pieces of the jobs in `waiting`
+  int pieces_waiting = 0;                        // a hide only: the pieces left for the next hide
+  // A hide only: jobs placed in part (also in `placed`, ticket split_over_hides) -> the copies placed
+  // and left; the store makes the rest the job's next part (split_part in job_parts.hpp).
+  std::map<std::string, PartSplit> split;
   double took_s = 0;                             // nesting and cut file
 };
 

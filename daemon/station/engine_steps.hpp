@@ -109,6 +109,16 @@ Result<MoldsMade> save_job_items_by_material(const std::filesystem::path& job_di
 // materials (the name's characters other than letters, digits, '-' and '_' as '_'), else items.json.
 std::filesystem::path job_items_path(const std::filesystem::path& job_dir, const std::string& material);
 
+// The items of a job's current part: the items file's, each with the part's copies when the part
+// was split over hides (JobPart::copies; an item of 0 copies is left out). file_index[k] is items[k]'s
+// place in the file. Throws EngineError when the file cannot be read or the copies do not match it.
+struct PartItems {
+  std::vector<NestItem> items;
+  std::vector<int> file_index;
+};
+PartItems read_part_items(const std::filesystem::path& items_file, const std::vector<int>& copies,
+                          const std::string& what);
+
 // A job step into job_dir run so that nothing escapes it: an EngineError is its one line, running out
 // of memory says `too_large`, anything else is unexpected_failure_reason. A stale items.json (from a
 // computation before a requeue; a part's items-<material>.json too) goes first: only this computation's
@@ -146,6 +156,7 @@ Result<ReferenceCheck> check_against_references(const std::filesystem::path& job
 struct BatchJobInput {
   std::string job_id;
   std::filesystem::path items_file;  // the job's items of this material (job_items_path)
+  std::vector<int> copies;           // the current part's, when split over hides (JobPart::copies)
 };
 
 struct BatchMade {

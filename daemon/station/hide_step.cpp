@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "daemon/station/engine_steps.hpp"
 #include "engine/core/durable_file.hpp"
@@ -17,6 +18,34 @@
 #include "engine/toolpath/cut_job.hpp"
 
 namespace lastcut::daemon {
+namespace {
+
+// Where a group's items came from in its job's items file.
+struct SplitShape {
+  std::vector<int> file_index;  // per item of the group
+  int file_items = 0;           // items in the file
+};
+
+// The copies of group g's items that the layout placed and left out, per item of its job's items file.
+PartSplit split_of(const BatchInstance& batch, const Layout& layout, int g, const SplitShape& shape) {
+  PartSplit split;
+  split.placed.assign(static_cast<std::size_t>(shape.file_items), 0);
+  split.rest = split.placed;
+  std::map<int, int> placed_copies;  // batch item id -> copies on the hide
+  for (const Placement& p : layout.placements) ++placed_copies[p.item];
+  std::size_t k = 0;  // the group's items are consecutive in the batch, in the group's order
+  for (std::size_t i = 0; i < batch.instance.items.size(); ++i) {
+    if (batch.group_of_item[i] != g) continue;
+    const NestItem& item = batch.instance.items[i];
+    const auto file = static_cast<std::size_t>(shape.file_index.at(k++));
+    const int on_hide = std::min(item.demand, placed_copies[item.id]);
+    split.placed[file] = on_hide;
+    split.rest[file] = item.demand - on_hide;
+  }
+  return split;
+}
+
+}  // namespace
 
 Result<HideMade> build_hide(const std::vector<HideJobInput>& jobs, const std::filesystem::path& hide_dir,
                             const std::string& hide_file, const MaterialConfig& material, const CutterSection& cutter,
@@ -29,12 +58,15 @@ Result<HideMade> build_hide(const std::vector<HideJobInput>& jobs, const std::fi
     const MachineProfile profile = load_machine_profile(cutter.machine, search);
 
     std::vector<PieceGroup> groups;
+    std::vector<SplitShape> shapes;  // per group
     for (const HideJobInput& job : jobs) {
       try {
-        PieceGroup group{job.job_id, job.order, job.priority,
-                         items_from_json(read_json_file(job.items_file),
-                                         job.items_file.filename().string() + " of job " + job.job_id)};
-        groups.push_back(std::move(group));
+        PartItems part =
+            read_part_items(job.items_file, job.copies, job.items_file.filename().string() + " of job " + job.job_id);
+        const int file_items = job.copies.empty() ? static_cast<int>(part.items.size()) : static_cast<int>(job.copies.size());
+        shapes.push_back({std::move(part.file_index), file_items});
+        // A job that may split joins no pair: its pieces go where they fit (hide_batch.hpp).
+        groups.push_back({job.job_id, job.may_split ? "" : job.order, job.priority, std::move(part.items), job.may_split});
       } catch (const EngineError& error) {
         made.rejected[job.job_id] = error.what();
       }
@@ -69,10 +101,22 @@ Result<HideMade> build_hide(const std::vector<HideJobInput>& jobs, const std::fi
     std::vector<bool> placed(groups.size(), false);
     for (int g : placed_groups(batch, layout)) placed[g] = true;
     nlohmann::json waiting = nlohmann::json::array();
+    nlohmann::json split = nlohmann::json::array();
     for (size_t g = 0; g < groups.size(); ++g) {
       if (placed[g]) {
         made.placed.push_back(groups[g].owner);
         continue;
+      }
+      if (groups[g].may_split) {
+        const PartSplit parted = split_of(batch, layout, static_cast<int>(g), shapes[g]);
+        const int on_hide = count_copies(parted.placed), left = count_copies(parted.rest);
+        if (on_hide > 0) {
+          made.placed.push_back(groups[g].owner);
+          made.split[groups[g].owner] = parted;
+          made.pieces_waiting += left;
+          split.push_back({{"job", groups[g].owner}, {"pieces_placed", on_hide}, {"pieces_waiting", left}});
+          continue;
+        }
       }
       std::string reason = "did not fit on hide " + hide.hide_id;
       for (const Unplaced& u : layout.unplaced)
@@ -88,6 +132,7 @@ Result<HideMade> build_hide(const std::vector<HideJobInput>& jobs, const std::fi
     report["pieces_placed"] = made.piece_count;
     report["jobs_placed"] = made.placed;
     report["jobs_waiting"] = waiting;
+    if (!split.empty()) report["jobs_split"] = split;
     report["pieces_waiting"] = made.pieces_waiting;
     report["utilisation_of_usable_area"] = layout.utilisation;
     if (made.placed.empty()) {

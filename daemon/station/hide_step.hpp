@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "daemon/config/daemon_config.hpp"
+#include "daemon/job/job_parts.hpp"
 #include "engine/core/status.hpp"
 
 namespace lastcut::daemon {
@@ -24,12 +25,17 @@ struct HideJobInput {
   std::filesystem::path items_file;  // the job's items of this material (job_items_path)
   std::string order;              // pairs: the jobs of one order go on one hide (material pairs = same_hide)
   int priority = 0;               // higher first: the oldest waiting job gets the highest
+  std::vector<int> copies;        // the current part's, when split over hides before (JobPart::copies)
+  bool may_split = false;         // its ticket's split_over_hides: the hide may take some of its pieces
 };
 
 struct HideMade {
   std::vector<std::string> placed;               // jobs whose every piece is on the hide
   std::map<std::string, std::string> waiting;    // job id -> why it waits for the next hide
   std::map<std::string, std::string> rejected;   // job id -> why its pieces cannot be read
+  // Jobs that may split whose pieces lie on the hide only in part (also in `placed`): job id -> the
+  // copies of each item of its items file placed and left for the next hide (job_parts.hpp).
+  std::map<std::string, PartSplit> split;
   std::string cut_file;                          // file name in batch_dir; empty when nothing was placed
   double utilisation = 0;                        // placed piece area / usable hide area, 0..1
   int piece_count = 0;

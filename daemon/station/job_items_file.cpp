@@ -58,6 +58,29 @@ std::filesystem::path job_items_path(const std::filesystem::path& job_dir, const
   return std::filesystem::exists(part, unreadable) ? part : job_dir / kItemsFile;
 }
 
+PartItems read_part_items(const std::filesystem::path& items_file, const std::vector<int>& copies,
+                          const std::string& what) {
+  std::vector<NestItem> file_items = items_from_json(read_json_file(items_file), what);
+  PartItems part;
+  if (!copies.empty() && copies.size() != file_items.size()) {
+    throw EngineError(what + ": the part names " + std::to_string(copies.size()) + " pieces, the file holds " +
+                      std::to_string(file_items.size()));
+  }
+  for (std::size_t i = 0; i < file_items.size(); ++i) {
+    if (!copies.empty()) {
+      if (copies[i] < 0 || copies[i] > file_items[i].demand)
+        throw EngineError(what + ": the part cuts " + std::to_string(copies[i]) + " copies of a piece the file has " +
+                          std::to_string(file_items[i].demand) + " of");
+      if (copies[i] == 0) continue;
+      file_items[i].demand = copies[i];
+    }
+    part.items.push_back(std::move(file_items[i]));
+    part.file_index.push_back(static_cast<int>(i));
+  }
+  if (part.items.empty()) throw EngineError(what + ": the part has no pieces left to cut");
+  return part;
+}
+
 void remove_job_items(const std::filesystem::path& job_dir) {
   std::error_code ignored;
   std::filesystem::remove(job_dir / kItemsFile, ignored);

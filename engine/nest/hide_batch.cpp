@@ -36,7 +36,7 @@ BatchInstance common_batch(const std::vector<PieceGroup>& groups, const BatchSpe
       // tolerance: its grain line lies at any angle, so the material's steps might never meet it.
       item.allowed_rotations_deg = item.grain_deg ? std::vector<double>{} : rotations;
       item.priority = group.priority;
-      if (hides) item.pair_group = pair_group;
+      if (hides) item.pair_group = group.may_split ? "" : pair_group;
       batch.instance.items.push_back(std::move(item));
       batch.group_of_item.push_back(static_cast<int>(g));
     }
@@ -102,7 +102,7 @@ std::set<std::string> partly_placed(const NestInstance& instance, const Layout& 
     if (u.count > 0) missing.insert(by_id.at(u.item)->pair_group);
   std::set<std::string> partly;
   for (const auto& [group, used] : hides_of)
-    if (used.size() > 1 || missing.count(group)) partly.insert(group);
+    if (!group.empty() && (used.size() > 1 || missing.count(group))) partly.insert(group);  // "": pieces that may split
   return partly;
 }
 

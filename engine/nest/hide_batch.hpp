@@ -17,7 +17,8 @@
 //   pairs      on hides, a job's pieces are cut together or not at all, and with PairPolicy::SameHide
 //              all jobs of one order (the left and right lasts of a pair) share one pair group, so
 //              they lie on one hide; with PairPolicy::Any only a job's own pieces stay together;
-//              anywhere on that hide, or side by side (BatchSpec::side_by_side)
+//              anywhere on that hide, or side by side (BatchSpec::side_by_side); a group that may be
+//              split (PieceGroup::may_split) is none of this: each of its pieces goes where it fits
 // A pair group the nester cuts only in part (a piece unplaced, or its pieces on different hides) is
 // taken out whole, the lowest priority first, and the rest nested again, so what is cut is always
 // whole jobs, whatever the nester does with pair groups.
@@ -37,6 +38,9 @@ struct PieceGroup {
   std::string order;  // the workshop's order; "" = the job stands alone
   int priority = 0;   // higher is placed first (the daemon: older jobs higher)
   std::vector<NestItem> items;  // ids are renumbered by the batch
+  // On hides: the group's pieces may be cut in part, on whatever hides they fit (an order that allows
+  // splitting); it joins no pair group, and the pieces left out wait for another hide.
+  bool may_split = false;
 };
 
 enum class PairPolicy { SameHide, Any };

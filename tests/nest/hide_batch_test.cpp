@@ -88,6 +88,27 @@ TEST(HideBatch, AJobThatDoesNotFitWholeIsTakenOutWhole) {
   EXPECT_NEAR(layout.utilisation, 62500.0 / 90000.0, 1e-9);
 }
 
+TEST(HideBatch, AJobThatMaySplitIsCutInPartAndTheOthersStayWhole) {
+  // The same hide, and J1's two 250 mm squares and J2's one, all of one order: only one square fits.
+  // Without splitting J1 waits whole (above); when J1 may split it joins no pair group, one of its
+  // squares is cut, the other waits, and J2 (same order, lower priority) waits whole.
+  std::vector<PieceGroup> groups = {{"J1", "7", 10, {square(250), square(250)}, true}, {"J2", "7", 1, {square(250)}}};
+  const BatchInstance batch = hide_batch(groups, {rectangle_hide(300, 300)}, BatchSpec{}, "split");
+  EXPECT_EQ(batch.instance.items[0].pair_group, "") << "a job that may split joins no pair";
+  EXPECT_EQ(batch.instance.items[2].pair_group, "order 7");
+  NestOptions options;
+  options.time_limit_s = 0.5;
+  options.iteration_limit = 20;
+  const Layout layout = nest_batch(batch, options);
+  EXPECT_TRUE(check_layout(layout, batch.instance).empty());
+  ASSERT_EQ(layout.placements.size(), 1u);
+  EXPECT_EQ(batch.group_of_item[static_cast<size_t>(layout.placements[0].item)], 0) << "J1, placed first, cut in part";
+  EXPECT_TRUE(placed_groups(batch, layout).empty()) << "neither job is whole on the hide";
+  int unplaced = 0;
+  for (const Unplaced& u : layout.unplaced) unplaced += u.count;
+  EXPECT_EQ(unplaced, 2);
+}
+
 TEST(HideBatch, OffcutIsTheHideMinusHolesAndGrownPieces) {
   // One 100 mm square placed by hand at (100, 100) on a 1000 x 600 hide with a 50 x 40 hole; gap 2 mm:
   // the grown square is 104 x 104 with rounded corners (area 100^2 + 4 * 100 * 2 + pi * 2^2).

@@ -5,6 +5,8 @@
 
 #include <unistd.h>
 
+#include <fstream>
+
 #include "daemon/job/job_state.hpp"
 #include "daemon/station/engine_steps.hpp"
 #include "daemon/station/job_piece_rules.hpp"
@@ -60,7 +62,7 @@ TEST(JobParts, RollsAndSheetsComeFirstThenHidesEachOnItsCutter) {
   EXPECT_EQ(parts[0], (JobPart{"felt", "cutter-1", 1}));     // no cutter of its own: jobs.default_cutter
   EXPECT_EQ(parts[1], (JobPart{"lining", "cutter-2", 4}));   // the material's cutter
   EXPECT_EQ(parts[2], (JobPart{"leather", "cutter-9", 4}));  // the job's own material: the ticket's cutter
-  EXPECT_EQ(describe_parts(parts), "1 pieces of felt on cutter-1, then 4 pieces of lining on cutter-2, then 4 pieces of leather on cutter-9");
+  EXPECT_EQ(describe_parts(parts), "1 piece of felt on cutter-1, then 4 pieces of lining on cutter-2, then 4 pieces of leather on cutter-9");
   EXPECT_TRUE(job_parts({"leather", "leather"}, {1, 1}, ticket, config).empty()) << "one material: no parts";
 }
 
@@ -127,6 +129,73 @@ TEST(JobParts, AJobMovesToItsNextPartAndKeepsItsPlaceWhenComputedAgain) {
   read.take_parts({});
   EXPECT_TRUE(read.parts.empty());
   EXPECT_EQ(parts_progress(read.parts, read.part, false), "");
+}
+
+TEST(JobParts, AHideThatTakesSomeOfAJobsPiecesMakesTheRestItsNextPart) {
+  // A job of one material (no parts): 3 items of 2, 1 and 2 copies; the hide took 1, 1 and 0.
+  JobState state;
+  state.ticket.material = "leather";
+  state.ticket.cutter = "cutter-1";
+  state.piece_count = 5;
+  const PartSplit first{{1, 1, 0}, {1, 0, 2}};
+  EXPECT_EQ(describe_split(first, "leather", "H-7"), "2 of 5 pieces of leather on hide H-7; 3 wait for the next hide");
+  state.parts = split_part(state.parts, state.part, {"leather", "cutter-1", 5, {}}, first);
+  state.take_current_part();
+  ASSERT_EQ(state.parts.size(), 2u);
+  EXPECT_EQ(state.parts[0], (JobPart{"leather", "cutter-1", 2, {1, 1, 0}}));
+  EXPECT_EQ(state.parts[1], (JobPart{"leather", "cutter-1", 3, {1, 0, 2}}));
+  EXPECT_EQ(state.piece_count, 2);
+  EXPECT_EQ(part_copies(state.parts, state.part), (std::vector<int>{1, 1, 0}));
+  // The hide is cut; the rest waits for the next hide, which takes some of it again.
+  ASSERT_TRUE(state.next_part());
+  EXPECT_EQ(state.piece_count, 3);
+  state.parts = split_part(state.parts, state.part, {}, {{1, 0, 1}, {0, 0, 1}});
+  state.take_current_part();
+  ASSERT_EQ(state.parts.size(), 3u);
+  EXPECT_EQ(state.parts[1], (JobPart{"leather", "cutter-1", 2, {1, 0, 1}}));
+  EXPECT_EQ(state.parts[2], (JobPart{"leather", "cutter-1", 1, {0, 0, 1}}));
+  EXPECT_EQ(parts_progress(state.parts, state.part, false),
+            "2 pieces of leather cut; 2 pieces of leather now; 1 piece of leather next");
+  // A part of a job of several materials splits in place: the parts after it follow the rest.
+  const auto mixed = split_part({{"lining", "cutter-2", 4, {}}, {"leather", "cutter-1", 3, {}}, {"felt", "cutter-1", 1, {}}},
+                                1, {}, {{2, 0}, {0, 1}});
+  ASSERT_EQ(mixed.size(), 4u);
+  EXPECT_EQ(mixed[1].pieces, 2);
+  EXPECT_EQ(mixed[2], (JobPart{"leather", "cutter-1", 1, {0, 1}}));
+  EXPECT_EQ(mixed[3].material, "felt");
+  // Through state.json and back, copies and all.
+  const JobState read = job_state_from_json(to_json(state));
+  EXPECT_EQ(read.parts, state.parts);
+  EXPECT_EQ(read.part, 1);
+  EXPECT_TRUE(part_copies({}, 0).empty());
+}
+
+TEST(JobParts, APartSplitOverHidesReadsItsCopiesOfTheItemsFile) {
+  const auto dir = std::filesystem::temp_directory_path() / ("lastcut-part-items-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto file = dir / "items.json";
+  std::ofstream(file) << items_to_json({square_item("vamp", 2), square_item("quarter", 1), square_item("counter", 2)});
+  const PartItems all = read_part_items(file, {}, "items.json");
+  EXPECT_EQ(all.items.size(), 3u);
+  EXPECT_EQ(all.file_index, (std::vector<int>{0, 1, 2}));
+  const PartItems part = read_part_items(file, {1, 0, 2}, "items.json");
+  ASSERT_EQ(part.items.size(), 2u);
+  EXPECT_EQ(part.items[0].label, "vamp");
+  EXPECT_EQ(part.items[0].demand, 1);
+  EXPECT_EQ(part.items[1].label, "counter");
+  EXPECT_EQ(part.file_index, (std::vector<int>{0, 2}));
+  const auto refusal = [&](const std::vector<int>& copies) {
+    try {
+      read_part_items(file, copies, "items.json of job 7");
+    } catch (const EngineError& error) {
+      return std::string(error.what());
+    }
+    return std::string("read");
+  };
+  EXPECT_EQ(refusal({1, 1}), "items.json of job 7: the part names 2 pieces, the file holds 3");
+  EXPECT_EQ(refusal({3, 0, 0}), "items.json of job 7: the part cuts 3 copies of a piece the file has 2 of");
+  EXPECT_EQ(refusal({0, 0, 0}), "items.json of job 7: the part has no pieces left to cut");
+  std::filesystem::remove_all(dir);
 }
 
 TEST(JobParts, ADamagedPartsListKeepsTheEntriesItCanRead) {
