@@ -61,6 +61,21 @@ double pieces_area_mm2(const std::filesystem::path& items_json) {
   return area;
 }
 
+std::map<std::string, int> pieces_by_label(const std::filesystem::path& items_json) {
+  std::map<std::string, int> pieces;
+  for (const NestItem& item : items_from_json(read_json_file(items_json), items_json.string())) pieces[item.label] += item.demand;
+  return pieces;
+}
+
+std::map<std::string, int> placed_by_label(const std::filesystem::path& layout_json) {
+  const nlohmann::json json = read_json_file(layout_json);
+  std::map<int, std::string> label_of;
+  for (const NestItem& item : instance_from_layout_json(json).items) label_of[item.id] = item.label;
+  std::map<std::string, int> placed;
+  for (const Placement& p : layout_from_json(json).placements) ++placed[label_of.at(p.item)];
+  return placed;
+}
+
 std::size_t check_hide_layout(const std::filesystem::path& layout_json, std::size_t zones) {
   const auto json = read_json_file(layout_json);
   const NestInstance instance = instance_from_layout_json(json);

@@ -3,6 +3,8 @@
 // tests/ledger/ledger_hides_test.cpp): hide files sized from the pieces' own bounding boxes, so an
 // outcome does not depend on how well the nester packs, and the independent check of a written layout.
 #include <filesystem>
+#include <map>
+#include <string>
 #include <utility>
 
 namespace lastcut::daemon::testing {
@@ -19,6 +21,11 @@ void write_hide_json(const std::filesystem::path& file, double w, double h);
 std::pair<double, double> piece_box_mm(const std::filesystem::path& items_json);
 // The area (mm^2) of the pieces in a job's items.json, each times its demand.
 double pieces_area_mm2(const std::filesystem::path& items_json);
+
+// label -> copies: of the pieces in a job's items.json, and of those placed in a batch's layout.json
+// (a piece's label names its order, foot and name, so each piece of a shop's orders is told apart).
+std::map<std::string, int> pieces_by_label(const std::filesystem::path& items_json);
+std::map<std::string, int> placed_by_label(const std::filesystem::path& layout_json);
 
 // Checks every placement of a hide batch's layout.json with the independent checker, and that the
 // material's rules reached it (min_quality 2, toe regions of grade 3, grain within 10 deg where the

@@ -7,7 +7,8 @@
 // material never go on a strip; every hide's cut file reaches the cutter once (bytes compared);
 // every placed piece passes the independent checker on the layout in the shared folder; an order
 // lies on one hide; the order that did not fit waits with its reason, in the ledger and in
-// `lastcut status`; a bad hide file is refused with one line into failed/ while the node runs on;
+// `lastcut status`; an order that allows splitting is cut over two hides, each piece once, the
+// shop's jobs.parts and events saying so (the second test); a bad hide file is refused with one line into failed/ while the node runs on;
 // a hide whose cut was interrupted by a SIGKILL of its station is held and never sent again; job
 // events over MQTT name the scan, order and batch, the hold included.
 // The hides are sized from the pieces' own bounding boxes (tests/daemon/hide_samples.hpp), so the
@@ -16,6 +17,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
+#include <set>
 #include <thread>
 
 #include <nlohmann/json.hpp>
@@ -42,7 +45,11 @@ ShopOptions shop_options() {
 
 class LedgerHides : public ::testing::Test {
  protected:
-  LedgerHides() : shop_("ledger-hides", shop_options()), staging_(shop_.root() / "staging") {
+  // One shop folder per test.
+  LedgerHides()
+      : shop_(std::string("ledger-hides-") + ::testing::UnitTest::GetInstance()->current_test_info()->name(),
+              shop_options()),
+        staging_(shop_.root() / "staging") {
     std::filesystem::create_directories(staging_);
   }
 
@@ -246,6 +253,81 @@ TEST_F(LedgerHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
     ++held_told;
   }
   EXPECT_EQ(held_told, 1);
+}
+
+TEST_F(LedgerHides, AnOrderThatAllowsSplittingIsCutOverTwoHidesEachPieceOnce) {
+  ASSERT_EQ(shop_.start_services(), "");
+  ASSERT_EQ(shop_.start_cutter("cutter-a"), "");
+  ASSERT_EQ(shop_.start_node("station-a"), "");
+  ASSERT_EQ(shop_.start_node("compute-b"), "");
+  // Order 300 (a mirrored pair, four halves) may split; order 400, the same, may not.
+  drop_last("o300-pair.stl", 41, "pair", "order = \"300\"\nsplit_over_hides = true\n");
+  ASSERT_TRUE(wait_until([&] { return computed({"o300-pair.stl"}); }, 120)) << shop_.log_tails();
+  drop_last("o400-pair.stl", 41, "pair", "order = \"400\"\n");
+  ASSERT_TRUE(wait_until([&] { return computed({"o400-pair.stl"}); }, 120)) << shop_.log_tails();
+  const std::map<std::string, int> pieces_300 = pieces_by_label(items_of("o300-pair.stl"));
+  const std::map<std::string, int> pieces_400 = pieces_by_label(items_of("o400-pair.stl"));
+  ASSERT_EQ(pieces_300.size(), 4u);
+
+  // Hide A, room for two halves and less area than a pair: some of order 300, none of order 400.
+  const auto [length, width] = piece_box_mm(items_of("o300-pair.stl"));
+  ASSERT_LT((length + 45) * (2 * width + 24), pieces_area_mm2(items_of("o300-pair.stl")));
+  write_hide_json(staging_ / "hide-a.json", length + 45, 2 * width + 24);
+  drop_hide(staging_ / "hide-a.json", "");
+  ASSERT_TRUE(wait_until([&] { return batch_state(batch_of_hide("hide-a")) == "cut"; }, 90)) << shop_.log_tails();
+  const std::string o300 = job_of("o300-pair.stl");
+  ASSERT_TRUE(wait_until([&] { return job_state("o300-pair.stl") == "computed"; }, 10)) << shop_.log_tails();
+  EXPECT_EQ(job_state("o400-pair.stl"), "computed");
+  const long long placed_a = shop_.count("SELECT (parts -> 0 ->> 'pieces')::integer FROM jobs WHERE id = " + o300);
+  EXPECT_GE(placed_a, 1);
+  EXPECT_EQ(shop_.count("SELECT part FROM jobs WHERE id = " + o300), 1);
+  EXPECT_EQ(shop_.count("SELECT pieces FROM jobs WHERE id = " + o300), 4 - placed_a) << "the rest is its part now";
+  EXPECT_EQ(shop_.value("SELECT detail FROM job_events WHERE event = 'split' AND job_id = " + o300),
+            std::to_string(placed_a) + " of 4 pieces of leather on hide hide-a; " + std::to_string(4 - placed_a) +
+                " wait for the next hide");
+
+  // Hides of room for a pair each, one at a time, until both orders are cut.
+  std::vector<std::string> hide_names = {"hide-a"};
+  for (int n = 1; job_state("o300-pair.stl") != "done" || job_state("o400-pair.stl") != "done"; ++n) {
+    ASSERT_LE(n, 4) << "four hides of room for a pair each and the orders are not cut";
+    const std::string name = "hide-b" + std::to_string(n);
+    write_hide_json(staging_ / (name + ".json"), 2 * length + 110, 2 * width + 30);
+    drop_hide(staging_ / (name + ".json"), "");
+    ASSERT_TRUE(wait_until([&] { const auto s = batch_state(batch_of_hide(name)); return s == "cut" || s == "dissolved"; }, 90))
+        << shop_.log_tails();
+    hide_names.push_back(name);
+    ASSERT_TRUE(wait_until([&] {
+      for (const char* scan : {"o300-pair.stl", "o400-pair.stl"})
+        if (job_state(scan) != "done" && job_state(scan) != "computed") return false;
+      return true;
+    }, 10));
+  }
+  EXPECT_EQ(shop_.stop_node("station-a"), 0);
+  EXPECT_EQ(shop_.stop_node("compute-b"), 0);
+  shop_.stop_cutter("cutter-a");
+
+  // Every half of both orders cut exactly once over the hides' layouts; order 400 on one hide.
+  const std::string received = shop_.received_per_run("cutter-a").at(0);
+  std::map<std::string, int> cut;
+  std::map<std::string, std::set<std::string>> hides_of_order;
+  for (const std::string& name : hide_names) {
+    const std::string batch = batch_of_hide(name);
+    if (batch_state(batch) != "cut") continue;
+    EXPECT_EQ(count_occurrences(received, cut_file(batch)), 1) << name;
+    check_hide_layout(batch_dir(batch) / "layout.json", 0);
+    for (const auto& [label, copies] : placed_by_label(batch_dir(batch) / "layout.json")) {
+      cut[label] += copies;
+      hides_of_order[pieces_300.count(label) ? "300" : "400"].insert(name);
+    }
+  }
+  std::map<std::string, int> expected = pieces_300;
+  expected.insert(pieces_400.begin(), pieces_400.end());
+  EXPECT_EQ(cut, expected);
+  EXPECT_EQ(hides_of_order["400"].size(), 1u) << "an order that may not split lies on one hide";
+  EXPECT_GE(hides_of_order["300"].size(), 2u);
+  EXPECT_EQ(hides_of_order["300"].count("hide-a"), 1u);
+  EXPECT_EQ(shop_.count("SELECT count(*) FROM job_events WHERE event = 'cut' AND job_id = " + o300),
+            static_cast<long long>(hides_of_order["300"].size()));
 }
 
 }  // namespace
