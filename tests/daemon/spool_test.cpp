@@ -185,6 +185,18 @@ TEST(JobTicket, SplitRuleIsReadAndAnUnknownOneRefusedInOneLine) {
   EXPECT_EQ(read_job_ticket(folder / "s.job.toml").error(), "sidecar s.job.toml: split \"sideways\" is not one of auto, expert");
 }
 
+TEST(JobTicket, SplittingOverHidesIsReadAndAnythingButABooleanRefusedInOneLine) {
+  const auto folder = testing::scratch_folder("splithidesticket");
+  write_text(folder / "h.job.toml", "split_over_hides = true\n");
+  const auto split = read_job_ticket(folder / "h.job.toml");
+  ASSERT_TRUE(split) << split.error();
+  EXPECT_TRUE(split->split_over_hides);
+  EXPECT_TRUE(ticket_from_json(ticket_to_json(*split)).split_over_hides);
+  EXPECT_FALSE(ticket_from_json(ticket_to_json(JobTicket{})).split_over_hides);
+  write_text(folder / "n.job.toml", "split_over_hides = \"yes\"\n");
+  EXPECT_EQ(read_job_ticket(folder / "n.job.toml").error(), "sidecar n.job.toml: split_over_hides must be true or false");
+}
+
 TEST(JobTicket, SidecarIsFoundBesideTheScan) {
   const auto folder = testing::scratch_folder("findticket");
   write_text(folder / "last.stl", "x");
