@@ -52,6 +52,7 @@ struct Arguments {
   fs::path svg_dir;
   std::vector<std::string> relax;  // diagnostics: rules dropped to measure what each costs
   bool side_by_side = false;       // BatchSpec::side_by_side
+  bool no_mirror = false;          // !BatchSpec::mirror_pairs
 };
 
 // Drops the named rules from the instance (after hide_batch made it): grain (free rotation), grade (any
@@ -136,6 +137,7 @@ int main(int argc, char** argv) {
   app.add_option("--relax", args.relax, "diagnostics, comma-separated: drop rules (grain, grade, pairs) to measure their cost")
       ->delimiter(',')->check(CLI::IsMember({"grain", "grade", "pairs"}));
   app.add_flag("--side-by-side", args.side_by_side, "a pair's pieces next to each other on their hide (the rule before issue 35)");
+  app.add_flag("--no-mirror", args.no_mirror, "leave a pair's pieces where the nester put them (no mirroring about the backbone)");
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -153,6 +155,7 @@ int main(int argc, char** argv) {
     spec.gap_mm = args.gap_mm;
     spec.margin_mm = args.margin_mm;
     spec.side_by_side = args.side_by_side;
+    spec.mirror_pairs = !args.no_mirror;
     // The pieces carry their own grain and grade (the style's); the batch adds no rule of its own.
     const auto hides = lastcut::bench::baldacci_hides(args.hides, args.mm_per_unit);
     lastcut::BatchInstance batch = lastcut::hide_batch(groups, hides, spec, "piece-yield");
@@ -164,8 +167,8 @@ int main(int argc, char** argv) {
     std::printf("\n## %zu pairs on %s, %g s, %d threads, seed %llu\n\n", orders.size(), args.hides.filename().c_str(),
                 args.time_limit_s, args.threads, static_cast<unsigned long long>(args.seed));
     std::printf("| method | placed / pieces | hides used | utilisation of used hides %% | least filled hide %% | "
-                "worst grain deg (tolerance) | pairs on one hide | checker | nest s |\n"
-                "|---|---|---|---|---|---|---|---|---|\n");
+                "worst grain deg (tolerance) | pairs on one hide | pieces mirrored about the backbone | checker | nest s |\n"
+                "|---|---|---|---|---|---|---|---|---|---|\n");
     std::fflush(stdout);
     lastcut::ThreadTeam team(static_cast<std::size_t>(args.threads - 1));
     std::vector<std::string> fills;  // below the table
@@ -182,9 +185,10 @@ int main(int argc, char** argv) {
       const double nest_s = seconds_since(start);
       const lastcut::bench::YieldFigures figures = lastcut::bench::measure_yield(batch, layout);
       invalid += figures.problems.empty() ? 0 : 1;
-      std::printf("| %s | %d / %d | %zu | %.2f | %.2f | %s | %d / %d | %s | %.1f |\n", method.c_str(), figures.placed,
-                  figures.demanded, figures.hides.size(), 100 * figures.utilisation, 100 * figures.least_hide_utilisation,
-                  grain_text(figures.worst_grain_deg).c_str(), figures.pairs_on_one_hide, figures.pairs,
+      std::printf("| %s | %d / %d | %zu | %.2f | %.2f | %s | %d / %d | %d / %d | %s | %.1f |\n", method.c_str(),
+                  figures.placed, figures.demanded, figures.hides.size(), 100 * figures.utilisation,
+                  100 * figures.least_hide_utilisation, grain_text(figures.worst_grain_deg).c_str(),
+                  figures.pairs_on_one_hide, figures.pairs, figures.twins.mirrored, figures.twins.pairs,
                   figures.problems.empty() ? "valid" : figures.problems.front().c_str(), nest_s);
       std::fflush(stdout);
       std::string line = method + " fills %:";

@@ -63,6 +63,7 @@ YieldFigures measure_yield(const BatchInstance& batch, const Layout& layout) {
   figures.pairs = static_cast<int>(pairs.size());
   for (const std::string& pair : pairs)
     if (!missing.count(pair) && hides_of_pair[pair].size() == 1) ++figures.pairs_on_one_hide;
+  figures.twins = count_mirrored_pairs(layout, instance);
   figures.problems = check_layout(layout, instance);
   return figures;
 }

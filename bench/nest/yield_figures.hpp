@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/nest/hide_batch.hpp"
+#include "engine/nest/hide_mirror_pairs.hpp"
 #include "engine/nest/layout.hpp"
 
 namespace lastcut::bench {
@@ -28,6 +29,7 @@ struct YieldFigures {
   // backbone, either direction (deg).
   std::map<double, double> worst_grain_deg;
   int pairs = 0, pairs_on_one_hide = 0;  // pair groups, and those with every piece on one hide
+  MirroredPairs twins;                    // a piece and its other foot's copy on one hide; mirrored about the backbone
   std::vector<std::string> problems;      // check_layout; empty = valid
 };
 

@@ -11,6 +11,7 @@
 #include "engine/core/engine_error.hpp"
 #include "engine/nest/hide_batch.hpp"
 #include "engine/nest/hide_file.hpp"
+#include "engine/nest/hide_mirror_pairs.hpp"
 #include "engine/nest/hide_offcut.hpp"
 #include "engine/nest/nest_json.hpp"
 #include "daemon/station/cut_outputs.hpp"
@@ -135,6 +136,9 @@ Result<HideMade> build_hide(const std::vector<HideJobInput>& jobs, const std::fi
     if (!split.empty()) report["jobs_split"] = split;
     report["pieces_waiting"] = made.pieces_waiting;
     report["utilisation_of_usable_area"] = layout.utilisation;
+    // A shoe's piece and the other foot's copy on this hide, and how many lie mirrored about the backbone.
+    if (const MirroredPairs twins = count_mirrored_pairs(layout, batch.instance); twins.pairs > 0)
+      report["pairs_mirrored_about_backbone"] = {{"pairs", twins.pairs}, {"mirrored", twins.mirrored}};
     if (made.placed.empty()) {
       made.report = report;
       if (Status written = write_file_durably(hide_dir / kHideReportFile, report.dump(2) + "\n"); !written) return written;

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "engine/core/engine_error.hpp"
+#include "engine/nest/hide_mirror_pairs.hpp"
 #include "engine/nest/layout_check.hpp"
 #include "engine/nest/mold_items.hpp"
 #include "engine/nest/nester.hpp"
@@ -37,6 +38,8 @@ BatchInstance common_batch(const std::vector<PieceGroup>& groups, const BatchSpe
       item.allowed_rotations_deg = item.grain_deg ? std::vector<double>{} : rotations;
       item.priority = group.priority;
       if (hides) item.pair_group = group.may_split ? "" : pair_group;
+      // One job's twins (its two feet's copies of a piece) are told apart from another job's.
+      if (!item.mirror_key.empty()) item.mirror_key = "job " + group.owner + ": " + item.mirror_key;
       batch.instance.items.push_back(std::move(item));
       batch.group_of_item.push_back(static_cast<int>(g));
     }
@@ -64,6 +67,7 @@ BatchInstance hide_batch(const std::vector<PieceGroup>& groups, const std::vecto
     throw EngineError("batch " + name + ": the grain tolerance must be 0..90 deg");
   BatchInstance batch = common_batch(groups, spec, name, true);
   batch.instance.bins = hides;
+  batch.mirror_pairs = spec.mirror_pairs;
   if (!spec.side_by_side) batch.instance.pair_distance_mm = kAnywhereOnOneHide_mm;
   bool every_hide_has_backbone = true;
   for (size_t b = 0; b < hides.size(); ++b) {
@@ -132,6 +136,8 @@ Layout nest_batch(const BatchInstance& batch, const NestOptions& options) {
       if (waiting.count(item.pair_group))
         layout.unplaced.push_back({item.id, item.demand,
                                    "the pieces of " + item.pair_group + " did not all fit on one hide with the others"});
+    if (batch.mirror_pairs)
+      mirror_pairs_about_backbone(layout, batch.instance, options.gap_mm.value_or(-1), options.margin_mm.value_or(-1));
     update_utilisation(layout, batch.instance);
     const std::vector<std::string> problems =
         check_layout(layout, batch.instance, options.gap_mm.value_or(-1), options.margin_mm.value_or(-1));

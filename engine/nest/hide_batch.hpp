@@ -61,6 +61,9 @@ struct BatchSpec {
   // distance from the toe notch (toe_region in mold_items.hpp) lies on this grade or better (0 = off).
   int toe_min_quality = 0;
   double toe_fraction = 0.4;
+  // A shoe's piece and the other foot's copy of it on one hide moved to mirror places about its
+  // backbone where they fit (engine/nest/hide_mirror_pairs.hpp); false leaves them as nested.
+  bool mirror_pairs = true;
   // A piece's heel-to-toe axis (the mold's x axis) within this of the backbone, on hides that have
   // one (hides without a backbone leave the grain free). nullopt = off.
   std::optional<double> grain_tolerance_deg;
@@ -72,6 +75,7 @@ inline constexpr double kAnywhereOnOneHide_mm = 1e6;
 struct BatchInstance {
   NestInstance instance;
   std::vector<int> group_of_item;  // instance.items[i] belongs to groups[group_of_item[i]]
+  bool mirror_pairs = false;       // hides: BatchSpec::mirror_pairs
 };
 
 // The pieces on a strip of strip_height_mm. Throws EngineError on bad spec or empty groups.
@@ -83,8 +87,9 @@ BatchInstance hide_batch(const std::vector<PieceGroup>& groups, const std::vecto
 
 // nest() on the instance. On hides, while a pair group is cut only in part, the lowest-priority such
 // group is taken out (its pieces listed as unplaced with the reason) and the others nested again
-// (one more nest() each, so at most groups x time_limit_s); the final layout is checked again by
-// the independent checker. Throws EngineError as nest().
+// (one more nest() each, so at most groups x time_limit_s); then pairs are mirrored about the
+// backbone where they fit (batch.mirror_pairs); the final layout is checked again by the independent
+// checker. Throws EngineError as nest().
 Layout nest_batch(const BatchInstance& batch, const NestOptions& options);
 
 // Indices of the groups with every piece placed.

@@ -84,6 +84,7 @@ Bin bin_from_dxf(const std::filesystem::path& path) {
     if ((backbone[1] - backbone[0]).norm() <= 0)
       throw EngineError(source + ": the BACKBONE line has no length");
     bin.backbone_deg = degrees_of(backbone[0], backbone[1]);
+    bin.backbone_point = 0.5 * (backbone[0] + backbone[1]);
   }
   return bin;
 }

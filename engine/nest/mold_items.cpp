@@ -80,6 +80,8 @@ std::vector<NestItem> items_from_molds(const std::vector<Mold>& molds, const Mol
       if (spec.toe_region_min_quality > 0)
         if (auto region = toe_region(item, spec.toe_region_fraction, spec.toe_region_min_quality))
           item.quality_regions.push_back(std::move(*region));
+      // The two feet's copies of one piece (the first item of this name and index is its key).
+      if (spec.mirrored_twins) item.mirror_key = std::to_string(items.size() - static_cast<std::size_t>(twin)) + " " + mold.name;
       items.push_back(std::move(item));
     }
   }

@@ -150,6 +150,10 @@ NestItem item(const json& j, const std::string& source) {
     it.pair_group = j["pair_group"].get<std::string>();
   }
   if (j.contains("priority")) it.priority = integer(j["priority"], where + " priority");
+  if (j.contains("mirror_key")) {
+    if (!j["mirror_key"].is_string()) fail(where, "\"mirror_key\" must be text");
+    it.mirror_key = j["mirror_key"].get<std::string>();
+  }
   return it;
 }
 
@@ -187,6 +191,7 @@ Bin bin(const json& j, const std::string& source) {
     b.name = j["name"].get<std::string>();
   }
   if (j.contains("backbone_deg") && !j["backbone_deg"].is_null()) b.backbone_deg = number(j["backbone_deg"], where + " backbone_deg");
+  if (j.contains("backbone_point") && !j["backbone_point"].is_null()) b.backbone_point = point(j["backbone_point"], where + " backbone_point");
   return b;
 }
 
@@ -225,6 +230,7 @@ json item_json(const NestItem& it) {
   }
   if (!it.pair_group.empty()) j["pair_group"] = it.pair_group;
   if (it.priority != 0) j["priority"] = it.priority;
+  if (!it.mirror_key.empty()) j["mirror_key"] = it.mirror_key;
   return j;
 }
 
@@ -235,6 +241,7 @@ json bin_json(const Bin& b) {
   json j = {{"id", b.id}, {"outer", ring_json(b.outer)}, {"holes", holes}, {"zones", zones}, {"stock", b.stock}, {"cost", b.cost}};
   if (!b.name.empty()) j["name"] = b.name;
   if (b.backbone_deg) j["backbone_deg"] = *b.backbone_deg;
+  if (b.backbone_point) j["backbone_point"] = {b.backbone_point->x(), b.backbone_point->y()};
   return j;
 }
 

@@ -37,6 +37,9 @@ struct NestItem {
   std::vector<QualityRegion> quality_regions;  // parts of the piece with a stricter min_quality than the whole
   std::string pair_group;                     // items sharing a non-empty group (the left and right molds of one
                                               // order) go on one hide, near each other, or none of them is placed
+  // The same piece for the other foot: an item made as another's mirror image (x -> -x in the own
+  // frame) shares its non-empty key, so a hide may cut the two mirrored about its backbone.
+  std::string mirror_key;
   int priority = 0;                           // when not every piece fits, higher priority is placed first
                                               // (the daemon: older jobs)
   std::string label;                          // short text drawn by the pen (order, size, L/R)
@@ -59,6 +62,8 @@ struct Bin {
   std::string name;                  // the hide's own id (digitizer or stock number), for reports
   std::optional<double> backbone_deg;  // the hide's grain (backbone) direction, counter-clockwise from its x
                                        // axis; when set, items' grain follows it instead of the x axis
+  std::optional<Point2> backbone_point;  // a point of the backbone line, when the hide file drew it (mm);
+                                         // else the line runs through the outline's centroid
   Polygon2 outer;
   std::vector<Polygon2> holes;
   std::vector<QualityZone> zones;

@@ -84,6 +84,8 @@ std::vector<NestItem> items_from_pattern(const std::vector<PatternPiece>& pieces
         item.grain_deg = grain_of(piece, sign);
         if (item.grain_deg) item.grain_tolerance_deg = *rules.grain_tolerance_deg;
       }
+      // The two feet's copies of one piece (the first item of this name and index is its key).
+      if (spec.mirrored_twins) item.mirror_key = std::to_string(items.size() - static_cast<std::size_t>(twin)) + " " + piece.name;
       items.push_back(std::move(item));
     }
   }
