@@ -84,6 +84,9 @@ TEST_F(HideFileTest, DxfLayersGiveOutlineHolesZonesAndBackboneInMillimetres) {
   EXPECT_NEAR(signed_area(hide.bin.zones[0].shape), 200.0 * 100.0, 1e-6);
   ASSERT_TRUE(hide.bin.backbone_deg.has_value());
   EXPECT_NEAR(*hide.bin.backbone_deg, 30.0, 1e-4);  // the DXF's 6 decimals
+  ASSERT_TRUE(hide.bin.backbone_point.has_value());  // the line's middle, in mm: pairs are mirrored about it
+  EXPECT_NEAR(hide.bin.backbone_point->x(), 200 + 50 * c30, 1e-3);
+  EXPECT_NEAR(hide.bin.backbone_point->y(), 200 + 50 * s30, 1e-3);
   EXPECT_TRUE(hide.material.empty());
   EXPECT_FALSE(hide.thickness_mm.has_value());
 }

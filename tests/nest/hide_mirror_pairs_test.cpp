@@ -1,7 +1,8 @@
 // A pair's pieces mirrored about the hide's backbone (engine/nest/hide_mirror_pairs.hpp). The oracle is
 // the reflection itself, computed here point by point (c + 2 ((w - c).u) u - (w - c) for the line
 // through c along u), and the independent layout checker: a piece moved onto the mirror image of its
-// other foot's copy lies exactly on the reflected outline, and only where the hide passes the checker.
+// other foot's copy lies exactly on the reflected outline, and only where the hide passes the checker;
+// a pair whose mirror places are taken moves to a free place; where none exists, nothing moves.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -71,7 +72,7 @@ TEST(HideMirrorPairs, TheMirrorPoseLaysTheTwinOnTheReflectedOutline) {
   }
 }
 
-TEST(HideMirrorPairs, ATwinMovesOntoTheMirrorImageWhereTheHideAllowsAndStaysWhereItDoesNot) {
+TEST(HideMirrorPairs, ATwinGoesOntoTheMirrorImageElseWithItsPairToAFreeMirroredPlaceElseStays) {
   // A 600 x 300 hide, its backbone along x through its middle; the vamp above the backbone at the
   // left, its twin at the right. A third piece C sits under the vamp at its mirror place, the second
   // time: then neither piece can move.
@@ -97,24 +98,39 @@ TEST(HideMirrorPairs, ATwinMovesOntoTheMirrorImageWhereTheHideAllowsAndStaysWher
   for (const Point2& w : placed_shape(instance.items[0], layout.placements[0]).points) reflected.push_back(reflect(w, {300, 150}, 0));
   EXPECT_LT(farthest_from(placed_shape(instance.items[1], layout.placements[1]), reflected), 1e-9);
 
-  // Blocked: C (a 100 mm square) covers the mirror places of both pieces about the backbone.
+  // C (a 100 mm square, twice) covers the mirror places of both pieces: the pair moves, both pieces, to
+  // a free place where they lie mirrored; the squares stay.
   NestItem blocker;
   blocker.id = 2;
+  blocker.demand = 2;
   blocker.shape.points = {{0, 0}, {100, 0}, {100, 100}, {0, 100}};
   instance.items.push_back(blocker);
   Layout blocked;
   blocked.placements = {{0, 0, 0, 0, false, 40, 190}, {1, 0, 0, 0, false, 520, 190}, {2, 0, 0, 0, false, 20, 5},
                         {2, 0, 0, 0, false, 470, 5}};
-  instance.items[2].demand = 2;
   update_utilisation(blocked, instance);
   ASSERT_TRUE(check_layout(blocked, instance).empty());
-  const std::vector<Placement> before = blocked.placements;
-  EXPECT_EQ(mirror_pairs_about_backbone(blocked, instance).mirrored, 0);
-  for (std::size_t i = 0; i < before.size(); ++i) {
-    EXPECT_EQ(blocked.placements[i].x, before[i].x);
-    EXPECT_EQ(blocked.placements[i].y, before[i].y);
-    EXPECT_EQ(blocked.placements[i].rotation_deg, before[i].rotation_deg);
-  }
+  EXPECT_EQ(mirror_pairs_about_backbone(blocked, instance).mirrored, 1);
+  EXPECT_TRUE(check_layout(blocked, instance).empty());
+  EXPECT_EQ(blocked.placements[2].x, 20);
+  EXPECT_EQ(blocked.placements[3].x, 470);
+  reflected.clear();
+  for (const Point2& w : placed_shape(instance.items[0], blocked.placements[0]).points) reflected.push_back(reflect(w, {300, 150}, 0));
+  EXPECT_LT(farthest_from(placed_shape(instance.items[1], blocked.placements[1]), reflected), 1e-9);
+
+  // Leather below grade 1 under the whole backbone's lower side: no mirror place exists, nothing moves.
+  instance.items.pop_back();
+  for (NestItem& item : instance.items) item.min_quality = 1;
+  instance.bins[0].zones.push_back({Polygon2{{{0, 0}, {600, 0}, {600, 150}, {0, 150}}}, 0});
+  Layout one_side;
+  one_side.placements = {{0, 0, 0, 0, false, 40, 190}, {1, 0, 0, 0, false, 520, 190}};
+  update_utilisation(one_side, instance);
+  ASSERT_TRUE(check_layout(one_side, instance).empty());
+  EXPECT_EQ(mirror_pairs_about_backbone(one_side, instance).mirrored, 0);
+  EXPECT_EQ(one_side.placements[0].x, 40);
+  EXPECT_EQ(one_side.placements[0].y, 190);
+  EXPECT_EQ(one_side.placements[1].x, 520);
+  EXPECT_EQ(one_side.placements[1].y, 190);
 }
 
 TEST(HideMirrorPairs, TheBatchMirrorsAPairsPiecesOnAHideWithABackbone) {

@@ -109,6 +109,8 @@ TEST(NestJson, HideFieldsSurviveTheLayoutFile) {
   instance.items[1].priority = 4;
   instance.bins[0].name = "H-0815";
   instance.bins[0].backbone_deg = 12.5;
+  instance.bins[0].backbone_point = Point2(300, 140);
+  instance.items[0].mirror_key = "job 4: 0 vamp";
   instance.pair_distance_mm = 250;
   Layout layout;
   layout.instance = instance.name;
@@ -122,7 +124,11 @@ TEST(NestJson, HideFieldsSurviveTheLayoutFile) {
   EXPECT_EQ(embedded.bins[0].name, "H-0815");
   ASSERT_TRUE(embedded.bins[0].backbone_deg.has_value());
   EXPECT_DOUBLE_EQ(*embedded.bins[0].backbone_deg, 12.5);
+  EXPECT_EQ(embedded.bins[0].backbone_point, Point2(300, 140));
+  EXPECT_EQ(embedded.items[0].mirror_key, "job 4: 0 vamp");
+  EXPECT_EQ(embedded.items[1].mirror_key, "");
   EXPECT_DOUBLE_EQ(embedded.pair_distance_mm, 250);
+  expect_refused(R"({"strip_height": 10, "items": [{"id": 0, "mirror_key": 3, "shape": [[0,0],[1,0],[0,1]]}]})", "mirror_key");
   expect_refused(R"({"strip_height": 10, "items": [{"id": 0, "pair_group": 7, "shape": [[0,0],[1,0],[0,1]]}]})", "pair_group");
   expect_refused(R"({"strip_height": 10, "items": [{"id": 0, "quality_regions": [{"shape": [[0,0],[1,0],[0,1]]}], "shape": [[0,0],[1,0],[0,1]]}]})", "min_quality");
 }

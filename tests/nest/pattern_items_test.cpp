@@ -57,6 +57,10 @@ TEST(PatternItems, DemandTwinsNotchesAndGrain) {
   EXPECT_NEAR(*items[0].grain_deg, 30, 1e-9);
   EXPECT_NEAR(*items[1].grain_deg, 150, 1e-9);  // mirrored about the y axis
   EXPECT_NEAR(items[1].marks[0].from_mm.x(), -30, 1e-12);
+  EXPECT_EQ(items[0].mirror_key, "0 vamp") << "the two feet's copies of one piece share a key";
+  EXPECT_EQ(items[1].mirror_key, items[0].mirror_key);
+  spec.mirrored_twins = false;
+  EXPECT_EQ(items_from_pattern({vamp_piece()}, spec)[0].mirror_key, "") << "one foot: no twin";
 }
 
 TEST(PatternItems, InternalLinesAreDrawnLinesSewLinesWhenAsked) {
