@@ -181,8 +181,11 @@ Status LedgerClient::mark_cut(const Lease& lease) {
                           if (Status sending = batch_in(tx, lease.object_id, "sending"); !sending) return sending;
                           tx.exec_params("UPDATE batches SET state = 'cut', updated_at = now() WHERE id = $1",
                                          lease.object_id);
-                          const std::vector<long long> cut = jobs_of(tx, lease.object_id);
-                          for (long long id : cut) add_event(tx, id, node_, "cut");
+                          // Each job's 'cut' names the batch (migrations/007_cut_events.sql): the overview
+                          // counts a cut batch's jobs from these, as a job with a next part leaves it below.
+                          tx.exec_params("INSERT INTO job_events (job_id, node, event, batch_id)"
+                                         " SELECT id, $2, 'cut', $1 FROM jobs WHERE batch_id = $1 ORDER BY id",
+                                         lease.object_id, node_);
                           // A job of several materials whose next part follows: computed again with it
                           // (migrations/006_parts.sql). SET reads the row as it was: part is the old one.
                           for (const pqxx::row& r : tx.exec_params(

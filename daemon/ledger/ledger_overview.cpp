@@ -33,7 +33,9 @@ Result<LedgerOverview> LedgerClient::overview() {
     }
     for (const pqxx::row& r : tx.exec(
              "SELECT b.id, to_char(b.updated_at AT TIME ZONE 'UTC', 'YYYY-MM-DD\"T\"HH24:MI:SS.MS\"Z\"'), b.material,"
-             " (SELECT count(*) FROM jobs j WHERE j.batch_id = b.id), coalesce(b.pieces, 0), coalesce(b.utilisation, 0)"
+             // A job cut in parts has left the batch of an earlier part: its 'cut' event names it.
+             " (SELECT count(DISTINCT e.job_id) FROM job_events e WHERE e.batch_id = b.id AND e.event = 'cut'),"
+             " coalesce(b.pieces, 0), coalesce(b.utilisation, 0)"
              " FROM batches b WHERE b.state = 'cut' AND b.updated_at > now() - interval '24 hours'"
              " ORDER BY b.updated_at, b.id LIMIT 5000")) {
       out.cut_last_24h.push_back({r[0].as<long long>(), r[1].as<std::string>(), r[2].as<std::string>(),

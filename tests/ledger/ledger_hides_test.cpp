@@ -302,6 +302,20 @@ TEST_F(LedgerHides, AnOrderThatAllowsSplittingIsCutOverTwoHidesEachPieceOnce) {
       return true;
     }, 10));
   }
+  // The overview counts order 300 among the jobs of each hide that cut a part of it, hide A included
+  // (the job has left that batch for its next part).
+  const auto overview_log = shop_.root() / "overview.json";
+  EXPECT_EQ(run_command({binary("lastcut").string(), "status", "--json", "--config", shop_.config_file("compute-b").string()},
+                        overview_log),
+            0);
+  const auto overview = nlohmann::json::parse(read_text(overview_log), nullptr, false);
+  ASSERT_FALSE(overview.is_discarded()) << read_text(overview_log);
+  const long long batch_a = std::stoll(batch_of_hide("hide-a"));
+  int counted = 0;
+  for (const auto& batch : overview["cut_last_24h"])
+    if (batch.value("id", 0LL) == batch_a) counted = batch.value("jobs", -1);
+  EXPECT_EQ(counted, 1) << overview["cut_last_24h"].dump();
+
   EXPECT_EQ(shop_.stop_node("station-a"), 0);
   EXPECT_EQ(shop_.stop_node("compute-b"), 0);
   shop_.stop_cutter("cutter-a");
