@@ -264,8 +264,10 @@ Result<std::optional<ComputeClaim>> LedgerComputeStore::claim(const std::string&
       if (!claimed) return claimed.status();
       job = std::move(*claimed);
       if (!job) return LedgerJobChanges{};
+      const Result<JobTicket> ticket = ticket_from_ledger(job->scan.ticket);
+      const std::string noun = job_work_noun(job->scan.scan_name, ticket ? *ticket : JobTicket{});
       return LedgerJobChanges{{job->job_id, job->scan.scan_name, job->scan.ticket, 0, JobStage::Claimed, "",
-                               "computing molds on " + ledger_.node + " (attempt " + std::to_string(job->attempts) + ")"}};
+                               "computing " + noun + " on " + ledger_.node + " (attempt " + std::to_string(job->attempts) + ")"}};
     });
     if (!asked) return asked;
     if (job) {

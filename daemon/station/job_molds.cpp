@@ -9,6 +9,10 @@
 
 namespace lastcut::daemon {
 
+std::string job_work_noun(const std::filesystem::path& input, const JobTicket& ticket) {
+  return is_pattern_set(input) || !ticket.style.empty() ? "pieces" : "molds";
+}
+
 JobMolds make_job_molds(const std::filesystem::path& scan, const std::filesystem::path& job_dir, const JobTicket& ticket,
                         const DaemonConfig& settings, ProgressMonitor& monitor, const std::string& worker,
                         const std::string& task, const std::string& label) {

@@ -35,6 +35,10 @@ struct JobMolds {
   nlohmann::json report;  // molds, pieces, measures, timings_s and, when references were named, compare
 };
 
+// What make_job_molds makes of `input` under `ticket`, for the log before it starts: "pieces" for a
+// pattern set or a style, else "molds".
+std::string job_work_noun(const std::filesystem::path& input, const JobTicket& ticket);
+
 // Makes the molds of `scan` (or the pieces of the ticket's style on it, or of a pattern set) into job_dir
 // (molds/ or pieces/, items.json; the reference copies are expected in
 // job_dir), as `worker` busy on `task` in `monitor`; `label` names the job in log lines.

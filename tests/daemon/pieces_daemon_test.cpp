@@ -76,6 +76,10 @@ TEST(DaemonPieces, StylesAndAPatternSetAreCutByMaterialWithTheirRules) {
   ASSERT_TRUE(wait_until(all_done, 60)) << read_text(rig.daemon_log());
   EXPECT_EQ(rig.stop_daemon(), 0);
   rig.stop_cutters();
+  // A style's or a pattern set's job says what it computes: pieces, not molds.
+  const std::string log = read_text(rig.daemon_log());
+  EXPECT_EQ(log.find("computing molds"), std::string::npos);
+  EXPECT_NE(log.find("computing pieces, attempt 1"), std::string::npos);
 
   // What the cut files cut, read independently of the nester.
   std::vector<std::filesystem::path> items_files;
