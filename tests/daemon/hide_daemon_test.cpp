@@ -22,21 +22,9 @@
 namespace lastcut::daemon::testing {
 namespace {
 
-// The hide batch holding hide file `file`: batch.json, or null while it is not there.
-nlohmann::json hide_batch(const DaemonRig& rig, const std::string& file) {
-  std::error_code error;
-  for (std::filesystem::directory_iterator it(rig.spool() / "batches", error), end; !error && it != end;
-       it.increment(error)) {
-    auto batch = nlohmann::json::parse(read_text(it->path() / "batch.json"), nullptr, false);
-    if (!batch.is_discarded() && batch.contains("hide") && batch["hide"].value("file", "") == file) return batch;
-  }
-  return nullptr;
-}
+nlohmann::json hide_batch(const DaemonRig& rig, const std::string& file) { return spool_hide_batch(rig.spool(), file); }
 
-std::string stage_of(const DaemonRig& rig, const std::string& file) {
-  const auto batch = hide_batch(rig, file);
-  return batch.is_null() ? "" : batch.value("stage", "");
-}
+std::string stage_of(const DaemonRig& rig, const std::string& file) { return spool_hide_stage(rig.spool(), file); }
 
 std::filesystem::path items_of(const DaemonRig& rig, const std::string& id) {
   return rig.spool() / "work" / id / "items.json";

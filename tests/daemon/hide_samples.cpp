@@ -76,6 +76,41 @@ std::map<std::string, int> placed_by_label(const std::filesystem::path& layout_j
   return placed;
 }
 
+nlohmann::json spool_hide_batch(const std::filesystem::path& spool, const std::string& file) {
+  std::error_code error;
+  for (std::filesystem::directory_iterator it(spool / "batches", error), end; !error && it != end; it.increment(error)) {
+    auto batch = nlohmann::json::parse(read_text(it->path() / "batch.json"), nullptr, false);
+    if (!batch.is_discarded() && batch.contains("hide") && batch["hide"].value("file", "") == file) return batch;
+  }
+  return nullptr;
+}
+
+std::string spool_hide_stage(const std::filesystem::path& spool, const std::string& file) {
+  const auto batch = spool_hide_batch(spool, file);
+  return batch.is_null() ? "" : batch.value("stage", "");
+}
+
+std::set<std::string> check_orders_over_hides(const std::map<std::string, std::filesystem::path>& layouts,
+                                              const std::map<std::string, int>& split,
+                                              const std::map<std::string, int>& whole, const std::string& first_hide) {
+  std::map<std::string, int> cut;
+  std::set<std::string> hides_of_split, hides_of_whole;
+  for (const auto& [hide, layout] : layouts) {
+    check_hide_layout(layout, 0);
+    for (const auto& [label, copies] : placed_by_label(layout)) {
+      cut[label] += copies;
+      (split.count(label) ? hides_of_split : hides_of_whole).insert(hide);
+    }
+  }
+  std::map<std::string, int> expected = split;
+  expected.insert(whole.begin(), whole.end());
+  EXPECT_EQ(cut, expected) << "every piece of both orders cut exactly once";
+  EXPECT_EQ(hides_of_whole.size(), 1u) << "an order that may not split lies on one hide";
+  EXPECT_GE(hides_of_split.size(), 2u);
+  EXPECT_EQ(hides_of_split.count(first_hide), 1u);
+  return hides_of_split;
+}
+
 std::size_t check_hide_layout(const std::filesystem::path& layout_json, std::size_t zones) {
   const auto json = read_json_file(layout_json);
   const NestInstance instance = instance_from_layout_json(json);

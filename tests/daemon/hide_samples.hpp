@@ -4,8 +4,11 @@
 // outcome does not depend on how well the nester packs, and the independent check of a written layout.
 #include <filesystem>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
+
+#include <nlohmann/json.hpp>
 
 namespace lastcut::daemon::testing {
 
@@ -26,6 +29,18 @@ double pieces_area_mm2(const std::filesystem::path& items_json);
 // (a piece's label names its order, foot and name, so each piece of a shop's orders is told apart).
 std::map<std::string, int> pieces_by_label(const std::filesystem::path& items_json);
 std::map<std::string, int> placed_by_label(const std::filesystem::path& layout_json);
+
+// The spool's hide batch holding hide file `file` (its batch.json), or null while there is none; and its
+// stage ("" while none).
+nlohmann::json spool_hide_batch(const std::filesystem::path& spool, const std::string& file);
+std::string spool_hide_stage(const std::filesystem::path& spool, const std::string& file);
+
+// Two orders cut from hides (hide name -> its batch's layout.json, each checked by check_hide_layout):
+// every piece of `split` and `whole` (label -> copies) cut exactly once over the layouts, `whole` on
+// one hide, `split` on two or more, `first_hide` among them. Returns the hides `split` lies on.
+std::set<std::string> check_orders_over_hides(const std::map<std::string, std::filesystem::path>& layouts,
+                                              const std::map<std::string, int>& split,
+                                              const std::map<std::string, int>& whole, const std::string& first_hide);
 
 // Checks every placement of a hide batch's layout.json with the independent checker, and that the
 // material's rules reached it (min_quality 2, toe regions of grade 3, grain within 10 deg where the

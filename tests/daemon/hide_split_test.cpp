@@ -19,22 +19,6 @@
 namespace lastcut::daemon::testing {
 namespace {
 
-// The hide batch of hide file `file` (batch.json), or null.
-nlohmann::json split_hide_batch(const DaemonRig& rig, const std::string& file) {
-  std::error_code error;
-  for (std::filesystem::directory_iterator it(rig.spool() / "batches", error), end; !error && it != end;
-       it.increment(error)) {
-    auto batch = nlohmann::json::parse(read_text(it->path() / "batch.json"), nullptr, false);
-    if (!batch.is_discarded() && batch.contains("hide") && batch["hide"].value("file", "") == file) return batch;
-  }
-  return nullptr;
-}
-
-std::string split_hide_stage(const DaemonRig& rig, const std::string& file) {
-  const auto batch = split_hide_batch(rig, file);
-  return batch.is_null() ? "" : batch.value("stage", "");
-}
-
 TEST(DaemonHides, AnOrderThatAllowsSplittingIsCutOverTwoHidesEachPieceOnce) {
   RigOptions options;
   options.cutters = {"cutter-1"};
@@ -76,9 +60,9 @@ TEST(DaemonHides, AnOrderThatAllowsSplittingIsCutOverTwoHidesEachPieceOnce) {
   ASSERT_LT(w_a * h_a, pieces_area_mm2(items_300));
   write_hide_json(staging / "hide-a.json", w_a, h_a);
   drop(staging / "hide-a.json", hides, "hide-a.json");
-  ASSERT_TRUE(wait_until([&] { const auto s = split_hide_stage(rig, "hide-a.json"); return s == "cut" || s == "empty"; }, 60))
+  ASSERT_TRUE(wait_until([&] { const auto s = spool_hide_stage(rig.spool(), "hide-a.json"); return s == "cut" || s == "empty"; }, 60))
       << read_text(rig.daemon_log());
-  const auto batch_a = split_hide_batch(rig, "hide-a.json");
+  const auto batch_a = spool_hide_batch(rig.spool(), "hide-a.json");
   ASSERT_EQ(batch_a.value("stage", ""), "cut") << batch_a.dump(1);
   EXPECT_EQ(batch_a["jobs"], nlohmann::json::array({o300})) << "order 400 may not split: it waits whole";
   const auto report_a = read_json_file(rig.spool() / "batches" / batch_a.value("id", "") / "hide-report.json");
@@ -110,7 +94,7 @@ TEST(DaemonHides, AnOrderThatAllowsSplittingIsCutOverTwoHidesEachPieceOnce) {
     const std::string file = "hide-b" + std::to_string(n) + ".json";
     write_hide_json(staging / file, 2 * length + 110, 2 * width + 30);
     drop(staging / file, hides, file);
-    ASSERT_TRUE(wait_until([&] { const auto s = split_hide_stage(rig, file); return s == "cut" || s == "empty"; }, 60))
+    ASSERT_TRUE(wait_until([&] { const auto s = spool_hide_stage(rig.spool(), file); return s == "cut" || s == "empty"; }, 60))
         << read_text(rig.daemon_log());
     hide_files.push_back(file);
     ASSERT_TRUE(wait_until([&] { return rig.find_job("o300-pair.stl").folder == "done" || computed("o300-pair.stl"); }, 10));
@@ -121,29 +105,19 @@ TEST(DaemonHides, AnOrderThatAllowsSplittingIsCutOverTwoHidesEachPieceOnce) {
 
   // Every half of both orders cut exactly once, over the hides' layouts; order 400's on one hide.
   const std::string on_cutter = rig.received("cutter-1");
-  std::map<std::string, int> cut;
-  std::map<std::string, std::set<std::string>> hides_of_order;
+  std::map<std::string, std::filesystem::path> layouts;
   for (const std::string& file : hide_files) {
-    const auto batch = split_hide_batch(rig, file);
+    const auto batch = spool_hide_batch(rig.spool(), file);
     if (batch.value("stage", "") != "cut") continue;
     const auto dir = rig.spool() / "batches" / batch.value("id", "");
     EXPECT_EQ(count_occurrences(on_cutter, read_text(dir / "cut.plt")), 1) << file;
-    check_hide_layout(dir / "layout.json", 0);
-    for (const auto& [label, copies] : placed_by_label(dir / "layout.json")) {
-      cut[label] += copies;
-      hides_of_order[pieces_300.count(label) ? "300" : "400"].insert(file);
-    }
+    layouts[file] = dir / "layout.json";
   }
-  std::map<std::string, int> expected = pieces_300;
-  expected.insert(pieces_400.begin(), pieces_400.end());
-  EXPECT_EQ(cut, expected);
-  EXPECT_EQ(hides_of_order["400"].size(), 1u) << "an order that may not split lies on one hide";
-  EXPECT_GE(hides_of_order["300"].size(), 2u);
-  EXPECT_EQ(hides_of_order["300"].count("hide-a.json"), 1u);
+  const std::set<std::string> hides_of_300 = check_orders_over_hides(layouts, pieces_300, pieces_400, "hide-a.json");
   // The job's report lists each hide that cut a part of it.
   const auto report_300 = read_json_file(rig.spool() / "done" / o300 / "report.json");
   ASSERT_TRUE(report_300.contains("parts_cut")) << report_300.dump(1);
-  EXPECT_EQ(report_300["parts_cut"].size(), hides_of_order["300"].size());
+  EXPECT_EQ(report_300["parts_cut"].size(), hides_of_300.size());
   int pieces_in_parts = 0;
   for (const auto& part : report_300["parts_cut"]) pieces_in_parts += part.value("pieces", 0);
   EXPECT_EQ(pieces_in_parts, 4);
