@@ -19,6 +19,11 @@ std::vector<Point2> rectangle(double x0, double y0, double x1, double y1) {
 
 }  // namespace
 
+std::string leather_hide_material(const std::string& cutter) {
+  return "[materials.leather]\nkind = \"hide\"\ncutter = \"" + cutter + "\"\npairs = \"same_hide\"\n"
+         "min_quality = 2\ntoe_min_quality = 3\ngrain_tolerance_deg = 10\nspacing_mm = 3\nrotation_step_deg = 90\n";
+}
+
 void write_hide_dxf(const std::filesystem::path& file, double w, double h, bool zones) {
   DxfDocument dxf(DxfVersion::R12, {{"HIDE", 7}, {"HOLE", 1}, {"ZONE_1", 3}, {"ZONE_2", 4}, {"BACKBONE", 5}});
   dxf.polyline("HIDE", rectangle(0, 0, w, h), true);

@@ -12,6 +12,10 @@
 
 namespace lastcut::daemon::testing {
 
+// The hide material the hide tests configure: [materials.leather] on `cutter`, pairs on one hide,
+// grade 2 for a piece and 3 for its toe, grain within 10 deg, 3 mm spacing, turns of 90 deg.
+std::string leather_hide_material(const std::string& cutter);
+
 // A hide DXF: a w x h mm rectangle, a 20 x 20 mm hole and (with `zones`) a 40 x 40 mm grade-1 zone,
 // a 40 x 40 mm grade-2 zone (good enough for a piece, not for its toe) and a backbone along x, in its
 // right 70 mm, beside the room the pieces need.

@@ -23,9 +23,7 @@ TEST(DaemonHides, AnOrderThatAllowsSplittingIsCutOverTwoHidesEachPieceOnce) {
   RigOptions options;
   options.cutters = {"cutter-1"};
   options.extra_paths = "hides = \"hides\"\n";
-  options.extra_config = "[materials.leather]\nkind = \"hide\"\ncutter = \"cutter-1\"\npairs = \"same_hide\"\n"
-                         "min_quality = 2\ntoe_min_quality = 3\ngrain_tolerance_deg = 10\nspacing_mm = 3\n"
-                         "rotation_step_deg = 90\n";
+  options.extra_config = leather_hide_material("cutter-1");
   DaemonRig rig("hides-split", options);
   const auto hides = rig.root() / "hides";
   const auto staging = rig.root() / "staging";

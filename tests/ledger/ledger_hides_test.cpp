@@ -37,9 +37,7 @@ ShopOptions shop_options() {
   options.nodes = {{"station-a", {"compute", "station"}}, {"compute-b", {"compute"}}};
   options.cutters = {{"cutter-a", "hpgl", "station-a"}};
   options.extra_paths = "hides = \"hides\"\n";
-  options.extra_config = "[materials.leather]\nkind = \"hide\"\ncutter = \"cutter-a\"\npairs = \"same_hide\"\n"
-                         "min_quality = 2\ntoe_min_quality = 3\ngrain_tolerance_deg = 10\nspacing_mm = 3\n"
-                         "rotation_step_deg = 90\n";
+  options.extra_config = leather_hide_material("cutter-a");
   return options;
 }
 
