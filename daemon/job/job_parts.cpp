@@ -4,10 +4,7 @@
 namespace lastcut::daemon {
 namespace {
 
-// "4 pieces of lining": how a part is named in every line about it.
-std::string part_pieces(const JobPart& part) {
-  return std::to_string(part.pieces) + (part.pieces == 1 ? " piece of " : " pieces of ") + part.material;
-}
+std::string part_pieces(const JobPart& part) { return pieces_of(part.pieces, part.material); }
 
 
 }  // namespace
@@ -39,6 +36,10 @@ std::vector<JobPart> parts_from_json(const nlohmann::json& json) {
     parts.push_back(std::move(part));
   }
   return parts;
+}
+
+std::string pieces_of(int pieces, const std::string& material) {
+  return std::to_string(pieces) + (pieces == 1 ? " piece of " : " pieces of ") + material;
 }
 
 int count_copies(const std::vector<int>& copies) {

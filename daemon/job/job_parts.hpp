@@ -44,6 +44,9 @@ std::vector<JobPart> parts_from_json(const nlohmann::json& json);
 // `whole`'s material and cutter. The part index stays.
 std::vector<JobPart> split_part(std::vector<JobPart> parts, int current, const JobPart& whole, const PartSplit& split);
 
+// "4 pieces of lining", "1 piece of leather": how every line names a part's pieces.
+std::string pieces_of(int pieces, const std::string& material);
+
 // The pieces `copies` counts (the sum).
 int count_copies(const std::vector<int>& copies);
 

@@ -197,7 +197,7 @@ Status LedgerClient::mark_cut(const Lease& lease) {
                                    lease.object_id)) {
                             add_event(tx, r[0].as<long long>(), node_, "computed",
                                       "next part " + r[1].as<std::string>() + " of " + r[2].as<std::string>() + ": " +
-                                          r[3].as<std::string>() + " pieces of " + r[4].as<std::string>() + " for " +
+                                          daemon::pieces_of(r[3].as<int>(), r[4].as<std::string>()) + " for " +
                                           r[5].as<std::string>());
                           }
                           tx.exec_params("UPDATE jobs SET state = 'done', updated_at = now() WHERE batch_id = $1",

@@ -64,12 +64,12 @@ bool cut_part(const Spool& spool, JobState& state, const BatchState& batch) {
   std::string noted;
   if (Status reported = update_job_report(spool, JobFolder::Work, state.id, {{"parts_cut", cut}}); !reported)
     noted = " (" + reported.error() + ")";
-  const std::string done = fmt::format("{} pieces of {} cut on {} (batch {})", state.piece_count, batch.material,
+  const std::string done = fmt::format("{} cut on {} (batch {})", pieces_of(state.piece_count, batch.material),
                                        batch.cutter, batch.id);
   if (!state.next_part()) return false;
   set_job_stage(spool, state, JobStage::Computed,
-                fmt::format("{}; next part {} of {}: {} pieces of {} for {}{}", done, state.part + 1, state.parts.size(),
-                            state.piece_count, state.ticket.material, state.ticket.cutter, noted),
+                fmt::format("{}; next part {} of {}: {} for {}{}", done, state.part + 1, state.parts.size(),
+                            pieces_of(state.piece_count, state.ticket.material), state.ticket.cutter, noted),
                 "part cut, but the next part is not written (the next start tries again)");
   return true;
 }

@@ -76,6 +76,7 @@ Result<nlohmann::json> WebStore::overview() {
           line["usable_area_m2"] = figures.value("usable_area_m2", 0.0);
           line["offcut_area_m2"] = figures.value("offcut_area_m2", 0.0);
           line["offcut_file"] = figures.value("offcut_file", "");
+          if (figures.contains("pairs_mirrored_about_backbone")) line["pairs_mirrored"] = figures["pairs_mirrored_about_backbone"];
         }
       }
     }

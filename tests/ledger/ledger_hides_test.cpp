@@ -195,7 +195,8 @@ TEST_F(LedgerHides, WaitingPiecesAreCutFromHidesOnceAcrossAKill) {
   const std::string cut_3 = cut_file(batch_3);
   ASSERT_GT(cut_3.size(), 200u);
   EXPECT_EQ(count_occurrences(runs[1], cut_3), 0) << "the stalled cut never completed";
-  EXPECT_EQ(runs[1].compare(0, 100, cut_3, 0, 100), 0) << "its beginning reached the stalled cutter";
+  EXPECT_EQ(runs[1].compare(0, 100, cut_3, 0, 100), 0)
+      << "its beginning reached the stalled cutter: " << runs[1].substr(0, 200) << "\nnot " << cut_3.substr(0, 100);
   EXPECT_EQ(runs[2].find(cut_3.substr(0, 100)), std::string::npos) << "sent again after the restart";
 
   // Layouts: every placed piece passes the independent checker; the report and the offcut are there.

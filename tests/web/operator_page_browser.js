@@ -99,7 +99,7 @@ async function main() {
       card.querySelector('.state').textContent.startsWith('cut') && card.querySelector('.figures') &&
       card.querySelector('img').complete && card.querySelector('img').naturalWidth > 0), { timeout: 180000 });
     const hideFigures = await page.$eval('.card.hide .figures', (node) => node.textContent);
-    check(/^\d+ pieces, \d+ % of its usable area, offcut [\d.]+ of [\d.]+ m\u00b2$/.test(hideFigures),
+    check(/^\d+ pieces, \d+ % of its usable area, offcut [\d.]+ of [\d.]+ m\u00b2(, \d+ of \d+ pairs mirrored about the backbone)?$/.test(hideFigures),
           `the hide's card shows its layout and figures: ${hideFigures}`);
     // The last 24 hours: three jobs cut, in the plots per hour and the yield of each material.
     await page.waitForFunction(() => document.getElementById('day-summary').textContent.startsWith('3 job(s)'),

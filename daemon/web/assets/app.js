@@ -249,6 +249,9 @@ function drawHides() {
       if (hide.offcut_area_m2 !== undefined) {
         figures.push(`offcut ${hide.offcut_area_m2.toFixed(2)} of ${hide.usable_area_m2.toFixed(2)} m\u00b2`);
       }
+      if (hide.pairs_mirrored) {
+        figures.push(`${hide.pairs_mirrored.mirrored} of ${hide.pairs_mirrored.pairs} pairs mirrored about the backbone`);
+      }
       card.append(picture, el('div', figures.join(', '), 'figures'));
       if (hide.offcut_file) {
         const link = el('a', 'offcut (DXF)');
