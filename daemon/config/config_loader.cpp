@@ -128,6 +128,7 @@ void read_materials(TableReader& root, DaemonConfig& config, std::vector<std::st
       reader.number("toe_fraction", material.toe_fraction, 0.05, 1);
       reader.number("grain_tolerance_deg", material.grain_tolerance_deg, 0, 90);
       reader.boolean("pieces_side_by_side", material.pieces_side_by_side);
+      reader.boolean("mirror_pairs", material.mirror_pairs);
       if (pairs != "same_hide" && pairs != "any") errors.push_back(path + ".pairs: \"" + pairs + "\" is not same_hide or any");
       material.pairs_same_hide = pairs == "same_hide";
     }

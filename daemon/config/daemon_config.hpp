@@ -78,6 +78,9 @@ struct MaterialConfig {
   // Hides only.
   bool pairs_same_hide = true;  // pairs = "same_hide": an order's jobs on one hide; "any": each job alone
   bool pieces_side_by_side = false;  // a pair's (or job's) pieces next to each other on their hide, not anywhere on it
+  // A shoe's piece and the other foot's copy moved to mirror places about the backbone where the hide
+  // has room (engine/nest/hide_mirror_pairs.hpp); false keeps the nester's places (a more compact offcut).
+  bool mirror_pairs = true;
   int min_quality = 0;          // lowest leather grade a piece may lie on (zones below are avoided)
   int toe_min_quality = 0;      // the toe/vamp region of a mold needs this grade or better (0 = off)
   double toe_fraction = 0.4;    // that region: this share of the toe-heel distance from the toe notch

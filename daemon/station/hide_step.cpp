@@ -88,6 +88,7 @@ Result<HideMade> build_hide(const std::vector<HideJobInput>& jobs, const std::fi
     spec.rotation_step_deg = material.rotation_step_deg;
     spec.pairs = material.pairs_same_hide ? PairPolicy::SameHide : PairPolicy::Any;
     spec.side_by_side = material.pieces_side_by_side;
+    spec.mirror_pairs = material.mirror_pairs;
     spec.gap_mm = material.spacing_mm;
     spec.margin_mm = material.spacing_mm;
     spec.min_quality = material.min_quality;

@@ -269,6 +269,7 @@ TEST(DaemonConfig, HideMaterialsAndTheHidesFolder) {
   EXPECT_EQ(leather.toe_min_quality, 0) << "the toe rule is off unless asked for";
   EXPECT_DOUBLE_EQ(leather.toe_fraction, 0.4);
   EXPECT_DOUBLE_EQ(leather.grain_tolerance_deg, 0);
+  EXPECT_TRUE(leather.mirror_pairs) << "pairs mirrored about the backbone unless asked not to";
   EXPECT_EQ(result.config->materials.at("calf").kind, MaterialKind::Strip);
   EXPECT_EQ(result.config->paths.hides_dir.filename(), "hides");
   EXPECT_TRUE(result.config->paths.hides_dir.is_absolute());
@@ -300,18 +301,23 @@ TEST(DaemonConfig, HideMaterialsAndTheHidesFolder) {
   refused(same_folder, "paths.hides: must be a folder of its own");
   std::string leather_rules = text;
   leather_rules.replace(leather_rules.find("min_quality = 2\n"), 16,
-                        "min_quality = 2\ntoe_min_quality = 3\ntoe_fraction = 0.3\ngrain_tolerance_deg = 15\n");
+                        "min_quality = 2\ntoe_min_quality = 3\ntoe_fraction = 0.3\ngrain_tolerance_deg = 15\n"
+                        "mirror_pairs = false\n");
   const auto with_rules = load_text(leather_rules);
   ASSERT_TRUE(with_rules.config) << with_rules.error;
   EXPECT_EQ(with_rules.config->materials.at("leather").toe_min_quality, 3);
   EXPECT_DOUBLE_EQ(with_rules.config->materials.at("leather").toe_fraction, 0.3);
   EXPECT_DOUBLE_EQ(with_rules.config->materials.at("leather").grain_tolerance_deg, 15);
+  EXPECT_FALSE(with_rules.config->materials.at("leather").mirror_pairs);
   std::string bad_grain = text;
   bad_grain.replace(bad_grain.find("min_quality = 2\n"), 16, "min_quality = 2\ngrain_tolerance_deg = 120\n");
   refused(bad_grain, "materials.leather.grain_tolerance_deg");
   std::string strip_toe = text;
   strip_toe.replace(strip_toe.find("length_mm = 900\n"), 16, "length_mm = 900\ntoe_min_quality = 3\n");
   refused(strip_toe, "materials.calf.toe_min_quality (line");
+  std::string strip_mirror = text;
+  strip_mirror.replace(strip_mirror.find("length_mm = 900\n"), 16, "length_mm = 900\nmirror_pairs = true\n");
+  refused(strip_mirror, "materials.calf.mirror_pairs (line");
 }
 
 }  // namespace
