@@ -1,13 +1,13 @@
 // Pairs mirrored about a hide's backbone, after the nesting; see hide_mirror_pairs.hpp.
 #include "engine/nest/hide_mirror_pairs.hpp"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
+#include <numbers>
 #include <set>
 #include <string>
-#include <numbers>
 #include <utility>
 #include <vector>
 
@@ -49,12 +49,9 @@ struct TwinPair {
 
 // Pairs up the placements of each mirror key's two items per hide (copy by copy, in layout order).
 std::vector<TwinPair> twin_pairs(const Layout& layout, const NestInstance& instance) {
-  std::map<int, const NestItem*> item_of;
   std::map<std::string, std::vector<int>> items_of_key;
-  for (const NestItem& item : instance.items) {
-    item_of[item.id] = &item;
+  for (const NestItem& item : instance.items)
     if (!item.mirror_key.empty()) items_of_key[item.mirror_key].push_back(item.id);
-  }
   std::vector<TwinPair> pairs;
   for (const auto& [key, ids] : items_of_key) {
     if (ids.size() != 2) continue;  // not a twin pair (a damaged items file): nothing to mirror
@@ -129,7 +126,7 @@ class HideView {
 
   // True when `box` (grown by the gap) meets the box of a piece of this hide other than `except`.
   bool box_taken(const Eigen::AlignedBox2d& box, const std::vector<std::size_t>& except) const {
-    Eigen::AlignedBox2d grown(box.min() - Point2::Constant(gap_mm_), box.max() + Point2::Constant(gap_mm_));
+    const Eigen::AlignedBox2d grown = grown_by(box, gap_mm_);
     for (const auto& [i, other] : boxes_) {
       if (std::find(except.begin(), except.end(), i) != except.end()) continue;
       if (grown.intersects(other)) return true;
@@ -162,7 +159,7 @@ class HideView {
     for (const std::size_t i : moved) {
       const Polygon2 shape = placed(i);
       const Eigen::AlignedBox2d box = box_of(shape);
-      moved_boxes.emplace_back(box.min() - Point2::Constant(gap_mm_), box.max() + Point2::Constant(gap_mm_));
+      moved_boxes.push_back(grown_by(box, gap_mm_));
       groups.insert(find_item(instance_, layout_.placements[i].item).pair_group);
     }
     groups.erase("");
