@@ -6,7 +6,6 @@ namespace {
 
 std::string part_pieces(const JobPart& part) { return pieces_of(part.pieces, part.material); }
 
-
 }  // namespace
 
 nlohmann::json parts_to_json(const std::vector<JobPart>& parts) {

@@ -199,8 +199,9 @@ std::unique_ptr<MoldsClaim> SpoolComputeStore::claim_job(const std::string& job_
   // Counted before the work: if this scan crashes the daemon, the next start knows.
   ++state->attempts;
   // Without the count on disk a scan that crashes lastcutd would be computed forever.
-  if (!set_job_stage(spool_, *state, JobStage::Claimed, "computing " + job_work_noun(state->scan_name, state->ticket) + ", attempt " + std::to_string(state->attempts),
-                     "not computed, its attempt cannot be counted")) {
+  const std::string computing =
+      "computing " + job_work_noun(state->scan_name, state->ticket) + ", attempt " + std::to_string(state->attempts);
+  if (!set_job_stage(spool_, *state, JobStage::Claimed, computing, "not computed, its attempt cannot be counted")) {
     return nullptr;
   }
   const auto job_dir = spool_.job_dir(JobFolder::Work, job_id);

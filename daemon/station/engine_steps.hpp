@@ -111,10 +111,12 @@ std::filesystem::path job_items_path(const std::filesystem::path& job_dir, const
 
 // The items of a job's current part: the items file's, each with the part's copies when the part
 // was split over hides (JobPart::copies; an item of 0 copies is left out). file_index[k] is items[k]'s
-// place in the file. Throws EngineError when the file cannot be read or the copies do not match it.
+// place in the file, file_items the file's count. Throws EngineError when the file cannot be read or
+// the copies do not match it.
 struct PartItems {
   std::vector<NestItem> items;
   std::vector<int> file_index;
+  int file_items = 0;
 };
 PartItems read_part_items(const std::filesystem::path& items_file, const std::vector<int>& copies,
                           const std::string& what);

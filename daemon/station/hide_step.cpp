@@ -27,19 +27,19 @@ struct SplitShape {
   int file_items = 0;           // items in the file
 };
 
-// The copies of group g's items that the layout placed and left out, per item of its job's items file.
-PartSplit split_of(const BatchInstance& batch, const Layout& layout, int g, const SplitShape& shape) {
+// The copies of group g's items that the layout placed (placed_copies: batch item id -> copies on the
+// hide) and left out, per item of its job's items file.
+PartSplit split_of(const BatchInstance& batch, const std::map<int, int>& placed_copies, int g, const SplitShape& shape) {
   PartSplit split;
   split.placed.assign(static_cast<std::size_t>(shape.file_items), 0);
   split.rest = split.placed;
-  std::map<int, int> placed_copies;  // batch item id -> copies on the hide
-  for (const Placement& p : layout.placements) ++placed_copies[p.item];
   std::size_t k = 0;  // the group's items are consecutive in the batch, in the group's order
   for (std::size_t i = 0; i < batch.instance.items.size(); ++i) {
     if (batch.group_of_item[i] != g) continue;
     const NestItem& item = batch.instance.items[i];
     const auto file = static_cast<std::size_t>(shape.file_index.at(k++));
-    const int on_hide = std::min(item.demand, placed_copies[item.id]);
+    const auto copies = placed_copies.find(item.id);
+    const int on_hide = copies == placed_copies.end() ? 0 : std::min(item.demand, copies->second);
     split.placed[file] = on_hide;
     split.rest[file] = item.demand - on_hide;
   }
@@ -64,10 +64,9 @@ Result<HideMade> build_hide(const std::vector<HideJobInput>& jobs, const std::fi
       try {
         PartItems part =
             read_part_items(job.items_file, job.copies, job.items_file.filename().string() + " of job " + job.job_id);
-        const int file_items = job.copies.empty() ? static_cast<int>(part.items.size()) : static_cast<int>(job.copies.size());
-        shapes.push_back({std::move(part.file_index), file_items});
+        shapes.push_back({std::move(part.file_index), part.file_items});
         // A job that may split joins no pair: its pieces go where they fit (hide_batch.hpp).
-        groups.push_back({job.job_id, job.may_split ? "" : job.order, job.priority, std::move(part.items), job.may_split});
+        groups.push_back({job.job_id, job.order, job.priority, std::move(part.items), job.may_split});
       } catch (const EngineError& error) {
         made.rejected[job.job_id] = error.what();
       }
@@ -104,13 +103,15 @@ Result<HideMade> build_hide(const std::vector<HideJobInput>& jobs, const std::fi
     for (int g : placed_groups(batch, layout)) placed[g] = true;
     nlohmann::json waiting = nlohmann::json::array();
     nlohmann::json split = nlohmann::json::array();
+    std::map<int, int> placed_copies;  // batch item id -> copies on the hide
+    for (const Placement& p : layout.placements) ++placed_copies[p.item];
     for (size_t g = 0; g < groups.size(); ++g) {
       if (placed[g]) {
         made.placed.push_back(groups[g].owner);
         continue;
       }
       if (groups[g].may_split) {
-        const PartSplit parted = split_of(batch, layout, static_cast<int>(g), shapes[g]);
+        const PartSplit parted = split_of(batch, placed_copies, static_cast<int>(g), shapes[g]);
         const int on_hide = count_copies(parted.placed), left = count_copies(parted.rest);
         if (on_hide > 0) {
           made.placed.push_back(groups[g].owner);

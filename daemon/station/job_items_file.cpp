@@ -62,6 +62,7 @@ PartItems read_part_items(const std::filesystem::path& items_file, const std::ve
                           const std::string& what) {
   std::vector<NestItem> file_items = items_from_json(read_json_file(items_file), what);
   PartItems part;
+  part.file_items = static_cast<int>(file_items.size());
   if (!copies.empty() && copies.size() != file_items.size()) {
     throw EngineError(what + ": the part names " + std::to_string(copies.size()) + " pieces, the file holds " +
                       std::to_string(file_items.size()));

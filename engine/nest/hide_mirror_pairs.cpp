@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <memory>
 #include <numbers>
 #include <set>
 #include <string>
@@ -283,12 +282,12 @@ MirroredPairs count_mirrored_pairs(const Layout& layout, const NestInstance& ins
 }
 
 MirroredPairs mirror_pairs_about_backbone(Layout& layout, const NestInstance& instance, double gap_mm, double margin_mm) {
-  std::map<std::pair<int, int>, std::unique_ptr<HideView>> hides;  // (bin, copy)
+  std::map<std::pair<int, int>, HideView> hides;  // (bin, copy)
   for (const TwinPair& pair : twin_pairs(layout, instance)) {
     if (is_mirrored(layout, instance, pair)) continue;
     const Placement& first = layout.placements[pair.first];
-    auto& hide = hides[{first.bin, first.copy}];
-    if (!hide) hide = std::make_unique<HideView>(layout, instance, first.bin, first.copy, gap_mm, margin_mm);
+    HideView& hide = hides.try_emplace({first.bin, first.copy}, layout, instance, first.bin, first.copy, gap_mm, margin_mm)
+                         .first->second;
     // The second piece onto the first one's mirror image, else the first onto the second's, else both
     // to a free place where they lie mirrored.
     bool mirrored = false;
@@ -297,9 +296,9 @@ MirroredPairs mirror_pairs_about_backbone(Layout& layout, const NestInstance& in
       const Placement candidate = mirrored_pose(find_item(instance, anchor.item), anchor,
                                                 find_item(instance, layout.placements[moved].item),
                                                 find_bin(instance, anchor.bin));
-      if ((mirrored = hide->try_move({moved}, {candidate}))) break;
+      if ((mirrored = hide.try_move({moved}, {candidate}))) break;
     }
-    if (!mirrored) relocate_mirrored(*hide, instance, layout, pair);
+    if (!mirrored) relocate_mirrored(hide, instance, layout, pair);
   }
   return count_mirrored_pairs(layout, instance);
 }

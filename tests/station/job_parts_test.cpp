@@ -184,6 +184,7 @@ TEST(JobParts, APartSplitOverHidesReadsItsCopiesOfTheItemsFile) {
   EXPECT_EQ(part.items[0].demand, 1);
   EXPECT_EQ(part.items[1].label, "counter");
   EXPECT_EQ(part.file_index, (std::vector<int>{0, 2}));
+  EXPECT_EQ(part.file_items, 3) << "the file's count, whatever the part cuts";
   const auto refusal = [&](const std::vector<int>& copies) {
     try {
       read_part_items(file, copies, "items.json of job 7");
