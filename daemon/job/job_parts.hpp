@@ -44,6 +44,27 @@ std::vector<JobPart> parts_from_json(const nlohmann::json& json);
 // `whole`'s material and cutter. The part index stays.
 std::vector<JobPart> split_part(std::vector<JobPart> parts, int current, const JobPart& whole, const PartSplit& split);
 
+// Where a job computed again (a requeue, a restart) goes on: the parts before the stored current part
+// are cut and stay cut, so no piece is cut twice.
+//  - The stored parts are the computed ones, some split over hides (split_part): the parts cut so far
+//    are kept, and what is not cut yet of each material becomes one part again (a new hide may take
+//    it whole). `part` is the first of those.
+//  - Anything else (nothing stored, the style or the configuration changed the pieces, a damaged
+//    list): the computed parts from the first.
+// computed: the parts as computed now, empty for a job of one material, whose pieces `whole` names
+// (material, cutter, pieces); the result's parts are then empty again unless some were cut.
+struct ResumedParts {
+  std::vector<JobPart> parts;
+  int part = 0;
+  bool operator==(const ResumedParts&) const = default;
+};
+ResumedParts resume_parts(const std::vector<JobPart>& stored, int stored_part, const std::vector<JobPart>& computed,
+                          const JobPart& whole);
+
+// "goes on with part 2 of 3: 3 pieces of leather (the parts before it are cut)": how the log and the
+// job's events say where a job computed again goes on; "" when it starts at its first part.
+std::string describe_resumed(const ResumedParts& resumed);
+
 // "4 pieces of lining", "1 piece of leather": how every line names a part's pieces.
 std::string pieces_of(int pieces, const std::string& material);
 

@@ -59,11 +59,10 @@ bool JobState::next_part() {
 }
 
 void JobState::take_parts(const std::vector<JobPart>& computed) {
-  if (computed != parts) part = 0;
-  parts = computed;
-  if (parts.empty()) return;
-  if (part < 0 || part >= static_cast<int>(parts.size())) part = 0;
-  take_current_part();
+  ResumedParts resumed = resume_parts(parts, part, computed, {ticket.material, ticket.cutter, piece_count, {}});
+  parts = std::move(resumed.parts);
+  part = resumed.part;
+  if (!parts.empty()) take_current_part();
 }
 
 void JobState::take_current_part() {

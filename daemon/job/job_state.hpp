@@ -39,9 +39,10 @@ struct JobState {
   // A job of several materials whose current part is cut and another follows: the next part becomes
   // current (its material, cutter and pieces; no batch) and true is returned. False after the last.
   bool next_part();
-  // A job computed again (a requeue) with `computed` as its parts: a job that was cut in part keeps its
-  // place when the parts are the same, else starts again at the first part. The current part's targets
-  // become the job's. Nothing changes for a job of one material but its parts emptied.
+  // A job computed again (a requeue) with `computed` as its parts (empty for one material, whose
+  // pieces are then piece_count of the ticket's material): where it goes on is resume_parts'
+  // (job_parts.hpp), so the parts already cut, split over hides or not, are not cut again. The current
+  // part's targets become the job's.
   void take_parts(const std::vector<JobPart>& computed);
   // The current part's material, cutter and pieces become the job's (parts[part] must exist).
   void take_current_part();

@@ -220,18 +220,24 @@ Status LedgerClient::mark_computed(const Lease& lease, int pieces, const std::ve
   return transact<bool>("marking job " + std::to_string(lease.object_id) + " computed",
                         [&](pqxx::work& tx) -> Result<bool> {
                           if (Status held = check_lease(tx, node_, lease); !held) return held;
-                          // A job cut in part and computed again (a requeue) keeps its place when its parts
-                          // are the same (SET reads the row as it was), as on a spool (JobState::take_parts).
+                          // A job cut in part and computed again (a requeue) goes on where it was, as on a
+                          // spool (JobState::take_parts): no piece already cut is cut again.
+                          const pqxx::row row = tx.exec_params1(
+                              "SELECT parts::text, part, coalesce(material, ''), coalesce(cutter, '') FROM jobs WHERE id = $1",
+                              lease.object_id);
+                          const daemon::ResumedParts resumed = daemon::resume_parts(
+                              daemon::parts_from_json(nlohmann::json::parse(row[0].as<std::string>(), nullptr, false)),
+                              row[1].as<int>(), parts, {row[2].as<std::string>(), row[3].as<std::string>(), pieces, {}});
                           tx.exec_params(
-                              "UPDATE jobs SET state = 'computed', pieces = $2, parts = $3::jsonb,"
-                              " part = CASE WHEN parts = $3::jsonb THEN part ELSE 0 END, updated_at = now() WHERE id = $1",
-                              lease.object_id, pieces, daemon::parts_to_json(parts).dump());
+                              "UPDATE jobs SET state = 'computed', pieces = $2, parts = $3::jsonb, part = $4,"
+                              " updated_at = now() WHERE id = $1",
+                              lease.object_id, pieces, daemon::parts_to_json(resumed.parts).dump(), resumed.part);
                           tx.exec_params("UPDATE jobs SET material = parts -> part ->> 'material', cutter = parts -> part ->> 'cutter',"
                                          " pieces = (parts -> part ->> 'pieces')::integer"
                                          " WHERE id = $1 AND jsonb_array_length(parts) > 0",
                                          lease.object_id);
                           release_lease(tx, lease);
-                          add_event(tx, lease.object_id, node_, "computed");
+                          add_event(tx, lease.object_id, node_, "computed", daemon::describe_resumed(resumed));
                           return true;
                         })
       .status();

@@ -39,6 +39,7 @@ class SpoolMoldsClaim : public MoldsClaim {
     // Cut one material after another (daemon/job/job_parts.hpp): the current part's targets now.
     state_.take_parts(molds.parts);
     if (!molds.parts.empty()) ready += "; cut in parts: " + describe_parts(molds.parts);
+    if (const std::string resumed = describe_resumed({state_.parts, state_.part}); !resumed.empty()) ready += "; " + resumed;
     if (!set_job_stage(spool_, state_, JobStage::Computed, ready,
                        "molds made, but the state is not written (computed again at the next start)")) {
       return;

@@ -1,7 +1,8 @@
 // Hides on the ledger (migration 003): a hide entered on a cutter's table takes the computed jobs of
 // its material, oldest first, and nothing else; strip batches never take them; the jobs that did not
 // fit wait again with their reason; a hide is cut once (its name refused while loaded or used), an
-// empty one may be loaded again; a nesting node that vanished leaves the hide loaded for another.
+// empty one may be loaded again; a nesting node that vanished leaves the hide loaded for another; a job
+// split over hides, held and requeued, is computed again with only the pieces no hide has cut.
 #include "tests/ledger/ledger_fixture.hpp"
 
 namespace lastcut::test {
@@ -90,6 +91,59 @@ TEST_F(HidesTest, AHideTakesItsMaterialsJobsAndTheMisfitsWaitAgain) {
   ASSERT_TRUE(cut.ok() && cut->has_value());
   EXPECT_EQ((*cut)->hide_name, "K-17");
   EXPECT_EQ((*cut)->cut_file, nested.cut_file);
+}
+
+TEST_F(HidesTest, ASplitJobHeldAndRequeuedGoesOnWithThePiecesNotCut) {
+  // Job 5: five pieces of leather (items of 2, 1 and 2 copies) that may be split over hides.
+  ASSERT_TRUE(compute_->enqueue(scan(5, "cutter-1", "leather")).ok());
+  auto computing = compute_->claim_job(30);
+  ASSERT_TRUE(computing.ok() && computing->has_value());
+  const long long job = (*computing)->job_id;
+  const std::string row = "FROM jobs WHERE id = " + std::to_string(job);
+  ASSERT_TRUE(compute_->mark_computed((*computing)->lease, 5).ok());
+
+  // Hide K-1 takes 1, 1 and 0 copies of its items and is cut; the other jobs wait.
+  ASSERT_TRUE(station_->enter_hide(hide("K-1")).ok());
+  auto first = compute_->make_hide_batch(daemon::ledger_hide_rule(0), 64, 30);
+  ASSERT_TRUE(first.ok() && first->has_value()) << first.error();
+  ledger::NestedBatch nested;
+  nested.cut_file = "batches/" + std::to_string((*first)->batch_id) + "/cut.plt";
+  nested.pieces = 2;
+  const daemon::PartSplit split{{1, 1, 0}, {1, 0, 2}};
+  nested.split = {{job, daemon::split_part({}, 0, {"leather", "cutter-1", 5, {}}, split), "2 of 5 on K-1"}};
+  for (long long other : (*first)->job_ids) {
+    if (other != job) nested.waiting.emplace_back(other, "waiting for a hide of leather");
+  }
+  ASSERT_TRUE(compute_->mark_nested((*first)->lease, nested).ok());
+  auto cutting = station_->claim_batch(30, "cutter-1");
+  ASSERT_TRUE(cutting.ok() && cutting->has_value());
+  ASSERT_TRUE(station_->mark_sending((*cutting)->lease).ok());
+  ASSERT_TRUE(station_->mark_cut((*cutting)->lease).ok());
+  EXPECT_EQ(query("SELECT state || ' ' || part || ' ' || pieces " + row), "computed 1 3");
+
+  // Hide K-2's batch cannot be made: the job is held, and an operator requeues it.
+  ASSERT_TRUE(station_->enter_hide(hide("K-2")).ok());
+  auto second = compute_->make_hide_batch(daemon::ledger_hide_rule(0), 64, 30);
+  ASSERT_TRUE(second.ok() && second->has_value()) << second.error();
+  ledger::NestedBatch unmade;
+  for (long long id : (*second)->job_ids) unmade.held.emplace_back(id, "the batch could not be made: no machine profile");
+  unmade.reason = "no machine profile";
+  ASSERT_TRUE(compute_->mark_nested((*second)->lease, unmade).ok());
+  EXPECT_EQ(query("SELECT state " + row), "held");
+  ASSERT_TRUE(compute_->requeue_held(job).ok());
+
+  // Computed again from its scan (5 pieces, one material): it goes on with the 3 pieces K-1 did not
+  // take, not with all 5 (K-1's two would be cut twice).
+  auto again = compute_->claim_job(30);
+  ASSERT_TRUE(again.ok() && again->has_value());
+  ASSERT_EQ((*again)->job_id, job);
+  ASSERT_TRUE(compute_->mark_computed((*again)->lease, 5).ok());
+  EXPECT_EQ(query("SELECT state || ' ' || part || ' ' || pieces || ' ' || material " + row), "computed 1 3 leather");
+  EXPECT_EQ(daemon::parts_from_json(nlohmann::json::parse(query("SELECT parts::text " + row))),
+            (std::vector<daemon::JobPart>{{"leather", "cutter-1", 2, {1, 1, 0}}, {"leather", "cutter-1", 3, {1, 0, 2}}}));
+  EXPECT_EQ(query("SELECT detail FROM job_events WHERE event = 'computed' AND job_id = " + std::to_string(job) +
+                  " ORDER BY id DESC LIMIT 1"),
+            "goes on with part 2 of 2: 3 pieces of leather (the parts before it are cut)");
 }
 
 TEST_F(HidesTest, AnEmptyHideMayBeLoadedAgainAVanishedNestingLeavesItLoaded) {

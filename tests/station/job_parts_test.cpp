@@ -170,6 +170,50 @@ TEST(JobParts, AHideThatTakesSomeOfAJobsPiecesMakesTheRestItsNextPart) {
   EXPECT_TRUE(part_copies({}, 0).empty());
 }
 
+TEST(JobParts, AJobComputedAgainAfterASplitGoesOnWithWhatNoHideHasCut) {
+  const JobPart whole{"leather", "cutter-1", 5, {}};
+  const JobPart first{"leather", "cutter-1", 2, {1, 1, 0}}, second{"leather", "cutter-1", 2, {1, 0, 1}},
+      last{"leather", "cutter-1", 1, {0, 0, 1}};
+  // One material, split over two hides: hide 1 cut, the rest current.
+  EXPECT_EQ(resume_parts({first, {"leather", "cutter-1", 3, {1, 0, 2}}}, 1, {}, whole),
+            (ResumedParts{{first, {"leather", "cutter-1", 3, {1, 0, 2}}}, 1}));
+  // Held before the first hide was cut: nothing cut, the job whole again, of one material (no parts).
+  EXPECT_EQ(resume_parts({first, {"leather", "cutter-1", 3, {1, 0, 2}}}, 0, {}, whole), (ResumedParts{{}, 0}));
+  // Split three ways, the first hide cut, the second not: what is not cut is one part again.
+  EXPECT_EQ(resume_parts({first, second, last}, 1, {}, whole),
+            (ResumedParts{{first, {"leather", "cutter-1", 3, {1, 0, 2}}}, 1}));
+  EXPECT_EQ(resume_parts({first, second, last}, 2, {}, whole), (ResumedParts{{first, second, last}, 2}));
+  EXPECT_EQ(describe_resumed({{first, second, last}, 2}),
+            "goes on with part 3 of 3: 1 piece of leather (the parts before it are cut)");
+  EXPECT_EQ(describe_resumed({{first, second, last}, 0}), "");
+  // Several materials: the lining cut, the leather split and its first hide cut.
+  const std::vector<JobPart> computed = {{"lining", "cutter-2", 4, {}}, {"leather", "cutter-1", 3, {}}};
+  const JobPart placed{"leather", "cutter-1", 2, {2, 0}}, rest{"leather", "cutter-1", 1, {0, 1}};
+  EXPECT_EQ(resume_parts({computed[0], placed, rest}, 2, computed, whole), (ResumedParts{{computed[0], placed, rest}, 2}));
+  EXPECT_EQ(resume_parts({computed[0], placed, rest}, 1, computed, whole), (ResumedParts{computed, 1}));
+  // The pieces changed (a style edited, another configuration): from the first part, as computed.
+  const std::vector<JobPart> changed = {{"lining", "cutter-2", 4, {}}, {"leather", "cutter-1", 4, {}}};
+  EXPECT_EQ(resume_parts({computed[0], placed, rest}, 2, changed, whole), (ResumedParts{changed, 0}));
+  EXPECT_EQ(resume_parts({first, second}, 1, {}, whole), (ResumedParts{{}, 0})) << "4 of 5 pieces stored";
+  EXPECT_EQ(resume_parts({{"felt", "cutter-1", 5, {}}}, 0, computed, whole), (ResumedParts{computed, 0}));
+  EXPECT_EQ(resume_parts({first, {"leather", "cutter-1", 3, {1, 2}}}, 1, {}, whole), (ResumedParts{{}, 0}))
+      << "copies of another items file";
+  EXPECT_EQ(resume_parts({first, last}, 7, {}, whole), (ResumedParts{{}, 0})) << "a part out of range";
+
+  // The spool's job state (state.json) takes the same way: computed again, still at the rest.
+  JobState state;
+  state.ticket.material = "leather";
+  state.ticket.cutter = "cutter-1";
+  state.parts = {first, second, last};
+  state.part = 1;
+  state.piece_count = 5;  // what the computation made
+  state.take_parts({});
+  EXPECT_EQ(state.parts, (std::vector<JobPart>{first, {"leather", "cutter-1", 3, {1, 0, 2}}}));
+  EXPECT_EQ(state.part, 1);
+  EXPECT_EQ(state.piece_count, 3);
+  EXPECT_EQ(part_copies(state.parts, state.part), (std::vector<int>{1, 0, 2}));
+}
+
 TEST(JobParts, APartSplitOverHidesReadsItsCopiesOfTheItemsFile) {
   const auto dir = std::filesystem::temp_directory_path() / ("lastcut-part-items-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
