@@ -1,5 +1,6 @@
 #include "engine/mold/outward_allowance.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -34,6 +35,42 @@ std::vector<Point2> sector(const Point2& c, const Point2& from, const Point2& to
   return fan;
 }
 
+bool turns_left(const Segment& s, const Segment& next) {
+  const Point2 d1 = s.b - s.a, d2 = next.b - next.a;
+  return d1.x() * d2.y() - d1.y() * d2.x() > 0;
+}
+
+// The chamfer on the smaller side of a change of allowance at segments[at].b (see the header): the cut
+// line comes down from `larger_mm` at 45 degrees along the segments after `at` (forward) or up to it
+// (backward) until it meets their own allowance, as strips of falling height and sectors at convex
+// corners, added to `shapes`.
+void add_chamfer(const std::vector<Segment>& segments, std::size_t at, bool forward, double larger_mm, double tolerance_mm,
+                 ClipperLib::Paths& shapes) {
+  const std::size_t n = segments.size();
+  double walked_mm = 0;
+  for (std::size_t step = 0; step < n; ++step) {
+    const std::size_t j = forward ? (at + 1 + step) % n : (at + n - step) % n;
+    const Segment& s = segments[j];
+    const double height_mm = larger_mm - walked_mm;
+    if (height_mm <= s.allowance_mm) return;
+    const Point2 near = forward ? s.a : s.b, far = forward ? s.b : s.a;
+    const double length_mm = (far - near).norm();
+    const double end_mm = std::min(length_mm, height_mm - s.allowance_mm);  // where it meets the strip
+    const Point2 end = near + (end_mm / length_mm) * (far - near);
+    shapes.push_back(to_clipper_path({near, end, end + (height_mm - end_mm) * s.outward, near + height_mm * s.outward}));
+    walked_mm += length_mm;
+    if (end_mm < length_mm) return;
+    // The corner at `far`, between s and the segment after it along the walk, at the height reached there.
+    const Segment& before = forward ? s : segments[(j + n - 1) % n];
+    const Segment& after = forward ? segments[(j + 1) % n] : s;
+    if (turns_left(before, after)) {
+      const std::vector<Point2> fan = sector(far, before.outward, after.outward, larger_mm - walked_mm,
+                                             larger_mm - walked_mm, tolerance_mm);
+      if (!fan.empty()) shapes.push_back(to_clipper_path(fan));
+    }
+  }
+}
+
 }  // namespace
 
 Polygon2 grow_outward_by_allowances(const Polygon2& net, const std::vector<AllowanceEdge>& edges, double tolerance_mm) {
@@ -55,11 +92,16 @@ Polygon2 grow_outward_by_allowances(const Polygon2& net, const std::vector<Allow
     if (s.allowance_mm > 0)
       shapes.push_back(to_clipper_path({s.a, s.b, s.b + s.allowance_mm * s.outward, s.a + s.allowance_mm * s.outward}));
     // The corner at s.b, from this segment's normal round to the next one's: only where the outline
-    // turns left (convex); at a right turn the strips overlap.
+    // turns left (convex); at a right turn the strips overlap. A change of allowance to a smaller one
+    // above 0 keeps the larger round the corner and chamfers down on the smaller side; a change to 0
+    // turns from the one to the other round the corner.
     const Segment& next = segments[(i + 1) % segments.size()];
-    const Point2 d1 = s.b - s.a, d2 = next.b - next.a;
-    if (d1.x() * d2.y() - d1.y() * d2.x() > 0) {
-      const std::vector<Point2> fan = sector(s.b, s.outward, next.outward, s.allowance_mm, next.allowance_mm, tolerance_mm);
+    const double larger_mm = std::max(s.allowance_mm, next.allowance_mm), smaller_mm = std::min(s.allowance_mm, next.allowance_mm);
+    const bool chamfer = smaller_mm > 0 && larger_mm > smaller_mm;
+    if (chamfer) add_chamfer(segments, i, next.allowance_mm < s.allowance_mm, larger_mm, tolerance_mm, shapes);
+    if (turns_left(s, next)) {
+      const std::vector<Point2> fan = sector(s.b, s.outward, next.outward, chamfer ? larger_mm : s.allowance_mm,
+                                             chamfer ? larger_mm : next.allowance_mm, tolerance_mm);
       if (!fan.empty()) shapes.push_back(to_clipper_path(fan));
     }
   }

@@ -10,6 +10,16 @@
 // 18 mm of lasting margin) it crosses the opposite edge and cuts the piece bigger there; and its fillet
 // at a change of allowance runs far along a narrow wedge. Growing outward only keeps every edge exactly
 // where it is when its own allowance is 0, and passes from one allowance to the next round the corner.
+//
+// Where the allowance changes from a larger R to a smaller r > 0 (lasting to underlay), the cut line
+// keeps R round the corner and comes down to r on the smaller edge at 45 degrees, over R - r mm of it:
+// a chamfer that follows the corner along the outline. Turning from R to r round the corner alone
+// depends on how far the outline turns there: where a style line meets the feather line at a shallow
+// angle it turns a few degrees, so the cut line dropped almost square by R - r, and two meshes of one
+// last that put that corner a millimetre apart along the outline gave steps 4.5 mm apart (docs/pieces.md,
+// identity). The smaller side gets the leather rather than the larger: an underlay lies under its
+// neighbour, and the lasting margin stays whole up to the corner. A change to 0 (a butted or raw edge)
+// keeps that edge exactly in place: the cut line turns from R to 0 round the corner, as before.
 #include <vector>
 
 #include "engine/core/polygon.hpp"

@@ -1,6 +1,6 @@
 // Outward allowances (engine/mold/outward_allowance.hpp), measured on the result: an edge with no
 // allowance stays exactly where it is even where the piece is narrower than its neighbour's allowance,
-// and an edge with one lies that far inside the cut line.
+// and an edge with one lies that far inside the cut line; a change of allowance is a chamfer.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -52,6 +52,42 @@ TEST(OutwardAllowance, NarrowWedgeKeepsItsOtherEdge) {
     EXPECT_NEAR(closest_outline_point(cut, on_top).distance_mm, 0, 1e-4) << t;
     EXPECT_NEAR(ray_to_outline(cut, {120 * t, 0}, {0, -1}), 18, 1e-4) << t;
   }
+}
+
+// A lasting edge (18 mm) running on into an underlay (8 mm), the outline almost straight through the
+// corner where they meet (a style line meeting the feather line at a shallow angle): the cut line keeps
+// 18 mm up to the corner and comes down at 45 degrees on the underlay's side, whatever the few degrees
+// the outline turns there; an edge of 0 after it stays where it is.
+TEST(OutwardAllowance, AChangeOfAllowanceIsAChamferOnTheSmallerSide) {
+  for (const double turn_deg : {-3.0, 0.0, 3.0}) {
+    // Bottom edge from x = 0 to 100 (18 mm), then on from x = 100 to 200 (8 mm) turned by turn_deg, up
+    // and back along the top (0).
+    const double turn = turn_deg * M_PI / 180;
+    const Point2 corner{100, 0}, end = corner + 100 * Point2(std::cos(turn), std::sin(turn));
+    Polygon2 net;
+    net.points = {{0, 0}, corner, end, {end.x(), 60}, {0, 60}};
+    const std::vector<AllowanceEdge> edges = {{{{0, 0}, corner}, 18}, {{corner, end}, 8},
+                                              {{end, {end.x(), 60}, {0, 60}, {0, 0}}, 0}};
+    const Polygon2 cut = grow_outward_by_allowances(net, edges, 0.02);
+    const std::string where = "turn " + std::to_string(turn_deg) + " deg";
+    const Point2 down = Point2(std::sin(turn), -std::cos(turn));  // the underlay's outward normal
+    EXPECT_NEAR(ray_to_outline(cut, {99, 0}, {0, -1}), 18, 1e-3) << where << ": the lasting margin up to the corner";
+    for (const double along : {2.0, 5.0, 8.0}) {
+      // 45 degrees: the height falls by 1 mm per mm along; the ray meets the slope a little nearer.
+      const double height = ray_to_outline(cut, corner + along * Point2(std::cos(turn), std::sin(turn)), down);
+      EXPECT_NEAR(height, 18 - along, 0.05) << where << " at " << along << " mm";
+    }
+    for (const double along : {11.0, 50.0, 90.0}) {
+      EXPECT_NEAR(ray_to_outline(cut, corner + along * Point2(std::cos(turn), std::sin(turn)), down), 8, 1e-3) << where;
+    }
+    EXPECT_NEAR(closest_outline_point(cut, {50, 60}).distance_mm, 0, 1e-4) << where;
+  }
+  // To 0 (a raw edge over its neighbour): that edge stays exactly in place, the step is square.
+  Polygon2 net;
+  net.points = {{0, 0}, {100, 0}, {200, 0}, {200, 60}, {0, 60}};
+  const Polygon2 cut = grow_outward_by_allowances(
+      net, {{{{0, 0}, {100, 0}}, 18}, {{{100, 0}, {200, 0}}, 0}, {{{200, 0}, {200, 60}, {0, 60}, {0, 0}}, 0}}, 0.02);
+  for (const double x : {101.0, 105.0, 150.0}) EXPECT_NEAR(closest_outline_point(cut, {x, 0}).distance_mm, 0, 1e-4) << x;
 }
 
 TEST(OutwardAllowance, NegativeAllowanceIsRefused) {

@@ -218,6 +218,10 @@ TEST_F(StyleSeams, PiecesOnTheSameLastRemeshedAndPosedAgree) {
     EXPECT_LE(nets.deviation.hausdorff_mm, 0.5) << name;
     EXPECT_LE(nets.deviation.mean_mm, 0.1) << name;
     EXPECT_LE(outlines.deviation.mean_mm, 0.15) << name;
+    // A change of allowance follows its corner along the outline as a 45-degree chamfer
+    // (outward_allowance.hpp): the medial quarter's, where the counter line meets the feather line at a
+    // shallow angle, was a square step and 4.5 mm off before.
+    EXPECT_LE(outlines.deviation.hausdorff_mm, 2.0) << name;
     worst_net_mm = std::max(worst_net_mm, nets.deviation.hausdorff_mm);
     worst_outline_mm = std::max(worst_outline_mm, outlines.deviation.hausdorff_mm);
   }
