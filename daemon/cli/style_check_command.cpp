@@ -49,9 +49,6 @@ StyleCheckSheet check_sheet(const StyleDefinition& style, const ScanResult& refe
   std::vector<StylePieceResult> pieces;
   for (const StylePieceResult& piece : result.pieces)
     if (piece.spec.layer == layer) pieces.push_back(piece);
-  std::vector<std::string> layer_lines;
-  for (const StyleLayer& named : style.layers)
-    if (named.name == layer) layer_lines = named.lines;
   StyleCheckSheet sheet;
   sheet.title = "style " + style.name + (layer.empty() ? "" : ", layer " + layer + ",") + " on its reference last: " +
                 std::to_string(pieces.size()) + " pieces";
@@ -60,7 +57,7 @@ StyleCheckSheet check_sheet(const StyleDefinition& style, const ScanResult& refe
   const StyleTransfer onto_itself(reference, reference);
   for (const StylePieceResult& piece : pieces) sheet.labels.push_back(onto_itself.transfer_point(piece.spec.label_mm));
   for (const StyleLine& line : style.lines)
-    if (layer.empty() || std::find(layer_lines.begin(), layer_lines.end(), line.name) != layer_lines.end())
+    if (line_parts_layer(style, layer, line.name))
       sheet.lines.emplace_back(line.name, onto_itself.transfer_curve(line.points_mm));
   return sheet;
 }

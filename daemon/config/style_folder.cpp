@@ -41,6 +41,15 @@ void read_side(TableReader& reader, const std::string& key, FootSide& side, std:
   else errors.push_back(reader.key_path(key) + ": must be \"left\" or \"right\"");
 }
 
+// [allowances] of the style, or of one [[piece]] over the style's: lasting, folding, underlay, butted (mm).
+void read_allowances(TableReader& reader, StyleAllowances& a) {
+  reader.number("lasting", a.lasting_mm, 0, 60);
+  reader.number("folding", a.folding_mm, 0, 60);
+  reader.number("underlay", a.underlay_mm, 0, 30);
+  reader.number("butted", a.butted_mm, 0, 30);
+  reader.reject_unknown();
+}
+
 }  // namespace
 
 Result<StyleFolder> read_style_folder(const std::filesystem::path& folder) {
@@ -84,12 +93,7 @@ Result<StyleFolder> read_style_folder(const std::filesystem::path& folder) {
   }
   if (const toml::table* table = root.subtable("allowances", false)) {
     TableReader reader(*table, "allowances", errors);
-    StyleAllowances& a = result.style.allowances;
-    reader.number("lasting", a.lasting_mm, 0, 60);
-    reader.number("folding", a.folding_mm, 0, 30);
-    reader.number("underlay", a.underlay_mm, 0, 30);
-    reader.number("butted", a.butted_mm, 0, 30);
-    reader.reject_unknown();
+    read_allowances(reader, result.style.allowances);
   }
   each_table(root, "line", errors, [&](TableReader& reader) {
     StyleLineRule rule;
@@ -111,6 +115,7 @@ Result<StyleFolder> read_style_folder(const std::filesystem::path& folder) {
   each_table(root, "layer", errors, [&](TableReader& reader) {
     StyleLayer layer;
     reader.text("name", layer.name, true);
+    reader.boolean("partial", layer.partial);
     const toml::node* lines = reader.node("lines");
     const toml::array* names = lines ? lines->as_array() : nullptr;
     if (!names || !std::all_of(names->begin(), names->end(), [](const toml::node& n) { return n.is_string(); }))
@@ -146,6 +151,12 @@ Result<StyleFolder> read_style_folder(const std::filesystem::path& folder) {
     double thickness_mm = -1;  // absent: the style's
     reader.number("thickness_mm", thickness_mm, 0, kMaxPieceThickness_mm);
     if (thickness_mm >= 0) piece.thickness_mm = thickness_mm;
+    if (const toml::table* table = reader.subtable("allowances", false)) {
+      // The piece's own, over the style's ([allowances] is read before the pieces, wherever it stands).
+      TableReader allowances(*table, reader.key_path("allowances"), errors);
+      piece.allowances = result.style.allowances;
+      read_allowances(allowances, *piece.allowances);
+    }
     result.style.pieces.push_back(piece);
   });
   root.reject_unknown();

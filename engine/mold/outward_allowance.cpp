@@ -71,6 +71,24 @@ void add_chamfer(const std::vector<Segment>& segments, std::size_t at, bool forw
   }
 }
 
+// A change to 0 at the convex corner s.b (one of s and next has no allowance): the raw edge's line runs
+// on through its neighbour's allowance. Where the outline turns more than a right angle, that line leans
+// past the allowance's square end; the corner is rounded at larger_mm from the square end round to that
+// line, which the cut then follows back to the corner. At a right angle or less the square end reaches it.
+// (Filling up to where the line meets the allowance's outer line grew horns where the neighbour's last
+// segment is short and tilted: a tongue's top edge curving into its raw sides.)
+void add_raw_corner(const Segment& s, const Segment& next, double larger_mm, double tolerance_mm, ClipperLib::Paths& shapes) {
+  const bool raw_after = next.allowance_mm == 0;
+  const Point2 raw_line = raw_after ? Point2(-(next.b - next.a).normalized()) : Point2((s.b - s.a).normalized());
+  const Point2 square_end = raw_after ? s.outward : next.outward;
+  const Point2 past_end = raw_after ? Point2((s.b - s.a).normalized()) : Point2(-(next.b - next.a).normalized());
+  if (raw_line.dot(past_end) <= 0) return;
+  // Counter-clockwise from the one to the other: the square end comes first when the raw edge follows.
+  const std::vector<Point2> fan = raw_after ? sector(s.b, square_end, raw_line, larger_mm, larger_mm, tolerance_mm)
+                                            : sector(s.b, raw_line, square_end, larger_mm, larger_mm, tolerance_mm);
+  if (!fan.empty()) shapes.push_back(to_clipper_path(fan));
+}
+
 }  // namespace
 
 Polygon2 grow_outward_by_allowances(const Polygon2& net, const std::vector<AllowanceEdge>& edges, double tolerance_mm) {
@@ -94,12 +112,15 @@ Polygon2 grow_outward_by_allowances(const Polygon2& net, const std::vector<Allow
     // The corner at s.b, from this segment's normal round to the next one's: only where the outline
     // turns left (convex); at a right turn the strips overlap. A change of allowance to a smaller one
     // above 0 keeps the larger round the corner and chamfers down on the smaller side; a change to 0
-    // turns from the one to the other round the corner.
+    // runs the raw edge's line on through the allowance (see the header).
     const Segment& next = segments[(i + 1) % segments.size()];
     const double larger_mm = std::max(s.allowance_mm, next.allowance_mm), smaller_mm = std::min(s.allowance_mm, next.allowance_mm);
     const bool chamfer = smaller_mm > 0 && larger_mm > smaller_mm;
     if (chamfer) add_chamfer(segments, i, next.allowance_mm < s.allowance_mm, larger_mm, tolerance_mm, shapes);
-    if (turns_left(s, next)) {
+    if (!turns_left(s, next)) continue;
+    if (smaller_mm == 0 && larger_mm > 0) {
+      add_raw_corner(s, next, larger_mm, tolerance_mm, shapes);
+    } else {
       const std::vector<Point2> fan = sector(s.b, s.outward, next.outward, chamfer ? larger_mm : s.allowance_mm,
                                              chamfer ? larger_mm : next.allowance_mm, tolerance_mm);
       if (!fan.empty()) shapes.push_back(to_clipper_path(fan));

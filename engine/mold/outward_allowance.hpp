@@ -19,7 +19,12 @@
 // last that put that corner a millimetre apart along the outline gave steps 4.5 mm apart (docs/pieces.md,
 // identity). The smaller side gets the leather rather than the larger: an underlay lies under its
 // neighbour, and the lasting margin stays whole up to the corner. A change to 0 (a butted or raw edge)
-// keeps that edge exactly in place: the cut line turns from R to 0 round the corner, as before.
+// keeps that edge exactly in place, and its line runs on straight through its neighbour's allowance, as
+// a pattern maker extends a raw edge: R ends square at the corner, and where the outline turns more
+// than a right angle it is rounded at R from there to the raw edge's line, which the cut line then
+// follows back to the corner. It used to turn
+// from R to 0 round the corner, which bulged past the raw edge's line: on a tongue whose raw sides meet
+// its 30 mm top, two round lobes wider than the tongue.
 #include <vector>
 
 #include "engine/core/polygon.hpp"

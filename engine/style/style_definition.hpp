@@ -12,7 +12,10 @@
 // A second layer over the same upper, the linings, is cut along fewer lines (a StyleLayer names them):
 // a derby's linings part where the vamp meets the quarters, while one quarter lining runs round the heel
 // under the counter. Each layer tiles the whole upper on its own, with its own seam cuts; its pieces
-// are flattened, notched and allowed for exactly as the outer ones.
+// are flattened, notched and allowed for exactly as the outer ones. A partial layer cuts only the
+// regions that hold a label: a derby's tongue, a U drawn under the lacing from the top edge round below
+// the throat and back, lies under the quarters and the vamp and reaches above the top edge by its
+// folding allowance.
 #include <Eigen/Core>
 #include <optional>
 #include <string>
@@ -41,10 +44,14 @@ struct StyleSeamCut {
   std::string layer;                   // the layer whose pieces it parts; "": the outer pieces
 };
 
-// A layer of pieces under the outer ones (the linings).
+// A layer of pieces under the outer ones (the linings, a tongue).
 struct StyleLayer {
   std::string name;                // e.g. "lining"; a piece and a seam cut name it in their `layer`
   std::vector<std::string> lines;  // the style lines that part this layer's pieces; the others run over them
+  // Only the regions holding a piece's label are cut; the rest of the upper it parts off is not (a
+  // tongue under the lacing, a reinforcement). Its lines are the pieces' own edges, sewn to nothing in
+  // the layer: no balance notches, no seam lengths. false: the layer tiles the upper (the linings).
+  bool partial = false;
 };
 
 struct StylePiece {
@@ -61,6 +68,9 @@ struct StylePiece {
   // The material's thickness (mm): the piece is flattened from its mid-surface, half of it off the last
   // (piece_thickness.hpp). nullopt: the style's thickness_mm.
   std::optional<double> thickness_mm;
+  // The allowances of this piece's edges, where they differ from the style's (a tongue reaching above
+  // the last's top edge: a larger folding); nullopt: the style's.
+  std::optional<StyleAllowances> allowances;
 };
 
 struct StyleDefinition {

@@ -33,15 +33,18 @@ struct StyleLayerResult {
 
 // The layer's lines: the transferred lines it is parted along, the others left empty so that every
 // line keeps its index (PieceEdgeSource::line) and its name in the seams and notches.
+const StyleLayer* find_layer(const StyleDefinition& style, const std::string& layer) {
+  const auto found = std::find_if(style.layers.begin(), style.layers.end(), [&](const StyleLayer& l) { return l.name == layer; });
+  return found == style.layers.end() ? nullptr : &*found;
+}
+
 std::vector<TransferredCurve> lines_of_layer(const StyleDefinition& style, const std::string& layer,
                                              const std::vector<TransferredCurve>& lines) {
-  if (layer.empty()) return lines;
-  const auto found = std::find_if(style.layers.begin(), style.layers.end(), [&](const StyleLayer& l) { return l.name == layer; });
+  if (const StyleLayer* found = layer.empty() ? nullptr : find_layer(style, layer))
+    for (const std::string& name : found->lines) line_index(style, name, "the layer " + layer);
   std::vector<TransferredCurve> kept(lines.size());
-  for (const std::string& name : found->lines) {
-    const std::size_t i = static_cast<std::size_t>(line_index(style, name, "the layer " + layer));
-    kept[i] = lines[i];
-  }
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    if (line_parts_layer(style, layer, style.lines[i].name)) kept[i] = lines[i];
   return kept;
 }
 
@@ -65,7 +68,9 @@ StyleLayerResult layer_pieces(const StyleDefinition& style, const std::string& l
     result.style_index.push_back(p);
   }
   if (labels.empty()) return result;  // a style of linings only, or a layer without pieces
-  const std::vector<PieceRegion> regions = piece_regions(halves, lines, labels, cuts);
+  const StyleLayer* layer_spec = layer.empty() ? nullptr : find_layer(style, layer);
+  const bool partial = layer_spec && layer_spec->partial;
+  const std::vector<PieceRegion> regions = piece_regions(halves, lines, labels, cuts, partial);
   const PieceEdgeCurves curves = piece_edge_curves(halves, lines, scan_to_canonical);
   for (std::size_t k = 0; k < regions.size(); ++k) {
     StylePieceResult piece;
@@ -85,10 +90,11 @@ StyleLayerResult layer_pieces(const StyleDefinition& style, const std::string& l
     }
     result.pieces.push_back(std::move(piece));
   }
-  // Notches, grain lines and the seams' lengths on both sides, within the layer.
+  // Notches, grain lines and the seams' lengths on both sides, within the layer. A partial layer's lines
+  // are its pieces' own edges, sewn to nothing there.
   std::vector<std::string> line_names;
   for (const StyleLine& line : style.lines) line_names.push_back(line.name);
-  const std::vector<SewnCurve> sewn = sewn_curves(curves, line_names);
+  const std::vector<SewnCurve> sewn = partial ? std::vector<SewnCurve>{} : sewn_curves(curves, line_names);
   const std::vector<NotchPoint> notch_points =
       seam_notch_points(sewn, line_junctions(lines, line_names, scan_to_canonical), style.balance_notch_spacing_mm);
   std::vector<std::pair<const PieceSurface*, const PieceMold*>> molds;
@@ -105,8 +111,19 @@ StyleLayerResult layer_pieces(const StyleDefinition& style, const std::string& l
 
 }  // namespace
 
+bool line_parts_layer(const StyleDefinition& style, const std::string& layer, const std::string& line) {
+  if (layer.empty()) {
+    return std::none_of(style.layers.begin(), style.layers.end(), [&](const StyleLayer& l) {
+      return l.partial && std::find(l.lines.begin(), l.lines.end(), line) != l.lines.end();
+    });
+  }
+  const StyleLayer* found = find_layer(style, layer);
+  return found && std::find(found->lines.begin(), found->lines.end(), line) != found->lines.end();
+}
+
 double style_allowance(const StyleDefinition& style, const std::string& piece, const PieceEdgeSource& source) {
-  const StyleAllowances& a = style.allowances;
+  const auto spec = std::find_if(style.pieces.begin(), style.pieces.end(), [&](const StylePiece& p) { return p.name == piece; });
+  const StyleAllowances& a = spec != style.pieces.end() && spec->allowances ? *spec->allowances : style.allowances;
   switch (source.kind) {
     case PieceEdgeSource::Kind::Feather: return a.lasting_mm;
     case PieceEdgeSource::Kind::Top: return a.folding_mm;

@@ -42,7 +42,12 @@ struct StyleResult {
 StyleResult make_style_pieces(const StyleDefinition& style, const ScanResult& reference, const ScanResult& target,
                               const PieceMoldOptions& mold_options = {});
 
-// The allowance of an edge of a piece by the style's rules (see style_definition.hpp).
+// Whether `line` parts the pieces of `layer` ("": the outer pieces): a layer's own lines; the outer
+// pieces are parted by every line but those of a partial layer (a tongue's outline parts only the tongue).
+bool line_parts_layer(const StyleDefinition& style, const std::string& layer, const std::string& line);
+
+// The allowance of an edge of a piece by the style's rules (see style_definition.hpp), the piece's own
+// allowances where it has them.
 double style_allowance(const StyleDefinition& style, const std::string& piece, const PieceEdgeSource& source);
 
 }  // namespace lastcut

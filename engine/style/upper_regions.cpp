@@ -149,7 +149,7 @@ int half_index(const std::string& half_name) {
 
 std::vector<PieceRegion> piece_regions(const std::array<const SegmentResult*, 2>& halves,
                                        const std::vector<TransferredCurve>& lines, const std::vector<PieceLabel>& labels,
-                                       const std::vector<SeamCut>& seam_cuts) {
+                                       const std::vector<SeamCut>& seam_cuts, bool labelled_only) {
   const std::array<std::vector<Run>, 2> runs = runs_per_half(lines);
   std::array<ClipperLib::Path, 2> outlines;
   std::vector<HalfRegion> regions;
@@ -211,11 +211,14 @@ std::vector<PieceRegion> piece_regions(const std::array<const SegmentResult*, 2>
   for (std::size_t p = 0; p < labels.size(); ++p) pieces[p].name = labels[p].name;
   for (std::size_t r = 0; r < regions.size(); ++r) {
     const int owner = piece_of_group[static_cast<std::size_t>(joined.find(static_cast<int>(r)))];
+    if (owner < 0 && labelled_only) continue;
     if (owner < 0) throw EngineError("the region at the " + where(regions[r]) + " has no piece: a label is missing or a line does not reach an edge");
     pieces[static_cast<std::size_t>(owner)].parts.push_back(regions[r]);
   }
-  for (const auto& [region, join] : joins)
-    pieces[static_cast<std::size_t>(piece_of_group[static_cast<std::size_t>(joined.find(region))])].joins.push_back(join);
+  for (const auto& [region, join] : joins) {
+    const int owner = piece_of_group[static_cast<std::size_t>(joined.find(region))];
+    if (owner >= 0) pieces[static_cast<std::size_t>(owner)].joins.push_back(join);
+  }
   return pieces;
 }
 

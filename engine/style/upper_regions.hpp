@@ -59,9 +59,10 @@ struct PieceLabel {
 // lines; labels: one per piece. Throws EngineError (one line) when a region holds no label ("a region
 // near X has no piece: a label is missing or a line does not reach an edge") or two labels ("pieces A
 // and B lie in one region: a style line between them is missing or does not reach an edge").
+// labelled_only: a region without a label is left out instead (a partial layer, style_definition.hpp).
 std::vector<PieceRegion> piece_regions(const std::array<const SegmentResult*, 2>& halves,
                                        const std::vector<TransferredCurve>& lines, const std::vector<PieceLabel>& labels,
-                                       const std::vector<SeamCut>& seam_cuts = {});
+                                       const std::vector<SeamCut>& seam_cuts = {}, bool labelled_only = false);
 
 // 0 for "medial", 1 for "lateral"; throws EngineError otherwise.
 int half_index(const std::string& half_name);

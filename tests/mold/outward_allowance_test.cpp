@@ -90,6 +90,34 @@ TEST(OutwardAllowance, AChangeOfAllowanceIsAChamferOnTheSmallerSide) {
   for (const double x : {101.0, 105.0, 150.0}) EXPECT_NEAR(closest_outline_point(cut, {x, 0}).distance_mm, 0, 1e-4) << x;
 }
 
+// A raw edge (0) meeting an 18 mm lasting edge at a sharp corner (the outline turns 120 degrees): the
+// raw edge's line runs on straight through the lasting margin, as a pattern maker extends it, and the
+// margin's corner is rounded at 18 mm up to that line; nothing bulges past it.
+TEST(OutwardAllowance, ARawEdgesLineRunsOnThroughItsNeighboursAllowance) {
+  const Point2 corner{100, 0}, raw_direction{-0.5, std::sqrt(3.0) / 2};  // the raw edge leaves the corner at 120 degrees
+  Polygon2 net;
+  net.points = {{0, 0}, corner, corner + 50 * raw_direction, {0, 50 * raw_direction.y()}};
+  const std::vector<AllowanceEdge> edges = {{{{0, 0}, corner}, 18},
+                                            {{corner, corner + 50 * raw_direction}, 0},
+                                            {{corner + 50 * raw_direction, {0, 50 * raw_direction.y()}, {0, 0}}, 0}};
+  const Polygon2 cut = grow_outward_by_allowances(net, edges, 0.02);
+  for (const double along : {5.0, 10.0, 17.9}) {  // the raw edge's line, past the corner
+    EXPECT_NEAR(closest_outline_point(cut, corner - along * raw_direction).distance_mm, 0, 1e-3) << along;
+  }
+  const Point2 between = (Point2(0, -1) - raw_direction).normalized();  // between the square end and that line
+  EXPECT_NEAR(closest_outline_point(cut, corner + 18 * between).distance_mm, 0, 0.02) << "rounded at 18 mm";
+  EXPECT_NEAR(ray_to_outline(cut, {95, 0}, {0, -1}), 18, 1e-3) << "the lasting margin up to the corner";
+  EXPECT_NEAR(ray_to_outline(cut, {105, 0}, {0, -1}), 5 * std::tan(60 * M_PI / 180), 1e-3) << "past it, the raw edge's line";
+  // Nothing of the cut lies past the raw edge's line, nor further than 18 mm from the corner round it.
+  for (const Point2& p : cut.points) {
+    const Point2 from = p - corner;
+    EXPECT_LE(from.x() * raw_direction.y() - from.y() * raw_direction.x(), 1e-3) << p.transpose();
+    if (p.x() > corner.x()) {
+      EXPECT_LE(from.norm(), 18 + 1e-3) << p.transpose();
+    }
+  }
+}
+
 TEST(OutwardAllowance, NegativeAllowanceIsRefused) {
   Polygon2 net;
   net.points = {{0, 0}, {10, 0}, {0, 10}};
