@@ -51,7 +51,7 @@ StyleCheckSheet check_sheet(const StyleDefinition& style, const ScanResult& refe
     if (piece.spec.layer == layer) pieces.push_back(piece);
   StyleCheckSheet sheet;
   sheet.title = "style " + style.name + (layer.empty() ? "" : ", layer " + layer + ",") + " on its reference last: " +
-                std::to_string(pieces.size()) + " pieces";
+                std::to_string(pieces.size()) + (pieces.size() == 1 ? " piece" : " pieces");
   sheet.halves = {&half_named(reference, "medial"), &half_named(reference, "lateral")};
   sheet.pieces = piece_formes(sheet.halves, pieces);
   const StyleTransfer onto_itself(reference, reference);
