@@ -8,22 +8,12 @@
 #include "engine/core/engine_error.hpp"
 #include "engine/mold/outline_geometry.hpp"
 #include "engine/mold/outward_allowance.hpp"
+#include "tests/support/outline_ray.hpp"
 
 namespace lastcut {
 namespace {
 
-// How far from p along `direction` (unit) the outline is crossed first (mm).
-double ray_to_outline(const Polygon2& outline, const Point2& p, const Point2& direction) {
-  double nearest = INFINITY;
-  for (std::size_t i = 0; i < outline.points.size(); ++i) {
-    const Point2 a = outline.points[i], e = outline.points[(i + 1) % outline.points.size()] - a, w = a - p;
-    const double det = direction.x() * e.y() - direction.y() * e.x();
-    if (det == 0) continue;
-    const double t = (w.x() * e.y() - w.y() * e.x()) / det, u = (w.x() * direction.y() - w.y() * direction.x()) / det;
-    if (u >= 0 && u <= 1 && t > 1e-9) nearest = std::min(nearest, t);
-  }
-  return nearest;
-}
+using test::ray_to_outline;
 
 TEST(OutwardAllowance, RectangleWithALastingEdge) {
   Polygon2 net;

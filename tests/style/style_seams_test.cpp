@@ -21,6 +21,7 @@
 #include "engine/scan/scan_to_molds.hpp"
 #include "engine/style/style_items.hpp"
 #include "engine/style/style_pieces.hpp"
+#include "tests/support/outline_ray.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace lastcut {
@@ -319,17 +320,9 @@ TEST_F(StyleSeams, TheLinedDerbysLiningsCoverTheUpperAgainAsOnePieceRoundTheHeel
 }
 
 // How far from p along `direction` (unit) the outline is first crossed (mm); 0 when p is on it.
-double ray_to_outline(const Polygon2& outline, const Point2& p, const Point2& direction) {
+double ray_from_outline(const Polygon2& outline, const Point2& p, const Point2& direction) {
   if (closest_outline_point(outline, p).distance_mm < 0.03) return 0;  // the net simplified by 0.02 mm, Clipper's units
-  double nearest = INFINITY;
-  for (std::size_t i = 0; i < outline.points.size(); ++i) {
-    const Point2 a = outline.points[i], e = outline.points[(i + 1) % outline.points.size()] - a, w = a - p;
-    const double det = direction.x() * e.y() - direction.y() * e.x();
-    if (det == 0) continue;
-    const double t = (w.x() * e.y() - w.y() * e.x()) / det, u = (w.x() * direction.y() - w.y() * direction.x()) / det;
-    if (u >= 0 && u <= 1 && t > 0) nearest = std::min(nearest, t);
-  }
-  return nearest;
+  return test::ray_to_outline(outline, p, direction);
 }
 
 // The lined derby's tongue, the one piece of a partial layer (style_definition.hpp): cut inside its own
@@ -386,7 +379,7 @@ TEST_F(StyleSeams, TheLinedDerbysTongueLiesUnderTheLacingAndReachesAboveTheTopEd
     for (std::size_t k = n / 3; k + 1 <= 2 * n / 3 && k + 1 < n; ++k) {
       const Point2 a = edge.net_points[k], b = edge.net_points[k + 1];
       const Point2 outward = Point2(b.y() - a.y(), a.x() - b.x()).normalized();
-      const Point2 met = (a + b) / 2 + ray_to_outline(tongue.mold.mold.outline, (a + b) / 2, outward) * outward;
+      const Point2 met = (a + b) / 2 + ray_from_outline(tongue.mold.mold.outline, (a + b) / 2, outward) * outward;
       double nearest_mm = INFINITY;  // to the stretch as an open line
       for (std::size_t i = 1; i < n; ++i) nearest_mm = std::min(nearest_mm, distance_to_segment(met, edge.net_points[i - 1], edge.net_points[i]));
       from_stretch_mm.push_back(nearest_mm);
