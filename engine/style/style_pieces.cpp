@@ -78,6 +78,9 @@ StyleLayerResult layer_pieces(const StyleDefinition& style, const std::string& l
     piece.thickness_mm = piece.spec.thickness_mm.value_or(style.thickness_mm);
     PieceMoldOptions options = mold_options;
     options.surface_offset_mm = mid_surface_offset_mm(piece.thickness_mm);
+    // A partial layer's lines are sewn to nothing: no length to hold them to (holding a tongue's outline
+    // at its length on the curved instep stretched it 2 % in area).
+    if (partial) options.hold_sewn_lengths = false;
     try {
       piece.surface = cut_piece_surface(halves, regions[k], cuts);
       piece.mold = make_piece_mold(

@@ -330,77 +330,84 @@ double ray_from_outline(const Polygon2& outline, const Point2& p, const Point2& 
 // vamp's throat; its sides raw and exactly on the net, its top 30 mm above the last's top edge; no
 // balance notches and no seam, as it is sewn to nothing in its layer.
 TEST_F(StyleSeams, TheLinedDerbysTongueLiesUnderTheLacingAndReachesAboveTheTopEdge) {
-  const TestLast last{44, FootSide::Left};
-  const StyleResult plain = cut("derby", last);
-  const StyleResult lined = cut("derby-lined", last);
-  std::map<std::string, const StylePieceResult*> piece;
-  for (const StylePieceResult& p : lined.pieces) piece[p.spec.name] = &p;
-  ASSERT_TRUE(piece.count("tongue"));
-  const StylePieceResult& tongue = *piece.at("tongue");
-  EXPECT_EQ(tongue.spec.layer, "tongue");
-  for (const StylePieceResult& outer : plain.pieces)  // the tongue's line parts none of them
-    EXPECT_NEAR(piece.at(outer.spec.name)->surface.area_mm2, outer.surface.area_mm2, 1e-9) << outer.spec.name;
+  // EU 44 left first (the figures in docs/pieces.md), then small, narrow, wide and posed lasts of both feet.
+  for (const TestLast& last : {TestLast{44, FootSide::Left}, TestLast{36, FootSide::Right}, TestLast{39, FootSide::Left, 0.95},
+                               TestLast{47, FootSide::Right, 1.05, true}}) {
+    SCOPED_TRACE(describe(last));
+    const StyleResult plain = cut("derby", last);
+    const StyleResult lined = cut("derby-lined", last);
+    std::map<std::string, const StylePieceResult*> piece;
+    for (const StylePieceResult& p : lined.pieces) piece[p.spec.name] = &p;
+    ASSERT_TRUE(piece.count("tongue"));
+    const StylePieceResult& tongue = *piece.at("tongue");
+    EXPECT_EQ(tongue.spec.layer, "tongue");
+    for (const StylePieceResult& outer : plain.pieces)  // the tongue's line parts none of them
+      EXPECT_NEAR(piece.at(outer.spec.name)->surface.area_mm2, outer.surface.area_mm2, 1e-9) << outer.spec.name;
 
-  // Which outer piece lies over each of the tongue's vertices (the nearest vertex of the outer pieces).
-  std::map<std::string, int> over;
-  for (Eigen::Index v = 0; v < tongue.surface.mesh.V.rows(); ++v) {
-    const Eigen::Vector3d p = tongue.surface.mesh.V.row(v).transpose();
-    double nearest_mm = INFINITY;
-    std::string name;
-    for (const StylePieceResult& outer : plain.pieces) {
-      for (Eigen::Index w = 0; w < outer.surface.mesh.V.rows(); ++w) {
-        const double d = (outer.surface.mesh.V.row(w).transpose() - p).norm();
-        if (d < nearest_mm) nearest_mm = d, name = outer.spec.name;
+    // Which outer piece lies over each of the tongue's vertices (the nearest vertex of the outer pieces).
+    std::map<std::string, int> over;
+    for (Eigen::Index v = 0; v < tongue.surface.mesh.V.rows(); ++v) {
+      const Eigen::Vector3d p = tongue.surface.mesh.V.row(v).transpose();
+      double nearest_mm = INFINITY;
+      std::string name;
+      for (const StylePieceResult& outer : plain.pieces) {
+        for (Eigen::Index w = 0; w < outer.surface.mesh.V.rows(); ++w) {
+          const double d = (outer.surface.mesh.V.row(w).transpose() - p).norm();
+          if (d < nearest_mm) nearest_mm = d, name = outer.spec.name;
+        }
       }
+      ++over[name];
     }
-    ++over[name];
-  }
-  EXPECT_GT(over["medial quarter"], 0);
-  EXPECT_GT(over["lateral quarter"], 0);
-  EXPECT_GT(over["vamp"], 0) << "its nose lies under the vamp's throat";
-  EXPECT_EQ(over["counter"], 0);
+    EXPECT_GT(over["medial quarter"], 0);
+    EXPECT_GT(over["lateral quarter"], 0);
+    EXPECT_GT(over["vamp"], 0) << "its nose lies under the vamp's throat";
+    EXPECT_EQ(over["counter"], 0);
 
-  // Its outline: the tongue line (raw, 0) and the top edge (its folding, 30 mm).
-  int top_stretches = 0;
-  for (const PieceMoldEdge& edge : tongue.mold.edges) {
-    if (edge.source.kind == PieceEdgeSource::Kind::Top) {
-      ++top_stretches;
-      EXPECT_EQ(edge.allowance_mm, 30);
-    } else {
-      EXPECT_EQ(edge.source.kind, PieceEdgeSource::Kind::Line);
-      EXPECT_EQ(edge.allowance_mm, 0);
+    // Its outline: the tongue line (raw, 0) and the top edge (its folding, 30 mm).
+    int top_stretches = 0;
+    for (const PieceMoldEdge& edge : tongue.mold.edges) {
+      if (edge.source.kind == PieceEdgeSource::Kind::Top) {
+        ++top_stretches;
+        EXPECT_EQ(edge.allowance_mm, 30);
+      } else {
+        EXPECT_EQ(edge.source.kind, PieceEdgeSource::Kind::Line);
+        EXPECT_EQ(edge.allowance_mm, 0);
+      }
+      // Measured on the cut outline from each segment of the stretch's middle third, along its outward
+      // normal: the raw sides are the cut line, and the point the ray meets lies 30 mm from the top (on a
+      // concave stretch the ray runs past the nearest offset point, so it is not the ray's length that is
+      // compared; and the top's corners are on the cut line, so the cut line's nearest point is nearer).
+      std::vector<double> from_stretch_mm;
+      const std::size_t n = edge.net_points.size();
+      for (std::size_t k = n / 3; k + 1 <= 2 * n / 3 && k + 1 < n; ++k) {
+        const Point2 a = edge.net_points[k], b = edge.net_points[k + 1];
+        const Point2 outward = Point2(b.y() - a.y(), a.x() - b.x()).normalized();
+        const Point2 met = (a + b) / 2 + ray_from_outline(tongue.mold.mold.outline, (a + b) / 2, outward) * outward;
+        double nearest_mm = INFINITY;  // to the stretch as an open line
+        for (std::size_t i = 1; i < n; ++i) nearest_mm = std::min(nearest_mm, distance_to_segment(met, edge.net_points[i - 1], edge.net_points[i]));
+        from_stretch_mm.push_back(nearest_mm);
+      }
+      ASSERT_FALSE(from_stretch_mm.empty());
+      std::sort(from_stretch_mm.begin(), from_stretch_mm.end());
+      const std::string where = to_string(edge.source, {"vamp", "counter", "tongue"});
+      // Nothing cuts into the allowance, and the cut line reaches it (at kinks and where the stretch
+      // curves inward the strips' corners lie further out, R / cos(turn / 2)).
+      EXPECT_NEAR(from_stretch_mm.front(), edge.allowance_mm, 0.05) << where;
+      EXPECT_LE(from_stretch_mm.back(), edge.allowance_mm + 5) << where;
     }
-    // Measured on the cut outline from each segment of the stretch's middle third, along its outward
-    // normal: the raw sides are the cut line, and the point the ray meets lies 30 mm from the top (on a
-    // concave stretch the ray runs past the nearest offset point, so it is not the ray's length that is
-    // compared; and the top's corners are on the cut line, so the cut line's nearest point is nearer).
-    std::vector<double> from_stretch_mm;
-    const std::size_t n = edge.net_points.size();
-    for (std::size_t k = n / 3; k + 1 <= 2 * n / 3 && k + 1 < n; ++k) {
-      const Point2 a = edge.net_points[k], b = edge.net_points[k + 1];
-      const Point2 outward = Point2(b.y() - a.y(), a.x() - b.x()).normalized();
-      const Point2 met = (a + b) / 2 + ray_from_outline(tongue.mold.mold.outline, (a + b) / 2, outward) * outward;
-      double nearest_mm = INFINITY;  // to the stretch as an open line
-      for (std::size_t i = 1; i < n; ++i) nearest_mm = std::min(nearest_mm, distance_to_segment(met, edge.net_points[i - 1], edge.net_points[i]));
-      from_stretch_mm.push_back(nearest_mm);
-    }
-    ASSERT_FALSE(from_stretch_mm.empty());
-    std::sort(from_stretch_mm.begin(), from_stretch_mm.end());
-    const std::string where = to_string(edge.source, {"vamp", "counter", "tongue"});
-    // Nothing cuts into the allowance, and the cut line reaches it (at kinks and where the stretch
-    // curves inward the strips' corners lie further out, R / cos(turn / 2)).
-    EXPECT_NEAR(from_stretch_mm.front(), edge.allowance_mm, 0.05) << where;
-    EXPECT_LE(from_stretch_mm.back(), edge.allowance_mm + 5) << where;
+    EXPECT_GE(top_stretches, 1);
+    for (const PieceNotch& notch : tongue.notches) EXPECT_FALSE(notch.balance) << notch.name;
+    for (const SeamReport& seam : lined.seams) EXPECT_EQ(seam.seam.find("tongue"), std::string::npos) << seam.seam;
+    EXPECT_EQ(tongue.mold.measures.flipped_triangles, 0);
+    // Flattened by plain ARAP: its outline is sewn to nothing, so no length is held (held, the outline's
+    // length on the curved instep stretched the tongue 1.5-2.3 % in area).
+    EXPECT_NEAR(std::abs(signed_area(tongue.mold.mold.net)), tongue.surface.area_mm2, 0.002 * tongue.surface.area_mm2);
+    EXPECT_LE(tongue.mold.measures.D_area, 2.001);
+    std::printf("tongue on %s: %.0f mm2 on the last, %.0f mm2 cut; over the vamp %d, the medial quarter %d, the lateral %d "
+                "of its %ld vertices\n",
+                describe(last).c_str(), tongue.surface.area_mm2, std::abs(signed_area(tongue.mold.mold.outline)), over["vamp"],
+                over["medial quarter"], over["lateral quarter"], static_cast<long>(tongue.surface.mesh.V.rows()));
   }
-  EXPECT_GE(top_stretches, 1);
-  for (const PieceNotch& notch : tongue.notches) EXPECT_FALSE(notch.balance) << notch.name;
-  for (const SeamReport& seam : lined.seams) EXPECT_EQ(seam.seam.find("tongue"), std::string::npos) << seam.seam;
-  EXPECT_EQ(tongue.mold.measures.flipped_triangles, 0);
-  EXPECT_NEAR(std::abs(signed_area(tongue.mold.mold.net)), tongue.surface.area_mm2, 0.02 * tongue.surface.area_mm2);
-  std::printf("tongue on EU 44 left: %.0f mm2 on the last, %.0f mm2 cut; over the vamp %d, the medial quarter %d, the lateral %d "
-              "of its %ld vertices\n",
-              tongue.surface.area_mm2, std::abs(signed_area(tongue.mold.mold.outline)), over["vamp"], over["medial quarter"],
-              over["lateral quarter"], static_cast<long>(tongue.surface.mesh.V.rows()));
 }
 
 }  // namespace
