@@ -7,6 +7,7 @@
 #include "engine/core/polyline_3d.hpp"
 #include "engine/flatten/arap_held_lengths.hpp"
 #include "engine/flatten/disk_topology.hpp"
+#include "engine/mold/outer_hull_chain.hpp"
 #include "engine/mold/outward_allowance.hpp"
 #include "engine/mold/outline_geometry.hpp"
 #include "engine/mold/outline_simplify.hpp"
@@ -224,10 +225,16 @@ PieceMold make_piece_mold(const PieceSurface& piece, const PieceEdgeCurves& curv
     } while (i != to);
     result.edges[e].outline_vertices.push_back(loop[to]);
   }
-  for (const PieceMoldEdge& edge : result.edges) grown.push_back({edge.net_points, edge.allowance_mm});
+  // The outline the allowances grow from: the net, with an extension's dents bridged (kTopExtensionAbove_mm).
+  Polygon2 grown_from;
+  for (const PieceMoldEdge& edge : result.edges) {
+    const bool extension = edge.source.kind == PieceEdgeSource::Kind::Top && edge.allowance_mm > kTopExtensionAbove_mm;
+    grown.push_back({extension ? outer_hull_chain(edge.net_points) : edge.net_points, edge.allowance_mm});
+    grown_from.points.insert(grown_from.points.end(), grown.back().points.begin(), grown.back().points.end() - 1);
+  }
   result.mold.name = piece.name;
   result.mold.net = simple;
-  result.mold.outline = grow_outward_by_allowances(simple, grown, kPieceSimplifyTolerance_mm);
+  result.mold.outline = grow_outward_by_allowances(grown_from, grown, kPieceSimplifyTolerance_mm);
   return result;
 }
 

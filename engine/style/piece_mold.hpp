@@ -64,6 +64,11 @@ using AllowanceRule = std::function<double(const PieceEdgeSource&)>;
 
 inline constexpr double kPieceSimplifyTolerance_mm = 0.02;
 
+// A top edge's allowance above this is an extension beyond the last (a tongue's top), not a fold (shops
+// fold 4-8 mm): it is grown from the edge's outer hull chain (engine/mold/outer_hull_chain.hpp), so the
+// tab's top is smooth where the edge kinks inward.
+inline constexpr double kTopExtensionAbove_mm = 10;
+
 struct PieceMoldOptions {
   FlattenOptions flatten;
   // Hold the sewn stretches (style lines, cut centre seams) at their 3D length after flattening
