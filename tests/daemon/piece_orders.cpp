@@ -189,9 +189,9 @@ int expect_every_order_cut_once(const std::vector<PieceOrder>& orders, const std
     pieces += item.demand;
     EXPECT_EQ(cut.times_cut[label], item.demand) << label;
   }
-  // A derby pair (4 pieces a foot), a lined derby pair (4, its tongue and 2 linings a foot), a loafer pair
+  // A derby pair (4 pieces a foot), a lined derby pair (4, its tongue and 3 linings a foot), a loafer pair
   // (5 a foot), the pattern set's tongue and its linings (1 + 3 a foot).
-  EXPECT_EQ(pieces, 8 + 14 + 10 + 2 + 6);
+  EXPECT_EQ(pieces, 8 + 16 + 10 + 2 + 6);
   // Each order's leather on one hide (a pair from one hide), its linings on the roll.
   for (const PieceOrder& order : orders) {
     std::set<std::string> hides, rolls;

@@ -281,7 +281,7 @@ TEST_F(StyleSeams, TheLinedDerbysLiningsCoverTheUpperAgainAsOnePieceRoundTheHeel
   const TestLast last{44, FootSide::Left};
   const StyleResult plain = cut("derby", last);
   const StyleResult lined = cut("derby-lined", last);
-  ASSERT_EQ(lined.pieces.size(), plain.pieces.size() + 3);  // the linings and the tongue
+  ASSERT_EQ(lined.pieces.size(), plain.pieces.size() + 4);  // the linings, the tongue and its lining
   std::map<std::string, const StylePieceResult*> piece;
   for (const StylePieceResult& p : lined.pieces) piece[p.spec.name] = &p;
   for (const StylePieceResult& outer : plain.pieces) {
@@ -342,6 +342,11 @@ TEST_F(StyleSeams, TheLinedDerbysTongueLiesUnderTheLacingAndReachesAboveTheTopEd
     ASSERT_TRUE(piece.count("tongue"));
     const StylePieceResult& tongue = *piece.at("tongue");
     EXPECT_EQ(tongue.spec.layer, "tongue");
+    // Its lining: the same outline in a layer of its own, of lining.
+    ASSERT_TRUE(piece.count("tongue lining"));
+    EXPECT_EQ(piece.at("tongue lining")->spec.material, "lining");
+    EXPECT_NEAR(piece.at("tongue lining")->surface.area_mm2, tongue.surface.area_mm2, 1e-9);
+    EXPECT_NEAR(signed_area(piece.at("tongue lining")->mold.mold.outline), signed_area(tongue.mold.mold.outline), 1e-6);
     for (const StylePieceResult& outer : plain.pieces)  // the tongue's line parts none of them
       EXPECT_NEAR(piece.at(outer.spec.name)->surface.area_mm2, outer.surface.area_mm2, 1e-9) << outer.spec.name;
 

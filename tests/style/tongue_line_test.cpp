@@ -82,11 +82,12 @@ TEST(TongueLine, StyleTomlReadsAPartialLayerAndAPiecesAllowancesAndRefusesBadOne
   const std::string shipped = test::read_text(toml);
   const Result<daemon::StyleFolder> read = daemon::read_style_folder(dir / "derby-lined");
   ASSERT_TRUE(read) << read.error();
-  ASSERT_EQ(read->style.layers.size(), 2u);
+  ASSERT_EQ(read->style.layers.size(), 3u);
   EXPECT_FALSE(read->style.layers[0].partial);  // the linings tile the upper
-  EXPECT_TRUE(read->style.layers[1].partial);
+  EXPECT_TRUE(read->style.layers[1].partial);   // the tongue and its lining
+  EXPECT_TRUE(read->style.layers[2].partial);
   for (const StylePiece& piece : read->style.pieces) {
-    EXPECT_EQ(piece.allowances.has_value(), piece.name == "tongue") << piece.name;
+    EXPECT_EQ(piece.allowances.has_value(), piece.name == "tongue" || piece.name == "tongue lining") << piece.name;
     if (piece.allowances) {  // folding its own, the rest the style's
       EXPECT_EQ(piece.allowances->folding_mm, 30);
       EXPECT_EQ(piece.allowances->lasting_mm, read->style.allowances.lasting_mm);
