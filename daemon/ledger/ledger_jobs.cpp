@@ -223,7 +223,7 @@ Status LedgerClient::mark_computed(const Lease& lease, int pieces, const std::ve
                           // A job cut in part and computed again (a requeue) goes on where it was, as on a
                           // spool (JobState::take_parts): no piece already cut is cut again.
                           const pqxx::row row = tx.exec_params1(
-                              "SELECT parts::text, part, coalesce(material, ''), coalesce(cutter, '') FROM jobs WHERE id = $1",
+                              "SELECT parts::text, part, material, cutter FROM jobs WHERE id = $1",
                               lease.object_id);
                           const daemon::ResumedParts resumed = daemon::resume_parts(
                               daemon::parts_from_json(nlohmann::json::parse(row[0].as<std::string>(), nullptr, false)),

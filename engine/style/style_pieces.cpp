@@ -31,13 +31,14 @@ struct StyleLayerResult {
   std::vector<SeamReport> seams;
 };
 
-// The layer's lines: the transferred lines it is parted along, the others left empty so that every
-// line keeps its index (PieceEdgeSource::line) and its name in the seams and notches.
+// The [[layer]] of that name; nullptr when the style has none.
 const StyleLayer* find_layer(const StyleDefinition& style, const std::string& layer) {
   const auto found = std::find_if(style.layers.begin(), style.layers.end(), [&](const StyleLayer& l) { return l.name == layer; });
   return found == style.layers.end() ? nullptr : &*found;
 }
 
+// The layer's lines: the transferred lines it is parted along (line_parts_layer), the others left empty
+// so that every line keeps its index (PieceEdgeSource::line) and its name in the seams and notches.
 std::vector<TransferredCurve> lines_of_layer(const StyleDefinition& style, const std::string& layer,
                                              const std::vector<TransferredCurve>& lines) {
   if (const StyleLayer* found = layer.empty() ? nullptr : find_layer(style, layer))
@@ -84,7 +85,7 @@ StyleLayerResult layer_pieces(const StyleDefinition& style, const std::string& l
     try {
       piece.surface = cut_piece_surface(halves, regions[k], cuts);
       piece.mold = make_piece_mold(
-          piece.surface, curves, [&](const PieceEdgeSource& source) { return style_allowance(style, piece.spec.name, source); },
+          piece.surface, curves, [&](const PieceEdgeSource& source) { return style_allowance(style, piece.spec, source); },
           options);
     } catch (const EngineError& error) {
       const std::string reason = error.what();
@@ -124,9 +125,8 @@ bool line_parts_layer(const StyleDefinition& style, const std::string& layer, co
   return found && std::find(found->lines.begin(), found->lines.end(), line) != found->lines.end();
 }
 
-double style_allowance(const StyleDefinition& style, const std::string& piece, const PieceEdgeSource& source) {
-  const auto spec = std::find_if(style.pieces.begin(), style.pieces.end(), [&](const StylePiece& p) { return p.name == piece; });
-  const StyleAllowances& a = spec != style.pieces.end() && spec->allowances ? *spec->allowances : style.allowances;
+double style_allowance(const StyleDefinition& style, const StylePiece& piece, const PieceEdgeSource& source) {
+  const StyleAllowances& a = piece.allowances ? *piece.allowances : style.allowances;
   switch (source.kind) {
     case PieceEdgeSource::Kind::Feather: return a.lasting_mm;
     case PieceEdgeSource::Kind::Top: return a.folding_mm;
@@ -135,7 +135,7 @@ double style_allowance(const StyleDefinition& style, const std::string& piece, c
     case PieceEdgeSource::Kind::Line: {
       const std::string& line = style.lines.at(static_cast<std::size_t>(source.line)).name;
       for (const StyleLineRule& rule : style.line_rules)
-        if (rule.line == line && rule.under == piece) return a.underlay_mm;
+        if (rule.line == line && rule.under == piece.name) return a.underlay_mm;
       return a.butted_mm;
     }
   }

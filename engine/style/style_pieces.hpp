@@ -48,6 +48,6 @@ bool line_parts_layer(const StyleDefinition& style, const std::string& layer, co
 
 // The allowance of an edge of a piece by the style's rules (see style_definition.hpp), the piece's own
 // allowances where it has them.
-double style_allowance(const StyleDefinition& style, const std::string& piece, const PieceEdgeSource& source);
+double style_allowance(const StyleDefinition& style, const StylePiece& piece, const PieceEdgeSource& source);
 
 }  // namespace lastcut
